@@ -1,0 +1,12 @@
+# The engines towgeom builds on; all from Debian 12 packages (see README.md).
+# Shared between the build and the installed towgeomConfig.cmake (via find_dependency there).
+# OCCT's version file accepts only an exact version, so the minimum is checked here.
+find_package(OpenCASCADE REQUIRED CONFIG)
+if(OpenCASCADE_VERSION VERSION_LESS 7.6)
+  message(FATAL_ERROR "towgeom needs OpenCASCADE >= 7.6, found ${OpenCASCADE_VERSION}")
+endif()
+find_package(CGAL 5.5 REQUIRED CONFIG)
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+
+# The OCCT toolkits towgeom links (OCCT's imported targets carry no include directories).
+set(TOWGEOM_OCCT_LIBRARIES TKernel TKMath TKG2d TKG3d TKGeomBase TKGeomAlgo)

@@ -1,0 +1,41 @@
+/// @file stack_reader.hpp
+/// @brief Reading tow stacks from the plain-text `.stw` format.
+///
+/// The format, one tow per file:
+/// @code
+/// # comment lines start with '#'
+/// tow warp_03            # optional; names the tow (default: the file stem)
+/// 0.0  0.50 0.00         # a section: N lines "x y z" (whitespace- or comma-separated)
+/// 0.0  0.25 0.43
+/// ...
+///                        # one or more blank lines end a section
+/// 0.2  0.50 0.00         # next section, same N
+/// ...
+/// @endcode
+/// Sections are in order along the tow. A closing point that repeats the section's first point
+/// is dropped. Names may use letters, digits and `_ - . +`, and may not start with a dot.
+#pragma once
+
+#include <istream>
+#include <string>
+
+#include "towgeom/tow_stack.hpp"
+
+namespace towgeom {
+
+/// Reads and validates one `.stw` file.
+///
+/// Streams the file line by line (memory grows with the number of points, not the file's size).
+/// @throws towgeom::Error naming the file and line for a missing or unreadable file, an empty
+///         file, binary data, a non-numeric token, a line with other than 3 coordinates, NaN/Inf,
+///         a coordinate beyond 1e150, and every rule of validateStack().
+TowStack readStackFile(const std::string& path);
+
+/// Reads and validates a stack from a stream; @p sourceName is used in messages and
+/// @p defaultName is the tow's name unless the stream holds a `tow NAME` line.
+TowStack readStack(std::istream& in, const std::string& sourceName, const std::string& defaultName);
+
+/// Writes @p stack in the `.stw` format (17 significant digits, round-trips exactly).
+void writeStack(std::ostream& out, const TowStack& stack);
+
+}  // namespace towgeom

@@ -1,0 +1,55 @@
+/// @file tow_stack.hpp
+/// @brief TowStack: one tow as exported by a textile simulator, a stack of cross-section polygons.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "towgeom/point.hpp"
+
+namespace towgeom {
+
+/// One tow as a stack of cross-sections: M sections along the tow, each N points around it.
+///
+/// Conventions (the same as the `.stw` file format, see stack_reader.hpp):
+/// - sections are in order along the tow; every section has the same number of points;
+/// - the first point of every section sits at a consistent angular position and the points go
+///   around in a consistent direction (either direction; TowSurface detects it);
+/// - the closing point is not repeated.
+struct TowStack {
+    /// Minimum number of sections accepted by validateStack().
+    static constexpr std::size_t kMinSections = 4;
+    /// Minimum number of points per section accepted by validateStack().
+    static constexpr std::size_t kMinPointsPerSection = 6;
+
+    std::string name;                          ///< the tow's name (file stem unless the file names it)
+    std::string source;                        ///< where it came from (a path), for messages
+    std::vector<std::vector<Point3>> sections;  ///< sections[i][j]: point j of section i
+    /// Optional: lines[i][j] is the 1-based source line of sections[i][j]; empty when unknown.
+    std::vector<std::vector<std::size_t>> lines;
+
+    /// Number of sections (M).
+    std::size_t sectionCount() const { return sections.size(); }
+    /// Number of points per section (N), 0 if there are no sections.
+    std::size_t pointsPerSection() const { return sections.empty() ? 0 : sections.front().size(); }
+    /// The source line of point @p j of section @p i, 0 if not known.
+    std::size_t lineOf(std::size_t i, std::size_t j) const
+    {
+        return i < lines.size() && j < lines[i].size() ? lines[i][j] : 0;
+    }
+};
+
+/// Checks a stack against every rule a TowSurface relies on and throws towgeom::Error naming the
+/// source and line of the first offence:
+/// at least TowStack::kMinSections sections and TowStack::kMinPointsPerSection points each, equal
+/// point counts, finite coordinates of magnitude at most 1e150, no consecutive duplicate points,
+/// no zero-area or self-intersecting section (checked exactly, in the section's best-fit plane),
+/// one orientation for all sections, and no two consecutive sections that coincide.
+///
+/// A point counts as a duplicate of its neighbour when they are closer than 1e-9 times the
+/// section's size (its bounding-box diagonal); a section has zero area when its area is below
+/// 1e-9 times its size squared.
+void validateStack(const TowStack& stack);
+
+}  // namespace towgeom

@@ -1,0 +1,19 @@
+/// @file towgeom.hpp
+/// @brief The whole public API of towgeom in one include.
+///
+/// @mainpage towgeom
+/// towgeom turns the interpenetrating tows exported by textile simulators into exact NURBS
+/// surfaces and compatible finite-element meshes. Start with readStackFile() and
+/// TowSurface::fit(); every failure is a towgeom::Error.
+#pragma once
+
+#include "towgeom/curve3.hpp"
+#include "towgeom/error.hpp"
+#include "towgeom/fit_options.hpp"
+#include "towgeom/point.hpp"
+#include "towgeom/stack_reader.hpp"
+#include "towgeom/tow_stack.hpp"
+#include "towgeom/tow_surface.hpp"
+#include "towgeom/triangle_mesh.hpp"
+#include "towgeom/version.hpp"
+#include "towgeom/vtk_writer.hpp"

@@ -1,0 +1,39 @@
+// A small command-line parser for the towgeom subcommands: --name VALUE, --name=VALUE, flags,
+// repeatable options and positional arguments.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace towgeom::cli {
+
+/// A mistake in how the command was called (exit 2 with a hint to --help).
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+struct OptionSpec {
+    std::string name;  // without the leading dashes
+    bool takesValue = false;
+};
+
+class Args {
+public:
+    /// Parses argv[first..argc); throws UsageError for unknown options or missing values.
+    Args(int argc, char** argv, int first, const std::vector<OptionSpec>& spec);
+
+    bool has(const std::string& name) const { return values_.count(name) != 0; }
+    std::optional<std::string> value(const std::string& name) const;
+    const std::vector<std::string>& positional() const { return positional_; }
+    /// The value of @p name as a number; throws UsageError if it is not one.
+    std::optional<double> number(const std::string& name) const;
+
+private:
+    std::map<std::string, std::vector<std::string>> values_;
+    std::vector<std::string> positional_;
+};
+
+}  // namespace towgeom::cli

@@ -1,0 +1,17 @@
+// The towgeom subcommands. Each returns the process exit code:
+//   0 success, 2 bad input or usage (one line on stderr), 1 failure to write or internal error.
+#pragma once
+
+namespace towgeom::cli {
+
+constexpr int kExitOk = 0;
+constexpr int kExitFailure = 1;
+constexpr int kExitInput = 2;
+
+/// `towgeom fit FILE.stw... [options]`; argv[first] is the first argument after "fit".
+int runFit(int argc, char** argv, int first);
+
+/// Prints one line "towgeom COMMAND: message" on stderr and returns the exit code for @p e.
+int reportError(const char* command, const std::exception& e);
+
+}  // namespace towgeom::cli

@@ -1,0 +1,74 @@
+// towgeom: the command-line front end of the towgeom library.
+#include <cstring>
+#include <iostream>
+
+#include "cli/args.hpp"
+#include "cli/commands.hpp"
+#include "towgeom/error.hpp"
+#include "towgeom/version.hpp"
+
+namespace towgeom::cli {
+
+namespace {
+const char* kHelp = R"(Usage: towgeom COMMAND [options]
+
+towgeom turns the interpenetrating tows of a textile model into exact NURBS surfaces
+and compatible finite-element meshes.
+
+Commands:
+  fit      fit B-spline surfaces to tow stacks (.stw) and report accuracy and volume
+
+Run 'towgeom COMMAND --help' for a command's options, inputs and outputs.
+
+The .stw format: '#' comments, an optional 'tow NAME' line, then sections of N lines
+'x y z' separated by blank lines, all with the same N, in order along the tow.
+
+Options:
+  -h, --help     this help
+  --version      the library version
+)";
+}  // namespace
+
+int reportError(const char* command, const std::exception& e)
+{
+    std::string message = e.what();
+    for (char& c : message)
+        if (c == '\n') c = ' ';
+    std::cerr << "towgeom " << command << ": " << message;
+    if (dynamic_cast<const UsageError*>(&e)) {
+        std::cerr << " (see towgeom " << command << " --help)\n";
+        return kExitInput;
+    }
+    std::cerr << "\n";
+    if (const auto* error = dynamic_cast<const Error*>(&e)) {
+        switch (error->code()) {
+        case ErrorCode::WriteFailed:
+        case ErrorCode::Internal: return kExitFailure;
+        default: return kExitInput;
+        }
+    }
+    return kExitFailure;
+}
+
+}  // namespace towgeom::cli
+
+int main(int argc, char** argv)
+{
+    using namespace towgeom::cli;
+    if (argc < 2) {
+        std::cerr << kHelp;
+        return kExitInput;
+    }
+    const char* command = argv[1];
+    if (!std::strcmp(command, "-h") || !std::strcmp(command, "--help") || !std::strcmp(command, "help")) {
+        std::cout << kHelp;
+        return kExitOk;
+    }
+    if (!std::strcmp(command, "--version")) {
+        std::cout << "towgeom " << towgeom::versionString() << "\n";
+        return kExitOk;
+    }
+    if (!std::strcmp(command, "fit")) return runFit(argc, argv, 2);
+    std::cerr << "towgeom: unknown command '" << command << "' (see towgeom --help)\n";
+    return kExitInput;
+}

@@ -1,0 +1,144 @@
+// validateStack(): every rule a TowSurface relies on, with messages naming source and line.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2_algorithms.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+#include <string>
+
+#include "core/section_geometry.hpp"
+#include "towgeom/error.hpp"
+#include "towgeom/tow_stack.hpp"
+
+namespace towgeom {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+constexpr double kDuplicateTolerance = 1e-9;  // relative to the section's extent
+constexpr double kAreaTolerance = 1e-9;       // relative to the section's extent squared
+
+std::string sectionLabel(std::size_t i) { return "section " + std::to_string(i + 1); }
+
+[[noreturn]] void fail(const TowStack& s, ErrorCode code, const std::string& message, std::size_t i,
+                       std::size_t j = 0)
+{
+    throw Error(code, message, s.source.empty() ? "tow '" + s.name + "'" : s.source, s.lineOf(i, j));
+}
+
+/// The section projected on its best-fit (least-squares) plane, in that plane's coordinates.
+/// Returns false when the points are collinear (no plane).
+bool projectOnBestPlane(const std::vector<Point3>& poly, std::vector<Kernel::Point_2>& out)
+{
+    const Point3 c = detail::vertexCentroid(poly);
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    for (const Point3& p : poly) {
+        const Eigen::Vector3d d(p.x - c.x, p.y - c.y, p.z - c.z);
+        cov += d * d.transpose();
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+    const Eigen::Vector3d lambda = eig.eigenvalues();  // ascending
+    if (!(lambda(1) > 1e-18 * lambda(2))) return false;
+    const Eigen::Vector3d e1 = eig.eigenvectors().col(2);
+    const Eigen::Vector3d e2 = eig.eigenvectors().col(1);
+    out.clear();
+    for (const Point3& p : poly) {
+        const Eigen::Vector3d d(p.x - c.x, p.y - c.y, p.z - c.z);
+        out.emplace_back(d.dot(e1), d.dot(e2));
+    }
+    return true;
+}
+
+void checkSection(const TowStack& s, std::size_t i)
+{
+    const std::vector<Point3>& poly = s.sections[i];
+    for (std::size_t j = 0; j < poly.size(); ++j) {
+        const Point3& p = poly[j];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            fail(s, ErrorCode::NonFinite, "coordinate is not finite", i, j);
+        if (std::fabs(p.x) > 1e150 || std::fabs(p.y) > 1e150 || std::fabs(p.z) > 1e150)
+            fail(s, ErrorCode::OutOfRange, "coordinate is beyond +-1e150", i, j);
+    }
+    const double size = detail::extent(poly);
+    for (std::size_t j = 0; j < poly.size(); ++j) {
+        const std::size_t next = (j + 1) % poly.size();
+        if (distance(poly[j], poly[next]) <= kDuplicateTolerance * size)
+            fail(s, ErrorCode::DuplicatePoint,
+                 sectionLabel(i) + ": point " + std::to_string(next + 1) + " repeats point " + std::to_string(j + 1),
+                 i, next);
+    }
+    std::vector<Kernel::Point_2> plane;
+    if (!projectOnBestPlane(poly, plane))
+        fail(s, ErrorCode::ZeroAreaSection, sectionLabel(i) + " has zero area: its points are collinear", i);
+    if (!CGAL::is_simple_2(plane.begin(), plane.end(), Kernel()))
+        fail(s, ErrorCode::SelfIntersectingSection, sectionLabel(i) + " crosses itself (not a simple polygon)", i);
+    const double area = std::fabs(CGAL::polygon_area_2(plane.begin(), plane.end(), Kernel()));
+    if (area <= kAreaTolerance * size * size)
+        fail(s, ErrorCode::ZeroAreaSection, sectionLabel(i) + " has (almost) zero area", i);
+}
+
+void checkCounts(const TowStack& s)
+{
+    if (s.sections.empty()) fail(s, ErrorCode::EmptyInput, "no sections", 0);
+    const std::size_t n = s.sections.front().size();
+    for (std::size_t i = 0; i < s.sections.size(); ++i) {
+        const std::size_t ni = s.sections[i].size();
+        if (ni < TowStack::kMinPointsPerSection)
+            fail(s, ErrorCode::TooFewPoints,
+                 sectionLabel(i) + " has " + std::to_string(ni) + " points; at least " +
+                     std::to_string(TowStack::kMinPointsPerSection) + " are needed",
+                 i);
+        if (ni != n)
+            fail(s, ErrorCode::UnequalSectionSize,
+                 sectionLabel(i) + " has " + std::to_string(ni) + " points but section 1 has " + std::to_string(n), i);
+    }
+    if (s.sections.size() < TowStack::kMinSections)
+        fail(s, ErrorCode::TooFewSections,
+             std::to_string(s.sections.size()) + " section(s); a tow needs at least " +
+                 std::to_string(TowStack::kMinSections),
+             s.sections.size() - 1);
+}
+
+void checkAlongTow(const TowStack& s)
+{
+    const std::size_t m = s.sections.size();
+    std::vector<Point3> centroid(m);
+    double size = 0.0;
+    for (std::size_t i = 0; i < m; ++i) {
+        centroid[i] = detail::vertexCentroid(s.sections[i]);
+        size += detail::perimeter(s.sections[i]) / m;
+    }
+    for (std::size_t i = 0; i + 1 < m; ++i) {
+        double chord = 0.0;
+        for (std::size_t j = 0; j < s.sections[i].size(); ++j) chord += distance(s.sections[i][j], s.sections[i + 1][j]);
+        if (chord / s.sections[i].size() <= kDuplicateTolerance * size)
+            fail(s, ErrorCode::DegenerateTow, sectionLabel(i + 2) + " coincides with " + sectionLabel(i + 1), i + 1);
+    }
+    int orientation = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+        const Vector3 along = centroid[std::min(i + 1, m - 1)] - centroid[i == 0 ? 0 : i - 1];
+        const Vector3 area = detail::vectorArea(s.sections[i]);
+        const double d = dot(area, along);
+        if (!(std::fabs(d) > 1e-6 * norm(area) * norm(along)))
+            fail(s, ErrorCode::InconsistentOrientation,
+                 sectionLabel(i) + " lies along the tow instead of across it", i);
+        const int sign = d > 0 ? 1 : -1;
+        if (orientation == 0) orientation = sign;
+        if (sign != orientation)
+            fail(s, ErrorCode::InconsistentOrientation,
+                 sectionLabel(i) + " goes around the tow in the opposite direction to section 1", i);
+    }
+}
+
+}  // namespace
+
+void validateStack(const TowStack& stack)
+{
+    checkCounts(stack);
+    for (std::size_t i = 0; i < stack.sections.size(); ++i) checkSection(stack, i);
+    checkAlongTow(stack);
+}
+
+}  // namespace towgeom

@@ -1,0 +1,15 @@
+// Conversions between towgeom's plain value types and OCCT's.
+#pragma once
+
+#include <gp_Pnt.hxx>
+#include <gp_Vec.hxx>
+
+#include "towgeom/point.hpp"
+
+namespace towgeom::detail {
+
+inline gp_Pnt toOcct(const Point3& p) { return {p.x, p.y, p.z}; }
+inline Point3 fromOcct(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
+inline Vector3 fromOcct(const gp_Vec& v) { return {v.X(), v.Y(), v.Z()}; }
+
+}  // namespace towgeom::detail

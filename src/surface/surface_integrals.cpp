@@ -1,0 +1,170 @@
+// TowSurface integrals: volume, lateral area, section area, faceted volume of the input.
+#include <GeomAdaptor_Surface.hxx>
+#include <math.hxx>
+#include <math_Vector.hxx>
+
+#include <algorithm>
+#include <cmath>
+
+#include "surface/occt_convert.hpp"
+#include "surface/tow_surface_impl.hpp"
+
+namespace towgeom {
+
+using detail::fromOcct;
+
+namespace {
+
+/// Gauss-Legendre rule with 5 points: exact for the degree-8 integrands of a bicubic patch.
+struct GaussRule {
+    static constexpr int kPoints = 5;
+    double x[kPoints];
+    double w[kPoints];
+    GaussRule()
+    {
+        math_Vector p(1, kPoints), q(1, kPoints);
+        math::GaussPoints(kPoints, p);
+        math::GaussWeights(kPoints, q);
+        for (int i = 0; i < kPoints; ++i) {
+            x[i] = p(i + 1);
+            w[i] = q(i + 1);
+        }
+    }
+};
+
+const GaussRule& gauss()
+{
+    static const GaussRule rule;
+    return rule;
+}
+
+std::vector<double> knots(const Geom_BSplineSurface& s, bool alongU)
+{
+    std::vector<double> k;
+    const int n = alongU ? s.NbUKnots() : s.NbVKnots();
+    for (int i = 1; i <= n; ++i) k.push_back(alongU ? s.UKnot(i) : s.VKnot(i));
+    return k;
+}
+
+/// Calls f(u, v, weight) at the Gauss points of every knot span of the surface.
+template <class F>
+void integrate(const Geom_BSplineSurface& s, F&& f)
+{
+    const GaussRule& g = gauss();
+    const std::vector<double> ku = knots(s, true), kv = knots(s, false);
+    for (std::size_t a = 0; a + 1 < ku.size(); ++a) {
+        const double hu = 0.5 * (ku[a + 1] - ku[a]), mu = 0.5 * (ku[a + 1] + ku[a]);
+        for (std::size_t b = 0; b + 1 < kv.size(); ++b) {
+            const double hv = 0.5 * (kv[b + 1] - kv[b]), mv = 0.5 * (kv[b + 1] + kv[b]);
+            for (int i = 0; i < GaussRule::kPoints; ++i)
+                for (int j = 0; j < GaussRule::kPoints; ++j)
+                    f(mu + hu * g.x[i], mv + hv * g.x[j], hu * hv * g.w[i] * g.w[j]);
+        }
+    }
+}
+
+struct SectionIntegral {
+    gp_XYZ vectorArea;  // (1/2) integral of C x C' dv
+    gp_XYZ centroid;    // arc-length centroid of the curve
+};
+
+SectionIntegral sectionIntegral(const GeomAdaptor_Surface& adaptor, const std::vector<double>& kv, double u)
+{
+    const GaussRule& g = gauss();
+    SectionIntegral r{gp_XYZ(0, 0, 0), gp_XYZ(0, 0, 0)};
+    double length = 0.0;
+    for (std::size_t b = 0; b + 1 < kv.size(); ++b) {
+        const double hv = 0.5 * (kv[b + 1] - kv[b]), mv = 0.5 * (kv[b + 1] + kv[b]);
+        for (int j = 0; j < GaussRule::kPoints; ++j) {
+            gp_Pnt p;
+            gp_Vec du, dv;
+            adaptor.D1(u, mv + hv * g.x[j], p, du, dv);
+            const double w = hv * g.w[j];
+            r.vectorArea += 0.5 * w * p.XYZ().Crossed(dv.XYZ());
+            const double dl = w * dv.Magnitude();
+            r.centroid += dl * p.XYZ();
+            length += dl;
+        }
+    }
+    r.centroid /= length;
+    return r;
+}
+
+}  // namespace
+
+double TowSurface::sectionArea(double u) const
+{
+    const ParameterRange r = parameterRange();
+    point(u, 0.0);  // range check
+    GeomAdaptor_Surface adaptor(impl_->surface);
+    return sectionIntegral(adaptor, knots(*impl_->surface, false), std::clamp(u, r.uMin, r.uMax)).vectorArea.Modulus();
+}
+
+double TowSurface::volume() const
+{
+    const Geom_BSplineSurface& s = *impl_->surface;
+    GeomAdaptor_Surface adaptor(impl_->surface);
+    // Divergence theorem with F = (x - ref) / 3; ref near the tow keeps the sum well conditioned.
+    const BoundingBox box = boundingBox();
+    const gp_XYZ ref = 0.5 * (detail::toOcct(box.min).XYZ() + detail::toOcct(box.max).XYZ());
+    double lateral = 0.0;
+    integrate(s, [&](double u, double v, double w) {
+        gp_Pnt p;
+        gp_Vec du, dv;
+        adaptor.D1(u, v, p, du, dv);
+        lateral += w * (p.XYZ() - ref).Dot(du.XYZ().Crossed(dv.XYZ()));
+    });
+    // Ends: dS/du x dS/dv points outwards, so v runs clockwise about the tow's direction and the
+    // vector area of an end curve points backwards along the tow: outward at the first end,
+    // inward at the last.
+    const std::vector<double> kv = knots(s, false);
+    const ParameterRange r = parameterRange();
+    const SectionIntegral first = sectionIntegral(adaptor, kv, r.uMin);
+    const SectionIntegral last = sectionIntegral(adaptor, kv, r.uMax);
+    const double caps = (first.centroid - ref).Dot(first.vectorArea) - (last.centroid - ref).Dot(last.vectorArea);
+    return (lateral + caps) / 3.0;
+}
+
+double TowSurface::area() const
+{
+    GeomAdaptor_Surface adaptor(impl_->surface);
+    double total = 0.0;
+    integrate(*impl_->surface, [&](double u, double v, double w) {
+        gp_Pnt p;
+        gp_Vec du, dv;
+        adaptor.D1(u, v, p, du, dv);
+        total += w * du.Crossed(dv).Magnitude();
+    });
+    return total;
+}
+
+double TowSurface::facetedVolume() const
+{
+    const auto& s = impl_->sections;
+    const std::size_t m = s.size(), n = s.front().size();
+    TriangleMesh mesh;
+    for (const auto& section : s) mesh.vertices.insert(mesh.vertices.end(), section.begin(), section.end());
+    const auto id = [n](std::size_t i, std::size_t j) { return i * n + j % n; };
+    for (std::size_t i = 0; i + 1 < m; ++i)
+        for (std::size_t j = 0; j < n; ++j) {
+            // Same orientation as tessellate(): outward because the sections are in surface order.
+            mesh.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            mesh.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+    for (const std::size_t i : {std::size_t(0), m - 1}) {
+        Point3 c;
+        for (const Point3& p : s[i]) c = c + p;
+        mesh.vertices.push_back((1.0 / n) * c);
+        const std::size_t centre = mesh.vertices.size() - 1;
+        for (std::size_t j = 0; j < n; ++j) {
+            // Each cap edge runs opposite to the lateral triangle that shares it.
+            if (i == 0)
+                mesh.triangles.push_back({centre, id(i, j), id(i, j + 1)});
+            else
+                mesh.triangles.push_back({centre, id(i, j + 1), id(i, j)});
+        }
+    }
+    return enclosedVolume(mesh);
+}
+
+}  // namespace towgeom
