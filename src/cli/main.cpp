@@ -39,8 +39,10 @@ int reportError(const char* command, const std::exception& e)
         std::cerr << " (see towgeom " << command << " --help)\n";
         return kExitInput;
     }
+    const auto* error = dynamic_cast<const Error*>(&e);
+    if (error) std::cerr << " [" << errorCodeName(error->code()) << "]";
     std::cerr << "\n";
-    if (const auto* error = dynamic_cast<const Error*>(&e)) {
+    if (error) {
         switch (error->code()) {
         case ErrorCode::WriteFailed:
         case ErrorCode::Internal: return kExitFailure;
@@ -68,7 +70,13 @@ int main(int argc, char** argv)
         std::cout << "towgeom " << towgeom::versionString() << "\n";
         return kExitOk;
     }
-    if (!std::strcmp(command, "fit")) return runFit(argc, argv, 2);
+    try {
+        if (!std::strcmp(command, "fit")) return runFit(argc, argv, 2);
+    } catch (...) {
+        // Commands report their own errors; this is the last guard against an unknown one.
+        std::cerr << "towgeom " << command << ": internal error (unexpected exception) [internal]\n";
+        return kExitFailure;
+    }
     std::cerr << "towgeom: unknown command '" << command << "' (see towgeom --help)\n";
     return kExitInput;
 }

@@ -74,6 +74,23 @@ KnotVector approximationKnotsOpen(const std::vector<double>& t, int poles)
     return kv;
 }
 
+KnotVector approximationKnotsPeriodic(const std::vector<double>& t, double period, int poles)
+{
+    KnotVector kv;
+    kv.periodic = true;
+    const double n = static_cast<double>(t.size());
+    for (int k = 0; k < poles; ++k) {
+        const double x = k * n / poles;  // fractional data index
+        const std::size_t i = static_cast<std::size_t>(x);
+        const double next = i + 1 < t.size() ? t[i + 1] : t.front() + period;
+        kv.knots.push_back(t[i] + (x - static_cast<double>(i)) * (next - t[i]));
+        kv.mults.push_back(1);
+    }
+    kv.knots.push_back(t.front() + period);
+    kv.mults.push_back(1);
+    return kv;
+}
+
 KnotVector uniformKnotsOpen(int poles, double a, double b)
 {
     KnotVector kv;

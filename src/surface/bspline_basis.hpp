@@ -30,6 +30,9 @@ KnotVector interpolationKnotsPeriodic(const std::vector<double>& params, double 
 /// Clamped open knots for least squares with @p poles poles, placed by averaging the parameters
 /// (Piegl & Tiller, eq. 9.69) so every span holds data.
 KnotVector approximationKnotsOpen(const std::vector<double>& params, int poles);
+/// Periodic knots for least squares with @p poles poles on the period [params[0], params[0] +
+/// period): one knot every params.size() / poles data points, so every span holds data.
+KnotVector approximationKnotsPeriodic(const std::vector<double>& params, double period, int poles);
 /// Clamped open knots with uniform spacing on [a, b].
 KnotVector uniformKnotsOpen(int poles, double a, double b);
 /// Periodic uniform knots on [a, a + period).

@@ -150,7 +150,7 @@ Handle(Geom_BSplineSurface) fitApproximate(const TowSurface::Impl& t, double tol
     for (;;) {
         Handle(Geom_BSplineSurface) s =
             tensorFit(t.sections, t.uParams, t.vParams, approximationKnotsOpen(t.uParams, nu),
-                      uniformKnotsPeriodic(nv, 0.0, 1.0), t.name);
+                      approximationKnotsPeriodic(t.vParams, 1.0, nv), t.name);
         if (parametricDeviation(s, t) <= tolerance) return s;
         if (nu == maxU && nv == maxV) break;
         nu = std::min(maxU, (3 * nu + 1) / 2);

@@ -133,7 +133,7 @@ UV TowSurface::closestParameters(const Point3& p, UV start) const
     GeomAdaptor_Surface adaptor(impl_->surface);
     Extrema_GenLocateExtPS locate(adaptor);
     try {
-        locate.Perform(toOcct(p), start.u, start.v, Standard_True);
+        locate.Perform(toOcct(p), start.u, start.v, Standard_False);
     } catch (const Standard_Failure&) {
         return start;
     }
@@ -197,7 +197,7 @@ Deviation TowSurface::deviation() const
             double d = adaptor.Value(t.uParams[i], t.vParams[j]).Distance(q);
             if (d > negligible) {
                 try {
-                    locate.Perform(q, t.uParams[i], t.vParams[j], Standard_True);
+                    locate.Perform(q, t.uParams[i], t.vParams[j], Standard_False);
                     if (locate.IsDone()) d = std::min(d, std::sqrt(locate.SquareDistance()));
                 } catch (const Standard_Failure&) {
                     // keep the parametric distance, an upper bound

@@ -1,0 +1,73 @@
+#include "synthetic_tows.hpp"
+
+#include <cmath>
+#include <functional>
+
+namespace towgeom::testing {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// Samples sections: frame(i) gives the centre c, and the two in-section axes e1, e2 of section
+/// i; point j sits at c + a cos(t) e1 + b sin(t) e2.
+TowStack sample(const Sampling& s, const std::string& name, double a, double b,
+                const std::function<void(std::size_t, Point3&, Vector3&, Vector3&)>& frame)
+{
+    TowStack stack;
+    stack.name = name;
+    stack.source = name;
+    for (std::size_t i = 0; i < s.sections; ++i) {
+        Point3 c;
+        Vector3 e1, e2;
+        frame(i, c, e1, e2);
+        std::vector<Point3> section;
+        for (std::size_t j = 0; j < s.points; ++j) {
+            const double sign = s.counterClockwise ? 1.0 : -1.0;
+            const double t = s.startAngle + sign * 2.0 * kPi * static_cast<double>(j) / static_cast<double>(s.points);
+            section.push_back(c + (a * std::cos(t)) * e1 + (b * std::sin(t)) * e2);
+        }
+        if (s.repeatClosingPoint) section.push_back(section.front());
+        stack.sections.push_back(section);
+    }
+    return stack;
+}
+
+}  // namespace
+
+TowStack ellipticalTube(double a, double b, double length, const Sampling& s, const std::string& name)
+{
+    return sample(s, name, a, b, [&](std::size_t i, Point3& c, Vector3& e1, Vector3& e2) {
+        c = {length * static_cast<double>(i) / static_cast<double>(s.sections - 1), 0.0, 0.0};
+        e1 = {0, 1, 0};
+        e2 = {0, 0, 1};  // e1 x e2 = +x: counter-clockwise about the tow's direction
+    });
+}
+
+TowStack bentTube(double r, double bendRadius, double sweep, const Sampling& s, const std::string& name)
+{
+    return sample(s, name, r, r, [&](std::size_t i, Point3& c, Vector3& e1, Vector3& e2) {
+        const double phi = sweep * static_cast<double>(i) / static_cast<double>(s.sections - 1);
+        const Vector3 radial{std::cos(phi), std::sin(phi), 0.0};
+        c = bendRadius * radial;
+        // e1 x e2 = z x radial = (-sin, cos, 0): the tangent, so counter-clockwise about it.
+        e1 = {0, 0, 1};
+        e2 = radial;
+    });
+}
+
+TowStack crimpedTow(double a, double b, double length, double amplitude, double wavelength, const Sampling& s,
+                    const std::string& name)
+{
+    return sample(s, name, a, b, [&](std::size_t i, Point3& c, Vector3& e1, Vector3& e2) {
+        const double x = length * static_cast<double>(i) / static_cast<double>(s.sections - 1);
+        const double k = 2.0 * kPi / wavelength;
+        c = {x, 0.0, amplitude * std::cos(k * x)};
+        Vector3 t{1.0, 0.0, -amplitude * k * std::sin(k * x)};
+        t = (1.0 / norm(t)) * t;
+        e1 = {0, 1, 0};     // width across the tow
+        e2 = cross(t, e1);  // thickness, normal to the centre line; e1 x e2 = t
+    });
+}
+
+}  // namespace towgeom::testing

@@ -1,0 +1,33 @@
+// Tows with known geometry for tests and benchmarks: analytic tubes sampled as stacks.
+#pragma once
+
+#include <towgeom/tow_stack.hpp>
+
+#include <cstddef>
+#include <string>
+
+namespace towgeom::testing {
+
+/// How a synthetic tube is sampled.
+struct Sampling {
+    std::size_t sections = 21;      ///< M
+    std::size_t points = 24;        ///< N
+    double startAngle = 0.0;        ///< angle of the first point of every section (radians)
+    bool counterClockwise = true;   ///< direction around the +axis (right-hand rule)
+    bool repeatClosingPoint = false;  ///< append the first point again at the end of each section
+};
+
+/// A straight elliptical tube along +x from x = 0 to x = length, semi-axes a (along y) and b
+/// (along z). Exact volume: pi a b length.
+TowStack ellipticalTube(double a, double b, double length, const Sampling& s = {}, const std::string& name = "tube");
+
+/// A circular tube of radius r bent around the z axis: centre-line radius R, from angle 0 to
+/// sweep (radians). Exact volume (Pappus): pi r^2 R sweep.
+TowStack bentTube(double r, double bendRadius, double sweep, const Sampling& s = {}, const std::string& name = "bent");
+
+/// A crimped elliptical tow along x with centre line z = amplitude cos(2 pi x / wavelength),
+/// sections normal to the centre line (a woven-like tow; no closed-form volume).
+TowStack crimpedTow(double a, double b, double length, double amplitude, double wavelength, const Sampling& s = {},
+                    const std::string& name = "crimped");
+
+}  // namespace towgeom::testing

@@ -1,0 +1,124 @@
+// The towgeom command line: fit's JSON and VTK output, help, usage errors.
+#include <catch2/catch.hpp>
+
+#include <towgeom/towgeom.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <unistd.h>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Run {
+    int status = -1;
+    std::string out, err;
+};
+
+std::string slurp(const fs::path& p)
+{
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+/// Runs the towgeom executable with @p args (a shell-quoted string).
+Run cli(const std::string& args)
+{
+    const fs::path dir = fs::temp_directory_path() / ("towgeom_cli_test_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string command =
+        std::string("'") + TOWGEOM_CLI + "' " + args + " >'" + (dir / "out").string() + "' 2>'" + (dir / "err").string() + "'";
+    const int raw = std::system(command.c_str());
+    Run r;
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = slurp(dir / "out");
+    r.err = slurp(dir / "err");
+    return r;
+}
+
+double jsonNumber(const std::string& json, const std::string& key, std::size_t nth = 0)
+{
+    const std::regex re("\"" + key + "\":(-?[0-9.eE+-]+)");
+    auto it = std::sregex_iterator(json.begin(), json.end(), re);
+    for (std::size_t k = 0; k < nth && it != std::sregex_iterator(); ++k) ++it;
+    REQUIRE(it != std::sregex_iterator());
+    return std::stod((*it)[1].str());
+}
+
+const std::string kTube = std::string(TOWGEOM_EXAMPLE_DATA) + "/straight_tube.stw";
+
+}  // namespace
+
+TEST_CASE("towgeom fit prints the accuracy report and writes VTK", "[cli]")
+{
+    const fs::path out = fs::temp_directory_path() / ("towgeom_fit_out_" + std::to_string(::getpid()));
+    fs::remove_all(out);
+    const Run r = cli("fit '" + kTube + "' --out '" + out.string() + "'");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.out.find("\"name\":\"straight_tube\"") != std::string::npos);
+    CHECK(jsonNumber(r.out, "sections") == 21);
+    CHECK(jsonNumber(r.out, "points") == 24);
+    CHECK(jsonNumber(r.out, "max_deviation") <= 1e-9);
+    const double exact = 3.14159265358979323846;
+    CHECK(std::fabs(jsonNumber(r.out, "volume") / exact - 1) < 5e-4);
+    CHECK(jsonNumber(r.out, "faceted_volume") < 0.99 * exact);
+    CHECK(r.err.find("[1/1] straight_tube") != std::string::npos);  // progress
+
+    const std::string vtk = slurp(out / "straight_tube.vtk");
+    REQUIRE(vtk.rfind("# vtk DataFile Version 3.0\n", 0) == 0);
+    CHECK(vtk.find("DATASET POLYDATA") != std::string::npos);
+    CHECK(vtk.find("POINTS 4392 double") != std::string::npos);  // (3*20+1) x (3*24)
+    CHECK(vtk.find("NORMALS normals double") != std::string::npos);
+    std::size_t leftovers = 0;
+    for (const auto& e : fs::directory_iterator(out)) leftovers += e.path().extension() != ".vtk";
+    CHECK(leftovers == 0);
+    fs::remove_all(out);
+}
+
+TEST_CASE("towgeom fit --mode controlnet and approximate report their deviations", "[cli]")
+{
+    const Run net = cli("fit '" + kTube + "' --mode controlnet --quiet");
+    REQUIRE(net.status == 0);
+    CHECK(net.err.empty());
+    CHECK(jsonNumber(net.out, "max_deviation") > 0.005);
+    const Run approx = cli("fit '" + kTube + "' --mode approximate --tolerance 1e-3 --quiet");
+    REQUIRE(approx.status == 0);
+    CHECK(jsonNumber(approx.out, "max_deviation") <= 1e-3);
+}
+
+TEST_CASE("towgeom help texts teach every subcommand", "[cli]")
+{
+    const Run top = cli("--help");
+    CHECK(top.status == 0);
+    CHECK(top.out.find("fit") != std::string::npos);
+    const Run fit = cli("fit --help");
+    CHECK(fit.status == 0);
+    for (const char* word : {"--mode", "--tolerance", "--out", "Exit status", "Example"})
+        CHECK(fit.out.find(word) != std::string::npos);
+    CHECK(cli("--version").out.find(TOWGEOM_VERSION_STRING) != std::string::npos);
+}
+
+TEST_CASE("usage errors exit 2 with one line on stderr", "[cli]")
+{
+    for (const std::string& args : std::vector<std::string>{"fit", "fit --bogus x.stw", "frobnicate", "fit '" + kTube + "' --mode fancy",
+                                   "fit '" + kTube + "' --tolerance 1e-3", "fit '" + kTube + "' --mode approximate --tolerance -1",
+                                   "fit '" + kTube + "' '" + kTube + "'"}) {
+        DYNAMIC_SECTION(args)
+        {
+            const Run r = cli(args);
+            CHECK(r.status == 2);
+            CHECK(r.out.empty());
+            CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+        }
+    }
+}

@@ -1,0 +1,144 @@
+// The .stw reader and the stack rules: valid variants parse, every malformed case is refused
+// with the right code and line.
+#include <catch2/catch.hpp>
+
+#include <towgeom/towgeom.hpp>
+
+#include <fstream>
+#include <sstream>
+
+#include "synthetic_tows.hpp"
+
+using namespace towgeom;
+
+namespace {
+
+TowStack parse(const std::string& text, const std::string& name = "t")
+{
+    std::istringstream in(text);
+    return readStack(in, "mem.stw", name);
+}
+
+/// Six points of a hexagon at x, as text lines, with a separator between numbers.
+std::string hexagon(double x, const char* sep = " ", bool closing = false)
+{
+    std::ostringstream s;
+    s.precision(17);
+    const double c = 0.8660254037844386;
+    const double pts[6][2] = {{1, 0}, {0.5, c}, {-0.5, c}, {-1, 0}, {-0.5, -c}, {0.5, -c}};
+    for (const auto& p : pts) s << x << sep << p[0] << sep << p[1] << "\n";
+    if (closing) s << x << sep << 1 << sep << 0 << "\n";
+    return s.str();
+}
+
+struct Case {
+    std::string file, code;
+    std::size_t line;
+};
+
+std::vector<Case> malformedCases()
+{
+    std::ifstream in(std::string(TOWGEOM_TEST_DATA) + "/malformed/cases.txt");
+    std::vector<Case> cases;
+    Case c;
+    while (in >> c.file >> c.code >> c.line) cases.push_back(c);
+    return cases;
+}
+
+}  // namespace
+
+TEST_CASE("a stack with comments, a name, commas and CRLF line ends parses", "[reader]")
+{
+    std::string text = "# exported by a test\r\ntow warp_7 # trailing comment\r\n";
+    for (int i = 0; i < 4; ++i) {
+        if (i) text += "\r\n\r\n";
+        text += hexagon(i, i % 2 ? ", " : "\t");
+    }
+    const TowStack s = parse(text);
+    CHECK(s.name == "warp_7");
+    CHECK(s.sectionCount() == 4);
+    CHECK(s.pointsPerSection() == 6);
+    CHECK(s.sections[2][1].x == 2.0);
+    CHECK(s.sections[2][1].y == Approx(0.5));
+    CHECK(s.lineOf(0, 0) == 3);
+    CHECK(s.lineOf(1, 0) == 11);  // 3 + 6 points + 2 blank lines
+}
+
+TEST_CASE("a repeated closing point is dropped and the file stem names the tow", "[reader]")
+{
+    std::string text;
+    for (int i = 0; i < 5; ++i) text += (i ? "\n" : "") + hexagon(0.5 * i, " ", true);
+    REQUIRE(text.rfind("0 1 0\n", 0) == 0);
+    text.replace(0, 5, "+0 +1 0");  // a leading '+' is accepted
+    const TowStack s = parse(text, "from_stem");
+    CHECK(s.name == "from_stem");
+    CHECK(s.pointsPerSection() == 6);
+    CHECK(s.sectionCount() == 5);
+}
+
+TEST_CASE("comment lines inside a section do not split it; blank lines do", "[reader]")
+{
+    std::string text;
+    for (int i = 0; i < 4; ++i) text += (i ? "\n\n\n" : "") + std::string("# section\n") + hexagon(i);
+    text.insert(text.find("-0.5 0.866"), "# between points\n");
+    const TowStack s = parse(text);
+    CHECK(s.sectionCount() == 4);
+    CHECK(s.pointsPerSection() == 6);
+}
+
+TEST_CASE("writeStack round-trips exactly", "[reader]")
+{
+    testing::Sampling sampling;
+    sampling.sections = 7;
+    sampling.points = 9;
+    sampling.startAngle = 0.3;
+    const TowStack original = testing::ellipticalTube(0.7, 0.2, 3.0, sampling, "round_trip");
+    std::stringstream io;
+    writeStack(io, original);
+    const TowStack back = readStack(io, "mem", "other");
+    REQUIRE(back.name == "round_trip");
+    REQUIRE(back.sectionCount() == original.sectionCount());
+    for (std::size_t i = 0; i < back.sectionCount(); ++i)
+        for (std::size_t j = 0; j < back.pointsPerSection(); ++j) {
+            CHECK(back.sections[i][j].x == original.sections[i][j].x);
+            CHECK(back.sections[i][j].y == original.sections[i][j].y);
+            CHECK(back.sections[i][j].z == original.sections[i][j].z);
+        }
+}
+
+TEST_CASE("every malformed input is refused with its code and line", "[reader][malformed]")
+{
+    const std::vector<Case> cases = malformedCases();
+    REQUIRE(cases.size() >= 20);
+    for (const Case& c : cases) {
+        DYNAMIC_SECTION(c.file)
+        {
+            const std::string path = std::string(TOWGEOM_TEST_DATA) + "/malformed/" + c.file;
+            try {
+                readStackFile(path);
+                FAIL("accepted " << c.file);
+            } catch (const Error& e) {
+                INFO(e.what());
+                CHECK(errorCodeName(e.code()) == c.code);
+                CHECK(e.line() == c.line);
+                CHECK(e.file() == path);
+                CHECK(std::string(e.what()).rfind(path, 0) == 0);
+            }
+        }
+    }
+}
+
+TEST_CASE("an in-memory stack that breaks a rule is refused naming its section", "[reader]")
+{
+    testing::Sampling sampling;
+    TowStack s = testing::ellipticalTube(1.0, 0.5, 2.0, sampling, "mem_tow");
+    s.source.clear();
+    s.sections[3][5].y = std::numeric_limits<double>::quiet_NaN();
+    try {
+        validateStack(s);
+        FAIL("NaN accepted");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::NonFinite);
+        CHECK(std::string(e.what()).find("tow 'mem_tow'") != std::string::npos);
+    }
+}

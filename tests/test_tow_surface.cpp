@@ -1,0 +1,217 @@
+// TowSurface: accuracy of the fits against closed forms, orientation, seam continuity, queries.
+#include <catch2/catch.hpp>
+
+#include <towgeom/towgeom.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "synthetic_tows.hpp"
+
+using namespace towgeom;
+using testing::Sampling;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double relative(double value, double exact) { return std::fabs(value - exact) / std::fabs(exact); }
+
+/// Checks that normals point away from the x axis (for tubes along x) at a grid of (u,v).
+void checkOutwardAboutXAxis(const TowSurface& s)
+{
+    const ParameterRange r = s.parameterRange();
+    for (int i = 0; i <= 10; ++i)
+        for (int j = 0; j < 16; ++j) {
+            const double u = r.uMin + (r.uMax - r.uMin) * i / 10.0, v = r.vMin + r.vPeriod() * j / 16.0;
+            const Point3 p = s.point(u, v);
+            const Vector3 n = s.normal(u, v);
+            const Vector3 radial{0.0, p.y, p.z};
+            REQUIRE(dot(n, radial) > 0.5 * norm(radial));
+            REQUIRE(std::fabs(norm(n) - 1.0) < 1e-12);
+        }
+}
+
+}  // namespace
+
+TEST_CASE("straight circular tube r=0.5 L=4, 21x24: interpolation keeps the volume", "[surface][accuracy]")
+{
+    const double r = 0.5, length = 4.0, exact = kPi * r * r * length;
+    const TowStack stack = testing::ellipticalTube(r, r, length, {21, 24});
+    const TowSurface interp = TowSurface::fit(stack);
+    const TowSurface net = TowSurface::fit(stack, {FitMode::ControlNet});
+    const Deviation dev = interp.deviation();
+
+    WARN("interpolate volume " << interp.volume() << " (" << 100 * (interp.volume() / exact - 1) << " %), faceted "
+                               << interp.facetedVolume() << " (" << 100 * (interp.facetedVolume() / exact - 1)
+                               << " %), controlnet " << net.volume() << " (" << 100 * (net.volume() / exact - 1)
+                               << " %), max deviation " << dev.max);
+    CHECK(relative(interp.volume(), exact) < 5e-4);
+    CHECK(dev.max <= 1e-9);
+    CHECK(dev.rms <= dev.max);
+    // The faceted input is about 1.1 % low, the control-net surface lower still.
+    CHECK(interp.facetedVolume() / exact - 1 == Approx(-0.0114).margin(0.001));
+    CHECK(net.volume() < interp.facetedVolume());
+    // Where a control point sits, the curve is at (P[j-1] + 4 P[j] + P[j+1]) / 6: r (4 + 2 cos 15deg) / 6.
+    CHECK(net.deviation().max == Approx(r * (1 - (4 + 2 * std::cos(kPi / 12)) / 6)).epsilon(0.02));
+    // Section area and surface area against pi r^2 and 2 pi r L.
+    CHECK(relative(interp.sectionArea(0.37), kPi * r * r) < 5e-4);
+    CHECK(relative(interp.area(), 2 * kPi * r * length) < 5e-4);
+    CHECK(interp.mode() == FitMode::Interpolate);
+    CHECK(interp.controlPointCount(true) == 21);
+    CHECK(interp.controlPointCount(false) == 24);
+}
+
+TEST_CASE("control-net fit loses about half a percent at 48 points around", "[surface][accuracy]")
+{
+    const double r = 0.5, length = 4.0, exact = kPi * r * r * length;
+    const TowSurface net = TowSurface::fit(testing::ellipticalTube(r, r, length, {21, 48}), {FitMode::ControlNet});
+    const double loss = 1.0 - net.volume() / exact;
+    WARN("controlnet volume loss at 21x48: " << 100 * loss << " %");
+    CHECK(loss > 0.004);
+    CHECK(loss < 0.007);
+}
+
+TEST_CASE("elliptical tube with its start rotated by 90 degrees, both orientations", "[surface][accuracy]")
+{
+    const double a = 0.6, b = 0.2, length = 3.0, exact = kPi * a * b * length;
+    for (const bool ccw : {true, false}) {
+        DYNAMIC_SECTION((ccw ? "counter-clockwise" : "clockwise") << " input")
+        {
+            Sampling s{21, 24, kPi / 2, ccw};
+            const TowSurface surface = TowSurface::fit(testing::ellipticalTube(a, b, length, s));
+            CHECK(surface.inputReversed() == ccw);
+            CHECK(relative(surface.volume(), exact) < 5e-4);
+            CHECK(surface.volume() > 0.0);
+            CHECK(surface.deviation().max <= 1e-9);
+            checkOutwardAboutXAxis(surface);
+            // The seam runs through the first input point of every section: (0, 0, b) here.
+            const Point3 seam = surface.point(0.5, 0.0);
+            CHECK(std::fabs(seam.y) < 1e-12);
+            CHECK(seam.z == Approx(b).epsilon(1e-12));
+            // C2 across the seam: both sides evaluated on their own knot spans.
+            for (const double u : {0.0, 0.3, 0.71, 1.0}) {
+                const SeamJump j = surface.seamJump(u);
+                CHECK(j.position <= 1e-9);
+                CHECK(j.first <= 1e-9);
+                CHECK(j.second <= 1e-9);
+            }
+        }
+    }
+}
+
+TEST_CASE("bent tube: volume by Pappus, closest points, iso-curves", "[surface][accuracy]")
+{
+    const double r = 0.3, bend = 2.0, sweep = kPi / 2;
+    const TowSurface s = TowSurface::fit(testing::bentTube(r, bend, sweep, {41, 32}));
+    const double exact = kPi * r * r * bend * sweep;
+    CHECK(relative(s.volume(), exact) < 5e-4);
+
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int k = 0; k < 40; ++k) {
+        const double u = 0.05 + 0.9 * unit(rng), v = unit(rng);
+        const Point3 p = s.point(u, v);
+        const Vector3 n = s.normal(u, v);
+        const double offset = 0.05 * r;
+        const Point3 q = p + offset * n;
+        const UV found = s.closestParameters(q);
+        CHECK(distance(s.point(found.u, found.v), p) < 1e-7);
+        const UV local = s.closestParameters(q, {u + 0.01, v - 0.01});
+        CHECK(distance(s.point(local.u, local.v), p) < 1e-7);
+        // Normals point away from the centre line.
+        const double phi = std::atan2(p.y, p.x);
+        const Point3 centre{bend * std::cos(phi), bend * std::sin(phi), 0.0};
+        CHECK(dot(n, p - centre) > 0.9 * r);
+    }
+
+    const Curve3 section = s.isoU(0.5);
+    CHECK(section.closed());
+    CHECK(section.length() == Approx(2 * kPi * r).epsilon(1e-4));
+    const double tol = 1e-4 * r;
+    const std::vector<Point3> poly = section.polyline(tol);
+    CHECK(poly.size() >= 8);
+    CHECK(distance(poly.front(), poly.back()) > 0.0);  // the closing point is not repeated
+    for (const Point3& p : poly) {
+        const double rho = std::hypot(std::hypot(p.x, p.y) - bend, p.z);
+        CHECK(rho == Approx(r).epsilon(1e-4));
+    }
+    const std::vector<Point3> spaced = section.polylineBySpacing(0.1 * r);
+    CHECK(spaced.size() >= static_cast<std::size_t>(2 * kPi * 10));
+    for (std::size_t i = 0; i < spaced.size(); ++i)
+        CHECK(distance(spaced[i], spaced[(i + 1) % spaced.size()]) <= 0.1 * r * 1.001);
+}
+
+TEST_CASE("derivatives agree with finite differences", "[surface]")
+{
+    const TowSurface s = TowSurface::fit(testing::crimpedTow(0.5, 0.12, 4.0, 0.1, 2.0, {60, 32}));
+    const double h = 1e-6;
+    for (const double u : {0.1, 0.5, 0.93})
+        for (const double v : {0.0, 0.25, 0.999}) {
+            const SurfaceSecondDerivatives d = s.secondDerivatives(u, v);
+            const Vector3 du = (1 / (2 * h)) * (s.point(u + h, v) - s.point(u - h, v));
+            const Vector3 dv = (1 / (2 * h)) * (s.point(u, v + h) - s.point(u, v - h));
+            CHECK(distance(du, d.du) < 1e-5 * norm(d.du));
+            CHECK(distance(dv, d.dv) < 1e-5 * norm(d.dv));
+            const SurfaceDerivatives a = s.derivatives(u + h, v), b = s.derivatives(u - h, v);
+            const Vector3 duu = (1 / (2 * h)) * (a.du - b.du);
+            CHECK(distance(duu, d.duu) < 1e-4 * std::max(1.0, norm(d.duu)));
+        }
+    // v wraps: v and v + 1 are the same point.
+    CHECK(distance(s.point(0.4, 0.2), s.point(0.4, 1.2)) < 1e-12);
+    CHECK(distance(s.point(0.4, -0.3), s.point(0.4, 0.7)) < 1e-12);
+}
+
+TEST_CASE("approximation meets its tolerance with fewer control points", "[surface]")
+{
+    const TowStack stack = testing::crimpedTow(0.5, 0.2, 4.0, 0.1, 2.0, {80, 48});
+    const double tolerance = 1e-3;
+    const TowSurface approx = TowSurface::fit(stack, {FitMode::Approximate, tolerance});
+    const TowSurface interp = TowSurface::fit(stack);
+    CHECK(approx.deviation().max <= tolerance);
+    CHECK(approx.deviation().max > 1e-9);  // it really approximated
+    CHECK(approx.controlPointCount(true) * approx.controlPointCount(false) <
+          interp.controlPointCount(true) * interp.controlPointCount(false) / 2);
+    CHECK(relative(approx.volume(), interp.volume()) < 2e-3);
+}
+
+TEST_CASE("tessellation is a tube with outward triangles", "[surface]")
+{
+    const double r = 0.5, length = 4.0;
+    const TowSurface s = TowSurface::fit(testing::ellipticalTube(r, r, length, {21, 24}));
+    const TriangleMesh mesh = s.tessellate(41, 48);
+    CHECK(mesh.vertices.size() == 41 * 48);
+    CHECK(mesh.triangles.size() == 2 * 40 * 48);
+    REQUIRE(mesh.normals.size() == mesh.vertices.size());
+    for (const auto& t : mesh.triangles) {
+        const Point3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+        const Vector3 n = cross(b - a, c - a);
+        const Point3 centroid = (1.0 / 3.0) * (a + b + c);
+        REQUIRE(dot(n, Vector3{0.0, centroid.y, centroid.z}) > 0.0);
+    }
+    // Every vertex lies on the cylinder (the fit's error is far below the chord error here).
+    for (const Point3& p : mesh.vertices) REQUIRE(std::hypot(p.y, p.z) == Approx(r).epsilon(1e-4));
+}
+
+TEST_CASE("invalid queries and options are refused with a typed error", "[surface]")
+{
+    const TowSurface s = TowSurface::fit(testing::ellipticalTube(0.5, 0.5, 4.0, {21, 24}));
+    CHECK_THROWS_AS(s.point(1.5, 0.0), Error);
+    CHECK_THROWS_AS(s.point(std::nan(""), 0.0), Error);
+    CHECK_THROWS_AS(s.tessellate(1, 10), Error);
+    CHECK_THROWS_AS(s.isoU(0.5).polyline(0.0), Error);
+    try {
+        TowSurface::fit(testing::ellipticalTube(0.5, 0.5, 4.0, {21, 24}), {FitMode::Approximate, -1.0});
+        FAIL("negative tolerance accepted");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::InvalidArgument);
+    }
+    const BoundingBox box = s.boundingBox();
+    for (const double v : {0.0, 0.3, 0.6}) {
+        const Point3 p = s.point(0.5, v);
+        CHECK(p.y >= box.min.y);
+        CHECK(p.z <= box.max.z);
+    }
+    CHECK(box.min.x == Approx(0.0).margin(1e-9));
+    CHECK(box.max.x == Approx(4.0).margin(1e-9));
+}
