@@ -16,6 +16,12 @@ struct Point3 {
 /// A vector in 3D; the same layout as Point3, named for readability.
 using Vector3 = Point3;
 
+/// A point in a plane, e.g. in a cross-section's own coordinates.
+struct Point2 {
+    double x = 0.0;  ///< first coordinate
+    double y = 0.0;  ///< second coordinate
+};
+
 /// A point in a surface's parameter space: u along the tow, v around it.
 struct UV {
     double u = 0.0;  ///< parameter along the tow

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "towgeom/point.hpp"
+#include "towgeom/triangle_mesh.hpp"
 
 namespace towgeom {
 
@@ -51,5 +52,11 @@ struct TowStack {
 /// section's size (its bounding-box diagonal); a section has zero area when its area is below
 /// 1e-9 times its size squared.
 void validateStack(const TowStack& stack);
+
+/// The faceted tube of a stack: the quad between points j, j+1 of sections i, i+1 split into
+/// triangles (i,j)(i+1,j)(i+1,j+1) and (i,j)(i+1,j+1)(i,j+1), 2 (M-1) N triangles in that order,
+/// vertices numbered i * N + j. With @p closeEnds, each end is closed by a fan from the mean of
+/// its points (2 extra vertices, 2 N extra triangles), orientation consistent with the sides.
+TriangleMesh facetedTube(const TowStack& stack, bool closeEnds);
 
 }  // namespace towgeom

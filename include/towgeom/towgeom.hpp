@@ -7,13 +7,18 @@
 /// TowSurface::fit(); every failure is a towgeom::Error.
 #pragma once
 
+#include "towgeom/collision.hpp"
+#include "towgeom/cross_section.hpp"
 #include "towgeom/curve3.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/fit_options.hpp"
 #include "towgeom/point.hpp"
 #include "towgeom/stack_reader.hpp"
+#include "towgeom/textile_io.hpp"
 #include "towgeom/tow_stack.hpp"
 #include "towgeom/tow_surface.hpp"
 #include "towgeom/triangle_mesh.hpp"
 #include "towgeom/version.hpp"
 #include "towgeom/vtk_writer.hpp"
+#include "towgeom/weave.hpp"
+#include "towgeom/yarn_path.hpp"

@@ -11,6 +11,9 @@ constexpr int kExitInput = 2;
 /// `towgeom fit FILE.stw... [options]`; argv[first] is the first argument after "fit".
 int runFit(int argc, char** argv, int first);
 
+/// `towgeom generate --weave KIND --out DIR [options]`.
+int runGenerate(int argc, char** argv, int first);
+
 /// Prints one line "towgeom COMMAND: message" on stderr and returns the exit code for @p e.
 int reportError(const char* command, const std::exception& e);
 

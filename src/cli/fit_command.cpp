@@ -7,7 +7,7 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
-#include "cli/json.hpp"
+#include "core/json_writer.hpp"
 #include "export/vtk_format.hpp"
 #include "io/output_files.hpp"
 #include "towgeom/towgeom.hpp"
@@ -147,7 +147,7 @@ int runFit(int argc, char** argv, int first)
             files.commit();
         }
 
-        JsonWriter json(std::cout);
+        detail::JsonWriter json(std::cout);
         json.beginObject().key("tows").beginArray();
         for (const TowSurface& s : surfaces) {
             const Deviation dev = s.deviation();

@@ -16,7 +16,9 @@ towgeom turns the interpenetrating tows of a textile model into exact NURBS surf
 and compatible finite-element meshes.
 
 Commands:
-  fit      fit B-spline surfaces to tow stacks (.stw) and report accuracy and volume
+  fit       fit B-spline surfaces to tow stacks (.stw) and report accuracy and volume
+  generate  generate a woven textile (plain, twill, satin, basket, 3D orthogonal) as tow
+            stacks, with controlled overlap or flattened to just touching
 
 Run 'towgeom COMMAND --help' for a command's options, inputs and outputs.
 
@@ -72,6 +74,7 @@ int main(int argc, char** argv)
     }
     try {
         if (!std::strcmp(command, "fit")) return runFit(argc, argv, 2);
+        if (!std::strcmp(command, "generate")) return runGenerate(argc, argv, 2);
     } catch (...) {
         // Commands report their own errors; this is the last guard against an unknown one.
         std::cerr << "towgeom " << command << ": internal error (unexpected exception) [internal]\n";

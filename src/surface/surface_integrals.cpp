@@ -140,31 +140,10 @@ double TowSurface::area() const
 
 double TowSurface::facetedVolume() const
 {
-    const auto& s = impl_->sections;
-    const std::size_t m = s.size(), n = s.front().size();
-    TriangleMesh mesh;
-    for (const auto& section : s) mesh.vertices.insert(mesh.vertices.end(), section.begin(), section.end());
-    const auto id = [n](std::size_t i, std::size_t j) { return i * n + j % n; };
-    for (std::size_t i = 0; i + 1 < m; ++i)
-        for (std::size_t j = 0; j < n; ++j) {
-            // Same orientation as tessellate(): outward because the sections are in surface order.
-            mesh.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-            mesh.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-        }
-    for (const std::size_t i : {std::size_t(0), m - 1}) {
-        Point3 c;
-        for (const Point3& p : s[i]) c = c + p;
-        mesh.vertices.push_back((1.0 / n) * c);
-        const std::size_t centre = mesh.vertices.size() - 1;
-        for (std::size_t j = 0; j < n; ++j) {
-            // Each cap edge runs opposite to the lateral triangle that shares it.
-            if (i == 0)
-                mesh.triangles.push_back({centre, id(i, j), id(i, j + 1)});
-            else
-                mesh.triangles.push_back({centre, id(i, j + 1), id(i, j)});
-        }
-    }
-    return enclosedVolume(mesh);
+    // The sections are in the surface's order, so the tube's triangles face outwards.
+    TowStack stack;
+    stack.sections = impl_->sections;
+    return enclosedVolume(facetedTube(stack, true));
 }
 
 }  // namespace towgeom

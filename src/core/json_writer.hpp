@@ -1,11 +1,11 @@
-// A minimal streaming JSON writer for the CLI's reports (commas and escaping handled here).
+// A minimal streaming JSON writer for reports (commas and escaping handled here).
 #pragma once
 
 #include <ostream>
 #include <string>
 #include <vector>
 
-namespace towgeom::cli {
+namespace towgeom::detail {
 
 class JsonWriter {
 public:
@@ -30,4 +30,4 @@ private:
     bool afterKey_ = false;
 };
 
-}  // namespace towgeom::cli
+}  // namespace towgeom::detail

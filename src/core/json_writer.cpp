@@ -1,9 +1,9 @@
-#include "cli/json.hpp"
+#include "core/json_writer.hpp"
 
 #include <cmath>
 #include <cstdio>
 
-namespace towgeom::cli {
+namespace towgeom::detail {
 
 void JsonWriter::separate()
 {
@@ -107,4 +107,4 @@ JsonWriter& JsonWriter::value(bool b)
     return *this;
 }
 
-}  // namespace towgeom::cli
+}  // namespace towgeom::detail

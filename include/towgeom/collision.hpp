@@ -1,0 +1,58 @@
+/// @file collision.hpp
+/// @brief Collision detection between faceted yarns and the "just touching" collision response.
+#pragma once
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#include "towgeom/tow_stack.hpp"
+#include "towgeom/weave.hpp"
+
+namespace towgeom {
+
+/// How detectCollisions() finds candidate triangle pairs.
+enum class CollisionMethod {
+    Hierarchy,  ///< boxes of yarns, then of triangles (CGAL box intersection), then exact tests
+    BruteForce  ///< every triangle pair of every yarn pair, exact test (a reference)
+};
+
+/// The colliding triangle pairs of two yarns.
+struct YarnCollision {
+    std::size_t yarnA = 0;  ///< index of the first yarn (yarnA < yarnB)
+    std::size_t yarnB = 0;  ///< index of the second yarn
+    /// (triangle of A, triangle of B), sorted; triangle k of a yarn is the k-th triangle of
+    /// facetedTube(stack, false).
+    std::vector<std::pair<std::size_t, std::size_t>> triangles;
+};
+
+/// Everything detectCollisions() found.
+struct CollisionReport {
+    std::vector<YarnCollision> collisions;  ///< yarn pairs with at least one colliding triangle pair, sorted
+    std::size_t yarnPairsTested = 0;        ///< yarn pairs that reached triangle tests
+    std::size_t trianglePairsTested = 0;    ///< exact triangle-triangle tests performed
+    /// Total number of colliding triangle pairs.
+    std::size_t trianglePairCount() const;
+};
+
+/// Finds every pair of intersecting triangles between different yarns (exact predicates).
+CollisionReport detectCollisions(const std::vector<TowStack>& yarns, CollisionMethod method = CollisionMethod::Hierarchy);
+
+/// What flattenToTouching() did at one crossing.
+struct CrossingResponse {
+    std::size_t crossing = 0;   ///< index in Textile::crossings
+    bool collided = false;      ///< whether the yarns collided there before the response
+    double flattening = 1.0;    ///< the factor applied at the crossing (1: untouched)
+    double gap = 0.0;           ///< distance between the two faceted yarns near the crossing after it
+};
+
+/// The collision response of Smith & Chen (2008), sections 4.1-4.3: at every crossing where a
+/// warp and a weft collide, flatten both yarns' sections near it (fully across the other yarn's
+/// width, blending to 1 as cos^2 by half a spacing from the crossing), in steps of 1/16 of the height, until no triangles collide, then bisect the flattening interval
+/// until the gap it can leave is below @p tolerance: the yarns end just touching, neither
+/// interpenetrating nor floating (gap <= tolerance). Modifies the yarns' flattening factors.
+/// @throws towgeom::Error (InvalidArgument) for a non-positive tolerance, (Internal) if no
+///         flattening down to 1/16 separates a crossing (e.g. parallel yarns that overlap).
+std::vector<CrossingResponse> flattenToTouching(Textile& textile, double tolerance);
+
+}  // namespace towgeom

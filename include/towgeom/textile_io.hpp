@@ -1,0 +1,23 @@
+/// @file textile_io.hpp
+/// @brief Writing a generated textile: one `.stw` per yarn plus `textile.json`.
+#pragma once
+
+#include <string>
+
+#include "towgeom/weave.hpp"
+
+namespace towgeom {
+
+/// What writeTextile() writes besides the stacks.
+struct TextileOutput {
+    bool facetedVtk = false;  ///< also NAME.faceted.vtk: the faceted yarn (legacy VTK polydata)
+};
+
+/// Writes DIR/NAME.stw for every yarn (the `.stw` format of stack_reader.hpp) and
+/// DIR/textile.json: {"weave", "parameters":{...}, "yarns":[{"name","role","file","sections",
+/// "points"}], "crossings":[{"warp","weft","x","y","warp_over"}]}, so later tools can use roles.
+/// The directory is created if needed; all files appear only if every one was written.
+/// @throws towgeom::Error (WriteFailed) naming the file that failed.
+void writeTextile(const Textile& textile, const std::string& directory, const TextileOutput& output = {});
+
+}  // namespace towgeom

@@ -1,0 +1,255 @@
+// Collision detection between faceted yarns (CGAL box intersection + exact triangle tests) and
+// the flattening response that leaves colliding yarns just touching.
+#include "towgeom/collision.hpp"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/box_intersection_d.h>
+#include <CGAL/intersections.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "towgeom/error.hpp"
+
+namespace towgeom {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Triangle = Kernel::Triangle_3;
+using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 3, std::size_t, CGAL::Box_intersection_d::ID_EXPLICIT>;
+
+/// A yarn's triangles in CGAL form, with their boxes and the yarn's box.
+struct FacetedYarn {
+    std::vector<Triangle> triangles;
+    std::vector<Box> boxes;
+    CGAL::Bbox_3 bbox;
+};
+
+FacetedYarn facet(const TowStack& stack)
+{
+    const TriangleMesh mesh = facetedTube(stack, false);
+    FacetedYarn y;
+    y.triangles.reserve(mesh.triangles.size());
+    for (const auto& t : mesh.triangles) {
+        const auto p = [&](std::size_t k) {
+            const Point3& q = mesh.vertices[t[k]];
+            return Kernel::Point_3(q.x, q.y, q.z);
+        };
+        y.triangles.emplace_back(p(0), p(1), p(2));
+    }
+    y.boxes.reserve(y.triangles.size());
+    for (std::size_t k = 0; k < y.triangles.size(); ++k) {
+        y.boxes.emplace_back(y.triangles[k].bbox(), k);
+        y.bbox += y.triangles[k].bbox();
+    }
+    return y;
+}
+
+/// The colliding triangle pairs of two yarns, found through their boxes.
+std::vector<std::pair<std::size_t, std::size_t>> collide(FacetedYarn& a, FacetedYarn& b, std::size_t& tested,
+                                                         bool stopAtFirst = false)
+{
+    std::vector<std::pair<std::size_t, std::size_t>> hits;
+    if (!CGAL::do_overlap(a.bbox, b.bbox)) return hits;
+    struct Stop {};
+    try {
+        CGAL::box_intersection_d(a.boxes.begin(), a.boxes.end(), b.boxes.begin(), b.boxes.end(),
+                                 [&](const Box& x, const Box& y) {
+                                     ++tested;
+                                     if (CGAL::do_intersect(a.triangles[x.handle()], b.triangles[y.handle()])) {
+                                         hits.emplace_back(x.handle(), y.handle());
+                                         if (stopAtFirst) throw Stop{};
+                                     }
+                                 });
+    } catch (const Stop&) {
+    }
+    std::sort(hits.begin(), hits.end());
+    return hits;
+}
+
+}  // namespace
+
+std::size_t CollisionReport::trianglePairCount() const
+{
+    std::size_t n = 0;
+    for (const YarnCollision& c : collisions) n += c.triangles.size();
+    return n;
+}
+
+CollisionReport detectCollisions(const std::vector<TowStack>& stacks, CollisionMethod method)
+{
+    std::vector<FacetedYarn> yarns;
+    yarns.reserve(stacks.size());
+    for (const TowStack& s : stacks) yarns.push_back(facet(s));
+    CollisionReport report;
+
+    std::vector<std::pair<std::size_t, std::size_t>> candidates;
+    if (method == CollisionMethod::Hierarchy) {
+        // Broad phase over the yarns' boxes, then boxes of triangles inside each candidate pair.
+        std::vector<Box> boxes;
+        for (std::size_t k = 0; k < yarns.size(); ++k) boxes.emplace_back(yarns[k].bbox, k);
+        CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) {
+            candidates.emplace_back(std::min(a.handle(), b.handle()), std::max(a.handle(), b.handle()));
+        });
+        std::sort(candidates.begin(), candidates.end());
+        for (const auto& [a, b] : candidates) {
+            ++report.yarnPairsTested;
+            auto hits = collide(yarns[a], yarns[b], report.trianglePairsTested);
+            if (!hits.empty()) report.collisions.push_back({a, b, std::move(hits)});
+        }
+        return report;
+    }
+    for (std::size_t a = 0; a < yarns.size(); ++a)
+        for (std::size_t b = a + 1; b < yarns.size(); ++b) {
+            ++report.yarnPairsTested;
+            YarnCollision c{a, b, {}};
+            for (std::size_t i = 0; i < yarns[a].triangles.size(); ++i)
+                for (std::size_t j = 0; j < yarns[b].triangles.size(); ++j) {
+                    ++report.trianglePairsTested;
+                    if (CGAL::do_intersect(yarns[a].triangles[i], yarns[b].triangles[j])) c.triangles.emplace_back(i, j);
+                }
+            if (!c.triangles.empty()) report.collisions.push_back(std::move(c));
+        }
+    return report;
+}
+
+namespace {
+
+/// The sections of a yarn near a crossing, with the weight of the flattening blend.
+struct Window {
+    std::size_t first = 0, last = 0;  // section range [first, last] (with one unweighted neighbour each side)
+    std::vector<double> weight;       // per section in the range
+};
+
+/// Weights 1 within @p flat of the crossing (in plan), tapering as cos^2 to 0 at @p radius.
+Window window(const GeneratedYarn& y, const Point3& at, double flat, double radius)
+{
+    Window w;
+    bool found = false;
+    for (std::size_t k = 0; k < y.stations.size(); ++k) {
+        const Point3 c = y.path.point(y.stations[k]);
+        const double d = std::hypot(c.x - at.x, c.y - at.y);
+        if (d < radius) {
+            if (!found) w.first = k;
+            found = true;
+            w.last = k;
+        }
+    }
+    if (!found) return w;
+    w.first = w.first > 0 ? w.first - 1 : 0;
+    w.last = std::min(w.last + 1, y.stations.size() - 1);
+    for (std::size_t k = w.first; k <= w.last; ++k) {
+        const Point3 c = y.path.point(y.stations[k]);
+        const double d = std::hypot(c.x - at.x, c.y - at.y);
+        const double x = std::clamp((d - flat) / (radius - flat), 0.0, 1.0);
+        const double s = std::cos(0.5 * 3.14159265358979323846 * x);
+        w.weight.push_back(s * s);
+    }
+    return w;
+}
+
+/// The yarn's sections [first, last] as a stack (the yarn's own flattening factors).
+TowStack partial(const GeneratedYarn& y, const Window& w, std::size_t points)
+{
+    GeneratedYarn part = y;
+    part.stations.assign(y.stations.begin() + w.first, y.stations.begin() + w.last + 1);
+    part.flattening.assign(y.flattening.begin() + w.first, y.flattening.begin() + w.last + 1);
+    return part.stack(points);
+}
+
+void applyFlattening(GeneratedYarn& y, const Window& w, double factor)
+{
+    for (std::size_t k = w.first; k <= w.last; ++k) y.flattening[k] = 1.0 - (1.0 - factor) * w.weight[k - w.first];
+}
+
+TowStack shifted(TowStack s, const Vector3& by)
+{
+    for (auto& section : s.sections)
+        for (Point3& p : section) p = p + by;
+    return s;
+}
+
+bool collides(const TowStack& a, const TowStack& b)
+{
+    FacetedYarn fa = facet(a), fb = facet(b);
+    std::size_t tested = 0;
+    return !collide(fa, fb, tested, true).empty();
+}
+
+/// The distance @p a must move along @p direction (unit) to touch @p b, to within @p resolution;
+/// 0 when they already collide; capped at @p limit.
+double gapAlong(const TowStack& a, const TowStack& b, const Vector3& direction, double resolution, double limit)
+{
+    if (collides(a, b)) return 0.0;
+    double lo = 0.0, hi = resolution;
+    while (!collides(shifted(a, hi * direction), b)) {
+        lo = hi;
+        hi *= 2.0;
+        if (hi > limit) return limit;
+    }
+    while (hi - lo > resolution) {
+        const double mid = 0.5 * (lo + hi);
+        (collides(shifted(a, mid * direction), b) ? hi : lo) = mid;
+    }
+    return hi;
+}
+
+}  // namespace
+
+std::vector<CrossingResponse> flattenToTouching(Textile& textile, double tolerance)
+{
+    constexpr double kFlattenStep = 1.0 / 16.0;
+    if (!(tolerance > 0.0)) throw Error(ErrorCode::InvalidArgument, "the flattening tolerance must be positive");
+    const WeaveOptions& o = textile.options;
+    const std::size_t points = o.pointsPerSection;
+    std::vector<CrossingResponse> out;
+    for (std::size_t c = 0; c < textile.crossings.size(); ++c) {
+        const Crossing& x = textile.crossings[c];
+        GeneratedYarn& warp = textile.yarns[x.warp];
+        GeneratedYarn& weft = textile.yarns[x.weft];
+        // Flatten each yarn fully across the other's width, tapering off before the next crossing.
+        const double radius = 0.5 * o.spacing;
+        const Window ww = window(warp, x.position, std::min(0.5 * weft.section.width, 0.8 * radius), radius);
+        const Window wf = window(weft, x.position, std::min(0.5 * warp.section.width, 0.8 * radius), radius);
+        CrossingResponse r;
+        r.crossing = c;
+        if (ww.weight.empty() || wf.weight.empty()) {
+            out.push_back(r);
+            continue;
+        }
+        const auto test = [&](double factor) {
+            applyFlattening(warp, ww, factor);
+            applyFlattening(weft, wf, factor);
+            return collides(partial(warp, ww, points), partial(weft, wf, points));
+        };
+        r.collided = test(1.0);
+        if (r.collided) {
+            // Find a flattening that separates them, then bisect [lo, hi] until the gap it can
+            // leave, (hi - lo) times the sum of the two half-heights, is within the tolerance.
+            // Step down gently: flattened sections widen, and a large step could make them
+            // collide with the other yarn further from the crossing.
+            double hi = 1.0, lo = 1.0 - kFlattenStep;
+            while (test(lo)) {
+                hi = lo;
+                lo -= kFlattenStep;
+                if (lo < kFlattenStep / 2)
+                    throw Error(ErrorCode::Internal, "crossing of " + warp.name + " and " + weft.name +
+                                                         " cannot be separated by flattening");
+            }
+            const double scale = 0.5 * (warp.section.height + weft.section.height);
+            while ((hi - lo) * scale > tolerance) {
+                const double mid = 0.5 * (lo + hi);
+                (test(mid) ? hi : lo) = mid;
+            }
+            test(lo);
+            r.flattening = lo;
+        }
+        const Vector3 down{0.0, 0.0, x.warpOver ? -1.0 : 1.0};
+        r.gap = gapAlong(partial(warp, ww, points), partial(weft, wf, points), down, 0.01 * tolerance, o.height);
+        out.push_back(r);
+    }
+    return out;
+}
+
+}  // namespace towgeom

@@ -1,0 +1,233 @@
+// The weave generator: interlacement patterns, Catmull-Rom yarn paths, sections in the path's frame.
+#include "towgeom/weave.hpp"
+
+#include <cmath>
+#include <numeric>
+#include <string>
+
+#include "towgeom/error.hpp"
+
+namespace towgeom {
+
+namespace {
+
+[[noreturn]] void invalid(const std::string& why) { throw Error(ErrorCode::InvalidArgument, "weave: " + why); }
+
+int wrap(long value, long period) { return static_cast<int>(((value % period) + period) % period); }
+
+/// True when warp i passes over weft j in a 2D weave (any integers: the pattern repeats).
+bool warpOver(const WeaveOptions& o, long i, long j)
+{
+    switch (o.kind) {
+    case WeaveKind::Plain: return wrap(i + j, 2) == 0;
+    case WeaveKind::Twill: return wrap(j - static_cast<long>(o.step) * i, o.floatOver + o.floatUnder) < o.floatOver;
+    case WeaveKind::Satin: return wrap(j - static_cast<long>(o.step) * i, o.floatOver) == 0;
+    case WeaveKind::Basket: return wrap(i / o.floatOver - (i < 0) + j / o.floatOver - (j < 0), 2) == 0;
+    case WeaveKind::Orthogonal: return false;
+    }
+    return false;
+}
+
+/// The section frame (n, b) at a path tangent: n = t x j / |t x j| with j = +z, b = n x t;
+/// where t is (nearly) parallel to j, @p n is carried over from the previous frame instead.
+void frame(const Vector3& tangent, Vector3& n, Vector3& b, bool first)
+{
+    const Vector3 t = (1.0 / norm(tangent)) * tangent;
+    const Vector3 tj = cross(t, Vector3{0.0, 0.0, 1.0});
+    if (norm(tj) > 1e-3) {
+        n = (1.0 / norm(tj)) * tj;
+    } else {
+        // Rotation-minimising transport: project the previous n onto the new normal plane.
+        Vector3 prev = first ? Vector3{0.0, 1.0, 0.0} : n;
+        prev = prev - dot(prev, t) * t;
+        if (norm(prev) < 1e-9) prev = Vector3{1.0, 0.0, 0.0} - t.x * t;
+        n = (1.0 / norm(prev)) * prev;
+    }
+    b = cross(n, t);
+}
+
+GeneratedYarn makeYarn(const std::string& name, YarnRole role, const std::vector<Point3>& points,
+                       const CrossSection& section, std::size_t sections)
+{
+    GeneratedYarn y{name, role, YarnPath::catmullRom(points), section, {}, {}};
+    const double last = y.path.lastParameter();
+    for (std::size_t k = 0; k < sections; ++k) y.stations.push_back(last * static_cast<double>(k) / (sections - 1));
+    y.flattening.assign(sections, 1.0);
+    return y;
+}
+
+std::size_t defaultSections(const WeaveOptions& o, std::size_t intervals)
+{
+    return o.sectionsPerYarn ? o.sectionsPerYarn : 16 * intervals + 1;
+}
+
+void generate2D(const WeaveOptions& o, double c, Textile& t)
+{
+    const double s = o.spacing;
+    const CrossSection section{o.shape, o.width, o.height, 1.0};
+    for (std::size_t i = 0; i < o.warps; ++i) {
+        std::vector<Point3> pts;
+        for (long j = -1; j <= static_cast<long>(o.wefts); ++j)
+            pts.push_back({j * s, i * s, warpOver(o, static_cast<long>(i), j) ? c : -c});
+        t.yarns.push_back(makeYarn("warp_" + std::to_string(i), YarnRole::Warp, pts, section, defaultSections(o, o.wefts + 1)));
+    }
+    for (std::size_t j = 0; j < o.wefts; ++j) {
+        std::vector<Point3> pts;
+        for (long i = -1; i <= static_cast<long>(o.warps); ++i)
+            pts.push_back({j * s, i * s, warpOver(o, i, static_cast<long>(j)) ? -c : c});
+        t.yarns.push_back(makeYarn("weft_" + std::to_string(j), YarnRole::Weft, pts, section, defaultSections(o, o.warps + 1)));
+    }
+    for (std::size_t i = 0; i < o.warps; ++i)
+        for (std::size_t j = 0; j < o.wefts; ++j)
+            t.crossings.push_back({i, o.warps + j, {j * s, i * s, 0.0}, warpOver(o, static_cast<long>(i), static_cast<long>(j))});
+}
+
+/// 3D orthogonal: weft layers at z = 0, 2c, 4c, ...; warp layer k between weft layers k and
+/// k + 1; binders between the warp columns over the top and under the bottom weft layer on a
+/// 2/2 twill path, with half the yarn width and height.
+void generateOrthogonal(const WeaveOptions& o, double c, Textile& t)
+{
+    const double s = o.spacing;
+    const std::size_t layers = o.layers;
+    const CrossSection section{o.shape, o.width, o.height, 1.0};
+    CrossSection binder{o.shape, 0.5 * std::min(o.width, s - o.width > 0 ? s - o.width : o.width), 0.5 * o.height, 1.0};
+    if (binder.height > binder.width) binder.height = binder.width;
+    const double top = 2.0 * c * static_cast<double>(layers), bottom = 0.0;
+    const double binderOffset = c * 0.5 + c;  // centre of a half-height binder resting on the outer weft
+    std::vector<std::size_t> warpIndex, weftIndex;
+    for (std::size_t k = 0; k < layers; ++k)
+        for (std::size_t i = 0; i < o.warps; ++i) {
+            const double z = (2.0 * k + 1.0) * c;
+            std::vector<Point3> pts;
+            for (long j = -1; j <= static_cast<long>(o.wefts); ++j) pts.push_back({j * s, i * s, z});
+            t.yarns.push_back(makeYarn("warp_L" + std::to_string(k) + "_" + std::to_string(i), YarnRole::Warp, pts, section,
+                                       defaultSections(o, o.wefts + 1)));
+        }
+    const std::size_t firstWeft = t.yarns.size();
+    for (std::size_t k = 0; k <= layers; ++k)
+        for (std::size_t j = 0; j < o.wefts; ++j) {
+            const double z = 2.0 * k * c;
+            std::vector<Point3> pts;
+            for (long i = -1; i <= static_cast<long>(o.warps); ++i) pts.push_back({j * s, i * s, z});
+            t.yarns.push_back(makeYarn("weft_L" + std::to_string(k) + "_" + std::to_string(j), YarnRole::Weft, pts, section,
+                                       defaultSections(o, o.warps + 1)));
+        }
+    const std::size_t firstBinder = t.yarns.size();
+    for (std::size_t b = 0; b + 1 < std::max<std::size_t>(o.warps, 2); ++b) {
+        std::vector<Point3> pts;
+        for (long j = -1; j <= static_cast<long>(o.wefts); ++j) {
+            const bool up = wrap(j - static_cast<long>(b), 4) < 2;
+            pts.push_back({j * s, (b + 0.5) * s, up ? top + binderOffset : bottom - binderOffset});
+        }
+        t.yarns.push_back(makeYarn("binder_" + std::to_string(b), YarnRole::Binder, pts, binder,
+                                   defaultSections(o, o.wefts + 1)));
+    }
+    for (std::size_t k = 0; k < layers; ++k)
+        for (std::size_t i = 0; i < o.warps; ++i)
+            for (std::size_t j = 0; j < o.wefts; ++j) {
+                const std::size_t warp = k * o.warps + i;
+                t.crossings.push_back({warp, firstWeft + k * o.wefts + j, {j * s, i * s, 2.0 * k * c + c}, true});
+                t.crossings.push_back({warp, firstWeft + (k + 1) * o.wefts + j, {j * s, i * s, 2.0 * k * c + 3 * c}, false});
+            }
+    for (std::size_t b = firstBinder; b < t.yarns.size(); ++b)
+        for (std::size_t j = 0; j < o.wefts; ++j) {
+            const bool up = wrap(static_cast<long>(j) - static_cast<long>(b - firstBinder), 4) < 2;
+            const std::size_t weft = firstWeft + (up ? layers : 0) * o.wefts + j;
+            t.crossings.push_back({b, weft, {j * s, (b - firstBinder + 0.5) * s, up ? top + c : -c}, up});
+        }
+}
+
+}  // namespace
+
+const char* weaveKindName(WeaveKind kind) noexcept
+{
+    switch (kind) {
+    case WeaveKind::Plain: return "plain";
+    case WeaveKind::Twill: return "twill";
+    case WeaveKind::Satin: return "satin";
+    case WeaveKind::Basket: return "basket";
+    case WeaveKind::Orthogonal: return "orthogonal";
+    }
+    return "unknown";
+}
+
+const char* yarnRoleName(YarnRole role) noexcept
+{
+    switch (role) {
+    case YarnRole::Warp: return "warp";
+    case YarnRole::Weft: return "weft";
+    case YarnRole::Binder: return "binder";
+    }
+    return "unknown";
+}
+
+void WeaveOptions::validate() const
+{
+    const auto positive = [](double x) { return x > 0.0 && std::isfinite(x); };
+    if (warps < 1 || wefts < 1 || warps > 10000 || wefts > 10000) invalid("warps and wefts must be between 1 and 10000");
+    if (!positive(spacing)) invalid("spacing must be positive");
+    if (!positive(width) || !positive(height)) invalid("yarn width and height must be positive");
+    if (!(overlap >= 0.0 && overlap < 1.0)) invalid("overlap must lie in [0, 1)");
+    if (!(crimp >= 0.0 && std::isfinite(crimp))) invalid("crimp must be non-negative");
+    if (sectionsPerYarn != 0 && (sectionsPerYarn < 4 || sectionsPerYarn > 1000000)) invalid("sections per yarn must be >= 4");
+    if (pointsPerSection < 6 || pointsPerSection > 100000) invalid("points per section must be >= 6");
+    switch (kind) {
+    case WeaveKind::Twill:
+        if (floatOver < 1 || floatUnder < 1) invalid("a twill needs n >= 1 and m >= 1 (n/m)");
+        if (step < 1 || step >= floatOver + floatUnder) invalid("the twill step must lie in [1, n + m)");
+        break;
+    case WeaveKind::Satin:
+        if (floatOver < 5 && floatOver != 4) invalid("a satin needs a harness of at least 4");
+        if (step <= 1 || step >= floatOver - 1 || std::gcd(step, floatOver) != 1)
+            invalid("the satin step must be coprime with the harness and lie in (1, harness - 1)");
+        break;
+    case WeaveKind::Basket:
+        if (floatOver < 1) invalid("a basket weave needs a group size >= 1");
+        break;
+    case WeaveKind::Orthogonal:
+        if (layers < 1 || layers > 100) invalid("an orthogonal weave needs 1 to 100 warp layers");
+        break;
+    case WeaveKind::Plain: break;
+    }
+    CrossSection{shape, width, height, 1.0}.sample(pointsPerSection);  // validates shape and count
+}
+
+TowStack GeneratedYarn::stack(std::size_t points) const
+{
+    TowStack s;
+    s.name = name;
+    s.source = name;
+    Vector3 n, b;
+    for (std::size_t k = 0; k < stations.size(); ++k) {
+        const Point3 c = path.point(stations[k]);
+        frame(path.derivative(stations[k]), n, b, k == 0);
+        CrossSection shape = section;
+        shape.flattening = flattening[k];
+        std::vector<Point3> ring;
+        for (const Point2& p : shape.sample(points)) ring.push_back(c + p.x * n + p.y * b);
+        s.sections.push_back(std::move(ring));
+    }
+    return s;
+}
+
+std::vector<TowStack> Textile::stacks() const
+{
+    std::vector<TowStack> out;
+    for (const GeneratedYarn& y : yarns) out.push_back(y.stack(options.pointsPerSection));
+    return out;
+}
+
+Textile generateWeave(const WeaveOptions& options)
+{
+    options.validate();
+    Textile t;
+    t.options = options;
+    const double c = options.crimp > 0.0 ? options.crimp : 0.5 * options.height * (1.0 - options.overlap);
+    if (options.kind == WeaveKind::Orthogonal)
+        generateOrthogonal(options, c, t);
+    else
+        generate2D(options, c, t);
+    return t;
+}
+
+}  // namespace towgeom
