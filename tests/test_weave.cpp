@@ -1,0 +1,205 @@
+// The weave generator: interlacement patterns, collision detection against brute force, CGAL's
+// surface intersection as an independent check of the overlap, flattening to just touching.
+#include <catch2/catch.hpp>
+
+#include <towgeom/towgeom.hpp>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "cgal_reference.hpp"
+
+using namespace towgeom;
+
+namespace {
+
+bool definedOver(const WeaveOptions& o, int i, int j)
+{
+    const auto mod = [](int a, int n) { return ((a % n) + n) % n; };
+    switch (o.kind) {
+    case WeaveKind::Plain: return mod(i + j, 2) == 0;
+    case WeaveKind::Twill: return mod(j - o.step * i, o.floatOver + o.floatUnder) < o.floatOver;
+    case WeaveKind::Satin: return mod(j - o.step * i, o.floatOver) == 0;
+    case WeaveKind::Basket: return mod(i / o.floatOver + j / o.floatOver, 2) == 0;
+    default: return false;
+    }
+}
+
+double seconds(std::chrono::steady_clock::time_point t0)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+WeaveOptions twill22(double overlap)
+{
+    WeaveOptions o;
+    o.kind = WeaveKind::Twill;
+    o.floatOver = 2;
+    o.floatUnder = 2;
+    o.overlap = overlap;
+    return o;
+}
+
+}  // namespace
+
+TEST_CASE("every weave's interlacement matches its definition, in the geometry too", "[weave]")
+{
+    WeaveOptions plain, twill = twill22(0.0), satin, basket;
+    satin.kind = WeaveKind::Satin;
+    satin.floatOver = 5;
+    satin.step = 2;
+    satin.warps = satin.wefts = 5;
+    basket.kind = WeaveKind::Basket;
+    basket.floatOver = 2;
+    for (const WeaveOptions& o : {plain, twill, satin, basket}) {
+        DYNAMIC_SECTION(weaveKindName(o.kind))
+        {
+            const Textile t = generateWeave(o);
+            REQUIRE(t.yarns.size() == o.warps + o.wefts);
+            REQUIRE(t.crossings.size() == o.warps * o.wefts);
+            for (const Crossing& c : t.crossings) {
+                const int i = static_cast<int>(c.warp), j = static_cast<int>(c.weft - o.warps);
+                CHECK(c.warpOver == definedOver(o, i, j));
+                // The warp's centre line is above the weft's exactly where the warp is over.
+                const double tw = static_cast<double>(j + 1), tf = static_cast<double>(i + 1);
+                const double zw = t.yarns[c.warp].path.point(tw).z, zf = t.yarns[c.weft].path.point(tf).z;
+                CHECK((zw > zf) == c.warpOver);
+                CHECK(std::fabs(t.yarns[c.warp].path.point(tw).x - c.position.x) < 1e-12);
+            }
+            if (o.kind == WeaveKind::Satin)  // one over per warp per repeat
+                for (std::size_t i = 0; i < o.warps; ++i) {
+                    int overs = 0;
+                    for (const Crossing& c : t.crossings) overs += c.warp == i && c.warpOver;
+                    CHECK(overs == 1);
+                }
+            for (const TowStack& s : t.stacks()) CHECK_NOTHROW(validateStack(s));
+        }
+    }
+}
+
+TEST_CASE("hierarchical and brute-force collision detection find the same pairs", "[weave][collision]")
+{
+    WeaveOptions o = twill22(0.05);
+    o.sectionsPerYarn = 41;
+    o.pointsPerSection = 12;
+    const std::vector<TowStack> stacks = generateWeave(o).stacks();
+    auto t0 = std::chrono::steady_clock::now();
+    const CollisionReport fast = detectCollisions(stacks, CollisionMethod::Hierarchy);
+    const double fastSeconds = seconds(t0);
+    t0 = std::chrono::steady_clock::now();
+    const CollisionReport brute = detectCollisions(stacks, CollisionMethod::BruteForce);
+    const double bruteSeconds = seconds(t0);
+    WARN("collision detection, 8 yarns of 41 x 12: hierarchy " << fastSeconds << " s (" << fast.trianglePairsTested
+                                                                << " exact tests), brute force " << bruteSeconds << " s ("
+                                                                << brute.trianglePairsTested << " tests)");
+    REQUIRE(fast.collisions.size() == 16);  // every warp-weft crossing, nothing else
+    REQUIRE(fast.collisions.size() == brute.collisions.size());
+    for (std::size_t k = 0; k < fast.collisions.size(); ++k) {
+        CHECK(fast.collisions[k].yarnA == brute.collisions[k].yarnA);
+        CHECK(fast.collisions[k].yarnB == brute.collisions[k].yarnB);
+        CHECK(fast.collisions[k].triangles == brute.collisions[k].triangles);
+    }
+    CHECK(fast.trianglePairsTested * 20 < brute.trianglePairsTested);
+}
+
+TEST_CASE("2/2 twill with overlap 0.08: CGAL finds one closed loop per crossing", "[weave][overlap]")
+{
+    const Textile t = generateWeave(twill22(0.08));
+    const std::vector<TowStack> stacks = t.stacks();
+    std::size_t loops = 0;
+    for (const Crossing& c : t.crossings) {
+        const testing::IntersectionPolylines p =
+            testing::surfaceIntersection(facetedTube(stacks[c.warp], false), facetedTube(stacks[c.weft], false));
+        INFO(t.yarns[c.warp].name << " x " << t.yarns[c.weft].name);
+        CHECK(p.closed == 1);
+        CHECK(p.open == 0);
+        loops += p.closed;
+    }
+    CHECK(loops == 16);
+    // Parallel neighbours do not touch.
+    const testing::IntersectionPolylines side =
+        testing::surfaceIntersection(facetedTube(stacks[0], false), facetedTube(stacks[1], false));
+    CHECK(side.closed + side.open == 0);
+}
+
+TEST_CASE("flattening leaves the yarns just touching", "[weave][flatten]")
+{
+    Textile t = generateWeave(twill22(0.08));
+    REQUIRE(detectCollisions(t.stacks()).collisions.size() == 16);
+    const double tau = 1e-4;
+    const std::vector<CrossingResponse> responses = flattenToTouching(t, tau);
+    REQUIRE(responses.size() == 16);
+    for (const CrossingResponse& r : responses) {
+        CHECK(r.collided);
+        CHECK(r.flattening < 1.0);
+        CHECK(r.flattening > 0.5);
+        CHECK(r.gap > 0.0);
+        CHECK(r.gap <= tau);
+    }
+    CHECK(detectCollisions(t.stacks()).collisions.empty());
+}
+
+TEST_CASE("3D orthogonal weave: layers and binders, all stacks valid", "[weave]")
+{
+    WeaveOptions o;
+    o.kind = WeaveKind::Orthogonal;
+    o.layers = 2;
+    o.warps = 3;
+    o.wefts = 4;
+    o.shape = SectionShape::Ellipse;
+    const Textile t = generateWeave(o);
+    std::size_t binders = 0;
+    for (const GeneratedYarn& y : t.yarns) binders += y.role == YarnRole::Binder;
+    CHECK(binders == 2);
+    CHECK(t.yarns.size() == 2 * 3 + 3 * 4 + 2);
+    for (const TowStack& s : t.stacks()) {
+        INFO(s.name);
+        CHECK_NOTHROW(TowSurface::fit(s));
+    }
+    // Binders reach above the top weft layer and below the bottom one.
+    double zmin = 1e9, zmax = -1e9;
+    for (const Point3& p : t.yarns.back().stack(o.pointsPerSection).sections[8]) {
+        zmin = std::min(zmin, p.z);
+        zmax = std::max(zmax, p.z);
+    }
+    CHECK((zmax > 4 * 0.1 || zmin < -0.1));
+}
+
+TEST_CASE("writeTextile writes readable stacks and textile.json with roles", "[weave][io]")
+{
+    WeaveOptions o = twill22(0.0);
+    o.sectionsPerYarn = 33;
+    const Textile t = generateWeave(o);
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "towgeom_textile_test";
+    std::filesystem::remove_all(dir);
+    writeTextile(t, dir.string());
+    for (const GeneratedYarn& y : t.yarns) {
+        const TowStack s = readStackFile((dir / (y.name + ".stw")).string());
+        CHECK(s.name == y.name);
+        CHECK(s.sectionCount() == 33);
+        CHECK(s.pointsPerSection() == o.pointsPerSection);
+    }
+    std::ifstream in(dir / "textile.json");
+    std::stringstream json;
+    json << in.rdbuf();
+    CHECK(json.str().find("\"weave\":\"twill\"") != std::string::npos);
+    CHECK(json.str().find("\"name\":\"weft_2\",\"role\":\"weft\"") != std::string::npos);
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("invalid weave options are refused", "[weave]")
+{
+    WeaveOptions satin;
+    satin.kind = WeaveKind::Satin;
+    satin.floatOver = 6;
+    satin.step = 2;  // not coprime with 6
+    CHECK_THROWS_AS(generateWeave(satin), Error);
+    WeaveOptions o;
+    o.overlap = 1.5;
+    CHECK_THROWS_AS(generateWeave(o), Error);
+    o = WeaveOptions{};
+    o.pointsPerSection = 31;  // lenticular needs an even count
+    CHECK_THROWS_AS(generateWeave(o), Error);
+}
