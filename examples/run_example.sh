@@ -6,5 +6,6 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$root/cmake/ensure_packages.sh"
 bash "$root/cmake/build.sh" -DTOWGEOM_BUILD_TESTS=OFF -DTOWGEOM_BUILD_BENCHMARKS=OFF
 mkdir -p "$root/out"
-"$root/build/towgeom" fit "$root"/examples/data/*.stw --out "$root/out/fit" | tee "$root/out/fit.json"
+"$root/build/towgeom" fit "$root"/examples/data/straight_tube.stw "$root"/examples/data/twill/*.stw \
+  --out "$root/out/fit" | tee "$root/out/fit.json"
 echo "towgeom: surfaces in out/fit/*.vtk (ParaView), report in out/fit.json" >&2

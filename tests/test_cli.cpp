@@ -122,3 +122,41 @@ TEST_CASE("usage errors exit 2 with one line on stderr", "[cli]")
         }
     }
 }
+
+TEST_CASE("towgeom generate writes a textile and flattens it to just touching", "[cli][weave]")
+{
+    const fs::path out = fs::temp_directory_path() / ("towgeom_generate_" + std::to_string(::getpid()));
+    fs::remove_all(out);
+    const Run r = cli("generate --weave twill --repeat 2/2 --tows 4x4 --overlap 0.08 --flatten 1e-4 --sections 41 "
+                      "--points 16 --faceted --quiet --out '" + out.string() + "'");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.out.find("\"collisions\":{\"yarn_pairs\":0,") != std::string::npos);
+    CHECK(r.out.find("\"collisions_before_flattening\":{\"yarn_pairs\":16,") != std::string::npos);
+    CHECK(jsonNumber(r.out, "flattened_crossings") == 16);
+    CHECK(jsonNumber(r.out, "max_gap") <= 1e-4);
+    CHECK(fs::exists(out / "textile.json"));
+    CHECK(fs::exists(out / "weft_3.faceted.vtk"));
+    CHECK(towgeom::readStackFile((out / "warp_2.stw").string()).sectionCount() == 41);
+    fs::remove_all(out);
+}
+
+TEST_CASE("towgeom generate refuses bad options and writes nothing", "[cli][weave]")
+{
+    const fs::path out = fs::temp_directory_path() / ("towgeom_generate_bad_" + std::to_string(::getpid()));
+    for (const std::string& args :
+         std::vector<std::string>{"--weave velvet", "--weave satin --repeat 6 --step 2", "--weave twill --repeat 2",
+                                  "--weave plain --overlap 1.2", "--weave plain --points 31", "--weave plain --tows 0x4",
+                                  "--weave plain --flatten 0", "--weave plain --repeat 2/2"}) {
+        DYNAMIC_SECTION(args)
+        {
+            fs::remove_all(out);
+            const Run r = cli("generate " + args + " --out '" + out.string() + "'");
+            CHECK(r.status == 2);
+            CHECK(r.out.empty());
+            CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+            CHECK(!fs::exists(out));
+        }
+    }
+    CHECK(cli("generate --help").out.find("--flatten TAU") != std::string::npos);
+}

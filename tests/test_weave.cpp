@@ -158,13 +158,21 @@ TEST_CASE("3D orthogonal weave: layers and binders, all stacks valid", "[weave]"
         INFO(s.name);
         CHECK_NOTHROW(TowSurface::fit(s));
     }
-    // Binders reach above the top weft layer and below the bottom one.
+    // Binders pass over the top weft layer (centre z = 4 * 0.2) and under the bottom one (z = 0).
     double zmin = 1e9, zmax = -1e9;
-    for (const Point3& p : t.yarns.back().stack(o.pointsPerSection).sections[8]) {
-        zmin = std::min(zmin, p.z);
-        zmax = std::max(zmax, p.z);
+    for (const auto& section : t.yarns.back().stack(o.pointsPerSection).sections)
+        for (const Point3& p : section) {
+            zmin = std::min(zmin, p.z);
+            zmax = std::max(zmax, p.z);
+        }
+    CHECK(zmax > 0.8 + 0.1);
+    CHECK(zmin < -0.1);
+    // Without overlap, only layers that touch tangentially meet: binders collide with nothing.
+    const CollisionReport report = detectCollisions(t.stacks());
+    for (const YarnCollision& c : report.collisions) {
+        CHECK(t.yarns[c.yarnA].role != YarnRole::Binder);
+        CHECK(t.yarns[c.yarnB].role != YarnRole::Binder);
     }
-    CHECK((zmax > 4 * 0.1 || zmin < -0.1));
 }
 
 TEST_CASE("writeTextile writes readable stacks and textile.json with roles", "[weave][io]")

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "towgeom/error.hpp"
 
@@ -149,18 +150,13 @@ Window window(const GeneratedYarn& y, const Point3& at, double flat, double radi
     return w;
 }
 
-/// The yarn's sections [first, last] as a stack (the yarn's own flattening factors).
+/// The yarn's sections [first, last] as a stack (with the yarn's current flattening).
 TowStack partial(const GeneratedYarn& y, const Window& w, std::size_t points)
 {
     GeneratedYarn part = y;
     part.stations.assign(y.stations.begin() + w.first, y.stations.begin() + w.last + 1);
     part.flattening.assign(y.flattening.begin() + w.first, y.flattening.begin() + w.last + 1);
     return part.stack(points);
-}
-
-void applyFlattening(GeneratedYarn& y, const Window& w, double factor)
-{
-    for (std::size_t k = w.first; k <= w.last; ++k) y.flattening[k] = 1.0 - (1.0 - factor) * w.weight[k - w.first];
 }
 
 TowStack shifted(TowStack s, const Vector3& by)
@@ -197,57 +193,133 @@ double gapAlong(const TowStack& a, const TowStack& b, const Vector3& direction, 
 
 }  // namespace
 
+namespace {
+
+/// The flattening state of a textile: one factor per crossing; a section's flattening is the
+/// smallest that any crossing whose window holds it asks for (1 - (1 - factor) * weight).
+class Flattening {
+public:
+    explicit Flattening(Textile& t) : t_(t), factor_(t.crossings.size(), 1.0), windows_(t.crossings.size())
+    {
+        const double s = t.options.spacing;
+        for (std::size_t c = 0; c < t.crossings.size(); ++c) {
+            const Crossing& x = t.crossings[c];
+            // Full flattening across the other yarn's width; the taper ends where the next
+            // crossing's full zone begins, so neighbouring crossings share only tapers.
+            const double warpFlat = std::min(0.5 * t.yarns[x.weft].section.width, 0.45 * s);
+            const double weftFlat = std::min(0.5 * t.yarns[x.warp].section.width, 0.45 * s);
+            windows_[c] = {window(t.yarns[x.warp], x.position, warpFlat, s - warpFlat),
+                           window(t.yarns[x.weft], x.position, weftFlat, s - weftFlat)};
+            byYarn_[x.warp].push_back(c);
+            byYarn_[x.weft].push_back(c);
+        }
+    }
+
+    double factor(std::size_t c) const { return factor_[c]; }
+
+    /// Sets crossing @p c's factor and updates the sections of its two yarns.
+    void set(std::size_t c, double f)
+    {
+        factor_[c] = f;
+        refresh(t_.crossings[c].warp);
+        refresh(t_.crossings[c].weft);
+    }
+
+    /// The two yarns of crossing @p c, restricted to its windows, as they are now.
+    std::pair<TowStack, TowStack> local(std::size_t c) const
+    {
+        const Crossing& x = t_.crossings[c];
+        const std::size_t n = t_.options.pointsPerSection;
+        return {partial(t_.yarns[x.warp], windows_[c].first, n), partial(t_.yarns[x.weft], windows_[c].second, n)};
+    }
+
+    bool empty(std::size_t c) const { return windows_[c].first.weight.empty() || windows_[c].second.weight.empty(); }
+
+private:
+    void refresh(std::size_t yarn)
+    {
+        GeneratedYarn& y = t_.yarns[yarn];
+        std::fill(y.flattening.begin(), y.flattening.end(), 1.0);
+        for (const std::size_t c : byYarn_[yarn]) {
+            const Window& w = t_.crossings[c].warp == yarn ? windows_[c].first : windows_[c].second;
+            for (std::size_t k = w.first; k <= w.last && !w.weight.empty(); ++k)
+                y.flattening[k] = std::min(y.flattening[k], 1.0 - (1.0 - factor_[c]) * w.weight[k - w.first]);
+        }
+    }
+
+    Textile& t_;
+    std::vector<double> factor_;
+    std::vector<std::pair<Window, Window>> windows_;
+    std::map<std::size_t, std::vector<std::size_t>> byYarn_;
+};
+
+bool collidesAt(Flattening& state, std::size_t c, double f)
+{
+    state.set(c, f);
+    const auto [a, b] = state.local(c);
+    return collides(a, b);
+}
+
+/// Crossing @p c's factor: the largest (to within the tolerance on the gap it can leave) at
+/// which its two yarns do not collide near it, the other crossings as they are.
+void respond(Flattening& state, std::size_t c, double scale, double tolerance, const std::string& what)
+{
+    constexpr double kStep = 1.0 / 16.0;
+    double hi = 1.0;
+    if (!collidesAt(state, c, hi)) return;
+    // Step down gently: flattened sections widen, so a large step could make them collide with
+    // the other yarn elsewhere.
+    double lo = std::min(state.factor(c), 1.0 - kStep);
+    while (collidesAt(state, c, lo)) {
+        hi = lo;
+        lo -= kStep;
+        if (lo < kStep / 2)
+            throw Error(ErrorCode::Internal, "crossing of " + what + " cannot be separated by flattening");
+    }
+    while ((hi - lo) * scale > tolerance) {
+        const double mid = 0.5 * (lo + hi);
+        (collidesAt(state, c, mid) ? hi : lo) = mid;
+    }
+    state.set(c, lo);
+}
+
+}  // namespace
+
 std::vector<CrossingResponse> flattenToTouching(Textile& textile, double tolerance)
 {
-    constexpr double kFlattenStep = 1.0 / 16.0;
     if (!(tolerance > 0.0)) throw Error(ErrorCode::InvalidArgument, "the flattening tolerance must be positive");
-    const WeaveOptions& o = textile.options;
-    const std::size_t points = o.pointsPerSection;
-    std::vector<CrossingResponse> out;
+    Flattening state(textile);
+    std::vector<CrossingResponse> out(textile.crossings.size());
+    std::vector<double> scale(textile.crossings.size());
     for (std::size_t c = 0; c < textile.crossings.size(); ++c) {
         const Crossing& x = textile.crossings[c];
-        GeneratedYarn& warp = textile.yarns[x.warp];
-        GeneratedYarn& weft = textile.yarns[x.weft];
-        // Flatten each yarn fully across the other's width, tapering off before the next crossing.
-        const double radius = 0.5 * o.spacing;
-        const Window ww = window(warp, x.position, std::min(0.5 * weft.section.width, 0.8 * radius), radius);
-        const Window wf = window(weft, x.position, std::min(0.5 * warp.section.width, 0.8 * radius), radius);
-        CrossingResponse r;
-        r.crossing = c;
-        if (ww.weight.empty() || wf.weight.empty()) {
-            out.push_back(r);
-            continue;
+        out[c].crossing = c;
+        scale[c] = 0.5 * (textile.yarns[x.warp].section.height + textile.yarns[x.weft].section.height);
+        if (!state.empty(c)) {
+            const auto [a, b] = state.local(c);
+            out[c].collided = collides(a, b);
         }
-        const auto test = [&](double factor) {
-            applyFlattening(warp, ww, factor);
-            applyFlattening(weft, wf, factor);
-            return collides(partial(warp, ww, points), partial(weft, wf, points));
-        };
-        r.collided = test(1.0);
-        if (r.collided) {
-            // Find a flattening that separates them, then bisect [lo, hi] until the gap it can
-            // leave, (hi - lo) times the sum of the two half-heights, is within the tolerance.
-            // Step down gently: flattened sections widen, and a large step could make them
-            // collide with the other yarn further from the crossing.
-            double hi = 1.0, lo = 1.0 - kFlattenStep;
-            while (test(lo)) {
-                hi = lo;
-                lo -= kFlattenStep;
-                if (lo < kFlattenStep / 2)
-                    throw Error(ErrorCode::Internal, "crossing of " + warp.name + " and " + weft.name +
-                                                         " cannot be separated by flattening");
-            }
-            const double scale = 0.5 * (warp.section.height + weft.section.height);
-            while ((hi - lo) * scale > tolerance) {
-                const double mid = 0.5 * (lo + hi);
-                (test(mid) ? hi : lo) = mid;
-            }
-            test(lo);
-            r.flattening = lo;
+    }
+    // Neighbouring crossings share the tapers of their windows, so a crossing flattened later
+    // can leave an earlier one floating: relax until every crossing is just touching again.
+    constexpr int kPasses = 4;
+    for (int pass = 0; pass < kPasses; ++pass) {
+        bool changed = false;
+        for (std::size_t c = 0; c < textile.crossings.size(); ++c) {
+            if (!out[c].collided || state.empty(c)) continue;
+            const double before = state.factor(c);
+            const Crossing& x = textile.crossings[c];
+            respond(state, c, scale[c], tolerance, textile.yarns[x.warp].name + " and " + textile.yarns[x.weft].name);
+            changed = changed || std::fabs(state.factor(c) - before) * scale[c] > 0.5 * tolerance;
         }
-        const Vector3 down{0.0, 0.0, x.warpOver ? -1.0 : 1.0};
-        r.gap = gapAlong(partial(warp, ww, points), partial(weft, wf, points), down, 0.01 * tolerance, o.height);
-        out.push_back(r);
+        if (!changed) break;
+    }
+    for (std::size_t c = 0; c < textile.crossings.size(); ++c) {
+        out[c].flattening = state.factor(c);
+        if (state.empty(c)) continue;
+        const auto [a, b] = state.local(c);
+        const Vector3 down{0.0, 0.0, textile.crossings[c].warpOver ? -1.0 : 1.0};
+        out[c].gap = gapAlong(a, b, down, 0.01 * tolerance, textile.options.height);
     }
     return out;
 }

@@ -82,58 +82,65 @@ void generate2D(const WeaveOptions& o, double c, Textile& t)
             t.crossings.push_back({i, o.warps + j, {j * s, i * s, 0.0}, warpOver(o, static_cast<long>(i), static_cast<long>(j))});
 }
 
-/// 3D orthogonal: weft layers at z = 0, 2c, 4c, ...; warp layer k between weft layers k and
-/// k + 1; binders between the warp columns over the top and under the bottom weft layer on a
-/// 2/2 twill path, with half the yarn width and height.
+/// 3D orthogonal: weft layer k at z = 2 k p, warp layer k at (2 k + 1) p, with the layer pitch
+/// p = 2 c (touching without overlap); binders between the warp columns run over the top and
+/// under the bottom weft layer on a 2/2 twill path and go straight through the thickness
+/// between two wefts, with half the yarn height and a width that fits between the warps.
 void generateOrthogonal(const WeaveOptions& o, double c, Textile& t)
 {
-    const double s = o.spacing;
+    const double s = o.spacing, p = 2.0 * c;
     const std::size_t layers = o.layers;
     const CrossSection section{o.shape, o.width, o.height, 1.0};
-    CrossSection binder{o.shape, 0.5 * std::min(o.width, s - o.width > 0 ? s - o.width : o.width), 0.5 * o.height, 1.0};
-    if (binder.height > binder.width) binder.height = binder.width;
-    const double top = 2.0 * c * static_cast<double>(layers), bottom = 0.0;
-    const double binderOffset = c * 0.5 + c;  // centre of a half-height binder resting on the outer weft
-    std::vector<std::size_t> warpIndex, weftIndex;
+    const double gap = s - o.width;
+    CrossSection binder{o.shape, gap > 0.0 ? 0.5 * gap : 0.25 * o.width, 0.5 * o.height, 1.0};
+    binder.height = std::min(binder.height, binder.width);
+    const double top = 2.0 * p * static_cast<double>(layers) + 0.5 * (o.height + binder.height) * (1.0 - o.overlap);
+    const double bottom = -0.5 * (o.height + binder.height) * (1.0 - o.overlap);
     for (std::size_t k = 0; k < layers; ++k)
         for (std::size_t i = 0; i < o.warps; ++i) {
-            const double z = (2.0 * k + 1.0) * c;
             std::vector<Point3> pts;
-            for (long j = -1; j <= static_cast<long>(o.wefts); ++j) pts.push_back({j * s, i * s, z});
+            for (long j = -1; j <= static_cast<long>(o.wefts); ++j) pts.push_back({j * s, i * s, (2.0 * k + 1.0) * p});
             t.yarns.push_back(makeYarn("warp_L" + std::to_string(k) + "_" + std::to_string(i), YarnRole::Warp, pts, section,
                                        defaultSections(o, o.wefts + 1)));
         }
     const std::size_t firstWeft = t.yarns.size();
     for (std::size_t k = 0; k <= layers; ++k)
         for (std::size_t j = 0; j < o.wefts; ++j) {
-            const double z = 2.0 * k * c;
             std::vector<Point3> pts;
-            for (long i = -1; i <= static_cast<long>(o.warps); ++i) pts.push_back({j * s, i * s, z});
+            for (long i = -1; i <= static_cast<long>(o.warps); ++i) pts.push_back({j * s, i * s, 2.0 * k * p});
             t.yarns.push_back(makeYarn("weft_L" + std::to_string(k) + "_" + std::to_string(j), YarnRole::Weft, pts, section,
-                                       defaultSections(o, o.warps + 1)));
+                                       defaultSections(o, o.wefts + 1)));
         }
     const std::size_t firstBinder = t.yarns.size();
+    const auto binderUp = [](long j, std::size_t b) { return wrap(j - static_cast<long>(b), 4) < 2; };
     for (std::size_t b = 0; b + 1 < std::max<std::size_t>(o.warps, 2); ++b) {
+        const double y = (b + 0.5) * s;
         std::vector<Point3> pts;
         for (long j = -1; j <= static_cast<long>(o.wefts); ++j) {
-            const bool up = wrap(j - static_cast<long>(b), 4) < 2;
-            pts.push_back({j * s, (b + 0.5) * s, up ? top + binderOffset : bottom - binderOffset});
+            const double z = binderUp(j, b) ? top : bottom;
+            pts.push_back({j * s, y, z});
+            if (j < static_cast<long>(o.wefts) && binderUp(j + 1, b) != binderUp(j, b)) {
+                // Straight through the thickness, halfway between wefts j and j + 1.
+                pts.push_back({(j + 0.5) * s, y, z});
+                pts.push_back({(j + 0.5) * s, y, binderUp(j + 1, b) ? top : bottom});
+            }
         }
         t.yarns.push_back(makeYarn("binder_" + std::to_string(b), YarnRole::Binder, pts, binder,
-                                   defaultSections(o, o.wefts + 1)));
+                                   defaultSections(o, 2 * (o.wefts + 1))));
     }
     for (std::size_t k = 0; k < layers; ++k)
         for (std::size_t i = 0; i < o.warps; ++i)
             for (std::size_t j = 0; j < o.wefts; ++j) {
                 const std::size_t warp = k * o.warps + i;
-                t.crossings.push_back({warp, firstWeft + k * o.wefts + j, {j * s, i * s, 2.0 * k * c + c}, true});
-                t.crossings.push_back({warp, firstWeft + (k + 1) * o.wefts + j, {j * s, i * s, 2.0 * k * c + 3 * c}, false});
+                const double z = (2.0 * k + 1.0) * p;
+                t.crossings.push_back({warp, firstWeft + k * o.wefts + j, {j * s, i * s, z - 0.5 * p}, true});
+                t.crossings.push_back({warp, firstWeft + (k + 1) * o.wefts + j, {j * s, i * s, z + 0.5 * p}, false});
             }
     for (std::size_t b = firstBinder; b < t.yarns.size(); ++b)
         for (std::size_t j = 0; j < o.wefts; ++j) {
-            const bool up = wrap(static_cast<long>(j) - static_cast<long>(b - firstBinder), 4) < 2;
+            const bool up = binderUp(static_cast<long>(j), b - firstBinder);
             const std::size_t weft = firstWeft + (up ? layers : 0) * o.wefts + j;
-            t.crossings.push_back({b, weft, {j * s, (b - firstBinder + 0.5) * s, up ? top + c : -c}, up});
+            t.crossings.push_back({b, weft, {j * s, (b - firstBinder + 0.5) * s, up ? top : bottom}, up});
         }
 }
 
