@@ -211,3 +211,24 @@ TEST_CASE("invalid weave options are refused", "[weave]")
     o.pointsPerSection = 31;  // lenticular needs an even count
     CHECK_THROWS_AS(generateWeave(o), Error);
 }
+
+TEST_CASE("a yarn's section may vary along it", "[weave][section]")
+{
+    WeaveOptions o;
+    o.shape = SectionShape::Ellipse;
+    Textile t = generateWeave(o);
+    GeneratedYarn& y = t.yarns.front();
+    const std::size_t m = y.sections.size();
+    for (std::size_t k = 0; k < m; ++k) {
+        const double s = 1.0 - 0.5 * static_cast<double>(k) / static_cast<double>(m - 1);  // taper to half size
+        y.sections[k].width = o.width * s;
+        y.sections[k].height = o.height * s;
+    }
+    const TowSurface tow = TowSurface::fit(y.stack(o.pointsPerSection));
+    const double full = 3.14159265358979323846 * o.width * o.height / 4;
+    // Ends of a crimped yarn are straight here (one spacing beyond the last crossing).
+    CHECK(tow.sectionArea(0.0) == Approx(full).epsilon(2e-3));
+    CHECK(tow.sectionArea(1.0) == Approx(full / 4).epsilon(2e-3));
+    y.sections.pop_back();
+    CHECK_THROWS_AS(y.stack(o.pointsPerSection), Error);
+}

@@ -50,7 +50,9 @@ struct CrossingResponse {
 /// warp and a weft collide, flatten both yarns' sections near it (fully across the other yarn's
 /// width, blending to 1 as cos^2 by half a spacing from the crossing), in steps of 1/16 of the height, until no triangles collide, then bisect the flattening interval
 /// until the gap it can leave is below @p tolerance: the yarns end just touching, neither
-/// interpenetrating nor floating (gap <= tolerance). Modifies the yarns' flattening factors.
+/// interpenetrating nor floating (gap <= tolerance). Sets the flattening of every section of
+/// the yarns involved (replacing what it was); a section in reach of two crossings takes the
+/// stronger flattening, and passes over all crossings repeat (at most 4) until none changes.
 /// @throws towgeom::Error (InvalidArgument) for a non-positive tolerance, (Internal) if no
 ///         flattening down to 1/16 separates a crossing (e.g. parallel yarns that overlap).
 std::vector<CrossingResponse> flattenToTouching(Textile& textile, double tolerance);

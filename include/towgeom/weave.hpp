@@ -71,18 +71,21 @@ struct Crossing {
     bool warpOver = false;  ///< true when the warp is above the weft here
 };
 
-/// One generated yarn: its centre line and sections.
+/// One generated yarn: its centre line and its sections along it. Every section has its own
+/// CrossSection, so shape, size and flattening may vary along the yarn.
 struct GeneratedYarn {
-    std::string name;                 ///< e.g. "warp_0", "weft_3", "binder_1"
-    YarnRole role = YarnRole::Warp;   ///< warp, weft or binder
-    YarnPath path;                    ///< the centre line
-    CrossSection section;             ///< nominal section (flattening 1)
-    std::vector<double> stations;     ///< path parameters of the sections, increasing
-    std::vector<double> flattening;   ///< per section: the flattening factor (1: nominal)
+    std::string name;                    ///< e.g. "warp_0", "weft_3", "binder_1"
+    YarnRole role = YarnRole::Warp;      ///< warp, weft or binder
+    YarnPath path;                       ///< the centre line
+    std::vector<double> stations;        ///< path parameters of the sections, increasing
+    std::vector<CrossSection> sections;  ///< one per station
 
-    /// The yarn as a stack: section k is section.sample(points) with flattening[k], placed in
-    /// the frame of the path at stations[k] (see generateWeave() for the frame).
+    /// The yarn as a stack: section k is sections[k].sample(points) placed in the frame of the
+    /// path at stations[k] (see generateWeave() for the frame).
+    /// @throws towgeom::Error (InvalidArgument) if stations and sections differ in number.
     TowStack stack(std::size_t points) const;
+    /// The index of the section whose centre is nearest to @p p in plan (x, y).
+    std::size_t nearestSection(const Point3& p) const;
 };
 
 /// A generated textile: yarns, their crossings, and the options that made it.

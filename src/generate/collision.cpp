@@ -150,12 +150,14 @@ Window window(const GeneratedYarn& y, const Point3& at, double flat, double radi
     return w;
 }
 
+const CrossSection& sectionAt(const GeneratedYarn& y, const Point3& p) { return y.sections[y.nearestSection(p)]; }
+
 /// The yarn's sections [first, last] as a stack (with the yarn's current flattening).
 TowStack partial(const GeneratedYarn& y, const Window& w, std::size_t points)
 {
     GeneratedYarn part = y;
     part.stations.assign(y.stations.begin() + w.first, y.stations.begin() + w.last + 1);
-    part.flattening.assign(y.flattening.begin() + w.first, y.flattening.begin() + w.last + 1);
+    part.sections.assign(y.sections.begin() + w.first, y.sections.begin() + w.last + 1);
     return part.stack(points);
 }
 
@@ -206,8 +208,8 @@ public:
             const Crossing& x = t.crossings[c];
             // Full flattening across the other yarn's width; the taper ends where the next
             // crossing's full zone begins, so neighbouring crossings share only tapers.
-            const double warpFlat = std::min(0.5 * t.yarns[x.weft].section.width, 0.45 * s);
-            const double weftFlat = std::min(0.5 * t.yarns[x.warp].section.width, 0.45 * s);
+            const double warpFlat = std::min(0.5 * sectionAt(t.yarns[x.weft], x.position).width, 0.45 * s);
+            const double weftFlat = std::min(0.5 * sectionAt(t.yarns[x.warp], x.position).width, 0.45 * s);
             windows_[c] = {window(t.yarns[x.warp], x.position, warpFlat, s - warpFlat),
                            window(t.yarns[x.weft], x.position, weftFlat, s - weftFlat)};
             byYarn_[x.warp].push_back(c);
@@ -239,11 +241,13 @@ private:
     void refresh(std::size_t yarn)
     {
         GeneratedYarn& y = t_.yarns[yarn];
-        std::fill(y.flattening.begin(), y.flattening.end(), 1.0);
+        for (CrossSection& section : y.sections) section.flattening = 1.0;
         for (const std::size_t c : byYarn_[yarn]) {
             const Window& w = t_.crossings[c].warp == yarn ? windows_[c].first : windows_[c].second;
-            for (std::size_t k = w.first; k <= w.last && !w.weight.empty(); ++k)
-                y.flattening[k] = std::min(y.flattening[k], 1.0 - (1.0 - factor_[c]) * w.weight[k - w.first]);
+            for (std::size_t k = w.first; k <= w.last && !w.weight.empty(); ++k) {
+                double& f = y.sections[k].flattening;
+                f = std::min(f, 1.0 - (1.0 - factor_[c]) * w.weight[k - w.first]);
+            }
         }
     }
 
@@ -294,7 +298,8 @@ std::vector<CrossingResponse> flattenToTouching(Textile& textile, double toleran
     for (std::size_t c = 0; c < textile.crossings.size(); ++c) {
         const Crossing& x = textile.crossings[c];
         out[c].crossing = c;
-        scale[c] = 0.5 * (textile.yarns[x.warp].section.height + textile.yarns[x.weft].section.height);
+        scale[c] = 0.5 * (sectionAt(textile.yarns[x.warp], x.position).height +
+                          sectionAt(textile.yarns[x.weft], x.position).height);
         if (!state.empty(c)) {
             const auto [a, b] = state.local(c);
             out[c].collided = collides(a, b);

@@ -49,10 +49,10 @@ void frame(const Vector3& tangent, Vector3& n, Vector3& b, bool first)
 GeneratedYarn makeYarn(const std::string& name, YarnRole role, const std::vector<Point3>& points,
                        const CrossSection& section, std::size_t sections)
 {
-    GeneratedYarn y{name, role, YarnPath::catmullRom(points), section, {}, {}};
+    GeneratedYarn y{name, role, YarnPath::catmullRom(points), {}, {}};
     const double last = y.path.lastParameter();
     for (std::size_t k = 0; k < sections; ++k) y.stations.push_back(last * static_cast<double>(k) / (sections - 1));
-    y.flattening.assign(sections, 1.0);
+    y.sections.assign(sections, section);
     return y;
 }
 
@@ -201,6 +201,8 @@ void WeaveOptions::validate() const
 
 TowStack GeneratedYarn::stack(std::size_t points) const
 {
+    if (stations.size() != sections.size())
+        throw Error(ErrorCode::InvalidArgument, "yarn " + name + ": one section per station is needed");
     TowStack s;
     s.name = name;
     s.source = name;
@@ -208,13 +210,26 @@ TowStack GeneratedYarn::stack(std::size_t points) const
     for (std::size_t k = 0; k < stations.size(); ++k) {
         const Point3 c = path.point(stations[k]);
         frame(path.derivative(stations[k]), n, b, k == 0);
-        CrossSection shape = section;
-        shape.flattening = flattening[k];
         std::vector<Point3> ring;
-        for (const Point2& p : shape.sample(points)) ring.push_back(c + p.x * n + p.y * b);
+        for (const Point2& p : sections[k].sample(points)) ring.push_back(c + p.x * n + p.y * b);
         s.sections.push_back(std::move(ring));
     }
     return s;
+}
+
+std::size_t GeneratedYarn::nearestSection(const Point3& p) const
+{
+    std::size_t best = 0;
+    double bestDistance = 1e300;
+    for (std::size_t k = 0; k < stations.size(); ++k) {
+        const Point3 c = path.point(stations[k]);
+        const double d = std::hypot(c.x - p.x, c.y - p.y);
+        if (d < bestDistance) {
+            bestDistance = d;
+            best = k;
+        }
+    }
+    return best;
 }
 
 std::vector<TowStack> Textile::stacks() const
