@@ -99,7 +99,9 @@ struct Textile {
 };
 
 /// Generates a textile. Warps run along +x at y = i * spacing, wefts along +y at
-/// x = j * spacing, each through its interlacement points (z = +-crimp) as a Catmull-Rom path.
+/// x = j * spacing, each through its interlacement points (z = +-crimp) as a Catmull-Rom path
+/// (binders of the orthogonal weave: a cardinal path with tension 0.5, which does not overshoot
+/// where it turns into the thickness).
 ///
 /// Sections sit in the frame t = r'/|r'|, n = (t x j)/|t x j|, b = n x t with the reference
 /// vector j = +z: x of the section along n (horizontal, across the yarn), y along b (up). Where

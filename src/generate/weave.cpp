@@ -47,9 +47,9 @@ void frame(const Vector3& tangent, Vector3& n, Vector3& b, bool first)
 }
 
 GeneratedYarn makeYarn(const std::string& name, YarnRole role, const std::vector<Point3>& points,
-                       const CrossSection& section, std::size_t sections)
+                       const CrossSection& section, std::size_t sections, double tension = 0.0)
 {
-    GeneratedYarn y{name, role, YarnPath::catmullRom(points), {}, {}};
+    GeneratedYarn y{name, role, YarnPath::cardinal(points, tension), {}, {}};
     const double last = y.path.lastParameter();
     for (std::size_t k = 0; k < sections; ++k) y.stations.push_back(last * static_cast<double>(k) / (sections - 1));
     y.sections.assign(sections, section);
@@ -125,8 +125,9 @@ void generateOrthogonal(const WeaveOptions& o, double c, Textile& t)
                 pts.push_back({(j + 0.5) * s, y, binderUp(j + 1, b) ? top : bottom});
             }
         }
+        // Tension 0.5 keeps the path from overshooting where it turns into the thickness.
         t.yarns.push_back(makeYarn("binder_" + std::to_string(b), YarnRole::Binder, pts, binder,
-                                   defaultSections(o, 2 * (o.wefts + 1))));
+                                   defaultSections(o, 2 * (o.wefts + 1)), 0.5));
     }
     for (std::size_t k = 0; k < layers; ++k)
         for (std::size_t i = 0; i < o.warps; ++i)
