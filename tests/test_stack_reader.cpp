@@ -4,6 +4,7 @@
 
 #include <towgeom/towgeom.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -64,6 +65,22 @@ TEST_CASE("a stack with comments, a name, commas and CRLF line ends parses", "[r
     CHECK(s.lineOf(1, 0) == 11);  // 3 + 6 points + 2 blank lines
 }
 
+TEST_CASE("a UTF-8 byte order mark is skipped and old Mac line ends are refused clearly", "[reader]")
+{
+    std::string text = "\xEF\xBB\xBF# with BOM\n";
+    for (int i = 0; i < 4; ++i) text += (i ? "\n" : "") + hexagon(i);
+    CHECK(parse(text).sectionCount() == 4);
+    std::string mac = text;
+    std::replace(mac.begin(), mac.end(), '\n', '\r');
+    try {
+        parse(mac);
+        FAIL("accepted CR-only line ends");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::BinaryData);
+        CHECK(std::string(e.what()).find("carriage return") != std::string::npos);
+    }
+}
+
 TEST_CASE("a repeated closing point is dropped and the file stem names the tow", "[reader]")
 {
     std::string text;
@@ -76,11 +93,11 @@ TEST_CASE("a repeated closing point is dropped and the file stem names the tow",
     CHECK(s.sectionCount() == 5);
 }
 
-TEST_CASE("comment lines inside a section do not split it; blank lines do", "[reader]")
+TEST_CASE("comment lines inside a section do not split it but blank lines do", "[reader]")
 {
     std::string text;
     for (int i = 0; i < 4; ++i) text += (i ? "\n\n\n" : "") + std::string("# section\n") + hexagon(i);
-    text.insert(text.find("-0.5 0.866"), "# between points\n");
+    text.insert(text.rfind('\n', text.find("-0.5 0.866")) + 1, "# between points\n");
     const TowStack s = parse(text);
     CHECK(s.sectionCount() == 4);
     CHECK(s.pointsPerSection() == 6);

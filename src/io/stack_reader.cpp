@@ -56,8 +56,12 @@ public:
     void line(std::string& text, std::size_t number)
     {
         if (!text.empty() && text.back() == '\r') text.pop_back();
+        if (number == 1 && text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte order mark
         for (char c : text) {
             const auto u = static_cast<unsigned char>(c);
+            if (c == '\r')
+                fail(ErrorCode::BinaryData, "carriage return inside a line: save the file with \\n or \\r\\n line ends",
+                     number);
             if ((u < 0x20 && c != '\t') || u == 0x7f)
                 fail(ErrorCode::BinaryData, "binary data (byte 0x" + hex(u) + "): not a text stack file",
                      number);
