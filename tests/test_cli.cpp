@@ -96,6 +96,18 @@ TEST_CASE("towgeom fit --mode controlnet and approximate report their deviations
     CHECK(jsonNumber(approx.out, "max_deviation") <= 1e-3);
 }
 
+TEST_CASE("an output directory that cannot be made exits 1 and leaves nothing", "[cli]")
+{
+    const fs::path blocker = fs::temp_directory_path() / ("towgeom_not_a_dir_" + std::to_string(::getpid()));
+    { std::ofstream(blocker) << "a file where the output directory should go\n"; }
+    const Run r = cli("fit '" + kTube + "' --out '" + (blocker / "sub").string() + "'");
+    CHECK(r.status == 1);
+    CHECK(r.out.empty());
+    CHECK(r.err.find("[write_failed]") != std::string::npos);
+    CHECK(r.err.find(blocker.string()) != std::string::npos);
+    fs::remove(blocker);
+}
+
 TEST_CASE("towgeom help texts teach every subcommand", "[cli]")
 {
     const Run top = cli("--help");

@@ -103,6 +103,22 @@ TEST_CASE("comment lines inside a section do not split it but blank lines do", "
     CHECK(s.pointsPerSection() == 6);
 }
 
+TEST_CASE("a coordinate below the smallest double reads as zero and huge scales are accepted", "[reader]")
+{
+    std::string text;
+    for (int i = 0; i < 4; ++i) text += (i ? "\n" : "") + hexagon(i);
+    text.replace(0, 5, "1e-400 1 0");
+    CHECK(parse(text).sections[0][0].x == 0.0);
+    // Scaled by 1e140 and by 1e-140: valid tows, whatever their units.
+    for (const double scale : {1e140, 1e-140}) {
+        testing::Sampling sampling;
+        TowStack s = testing::ellipticalTube(0.5, 0.3, 3.0, sampling, "scaled");
+        for (auto& section : s.sections)
+            for (Point3& p : section) p = scale * p;
+        CHECK_NOTHROW(validateStack(s));
+    }
+}
+
 TEST_CASE("writeStack round-trips exactly", "[reader]")
 {
     testing::Sampling sampling;

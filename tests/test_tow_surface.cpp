@@ -131,7 +131,8 @@ TEST_CASE("bent tube: volume by Pappus, closest points, iso-curves", "[surface][
     const double tol = 1e-4 * r;
     const std::vector<Point3> poly = section.polyline(tol);
     CHECK(poly.size() >= 8);
-    CHECK(distance(poly.front(), poly.back()) > 0.0);  // the closing point is not repeated
+    // The closing point is not repeated: the last point is one chord before the first.
+    CHECK(distance(poly.front(), poly.back()) > 0.5 * 2 * kPi * r / static_cast<double>(poly.size()));
     for (const Point3& p : poly) {
         const double rho = std::hypot(std::hypot(p.x, p.y) - bend, p.z);
         CHECK(rho == Approx(r).epsilon(1e-4));
@@ -140,6 +141,26 @@ TEST_CASE("bent tube: volume by Pappus, closest points, iso-curves", "[surface][
     CHECK(spaced.size() >= static_cast<std::size_t>(2 * kPi * 10));
     for (std::size_t i = 0; i < spaced.size(); ++i)
         CHECK(distance(spaced[i], spaced[(i + 1) % spaced.size()]) <= 0.1 * r * 1.001);
+}
+
+TEST_CASE("a tow bent through 350 degrees, growing along it, keeps outward normals", "[surface][accuracy]")
+{
+    const double r0 = 0.2, r1 = 0.45, bend = 2.0, sweep = 350.0 / 180.0 * kPi;
+    for (const bool ccw : {true, false}) {
+        Sampling sampling{121, 32, 0.0, ccw};
+        const TowSurface s = TowSurface::fit(testing::growingBentTube(r0, r1, bend, sweep, sampling));
+        const double exact = kPi * bend * sweep * (r0 * r0 + r0 * r1 + r1 * r1) / 3;
+        INFO((ccw ? "counter-clockwise" : "clockwise") << " input, volume " << s.volume() << ", exact " << exact);
+        CHECK(s.inputReversed() == ccw);
+        CHECK(relative(s.volume(), exact) < 5e-4);
+        for (const double u : {0.0, 0.25, 0.5, 0.75, 1.0})
+            for (const double v : {0.0, 0.3, 0.6}) {
+                const Point3 p = s.point(u, v);
+                const double phi = std::atan2(p.y, p.x);
+                const Point3 centre{bend * std::cos(phi), bend * std::sin(phi), 0.0};
+                CHECK(dot(s.normal(u, v), p - centre) > 0.9 * distance(p, centre));
+            }
+    }
 }
 
 TEST_CASE("derivatives agree with finite differences", "[surface]")
@@ -207,11 +228,19 @@ TEST_CASE("invalid queries and options are refused with a typed error", "[surfac
         CHECK(e.code() == ErrorCode::InvalidArgument);
     }
     const BoundingBox box = s.boundingBox();
-    for (const double v : {0.0, 0.3, 0.6}) {
-        const Point3 p = s.point(0.5, v);
-        CHECK(p.y >= box.min.y);
-        CHECK(p.z <= box.max.z);
-    }
+    for (const double u : {0.0, 0.5, 1.0})
+        for (const double v : {0.0, 0.3, 0.6, 0.9}) {
+            const Point3 p = s.point(u, v);
+            CHECK(p.x >= box.min.x - 1e-12);
+            CHECK(p.x <= box.max.x + 1e-12);
+            CHECK(p.y >= box.min.y);
+            CHECK(p.y <= box.max.y);
+            CHECK(p.z >= box.min.z);
+            CHECK(p.z <= box.max.z);
+        }
+    // Conservative but not loose: within 5 % of the tube's extent.
+    CHECK(box.max.y == Approx(0.5).epsilon(0.05));
+    CHECK(box.min.z == Approx(-0.5).epsilon(0.05));
     CHECK(box.min.x == Approx(0.0).margin(1e-9));
     CHECK(box.max.x == Approx(4.0).margin(1e-9));
 }

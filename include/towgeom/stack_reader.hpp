@@ -13,7 +13,10 @@
 /// ...
 /// @endcode
 /// Sections are in order along the tow. A closing point that repeats the section's first point
-/// is dropped. Names may use letters, digits and `_ - . +`, and may not start with a dot.
+/// is dropped. Names may use letters, digits and `_ - . +`, may not start with a dot and have at
+/// most 200 characters. Lines have at most 65536 characters; a UTF-8 byte order mark is skipped;
+/// line ends may be `\n` or `\r\n`. Numbers are C locale decimals (`1.5`, `-2e-3`, `+4`); one
+/// below the smallest double (e.g. `1e-400`) reads as its nearest value, 0.
 #pragma once
 
 #include <istream>
@@ -27,8 +30,8 @@ namespace towgeom {
 ///
 /// Streams the file line by line (memory grows with the number of points, not the file's size).
 /// @throws towgeom::Error naming the file and line for a missing or unreadable file, an empty
-///         file, binary data, a non-numeric token, a line with other than 3 coordinates, NaN/Inf,
-///         a coordinate beyond 1e150, and every rule of validateStack().
+///         file, binary data, an over-long line, a non-numeric token, a line with other than 3
+///         coordinates, NaN/Inf, a coordinate beyond 1e150, and every rule of validateStack().
 TowStack readStackFile(const std::string& path);
 
 /// Reads and validates a stack from a stream; @p sourceName is used in messages and

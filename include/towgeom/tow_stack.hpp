@@ -46,7 +46,9 @@ struct TowStack {
 /// at least TowStack::kMinSections sections and TowStack::kMinPointsPerSection points each, equal
 /// point counts, finite coordinates of magnitude at most 1e150, no consecutive duplicate points,
 /// no zero-area or self-intersecting section (checked exactly, in the section's best-fit plane),
-/// one orientation for all sections, and no two consecutive sections that coincide.
+/// one orientation for all sections, no two consecutive sections that coincide, and consistent
+/// first points (a section whose points, rotated by k places, match the previous section much
+/// better than unrotated is refused: its first point is elsewhere around the tow).
 ///
 /// A point counts as a duplicate of its neighbour when they are closer than 1e-9 times the
 /// section's size (its bounding-box diagonal); a section has zero area when its area is below

@@ -106,7 +106,8 @@ struct Textile {
 /// Sections sit in the frame t = r'/|r'|, n = (t x j)/|t x j|, b = n x t with the reference
 /// vector j = +z: x of the section along n (horizontal, across the yarn), y along b (up). Where
 /// t is within 1e-3 rad of j (vertical binder segments) the frame is carried from the previous
-/// section by rotation-minimising transport instead.
+/// section by rotation-minimising transport instead, and n keeps the previous section's side
+/// where a path turns back through the vertical (so no section starts half way round).
 /// @throws towgeom::Error (InvalidArgument) for invalid options.
 Textile generateWeave(const WeaveOptions& options);
 

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <sstream>
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
@@ -21,12 +22,13 @@ const char* kFitHelp = R"(Usage: towgeom fit FILE.stw... [options]
 Fits a bicubic B-spline surface to every tow stack (open along the tow, periodic and C2 around
 it, normals pointing out of the tow) and prints one JSON object on stdout:
 
-  {"tows":[{"name", "mode", "sections", "points", "max_deviation", "rms_deviation",
-            "volume", "faceted_volume", "area", "reversed"}]}
+  {"tows":[{"name", "mode", "sections", "points", "control_points", "max_deviation",
+            "rms_deviation", "volume", "faceted_volume", "area", "reversed"}]}
 
   max_deviation, rms_deviation  closest-point distances of the input points from the surface
   volume          the surface's volume, closed at its ends by the end sections (exact quadrature)
   faceted_volume  the volume of the input polygons joined by flat facets, for comparison
+  control_points  the surface's control points along and around the tow
   reversed        true when the input went counter-clockwise and was reversed for the fit
 
 Options:
@@ -132,6 +134,34 @@ int runFit(int argc, char** argv, int first)
                           << seconds(start) << " s\n";
         }
 
+        // Every figure first: an error here must leave neither files nor half a report.
+        struct Figures {
+            Deviation deviation;
+            double volume, faceted, area;
+        };
+        std::vector<Figures> figures;
+        for (const TowSurface& s : surfaces) figures.push_back({s.deviation(), s.volume(), s.facetedVolume(), s.area()});
+        std::ostringstream report;
+        detail::JsonWriter json(report);
+        json.beginObject().key("tows").beginArray();
+        for (std::size_t k = 0; k < surfaces.size(); ++k) {
+            const TowSurface& s = surfaces[k];
+            json.beginObject();
+            json.key("name").value(s.name());
+            json.key("mode").value(fitModeName(s.mode()));
+            json.key("sections").value(s.sectionCount());
+            json.key("points").value(s.pointsPerSection());
+            json.key("control_points").beginArray().value(s.controlPointCount(true)).value(s.controlPointCount(false)).endArray();
+            json.key("max_deviation").value(figures[k].deviation.max);
+            json.key("rms_deviation").value(figures[k].deviation.rms);
+            json.key("volume").value(figures[k].volume);
+            json.key("faceted_volume").value(figures[k].faceted);
+            json.key("area").value(figures[k].area);
+            json.key("reversed").value(s.inputReversed());
+            json.endObject();
+        }
+        json.endArray().endObject();
+
         if (outDir) {
             std::error_code ec;
             std::filesystem::create_directories(*outDir, ec);
@@ -146,25 +176,7 @@ int runFit(int argc, char** argv, int first)
             }
             files.commit();
         }
-
-        detail::JsonWriter json(std::cout);
-        json.beginObject().key("tows").beginArray();
-        for (const TowSurface& s : surfaces) {
-            const Deviation dev = s.deviation();
-            json.beginObject();
-            json.key("name").value(s.name());
-            json.key("mode").value(fitModeName(s.mode()));
-            json.key("sections").value(s.sectionCount());
-            json.key("points").value(s.pointsPerSection());
-            json.key("max_deviation").value(dev.max);
-            json.key("rms_deviation").value(dev.rms);
-            json.key("volume").value(s.volume());
-            json.key("faceted_volume").value(s.facetedVolume());
-            json.key("area").value(s.area());
-            json.key("reversed").value(s.inputReversed());
-            json.endObject();
-        }
-        json.endArray().endObject();
+        std::cout << report.str();
         std::cout << "\n";
         return kExitOk;
     } catch (const std::exception& e) {

@@ -41,6 +41,8 @@ const char* errorCodeName(ErrorCode code) noexcept
     case ErrorCode::ZeroAreaSection: return "zero_area_section";
     case ErrorCode::SelfIntersectingSection: return "self_intersecting_section";
     case ErrorCode::InconsistentOrientation: return "inconsistent_orientation";
+    case ErrorCode::InconsistentStart: return "inconsistent_start";
+    case ErrorCode::LineTooLong: return "line_too_long";
     case ErrorCode::DegenerateTow: return "degenerate_tow";
     case ErrorCode::InvalidArgument: return "invalid_argument";
     case ErrorCode::FitFailed: return "fit_failed";

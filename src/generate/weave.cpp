@@ -35,7 +35,10 @@ void frame(const Vector3& tangent, Vector3& n, Vector3& b, bool first)
     const Vector3 t = (1.0 / norm(tangent)) * tangent;
     const Vector3 tj = cross(t, Vector3{0.0, 0.0, 1.0});
     if (norm(tj) > 1e-3) {
-        n = (1.0 / norm(tj)) * tj;
+        // Keep n continuous: where the path turns back on itself through the vertical, t x j
+        // flips; follow the previous frame's side instead of jumping half way round.
+        const Vector3 candidate = (1.0 / norm(tj)) * tj;
+        n = !first && dot(candidate, n) < 0.0 ? -1.0 * candidate : candidate;
     } else {
         // Rotation-minimising transport: project the previous n onto the new normal plane.
         Vector3 prev = first ? Vector3{0.0, 1.0, 0.0} : n;

@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "surface/occt_convert.hpp"
+#include "surface/occt_guard.hpp"
 #include "towgeom/error.hpp"
 
 namespace towgeom {
@@ -116,9 +117,11 @@ double YarnPath::curvature(double t) const
 
 double YarnPath::length(double t0, double t1) const
 {
-    GeomAdaptor_Curve adaptor(impl_->curve);
-    const double a = clampT(std::min(t0, t1), lastParameter()), b = clampT(std::max(t0, t1), lastParameter());
-    return GCPnts_AbscissaPoint::Length(adaptor, a, b, 1e-10);
+    return detail::guarded(std::string(), "length", [&]() -> double {
+        GeomAdaptor_Curve adaptor(impl_->curve);
+        const double a = clampT(std::min(t0, t1), lastParameter()), b = clampT(std::max(t0, t1), lastParameter());
+        return GCPnts_AbscissaPoint::Length(adaptor, a, b, 1e-10);
+    });
 }
 
 }  // namespace towgeom

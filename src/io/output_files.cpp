@@ -38,11 +38,16 @@ void OutputFiles::commit()
         e.stream->close();
         if (e.stream->fail()) throw Error(ErrorCode::WriteFailed, "write failed on close", e.path);
     }
-    for (Entry& e : entries_) {
+    for (std::size_t k = 0; k < entries_.size(); ++k) {
         std::error_code ec;
-        std::filesystem::rename(e.temporary, e.path, ec);
-        if (ec) throw Error(ErrorCode::WriteFailed, "cannot rename into place: " + ec.message(), e.path);
-        e.temporary.clear();
+        std::filesystem::rename(entries_[k].temporary, entries_[k].path, ec);
+        if (ec) {
+            // Take back what is already in place, so no partial set of outputs remains.
+            for (std::size_t done = 0; done < k; ++done) std::remove(entries_[done].path.c_str());
+            entries_.erase(entries_.begin(), entries_.begin() + static_cast<std::ptrdiff_t>(k));
+            throw Error(ErrorCode::WriteFailed, "cannot rename into place: " + ec.message(), entries_.front().path);
+        }
+        entries_[k].temporary.clear();
     }
     entries_.clear();
 }

@@ -21,7 +21,8 @@ public:
     /// @throws towgeom::Error (WriteFailed) naming @p path.
     std::ostream& open(const std::string& path);
     /// Flushes and renames every file into place.
-    /// @throws towgeom::Error (WriteFailed) naming the file; nothing is renamed then.
+    /// @throws towgeom::Error (WriteFailed) naming the file; files already renamed by this call
+    ///         are removed again (a file they replaced is lost), the temporaries too.
     void commit();
 
 private:

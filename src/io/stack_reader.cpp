@@ -1,6 +1,7 @@
 #include "towgeom/stack_reader.hpp"
 
 #include <charconv>
+#include <cstdlib>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +16,8 @@ namespace towgeom {
 namespace {
 
 constexpr double kMaxCoordinate = 1e150;
+constexpr std::size_t kMaxNameLength = 200;    // names become file names
+constexpr std::size_t kMaxLineLength = 65536;  // longer is not a stack file; bounds memory
 
 /// A token for a message: at most 40 characters, quoted.
 std::string quoted(std::string_view token)
@@ -115,6 +118,8 @@ private:
             fail(ErrorCode::BadName,
                  "tow name " + quoted(n) + " may only use letters, digits and _ - . + and not start with '.'",
                  number);
+        if (n.size() > kMaxNameLength)
+            fail(ErrorCode::BadName, "tow name is longer than " + std::to_string(kMaxNameLength) + " characters", number);
         stack_.name = std::string(n);
         sawName_ = true;
     }
@@ -146,11 +151,17 @@ private:
     double number_(std::string_view token, std::size_t number) const
     {
         std::string_view digits = token;
-        if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
+        if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-' && digits[1] != '+') digits.remove_prefix(1);
         double value = 0.0;
         const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-        if (ec == std::errc::result_out_of_range && end == digits.data() + digits.size())
-            fail(ErrorCode::OutOfRange, "coordinate " + quoted(token) + " is beyond +-1e150", number);
+        if (ec == std::errc::result_out_of_range && end == digits.data() + digits.size()) {
+            // Out of range is either overflow (refused) or underflow: below the smallest double,
+            // whose nearest value is 0 (or a denormal), which is what the file means.
+            const double nearest = std::strtod(std::string(digits).c_str(), nullptr);
+            if (std::fabs(nearest) >= 1.0)
+                fail(ErrorCode::OutOfRange, "coordinate " + quoted(token) + " is beyond +-1e150", number);
+            return nearest;
+        }
         if (ec != std::errc() || end != digits.data() + digits.size() || digits.empty())
             fail(ErrorCode::NonNumeric, quoted(token) + " is not a number", number);
         if (!std::isfinite(value)) fail(ErrorCode::NonFinite, "coordinate " + quoted(token) + " is not finite", number);
@@ -181,10 +192,24 @@ private:
 TowStack readStack(std::istream& in, const std::string& sourceName, const std::string& defaultName)
 {
     Parser parser(sourceName, defaultName);
+    std::vector<char> buffer(kMaxLineLength + 2);
     std::string text;
     std::size_t number = 0;
-    while (std::getline(in, text)) parser.line(text, ++number);
-    if (in.bad()) throw Error(ErrorCode::FileUnreadable, "read error after line " + std::to_string(number), sourceName);
+    for (;;) {
+        // Bounded lines: a file without line breaks cannot make the reader hold all of it.
+        in.getline(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+        const auto got = static_cast<std::size_t>(in.gcount());
+        if (in.bad()) throw Error(ErrorCode::FileUnreadable, "read error after line " + std::to_string(number), sourceName);
+        if (in.fail() && !in.eof())
+            throw Error(ErrorCode::LineTooLong,
+                        "line longer than " + std::to_string(kMaxLineLength) + " characters: not a stack file",
+                        sourceName, number + 1);
+        if (got == 0 && in.eof()) break;
+        const bool delimited = !in.eof();  // the newline was read and counted in gcount()
+        text.assign(buffer.data(), delimited ? got - 1 : got);
+        parser.line(text, ++number);
+        if (in.eof()) break;
+    }
     TowStack stack = parser.finish();
     validateStack(stack);
     return stack;

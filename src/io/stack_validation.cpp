@@ -4,6 +4,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -30,12 +31,14 @@ std::string sectionLabel(std::size_t i) { return "section " + std::to_string(i +
 
 /// The section projected on its best-fit (least-squares) plane, in that plane's coordinates.
 /// Returns false when the points are collinear (no plane).
-bool projectOnBestPlane(const std::vector<Point3>& poly, std::vector<Kernel::Point_2>& out)
+bool projectOnBestPlane(const std::vector<Point3>& poly, double size, std::vector<Kernel::Point_2>& out)
 {
+    // In units of the section's size, so that coordinates up to 1e150 cannot overflow.
     const Point3 c = detail::vertexCentroid(poly);
+    const double unit = 1.0 / size;
     Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
     for (const Point3& p : poly) {
-        const Eigen::Vector3d d(p.x - c.x, p.y - c.y, p.z - c.z);
+        const Eigen::Vector3d d(unit * (p.x - c.x), unit * (p.y - c.y), unit * (p.z - c.z));
         cov += d * d.transpose();
     }
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
@@ -45,7 +48,7 @@ bool projectOnBestPlane(const std::vector<Point3>& poly, std::vector<Kernel::Poi
     const Eigen::Vector3d e2 = eig.eigenvectors().col(1);
     out.clear();
     for (const Point3& p : poly) {
-        const Eigen::Vector3d d(p.x - c.x, p.y - c.y, p.z - c.z);
+        const Eigen::Vector3d d(unit * (p.x - c.x), unit * (p.y - c.y), unit * (p.z - c.z));
         out.emplace_back(d.dot(e1), d.dot(e2));
     }
     return true;
@@ -70,12 +73,12 @@ void checkSection(const TowStack& s, std::size_t i)
                  i, next);
     }
     std::vector<Kernel::Point_2> plane;
-    if (!projectOnBestPlane(poly, plane))
+    if (!projectOnBestPlane(poly, size, plane))
         fail(s, ErrorCode::ZeroAreaSection, sectionLabel(i) + " has zero area: its points are collinear", i);
     if (!CGAL::is_simple_2(plane.begin(), plane.end(), Kernel()))
         fail(s, ErrorCode::SelfIntersectingSection, sectionLabel(i) + " crosses itself (not a simple polygon)", i);
     const double area = std::fabs(CGAL::polygon_area_2(plane.begin(), plane.end(), Kernel()));
-    if (area <= kAreaTolerance * size * size)
+    if (area <= kAreaTolerance)  // the projection is in units of the section's size
         fail(s, ErrorCode::ZeroAreaSection, sectionLabel(i) + " has (almost) zero area", i);
 }
 
@@ -101,6 +104,48 @@ void checkCounts(const TowStack& s)
              s.sections.size() - 1);
 }
 
+Vector3 unit(const Vector3& v)
+{
+    // Scale first: the norm of a vector with components near 1e150 overflows.
+    const double big = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+    if (!(big > 0.0)) return {};
+    const Vector3 w = (1.0 / big) * v;
+    return (1.0 / norm(w)) * w;
+}
+
+/// Consecutive sections must start at the same angular position: rotating the next section's
+/// points by k places must not fit it better to this one (then the input's first points are
+/// not consistent, and the surface would twist through the tow).
+void checkStartPoints(const TowStack& s, std::size_t i)
+{
+    const auto& a = s.sections[i];
+    const auto& b = s.sections[i + 1];
+    const std::size_t n = a.size();
+    const Point3 ca = detail::vertexCentroid(a), cb = detail::vertexCentroid(b);
+    const double unitScale = 1.0 / std::max(detail::extent(a), 1e-300);
+    const auto mismatch = [&](std::size_t k) {
+        double sum = 0.0;
+        for (std::size_t j = 0; j < n; ++j) {
+            const Vector3 d = unitScale * ((b[(j + k) % n] - cb) - (a[j] - ca));
+            sum += dot(d, d);
+        }
+        return sum;
+    };
+    const double aligned = mismatch(0);
+    std::size_t best = 0;
+    double bestValue = aligned;
+    for (std::size_t k = 1; k < n; ++k)
+        if (const double value = mismatch(k); value < bestValue) {
+            bestValue = value;
+            best = k;
+        }
+    if (best != 0 && bestValue < 0.5 * aligned)
+        fail(s, ErrorCode::InconsistentStart,
+             sectionLabel(i + 1) + " starts " + std::to_string(best) + " point(s) around from " + sectionLabel(i) +
+                 ": the first point of every section must sit at the same angular position",
+             i + 1);
+}
+
 void checkAlongTow(const TowStack& s)
 {
     const std::size_t m = s.sections.size();
@@ -116,12 +161,14 @@ void checkAlongTow(const TowStack& s)
         if (chord / s.sections[i].size() <= kDuplicateTolerance * size)
             fail(s, ErrorCode::DegenerateTow, sectionLabel(i + 2) + " coincides with " + sectionLabel(i + 1), i + 1);
     }
+    for (std::size_t i = 0; i + 1 < m; ++i) checkStartPoints(s, i);
     int orientation = 0;
     for (std::size_t i = 0; i < m; ++i) {
-        const Vector3 along = centroid[std::min(i + 1, m - 1)] - centroid[i == 0 ? 0 : i - 1];
-        const Vector3 area = detail::vectorArea(s.sections[i]);
+        // Unit vectors: products of raw ones overflow for coordinates beyond 1e100.
+        const Vector3 along = unit(centroid[std::min(i + 1, m - 1)] - centroid[i == 0 ? 0 : i - 1]);
+        const Vector3 area = unit(detail::vectorArea(s.sections[i]));
         const double d = dot(area, along);
-        if (!(std::fabs(d) > 1e-6 * norm(area) * norm(along)))
+        if (!(std::fabs(d) > 1e-6))
             fail(s, ErrorCode::InconsistentOrientation,
                  sectionLabel(i) + " lies along the tow instead of across it", i);
         const int sign = d > 0 ? 1 : -1;

@@ -7,6 +7,7 @@
 
 #include "surface/curve3_impl.hpp"
 #include "surface/occt_convert.hpp"
+#include "surface/occt_guard.hpp"
 #include "towgeom/error.hpp"
 
 namespace towgeom {
@@ -30,8 +31,10 @@ Vector3 Curve3::derivative(double t) const
 
 double Curve3::length() const
 {
-    GeomAdaptor_Curve adaptor(impl_->curve);
-    return GCPnts_AbscissaPoint::Length(adaptor, 1e-10);
+    return detail::guarded(std::string(), "length", [&]() -> double {
+        GeomAdaptor_Curve adaptor(impl_->curve);
+        return GCPnts_AbscissaPoint::Length(adaptor, 1e-10);
+    });
 }
 
 namespace {
@@ -48,30 +51,34 @@ std::vector<Point3> uniformSamples(const Geom_Curve& c, std::size_t count, bool 
 
 std::vector<Point3> Curve3::polyline(double chordalTolerance) const
 {
-    if (!(chordalTolerance > 0.0)) throw Error(ErrorCode::InvalidArgument, "chordal tolerance must be positive");
-    GeomAdaptor_Curve adaptor(impl_->curve);
-    GCPnts_QuasiUniformDeflection sampler(adaptor, chordalTolerance);
-    std::vector<Point3> out;
-    if (sampler.IsDone())
-        for (int i = 1; i <= sampler.NbPoints(); ++i) out.push_back(fromOcct(sampler.Value(i)));
-    if (closed() && out.size() > 1) out.pop_back();
-    if (out.size() < 8) return uniformSamples(*impl_->curve, 8, closed());
-    return out;
+    return detail::guarded(std::string(), "polyline", [&]() -> std::vector<Point3> {
+        if (!(chordalTolerance > 0.0)) throw Error(ErrorCode::InvalidArgument, "chordal tolerance must be positive");
+        GeomAdaptor_Curve adaptor(impl_->curve);
+        GCPnts_QuasiUniformDeflection sampler(adaptor, chordalTolerance);
+        std::vector<Point3> out;
+        if (sampler.IsDone())
+            for (int i = 1; i <= sampler.NbPoints(); ++i) out.push_back(fromOcct(sampler.Value(i)));
+        if (closed() && out.size() > 1) out.pop_back();
+        if (out.size() < 8) return uniformSamples(*impl_->curve, 8, closed());
+        return out;
+    });
 }
 
 std::vector<Point3> Curve3::polylineBySpacing(double spacing) const
 {
-    if (!(spacing > 0.0)) throw Error(ErrorCode::InvalidArgument, "spacing must be positive");
-    GeomAdaptor_Curve adaptor(impl_->curve);
-    const double len = GCPnts_AbscissaPoint::Length(adaptor, 1e-10);
-    const int count = std::max(2, static_cast<int>(std::ceil(len / spacing)) + 1);
-    GCPnts_UniformAbscissa sampler(adaptor, count, 1e-10 * std::max(len, 1e-300));
-    std::vector<Point3> out;
-    if (sampler.IsDone())
-        for (int i = 1; i <= sampler.NbPoints(); ++i) out.push_back(fromOcct(impl_->curve->Value(sampler.Parameter(i))));
-    if (closed() && out.size() > 1) out.pop_back();
-    if (out.size() < 2) return uniformSamples(*impl_->curve, static_cast<std::size_t>(count), closed());
-    return out;
+    return detail::guarded(std::string(), "polylineBySpacing", [&]() -> std::vector<Point3> {
+        if (!(spacing > 0.0)) throw Error(ErrorCode::InvalidArgument, "spacing must be positive");
+        GeomAdaptor_Curve adaptor(impl_->curve);
+        const double len = GCPnts_AbscissaPoint::Length(adaptor, 1e-10);
+        const int count = std::max(2, static_cast<int>(std::ceil(len / spacing)) + 1);
+        GCPnts_UniformAbscissa sampler(adaptor, count, 1e-10 * std::max(len, 1e-300));
+        std::vector<Point3> out;
+        if (sampler.IsDone())
+            for (int i = 1; i <= sampler.NbPoints(); ++i) out.push_back(fromOcct(impl_->curve->Value(sampler.Parameter(i))));
+        if (closed() && out.size() > 1) out.pop_back();
+        if (out.size() < 2) return uniformSamples(*impl_->curve, static_cast<std::size_t>(count), closed());
+        return out;
+    });
 }
 
 }  // namespace towgeom

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "surface/occt_convert.hpp"
+#include "surface/occt_guard.hpp"
 #include "surface/tow_surface_impl.hpp"
 
 namespace towgeom {
@@ -94,56 +95,64 @@ SectionIntegral sectionIntegral(const GeomAdaptor_Surface& adaptor, const std::v
 
 double TowSurface::sectionArea(double u) const
 {
-    const ParameterRange r = parameterRange();
-    point(u, 0.0);  // range check
-    GeomAdaptor_Surface adaptor(impl_->surface);
-    return sectionIntegral(adaptor, knots(*impl_->surface, false), std::clamp(u, r.uMin, r.uMax)).vectorArea.Modulus();
+    return detail::guarded(impl_->name, "sectionArea", [&]() -> double {
+        const ParameterRange r = parameterRange();
+        point(u, 0.0);  // range check
+        GeomAdaptor_Surface adaptor(impl_->surface);
+        return sectionIntegral(adaptor, knots(*impl_->surface, false), std::clamp(u, r.uMin, r.uMax)).vectorArea.Modulus();
+    });
 }
 
 double TowSurface::volume() const
 {
-    const Geom_BSplineSurface& s = *impl_->surface;
-    GeomAdaptor_Surface adaptor(impl_->surface);
-    // Divergence theorem with F = (x - ref) / 3; ref near the tow keeps the sum well conditioned.
-    const BoundingBox box = boundingBox();
-    const gp_XYZ ref = 0.5 * (detail::toOcct(box.min).XYZ() + detail::toOcct(box.max).XYZ());
-    double lateral = 0.0;
-    integrate(s, [&](double u, double v, double w) {
-        gp_Pnt p;
-        gp_Vec du, dv;
-        adaptor.D1(u, v, p, du, dv);
-        lateral += w * (p.XYZ() - ref).Dot(du.XYZ().Crossed(dv.XYZ()));
+    return detail::guarded(impl_->name, "volume", [&]() -> double {
+        const Geom_BSplineSurface& s = *impl_->surface;
+        GeomAdaptor_Surface adaptor(impl_->surface);
+        // Divergence theorem with F = (x - ref) / 3; ref near the tow keeps the sum well conditioned.
+        const BoundingBox box = boundingBox();
+        const gp_XYZ ref = 0.5 * (detail::toOcct(box.min).XYZ() + detail::toOcct(box.max).XYZ());
+        double lateral = 0.0;
+        integrate(s, [&](double u, double v, double w) {
+            gp_Pnt p;
+            gp_Vec du, dv;
+            adaptor.D1(u, v, p, du, dv);
+            lateral += w * (p.XYZ() - ref).Dot(du.XYZ().Crossed(dv.XYZ()));
+        });
+        // Ends: dS/du x dS/dv points outwards, so v runs clockwise about the tow's direction and the
+        // vector area of an end curve points backwards along the tow: outward at the first end,
+        // inward at the last.
+        const std::vector<double> kv = knots(s, false);
+        const ParameterRange r = parameterRange();
+        const SectionIntegral first = sectionIntegral(adaptor, kv, r.uMin);
+        const SectionIntegral last = sectionIntegral(adaptor, kv, r.uMax);
+        const double caps = (first.centroid - ref).Dot(first.vectorArea) - (last.centroid - ref).Dot(last.vectorArea);
+        return (lateral + caps) / 3.0;
     });
-    // Ends: dS/du x dS/dv points outwards, so v runs clockwise about the tow's direction and the
-    // vector area of an end curve points backwards along the tow: outward at the first end,
-    // inward at the last.
-    const std::vector<double> kv = knots(s, false);
-    const ParameterRange r = parameterRange();
-    const SectionIntegral first = sectionIntegral(adaptor, kv, r.uMin);
-    const SectionIntegral last = sectionIntegral(adaptor, kv, r.uMax);
-    const double caps = (first.centroid - ref).Dot(first.vectorArea) - (last.centroid - ref).Dot(last.vectorArea);
-    return (lateral + caps) / 3.0;
 }
 
 double TowSurface::area() const
 {
-    GeomAdaptor_Surface adaptor(impl_->surface);
-    double total = 0.0;
-    integrate(*impl_->surface, [&](double u, double v, double w) {
-        gp_Pnt p;
-        gp_Vec du, dv;
-        adaptor.D1(u, v, p, du, dv);
-        total += w * du.Crossed(dv).Magnitude();
+    return detail::guarded(impl_->name, "area", [&]() -> double {
+        GeomAdaptor_Surface adaptor(impl_->surface);
+        double total = 0.0;
+        integrate(*impl_->surface, [&](double u, double v, double w) {
+            gp_Pnt p;
+            gp_Vec du, dv;
+            adaptor.D1(u, v, p, du, dv);
+            total += w * du.Crossed(dv).Magnitude();
+        });
+        return total;
     });
-    return total;
 }
 
 double TowSurface::facetedVolume() const
 {
-    // The sections are in the surface's order, so the tube's triangles face outwards.
-    TowStack stack;
-    stack.sections = impl_->sections;
-    return enclosedVolume(facetedTube(stack, true));
+    return detail::guarded(impl_->name, "facetedVolume", [&]() -> double {
+        // The sections are in the surface's order, so the tube's triangles face outwards.
+        TowStack stack;
+        stack.sections = impl_->sections;
+        return enclosedVolume(facetedTube(stack, true));
+    });
 }
 
 }  // namespace towgeom

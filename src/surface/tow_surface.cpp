@@ -11,6 +11,7 @@
 
 #include "surface/curve3_impl.hpp"
 #include "surface/occt_convert.hpp"
+#include "surface/occt_guard.hpp"
 #include "surface/tow_surface_impl.hpp"
 #include "towgeom/error.hpp"
 
@@ -68,23 +69,29 @@ double checkedU(const TowSurface::Impl& t, double u, double v)
 
 Point3 TowSurface::point(double u, double v) const
 {
-    return fromOcct(impl_->surface->Value(checkedU(*impl_, u, v), v));
+    return detail::guarded(impl_->name, "point", [&]() -> Point3 {
+        return fromOcct(impl_->surface->Value(checkedU(*impl_, u, v), v));
+    });
 }
 
 SurfaceDerivatives TowSurface::derivatives(double u, double v) const
 {
-    gp_Pnt p;
-    gp_Vec du, dv;
-    impl_->surface->D1(checkedU(*impl_, u, v), v, p, du, dv);
-    return {fromOcct(p), fromOcct(du), fromOcct(dv)};
+    return detail::guarded(impl_->name, "derivatives", [&]() -> SurfaceDerivatives {
+        gp_Pnt p;
+        gp_Vec du, dv;
+        impl_->surface->D1(checkedU(*impl_, u, v), v, p, du, dv);
+        return {fromOcct(p), fromOcct(du), fromOcct(dv)};
+    });
 }
 
 SurfaceSecondDerivatives TowSurface::secondDerivatives(double u, double v) const
 {
-    gp_Pnt p;
-    gp_Vec du, dv, duu, dvv, duv;
-    impl_->surface->D2(checkedU(*impl_, u, v), v, p, du, dv, duu, dvv, duv);
-    return {fromOcct(p), fromOcct(du), fromOcct(dv), fromOcct(duu), fromOcct(dvv), fromOcct(duv)};
+    return detail::guarded(impl_->name, "secondDerivatives", [&]() -> SurfaceSecondDerivatives {
+        gp_Pnt p;
+        gp_Vec du, dv, duu, dvv, duv;
+        impl_->surface->D2(checkedU(*impl_, u, v), v, p, du, dv, duu, dvv, duv);
+        return {fromOcct(p), fromOcct(du), fromOcct(dv), fromOcct(duu), fromOcct(dvv), fromOcct(duv)};
+    });
 }
 
 Vector3 TowSurface::normal(double u, double v) const
@@ -147,105 +154,115 @@ UV TowSurface::closestParameters(const Point3& p, UV start) const
 
 BoundingBox TowSurface::boundingBox() const
 {
-    BoundingBox box;
-    const TColgp_Array2OfPnt& poles = impl_->surface->Poles();
-    for (int i = poles.LowerRow(); i <= poles.UpperRow(); ++i)
-        for (int j = poles.LowerCol(); j <= poles.UpperCol(); ++j) box.add(fromOcct(poles(i, j)));
-    return box;
+    return detail::guarded(impl_->name, "boundingBox", [&]() -> BoundingBox {
+        BoundingBox box;
+        const TColgp_Array2OfPnt& poles = impl_->surface->Poles();
+        for (int i = poles.LowerRow(); i <= poles.UpperRow(); ++i)
+            for (int j = poles.LowerCol(); j <= poles.UpperCol(); ++j) box.add(fromOcct(poles(i, j)));
+        return box;
+    });
 }
 
 Curve3 TowSurface::isoU(double u) const
 {
-    auto impl = std::make_shared<Curve3::Impl>();
-    impl->curve = impl_->surface->UIso(checkedU(*impl_, u, 0.0));
-    return Curve3(impl);
+    return detail::guarded(impl_->name, "isoU", [&]() -> Curve3 {
+        auto impl = std::make_shared<Curve3::Impl>();
+        impl->curve = impl_->surface->UIso(checkedU(*impl_, u, 0.0));
+        return Curve3(impl);
+    });
 }
 
 SeamJump TowSurface::seamJump(double u) const
 {
-    const Geom_BSplineSurface& s = *impl_->surface;
-    u = checkedU(*impl_, u, 0.0);
-    int uk = s.FirstUKnotIndex();
-    while (uk + 1 < s.LastUKnotIndex() && s.UKnot(uk + 1) <= u) ++uk;
-    const int vFirst = s.FirstVKnotIndex(), vLast = s.LastVKnotIndex();
-    gp_Pnt pa, pb;
-    gp_Vec a[5], b[5];
-    s.LocalD2(u, s.VKnot(vLast), uk, uk + 1, vLast - 1, vLast, pa, a[0], a[1], a[2], a[3], a[4]);
-    s.LocalD2(u, s.VKnot(vFirst), uk, uk + 1, vFirst, vFirst + 1, pb, b[0], b[1], b[2], b[3], b[4]);
-    const auto rel = [](const gp_XYZ& x, const gp_XYZ& y) {
-        return (x - y).Modulus() / std::max({x.Modulus(), y.Modulus(), 1e-300});
-    };
-    SeamJump j;
-    j.position = rel(pa.XYZ(), pb.XYZ());
-    j.first = std::max(rel(a[0].XYZ(), b[0].XYZ()), rel(a[1].XYZ(), b[1].XYZ()));
-    j.second = std::max({rel(a[2].XYZ(), b[2].XYZ()), rel(a[3].XYZ(), b[3].XYZ()), rel(a[4].XYZ(), b[4].XYZ())});
-    return j;
+    return detail::guarded(impl_->name, "seamJump", [&]() -> SeamJump {
+        const Geom_BSplineSurface& s = *impl_->surface;
+        u = checkedU(*impl_, u, 0.0);
+        int uk = s.FirstUKnotIndex();
+        while (uk + 1 < s.LastUKnotIndex() && s.UKnot(uk + 1) <= u) ++uk;
+        const int vFirst = s.FirstVKnotIndex(), vLast = s.LastVKnotIndex();
+        gp_Pnt pa, pb;
+        gp_Vec a[5], b[5];
+        s.LocalD2(u, s.VKnot(vLast), uk, uk + 1, vLast - 1, vLast, pa, a[0], a[1], a[2], a[3], a[4]);
+        s.LocalD2(u, s.VKnot(vFirst), uk, uk + 1, vFirst, vFirst + 1, pb, b[0], b[1], b[2], b[3], b[4]);
+        const auto rel = [](const gp_XYZ& x, const gp_XYZ& y) {
+            return (x - y).Modulus() / std::max({x.Modulus(), y.Modulus(), 1e-300});
+        };
+        SeamJump j;
+        j.position = rel(pa.XYZ(), pb.XYZ());
+        j.first = std::max(rel(a[0].XYZ(), b[0].XYZ()), rel(a[1].XYZ(), b[1].XYZ()));
+        j.second = std::max({rel(a[2].XYZ(), b[2].XYZ()), rel(a[3].XYZ(), b[3].XYZ()), rel(a[4].XYZ(), b[4].XYZ())});
+        return j;
+    });
 }
 
 Deviation TowSurface::deviation() const
 {
-    const Impl& t = *impl_;
-    GeomAdaptor_Surface adaptor(t.surface);
-    Extrema_GenLocateExtPS locate(adaptor);
-    const double negligible = 1e-12 * t.towSize;
-    Deviation dev;
-    double sum = 0.0;
-    std::size_t count = 0;
-    for (std::size_t i = 0; i < t.sections.size(); ++i)
-        for (std::size_t j = 0; j < t.sections[i].size(); ++j) {
-            const gp_Pnt q = toOcct(t.sections[i][j]);
-            double d = adaptor.Value(t.uParams[i], t.vParams[j]).Distance(q);
-            if (d > negligible) {
-                try {
-                    locate.Perform(q, t.uParams[i], t.vParams[j], Standard_False);
-                    if (locate.IsDone()) d = std::min(d, std::sqrt(locate.SquareDistance()));
-                } catch (const Standard_Failure&) {
-                    // keep the parametric distance, an upper bound
+    return detail::guarded(impl_->name, "deviation", [&]() -> Deviation {
+        const Impl& t = *impl_;
+        GeomAdaptor_Surface adaptor(t.surface);
+        Extrema_GenLocateExtPS locate(adaptor);
+        const double negligible = 1e-12 * t.towSize;
+        Deviation dev;
+        double sum = 0.0;
+        std::size_t count = 0;
+        for (std::size_t i = 0; i < t.sections.size(); ++i)
+            for (std::size_t j = 0; j < t.sections[i].size(); ++j) {
+                const gp_Pnt q = toOcct(t.sections[i][j]);
+                double d = adaptor.Value(t.uParams[i], t.vParams[j]).Distance(q);
+                if (d > negligible) {
+                    try {
+                        locate.Perform(q, t.uParams[i], t.vParams[j], Standard_False);
+                        if (locate.IsDone()) d = std::min(d, std::sqrt(locate.SquareDistance()));
+                    } catch (const Standard_Failure&) {
+                        // keep the parametric distance, an upper bound
+                    }
+                }
+                sum += d * d;
+                ++count;
+                if (d > dev.max) {
+                    dev.max = d;
+                    dev.worstSection = i;
+                    dev.worstPoint = t.reversed && j > 0 ? t.sections[i].size() - j : j;
                 }
             }
-            sum += d * d;
-            ++count;
-            if (d > dev.max) {
-                dev.max = d;
-                dev.worstSection = i;
-                dev.worstPoint = t.reversed && j > 0 ? t.sections[i].size() - j : j;
-            }
-        }
-    dev.rms = std::sqrt(sum / static_cast<double>(count));
-    return dev;
+        dev.rms = std::sqrt(sum / static_cast<double>(count));
+        return dev;
+    });
 }
 
 TriangleMesh TowSurface::tessellate(std::size_t nu, std::size_t nv) const
 {
-    if (nu < 2 || nv < 3)
-        throw Error(ErrorCode::InvalidArgument, "tessellation needs at least 2 x 3 vertices", "tow '" + impl_->name + "'");
-    const ParameterRange r = parameterRange();
-    GeomAdaptor_Surface adaptor(impl_->surface);
-    TriangleMesh mesh;
-    mesh.vertices.reserve(nu * nv);
-    mesh.normals.reserve(nu * nv);
-    for (std::size_t i = 0; i < nu; ++i) {
-        const double u = r.uMin + (r.uMax - r.uMin) * static_cast<double>(i) / static_cast<double>(nu - 1);
-        for (std::size_t j = 0; j < nv; ++j) {
-            const double v = r.vMin + r.vPeriod() * static_cast<double>(j) / static_cast<double>(nv);
-            gp_Pnt p;
-            gp_Vec du, dv;
-            adaptor.D1(u, v, p, du, dv);
-            gp_Vec n = du.Crossed(dv);
-            const double len = n.Magnitude();
-            mesh.vertices.push_back(fromOcct(p));
-            mesh.normals.push_back(len > 0.0 ? fromOcct(n / len) : Vector3{});
+    return detail::guarded(impl_->name, "tessellate", [&]() -> TriangleMesh {
+        if (nu < 2 || nv < 3)
+            throw Error(ErrorCode::InvalidArgument, "tessellation needs at least 2 x 3 vertices", "tow '" + impl_->name + "'");
+        const ParameterRange r = parameterRange();
+        GeomAdaptor_Surface adaptor(impl_->surface);
+        TriangleMesh mesh;
+        mesh.vertices.reserve(nu * nv);
+        mesh.normals.reserve(nu * nv);
+        for (std::size_t i = 0; i < nu; ++i) {
+            const double u = r.uMin + (r.uMax - r.uMin) * static_cast<double>(i) / static_cast<double>(nu - 1);
+            for (std::size_t j = 0; j < nv; ++j) {
+                const double v = r.vMin + r.vPeriod() * static_cast<double>(j) / static_cast<double>(nv);
+                gp_Pnt p;
+                gp_Vec du, dv;
+                adaptor.D1(u, v, p, du, dv);
+                gp_Vec n = du.Crossed(dv);
+                const double len = n.Magnitude();
+                mesh.vertices.push_back(fromOcct(p));
+                mesh.normals.push_back(len > 0.0 ? fromOcct(n / len) : Vector3{});
+            }
         }
-    }
-    mesh.triangles.reserve(2 * (nu - 1) * nv);
-    for (std::size_t i = 0; i + 1 < nu; ++i)
-        for (std::size_t j = 0; j < nv; ++j) {
-            const std::size_t a = i * nv + j, b = (i + 1) * nv + j;
-            const std::size_t c = (i + 1) * nv + (j + 1) % nv, d = i * nv + (j + 1) % nv;
-            mesh.triangles.push_back({a, b, c});
-            mesh.triangles.push_back({a, c, d});
-        }
-    return mesh;
+        mesh.triangles.reserve(2 * (nu - 1) * nv);
+        for (std::size_t i = 0; i + 1 < nu; ++i)
+            for (std::size_t j = 0; j < nv; ++j) {
+                const std::size_t a = i * nv + j, b = (i + 1) * nv + j;
+                const std::size_t c = (i + 1) * nv + (j + 1) % nv, d = i * nv + (j + 1) % nv;
+                mesh.triangles.push_back({a, b, c});
+                mesh.triangles.push_back({a, c, d});
+            }
+        return mesh;
+    });
 }
 
 }  // namespace towgeom

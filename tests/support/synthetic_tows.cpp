@@ -46,14 +46,22 @@ TowStack ellipticalTube(double a, double b, double length, const Sampling& s, co
 
 TowStack bentTube(double r, double bendRadius, double sweep, const Sampling& s, const std::string& name)
 {
-    return sample(s, name, r, r, [&](std::size_t i, Point3& c, Vector3& e1, Vector3& e2) {
+    return growingBentTube(r, r, bendRadius, sweep, s, name);
+}
+
+TowStack growingBentTube(double r0, double r1, double bendRadius, double sweep, const Sampling& s,
+                         const std::string& name)
+{
+    TowStack stack = sample(s, name, 1.0, 1.0, [&](std::size_t i, Point3& c, Vector3& e1, Vector3& e2) {
         const double phi = sweep * static_cast<double>(i) / static_cast<double>(s.sections - 1);
         const Vector3 radial{std::cos(phi), std::sin(phi), 0.0};
         c = bendRadius * radial;
         // e1 x e2 = z x radial = (-sin, cos, 0): the tangent, so counter-clockwise about it.
-        e1 = {0, 0, 1};
-        e2 = radial;
+        const double r = r0 + (r1 - r0) * static_cast<double>(i) / static_cast<double>(s.sections - 1);
+        e1 = {0, 0, r};
+        e2 = r * radial;
     });
+    return stack;
 }
 
 TowStack crimpedTow(double a, double b, double length, double amplitude, double wavelength, const Sampling& s,

@@ -25,6 +25,11 @@ TowStack ellipticalTube(double a, double b, double length, const Sampling& s = {
 /// sweep (radians). Exact volume (Pappus): pi r^2 R sweep.
 TowStack bentTube(double r, double bendRadius, double sweep, const Sampling& s = {}, const std::string& name = "bent");
 
+/// A circular tube bent around the z axis (centre-line radius R, from angle 0 to sweep) whose
+/// radius grows linearly from r0 to r1. Exact volume: pi R sweep (r0^2 + r0 r1 + r1^2) / 3.
+TowStack growingBentTube(double r0, double r1, double bendRadius, double sweep, const Sampling& s = {},
+                         const std::string& name = "growing");
+
 /// A crimped elliptical tow along x with centre line z = amplitude cos(2 pi x / wavelength),
 /// sections normal to the centre line (a woven-like tow; no closed-form volume).
 TowStack crimpedTow(double a, double b, double length, double amplitude, double wavelength, const Sampling& s = {},

@@ -100,7 +100,13 @@ def name_late(lines, where):
 
 
 case("name_after_points.stw", "bad_name", edit=name_late)
-case("missing.stw", "file_not_found", raw=None) if False else cases.append(("missing.stw", "file_not_found", 0))
+twisted = tube()
+twisted[2] = twisted[2][N // 2:] + twisted[2][:N // 2]  # starts half way round
+case("twisted_start.stw", "inconsistent_start", sections=twisted)
+case("plus_minus.stw", "non_numeric", edit=set_line(1, 1, "1.0 +-0.5 0.2"))
+case("long_name.stw", "bad_name", edit=lambda lines, where: (lines.__setitem__(1, "tow " + "n" * 201), 2)[1])
+case("long_line.stw", "line_too_long", edit=set_line(3, 2, "3.0 0.5 " + "0" * 70000))
+cases.append(("missing.stw", "file_not_found", 0))
 os.makedirs("directory.stw", exist_ok=True)
 open(os.path.join("directory.stw", ".keep"), "w").close()
 cases.append(("directory.stw", "file_unreadable", 0))
@@ -112,6 +118,7 @@ fix = {
     "figure_eight.stw": render(eight)[1][3][0],
     "flipped_section.stw": render(flipped)[1][2][0],
     "repeated_section.stw": render(rep)[1][2][0],
+    "twisted_start.stw": render(twisted)[1][2][0],
     "one_section.stw": render(tube(m=1))[1][0][0],
     "three_sections.stw": render(tube(m=3))[1][2][0],
     "five_points.stw": render(tube(n=5))[1][0][0],
