@@ -119,6 +119,23 @@ TEST_CASE("a coordinate below the smallest double reads as zero and huge scales 
     }
 }
 
+TEST_CASE("empty comma-separated fields are refused", "[reader]")
+{
+    for (const char* bad : {"1,,2,3", "1,2,3,", ",1,2,3", ","}) {
+        std::string text;
+        for (int i = 0; i < 4; ++i) text += (i ? "\n" : "") + hexagon(i, ", ");
+        text.insert(0, std::string(bad) + "\n");
+        INFO(bad);
+        try {
+            parse(text);
+            FAIL("accepted");
+        } catch (const Error& e) {
+            CHECK(e.code() == ErrorCode::NonNumeric);
+            CHECK(e.line() == 1);
+        }
+    }
+}
+
 TEST_CASE("writeStack round-trips exactly", "[reader]")
 {
     testing::Sampling sampling;

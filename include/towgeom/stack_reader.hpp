@@ -15,7 +15,8 @@
 /// Sections are in order along the tow. A closing point that repeats the section's first point
 /// is dropped. Names may use letters, digits and `_ - . +`, may not start with a dot and have at
 /// most 200 characters. Lines have at most 65536 characters; a UTF-8 byte order mark is skipped;
-/// line ends may be `\n` or `\r\n`. Numbers are C locale decimals (`1.5`, `-2e-3`, `+4`); one
+/// line ends may be `\n` or `\r\n`. Commas separate like spaces, but every comma must stand
+/// between two numbers (`1, 2, 3`; not `1,,2,3` nor `1,2,3,`). Numbers are C locale decimals (`1.5`, `-2e-3`, `+4`); one
 /// below the smallest double (e.g. `1e-400`) reads as its nearest value, 0.
 #pragma once
 

@@ -71,7 +71,7 @@ public:
         }
         std::string_view view(text);
         if (const auto hash = view.find('#'); hash != std::string_view::npos) view = view.substr(0, hash);
-        const auto first = view.find_first_not_of(" \t,");
+        const auto first = view.find_first_not_of(" \t");
         if (first == std::string_view::npos) {
             // A blank line ends a section; a comment-only line does not.
             if (text.find('#') == std::string::npos) closeSection();
@@ -129,9 +129,17 @@ private:
         double xyz[3] = {0, 0, 0};
         std::size_t count = 0;
         std::size_t pos = 0;
+        bool fieldOpen = true;  // a comma opens a field that a number must fill
         while (pos < view.size()) {
-            while (pos < view.size() && isSeparator(view[pos])) ++pos;
+            while (pos < view.size() && isSeparator(view[pos])) {
+                if (view[pos] == ',') {
+                    if (fieldOpen) fail(ErrorCode::NonNumeric, "empty field: a comma with no number before it", number);
+                    fieldOpen = true;
+                }
+                ++pos;
+            }
             if (pos == view.size()) break;
+            fieldOpen = false;
             std::size_t end = pos;
             while (end < view.size() && !isSeparator(view[end])) ++end;
             const std::string_view token = view.substr(pos, end - pos);
@@ -140,6 +148,7 @@ private:
             ++count;
             pos = end;
         }
+        if (fieldOpen && count > 0) fail(ErrorCode::NonNumeric, "empty field: a comma with no number after it", number);
         if (count != 3)
             fail(ErrorCode::WrongCoordinateCount,
                  "expected 3 coordinates 'x y z', found " + std::to_string(count), number);
