@@ -140,7 +140,7 @@ TEST_CASE("towgeom generate writes a textile and flattens it to just touching", 
     const fs::path out = fs::temp_directory_path() / ("towgeom_generate_" + std::to_string(::getpid()));
     fs::remove_all(out);
     const Run r = cli("generate --weave twill --repeat 2/2 --tows 4x4 --overlap 0.08 --flatten 1e-4 --sections 41 "
-                      "--points 16 --faceted --quiet --out '" + out.string() + "'");
+                      "--points 16 --faceted vtk,stl --quiet --out '" + out.string() + "'");
     INFO(r.err);
     REQUIRE(r.status == 0);
     CHECK(r.out.find("\"collisions\":{\"yarn_pairs\":0,") != std::string::npos);
@@ -149,6 +149,9 @@ TEST_CASE("towgeom generate writes a textile and flattens it to just touching", 
     CHECK(jsonNumber(r.out, "max_gap") <= 1e-4);
     CHECK(fs::exists(out / "textile.json"));
     CHECK(fs::exists(out / "weft_3.faceted.vtk"));
+    // Binary STL: 80-byte header, a count, 50 bytes per triangle (2 * 40 * 16 sides + 2 * 16 caps).
+    const std::size_t triangles = 2 * 40 * 16 + 2 * 16;
+    CHECK(fs::file_size(out / "weft_3.faceted.stl") == 84 + 50 * triangles);
     CHECK(towgeom::readStackFile((out / "warp_2.stw").string()).sectionCount() == 41);
     fs::remove_all(out);
 }
@@ -159,7 +162,7 @@ TEST_CASE("towgeom generate refuses bad options and writes nothing", "[cli][weav
     for (const std::string& args :
          std::vector<std::string>{"--weave velvet", "--weave satin --repeat 6 --step 2", "--weave twill --repeat 2",
                                   "--weave plain --overlap 1.2", "--weave plain --points 31", "--weave plain --tows 0x4",
-                                  "--weave plain --flatten 0", "--weave plain --repeat 2/2"}) {
+                                  "--weave plain --flatten 0", "--weave plain --repeat 2/2", "--weave plain --faceted obj"}) {
         DYNAMIC_SECTION(args)
         {
             fs::remove_all(out);

@@ -10,7 +10,8 @@ namespace towgeom {
 
 /// What writeTextile() writes besides the stacks.
 struct TextileOutput {
-    bool facetedVtk = false;  ///< also NAME.faceted.vtk: the faceted yarn (legacy VTK polydata)
+    bool facetedVtk = false;  ///< also NAME.faceted.vtk: the faceted yarn, ends closed (legacy VTK polydata)
+    bool facetedStl = false;  ///< also NAME.faceted.stl: the same as binary STL
 };
 
 /// Writes DIR/NAME.stw for every yarn (the `.stw` format of stack_reader.hpp) and

@@ -14,6 +14,7 @@
 #include "towgeom/fit_options.hpp"
 #include "towgeom/point.hpp"
 #include "towgeom/stack_reader.hpp"
+#include "towgeom/stl_writer.hpp"
 #include "towgeom/textile_io.hpp"
 #include "towgeom/tow_stack.hpp"
 #include "towgeom/tow_surface.hpp"

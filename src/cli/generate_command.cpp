@@ -44,7 +44,8 @@ Collision response:
                    just touch: no colliding triangles, gap at most TAU
 Output:
   --out DIR        where to write (created if needed; nothing is written on error)
-  --faceted        also write DIR/NAME.faceted.vtk (the faceted yarns, for ParaView)
+  --faceted LIST   also write the faceted yarns (ends closed): vtk (DIR/NAME.faceted.vtk,
+                   for ParaView), stl (DIR/NAME.faceted.stl, binary), or vtk,stl
   --quiet          no progress lines on stderr
   -h, --help       this help
 
@@ -137,6 +138,25 @@ WeaveOptions parseOptions(const Args& args)
     return o;
 }
 
+TextileOutput parseFaceted(const std::optional<std::string>& text)
+{
+    TextileOutput out;
+    if (!text) return out;
+    std::size_t start = 0;
+    while (start <= text->size()) {
+        const std::size_t comma = std::min(text->find(',', start), text->size());
+        const std::string format = text->substr(start, comma - start);
+        if (format == "vtk")
+            out.facetedVtk = true;
+        else if (format == "stl")
+            out.facetedStl = true;
+        else
+            throw UsageError("--faceted takes vtk, stl or vtk,stl, not '" + *text + "'");
+        start = comma + 1;
+    }
+    return out;
+}
+
 void writeCollisions(detail::JsonWriter& json, const Textile& textile, const CollisionReport& report)
 {
     json.beginObject();
@@ -158,7 +178,7 @@ int runGenerate(int argc, char** argv, int first)
 {
     try {
         const Args args(argc, argv, first,
-                        {{"help"},        {"quiet"},        {"faceted"},      {"weave", true},   {"repeat", true},
+                        {{"help"},        {"quiet"},        {"faceted", true}, {"weave", true},   {"repeat", true},
                          {"step", true},  {"tows", true},   {"layers", true}, {"spacing", true}, {"width", true},
                          {"height", true}, {"crimp", true}, {"overlap", true}, {"section", true}, {"sections", true},
                          {"points", true}, {"flatten", true}, {"out", true}});
@@ -173,6 +193,7 @@ int runGenerate(int argc, char** argv, int first)
         const auto tau = args.number("flatten");
         if (tau && !(*tau > 0.0)) throw UsageError("--flatten needs a positive tolerance");
         const bool quiet = args.has("quiet");
+        const TextileOutput faceted = parseFaceted(args.value("faceted"));
 
         const auto start = std::chrono::steady_clock::now();
         Textile textile = generateWeave(options);
@@ -187,7 +208,7 @@ int runGenerate(int argc, char** argv, int first)
             after = detectCollisions(textile.stacks());
             if (!quiet) std::cerr << "towgeom generate: flattened; " << after.collisions.size() << " colliding yarn pairs left\n";
         }
-        writeTextile(textile, *out, {args.has("faceted")});
+        writeTextile(textile, *out, faceted);
 
         detail::JsonWriter json(std::cout);
         json.beginObject();

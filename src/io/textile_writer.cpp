@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/json_writer.hpp"
+#include "export/stl_format.hpp"
 #include "export/vtk_format.hpp"
 #include "io/output_files.hpp"
 #include "towgeom/error.hpp"
@@ -25,9 +26,12 @@ void writeTextile(const Textile& textile, const std::string& directory, const Te
     const std::vector<TowStack> stacks = textile.stacks();
     for (const TowStack& s : stacks) {
         writeStack(files.open(path(s.name + ".stw")), s);
+        if (!output.facetedVtk && !output.facetedStl) continue;
+        const TriangleMesh mesh = facetedTube(s, true);
         if (output.facetedVtk)
-            detail::writeVtkPolyData(files.open(path(s.name + ".faceted.vtk")), facetedTube(s, true),
-                                     "towgeom faceted yarn " + s.name);
+            detail::writeVtkPolyData(files.open(path(s.name + ".faceted.vtk")), mesh, "towgeom faceted yarn " + s.name);
+        if (output.facetedStl && !detail::writeStlBinary(files.open(path(s.name + ".faceted.stl")), mesh))
+            throw Error(ErrorCode::WriteFailed, "STL writer failed", path(s.name + ".faceted.stl"));
     }
     const WeaveOptions& o = textile.options;
     detail::JsonWriter json(files.open(path("textile.json")));
