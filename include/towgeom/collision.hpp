@@ -43,7 +43,9 @@ struct CrossingResponse {
     std::size_t crossing = 0;   ///< index in Textile::crossings
     bool collided = false;      ///< whether the yarns collided there before the response
     double flattening = 1.0;    ///< the factor applied at the crossing (1: untouched)
-    double gap = 0.0;           ///< distance between the two faceted yarns near the crossing after it
+    /// After the response: how far the warp's faceted sections near the crossing must move
+    /// vertically towards the weft's to touch them (to 1 % of the tolerance); 0 if they touch.
+    double gap = 0.0;
 };
 
 /// The collision response of Smith & Chen (2008), sections 4.1-4.3: at every crossing where a

@@ -193,10 +193,6 @@ double gapAlong(const TowStack& a, const TowStack& b, const Vector3& direction, 
     return hi;
 }
 
-}  // namespace
-
-namespace {
-
 /// The flattening state of a textile: one factor per crossing; a section's flattening is the
 /// smallest that any crossing whose window holds it asks for (1 - (1 - factor) * weight).
 class Flattening {
