@@ -102,6 +102,16 @@ TEST_CASE("hierarchical and brute-force collision detection find the same pairs"
         CHECK(fast.collisions[k].triangles == brute.collisions[k].triangles);
     }
     CHECK(fast.trianglePairsTested * 20 < brute.trianglePairsTested);
+    // Every crossing has its own collisions, and every colliding pair is attributed to one.
+    const Textile textile = generateWeave(o);
+    const std::vector<std::size_t> perCrossing = collisionsPerCrossing(textile, stacks, fast);
+    REQUIRE(perCrossing.size() == 16);
+    std::size_t total = 0;
+    for (const std::size_t n : perCrossing) {
+        CHECK(n > 0);
+        total += n;
+    }
+    CHECK(total == fast.trianglePairCount());
 }
 
 TEST_CASE("2/2 twill with overlap 0.08: CGAL finds one closed loop per crossing", "[weave][overlap]")

@@ -38,6 +38,13 @@ struct CollisionReport {
 /// Finds every pair of intersecting triangles between different yarns (exact predicates).
 CollisionReport detectCollisions(const std::vector<TowStack>& yarns, CollisionMethod method = CollisionMethod::Hierarchy);
 
+/// The colliding triangle pairs of @p report attributed to the crossings of @p textile: for
+/// each crossing, how many of its warp's and weft's colliding triangle pairs lie nearer (in
+/// plan, by the warp triangle's centroid) to it than to any other crossing of the same two
+/// yarns. @p stacks are the stacks the report was computed on (textile.stacks()).
+std::vector<std::size_t> collisionsPerCrossing(const Textile& textile, const std::vector<TowStack>& stacks,
+                                               const CollisionReport& report);
+
 /// What flattenToTouching() did at one crossing.
 struct CrossingResponse {
     std::size_t crossing = 0;   ///< index in Textile::crossings

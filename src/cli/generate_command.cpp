@@ -19,7 +19,8 @@ Generates a textile with known geometry: warps along x at y = i * spacing, wefts
 x = j * spacing, each a Catmull-Rom path through its interlacement points (z = +-crimp), with
 sections in the path's frame. Writes DIR/NAME.stw per yarn and DIR/textile.json (yarn names,
 roles warp/weft/binder, the weave's parameters, every crossing), then prints a JSON summary
-with the collisions found between the faceted yarns.
+with the collisions found between the faceted yarns: per yarn pair, and per crossing
+(each colliding triangle pair counts at the nearest crossing of its two yarns).
 
 Weave:
   --weave KIND     plain | twill | satin | basket | orthogonal (3D: straight warp layers,
@@ -157,11 +158,26 @@ TextileOutput parseFaceted(const std::optional<std::string>& text)
     return out;
 }
 
-void writeCollisions(detail::JsonWriter& json, const Textile& textile, const CollisionReport& report)
+void writeCollisions(detail::JsonWriter& json, const Textile& textile, const std::vector<TowStack>& stacks,
+                     const CollisionReport& report)
 {
+    const std::vector<std::size_t> perCrossing = collisionsPerCrossing(textile, stacks, report);
     json.beginObject();
     json.key("yarn_pairs").value(report.collisions.size());
     json.key("triangle_pairs").value(report.trianglePairCount());
+    json.key("crossings").value(static_cast<std::size_t>(
+        std::count_if(perCrossing.begin(), perCrossing.end(), [](std::size_t n) { return n > 0; })));
+    json.key("per_crossing").beginArray();
+    for (std::size_t c = 0; c < perCrossing.size(); ++c) {
+        if (perCrossing[c] == 0) continue;
+        const Crossing& x = textile.crossings[c];
+        json.beginObject();
+        json.key("warp").value(textile.yarns[x.warp].name).key("weft").value(textile.yarns[x.weft].name);
+        json.key("x").value(x.position.x).key("y").value(x.position.y);
+        json.key("triangle_pairs").value(perCrossing[c]);
+        json.endObject();
+    }
+    json.endArray();
     json.key("pairs").beginArray();
     for (const YarnCollision& c : report.collisions) {
         json.beginObject();
@@ -197,15 +213,18 @@ int runGenerate(int argc, char** argv, int first)
 
         const auto start = std::chrono::steady_clock::now();
         Textile textile = generateWeave(options);
-        const CollisionReport before = detectCollisions(textile.stacks());
+        const std::vector<TowStack> stacksBefore = textile.stacks();
+        const CollisionReport before = detectCollisions(stacksBefore);
         if (!quiet)
             std::cerr << "towgeom generate: " << textile.yarns.size() << " yarns, " << textile.crossings.size()
                       << " crossings, " << before.collisions.size() << " colliding yarn pairs\n";
         std::vector<CrossingResponse> responses;
         CollisionReport after = before;
+        std::vector<TowStack> stacksAfter = stacksBefore;
         if (tau) {
             responses = flattenToTouching(textile, *tau);
-            after = detectCollisions(textile.stacks());
+            stacksAfter = textile.stacks();
+            after = detectCollisions(stacksAfter);
             if (!quiet) std::cerr << "towgeom generate: flattened; " << after.collisions.size() << " colliding yarn pairs left\n";
         }
         writeTextile(textile, *out, faceted);
@@ -218,10 +237,10 @@ int runGenerate(int argc, char** argv, int first)
         json.endArray();
         json.key("crossings").value(textile.crossings.size());
         json.key("collisions");
-        writeCollisions(json, textile, tau ? after : before);
+        writeCollisions(json, textile, stacksAfter, after);
         if (tau) {
             json.key("collisions_before_flattening");
-            writeCollisions(json, textile, before);
+            writeCollisions(json, textile, stacksBefore, before);
             double maxGap = 0.0;
             std::size_t flattened = 0;
             for (const CrossingResponse& r : responses) {

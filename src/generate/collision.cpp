@@ -115,6 +115,38 @@ CollisionReport detectCollisions(const std::vector<TowStack>& stacks, CollisionM
     return report;
 }
 
+std::vector<std::size_t> collisionsPerCrossing(const Textile& textile, const std::vector<TowStack>& stacks,
+                                               const CollisionReport& report)
+{
+    std::vector<std::size_t> counts(textile.crossings.size(), 0);
+    std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> crossingsOf;
+    for (std::size_t c = 0; c < textile.crossings.size(); ++c) {
+        const Crossing& x = textile.crossings[c];
+        crossingsOf[{std::min(x.warp, x.weft), std::max(x.warp, x.weft)}].push_back(c);
+    }
+    for (const YarnCollision& collision : report.collisions) {
+        const auto it = crossingsOf.find({collision.yarnA, collision.yarnB});
+        if (it == crossingsOf.end()) continue;  // yarns that do not cross (e.g. parallel neighbours)
+        const TriangleMesh mesh = facetedTube(stacks.at(collision.yarnA), false);
+        for (const auto& [triangle, other] : collision.triangles) {
+            const auto& t = mesh.triangles[triangle];
+            const Point3 centroid = (1.0 / 3.0) * (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]);
+            std::size_t best = it->second.front();
+            double bestDistance = 1e300;
+            for (const std::size_t c : it->second) {
+                const Point3& p = textile.crossings[c].position;
+                const double d = std::hypot(p.x - centroid.x, p.y - centroid.y);
+                if (d < bestDistance) {
+                    bestDistance = d;
+                    best = c;
+                }
+            }
+            ++counts[best];
+        }
+    }
+    return counts;
+}
+
 namespace {
 
 /// The sections of a yarn near a crossing, with the weight of the flattening blend.
