@@ -53,7 +53,7 @@ Output:
 Exit status: 0 success; 2 invalid options; 1 output could not be written.
 
 Example (the bundled example textile, examples/data/twill):
-  towgeom generate --weave twill --repeat 2/2 --tows 4x4 --overlap 0.08 --out twill
+  towgeom generate --weave twill --repeat 2/2 --tows 4x4 --overlap 0.08 --sections 61 --points 24 --out twill
 )";
 
 std::pair<std::size_t, std::size_t> parsePair(const std::string& text, char sep, const char* what)
@@ -115,7 +115,7 @@ WeaveOptions parseOptions(const Args& args)
         const std::size_t n =
             parsePair(args.value("repeat").value_or(o.kind == WeaveKind::Satin ? "5" : "2"), '/', "--repeat").first;
         o.floatOver = static_cast<int>(n);
-        o.step = 2;
+        if (o.kind == WeaveKind::Satin) o.step = 2;
         repeat = o.kind == WeaveKind::Satin ? n : 2 * n;
     } else if (args.has("repeat")) {
         throw UsageError(std::string("--repeat does not apply to ") + weaveKindName(o.kind) + " weaves");

@@ -1,6 +1,7 @@
 // Small geometric helpers on one cross-section polygon, shared by validation and fitting.
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "towgeom/point.hpp"
@@ -39,6 +40,26 @@ inline double extent(const std::vector<Point3>& poly)
     BoundingBox b;
     for (const Point3& p : poly) b.add(p);
     return b.diagonal();
+}
+
+/// A unit vector along @p v (zero for a zero vector), scaled first so that components near
+/// 1e150 cannot overflow.
+inline Vector3 unitVector(const Vector3& v)
+{
+    const double big = std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z)));
+    if (!(big > 0.0)) return {};
+    const Vector3 w = (1.0 / big) * v;
+    return (1.0 / norm(w)) * w;
+}
+
+/// The cosine between the vector area of section @p i and the tow's local direction there
+/// (from the previous to the next section's centroid, one-sided at the ends): positive when the
+/// section goes counter-clockwise about the tow, near 0 when it lies along the tow.
+inline double localOrientation(const std::vector<std::vector<Point3>>& sections, std::size_t i)
+{
+    const std::size_t m = sections.size();
+    const Vector3 along = vertexCentroid(sections[i + 1 < m ? i + 1 : m - 1]) - vertexCentroid(sections[i == 0 ? 0 : i - 1]);
+    return dot(unitVector(vectorArea(sections[i])), unitVector(along));
 }
 
 }  // namespace towgeom::detail

@@ -187,9 +187,9 @@ const CrossSection& sectionAt(const GeneratedYarn& y, const Point3& p) { return 
 /// The yarn's sections [first, last] as a stack (with the yarn's current flattening).
 TowStack partial(const GeneratedYarn& y, const Window& w, std::size_t points)
 {
-    GeneratedYarn part = y;
-    part.stations.assign(y.stations.begin() + w.first, y.stations.begin() + w.last + 1);
-    part.sections.assign(y.sections.begin() + w.first, y.sections.begin() + w.last + 1);
+    const auto from = static_cast<std::ptrdiff_t>(w.first), to = static_cast<std::ptrdiff_t>(w.last) + 1;
+    const GeneratedYarn part{y.name, y.role, y.path, {y.stations.begin() + from, y.stations.begin() + to},
+                             {y.sections.begin() + from, y.sections.begin() + to}};
     return part.stack(points);
 }
 

@@ -104,15 +104,6 @@ void checkCounts(const TowStack& s)
              s.sections.size() - 1);
 }
 
-Vector3 unit(const Vector3& v)
-{
-    // Scale first: the norm of a vector with components near 1e150 overflows.
-    const double big = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-    if (!(big > 0.0)) return {};
-    const Vector3 w = (1.0 / big) * v;
-    return (1.0 / norm(w)) * w;
-}
-
 /// Consecutive sections must start at the same angular position: rotating the next section's
 /// points by k places must not fit it better to this one (then the input's first points are
 /// not consistent, and the surface would twist through the tow).
@@ -149,12 +140,8 @@ void checkStartPoints(const TowStack& s, std::size_t i)
 void checkAlongTow(const TowStack& s)
 {
     const std::size_t m = s.sections.size();
-    std::vector<Point3> centroid(m);
     double size = 0.0;
-    for (std::size_t i = 0; i < m; ++i) {
-        centroid[i] = detail::vertexCentroid(s.sections[i]);
-        size += detail::perimeter(s.sections[i]) / m;
-    }
+    for (std::size_t i = 0; i < m; ++i) size += detail::perimeter(s.sections[i]) / m;
     for (std::size_t i = 0; i + 1 < m; ++i) {
         double chord = 0.0;
         for (std::size_t j = 0; j < s.sections[i].size(); ++j) chord += distance(s.sections[i][j], s.sections[i + 1][j]);
@@ -164,10 +151,7 @@ void checkAlongTow(const TowStack& s)
     for (std::size_t i = 0; i + 1 < m; ++i) checkStartPoints(s, i);
     int orientation = 0;
     for (std::size_t i = 0; i < m; ++i) {
-        // Unit vectors: products of raw ones overflow for coordinates beyond 1e100.
-        const Vector3 along = unit(centroid[std::min(i + 1, m - 1)] - centroid[i == 0 ? 0 : i - 1]);
-        const Vector3 area = unit(detail::vectorArea(s.sections[i]));
-        const double d = dot(area, along);
+        const double d = detail::localOrientation(s.sections, i);
         if (!(std::fabs(d) > 1e-6))
             fail(s, ErrorCode::InconsistentOrientation,
                  sectionLabel(i) + " lies along the tow instead of across it", i);

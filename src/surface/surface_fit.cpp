@@ -27,20 +27,9 @@ using Sparse = Eigen::SparseMatrix<double>;
 }
 
 /// True when the sections go counter-clockwise about the tow's local direction. validateStack
-/// has checked that every section agrees with its neighbours' direction, so the sum of the local
-/// signs is a vote that a strongly bent tow (an arc beyond 180 degrees) cannot mislead.
-bool counterClockwise(const TowStack& stack)
-{
-    const auto& s = stack.sections;
-    const std::size_t m = s.size();
-    double votes = 0.0;
-    for (std::size_t i = 0; i < m; ++i) {
-        const Vector3 along = vertexCentroid(s[std::min(i + 1, m - 1)]) - vertexCentroid(s[i == 0 ? 0 : i - 1]);
-        const Vector3 area = vectorArea(s[i]);
-        votes += dot(area, along) > 0.0 ? 1.0 : -1.0;
-    }
-    return votes > 0.0;
-}
+/// has checked that every section agrees with the first, so this is section 0's local sign
+/// (local, so that a tow bent beyond 180 degrees cannot mislead it).
+bool counterClockwise(const TowStack& stack) { return localOrientation(stack.sections, 0) > 0.0; }
 
 /// The input in the surface's order: reversed around (first point kept first) when needed.
 std::vector<std::vector<Point3>> orderedSections(const TowStack& stack, bool reverse)
