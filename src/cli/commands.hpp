@@ -1,5 +1,6 @@
 // The towgeom subcommands. Each returns the process exit code:
-//   0 success, 2 bad input or usage (one line on stderr), 1 failure to write or internal error.
+//   0 success, 2 bad input or usage (one line on stderr), 1 failure to write or internal error,
+//   3 (detect) an intersection curve is open.
 #pragma once
 
 namespace towgeom::cli {
@@ -7,9 +8,13 @@ namespace towgeom::cli {
 constexpr int kExitOk = 0;
 constexpr int kExitFailure = 1;
 constexpr int kExitInput = 2;
+constexpr int kExitOpenCurve = 3;
 
 /// `towgeom fit FILE.stw... [options]`; argv[first] is the first argument after "fit".
 int runFit(int argc, char** argv, int first);
+
+/// `towgeom detect FILE.stw... [options]`.
+int runDetect(int argc, char** argv, int first);
 
 /// `towgeom generate --weave KIND --out DIR [options]`.
 int runGenerate(int argc, char** argv, int first);

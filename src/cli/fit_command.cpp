@@ -1,13 +1,12 @@
 // towgeom fit: read stacks, fit surfaces, report their accuracy as JSON, optionally write VTK.
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
-#include <map>
 #include <sstream>
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/tow_input.hpp"
 #include "core/json_writer.hpp"
 #include "export/vtk_format.hpp"
 #include "io/output_files.hpp"
@@ -86,11 +85,6 @@ FitMode parseMode(const std::optional<std::string>& text)
     throw UsageError("--mode must be interpolate, approximate or controlnet, not '" + *text + "'");
 }
 
-double seconds(std::chrono::steady_clock::time_point since)
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
-}
-
 }  // namespace
 
 int runFit(int argc, char** argv, int first)
@@ -116,23 +110,8 @@ int runFit(int argc, char** argv, int first)
         const bool quiet = args.has("quiet");
 
         // Read everything first: one bad file stops the run before anything is written.
-        std::vector<TowStack> stacks;
-        std::map<std::string, std::string> seen;
-        for (const std::string& path : args.positional()) {
-            stacks.push_back(readStackFile(path));
-            const auto [it, fresh] = seen.emplace(stacks.back().name, path);
-            if (!fresh)
-                throw Error(ErrorCode::BadName, "tow name '" + it->first + "' is also used by " + it->second, path);
-        }
-        std::vector<TowSurface> surfaces;
-        for (std::size_t k = 0; k < stacks.size(); ++k) {
-            const auto start = std::chrono::steady_clock::now();
-            surfaces.push_back(TowSurface::fit(stacks[k], options));
-            if (!quiet)
-                std::cerr << "towgeom fit: [" << k + 1 << "/" << stacks.size() << "] " << stacks[k].name << ": "
-                          << stacks[k].sectionCount() << " x " << stacks[k].pointsPerSection() << " points fitted in "
-                          << seconds(start) << " s\n";
-        }
+        const std::vector<TowStack> stacks = readStacks(args.positional());
+        const std::vector<TowSurface> surfaces = fitSurfaces(stacks, options, "fit", quiet);
 
         // Every figure first: an error here must leave neither files nor half a report.
         struct Figures {

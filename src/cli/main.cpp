@@ -17,6 +17,7 @@ and compatible finite-element meshes.
 
 Commands:
   fit       fit B-spline surfaces to tow stacks (.stw) and report accuracy and volume
+  detect    find every interpenetration between tows as intersection loops (JSON)
   generate  generate a woven textile (plain, twill, satin, basket, 3D orthogonal) as tow
             stacks, with controlled overlap or flattened to just touching
 
@@ -74,6 +75,7 @@ int main(int argc, char** argv)
     }
     try {
         if (!std::strcmp(command, "fit")) return runFit(argc, argv, 2);
+        if (!std::strcmp(command, "detect")) return runDetect(argc, argv, 2);
         if (!std::strcmp(command, "generate")) return runGenerate(argc, argv, 2);
     } catch (...) {
         // Commands report their own errors; this is the last guard against an unknown one.

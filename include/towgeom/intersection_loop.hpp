@@ -1,0 +1,99 @@
+/// @file intersection_loop.hpp
+/// @brief IntersectionLoop: one interpenetration of two tows, as its intersection curve.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "towgeom/curve3.hpp"
+#include "towgeom/point.hpp"
+#include "towgeom/tow_surface.hpp"
+
+namespace towgeom {
+
+/// Which tow of a pair: A is the first (lower index), B the second.
+enum class LoopSide { A, B };
+
+/// A point of an intersection curve with its parameters on both tows. v is unwrapped: it
+/// changes continuously along a loop and may lie beyond the period [vMin, vMax).
+struct LoopPoint {
+    Point3 point;  ///< in 3D: the mean of S_A(onA) and S_B(onB), which differ by at most the tolerance
+    UV onA;        ///< on tow A
+    UV onB;        ///< on tow B
+};
+
+/// One interpenetration region of two tows: the curve where their surfaces cross, consolidated
+/// into one piece (pieces split at either tow's periodic seam are joined, duplicates dropped).
+///
+/// A closed loop bounds the region where the tows overlap. An open one (closed() false) is a
+/// curve that cannot be closed: it runs into a tow's end (openReason() says which), or the
+/// surface-surface walk could not continue. Open curves are reported, never dropped or forced
+/// shut.
+///
+/// points() are exact intersection points (refined by Newton's method onto both surfaces),
+/// dense enough that the curve stays within the chordal tolerance of the polyline through them.
+/// For a closed loop the first point is not repeated at the end.
+///
+/// Copies are cheap (the data is shared); every member is const and thread-safe.
+class IntersectionLoop {
+public:
+    /// The loop's data; defined in the library only.
+    struct Data;
+    /// Used by the library; not needed by callers.
+    explicit IntersectionLoop(std::shared_ptr<const Data> data);
+
+    /// Index of tow A in the input of intersectTows() (0 for intersectPair()).
+    std::size_t towA() const;
+    /// Index of tow B in the input of intersectTows() (1 for intersectPair()).
+    std::size_t towB() const;
+    /// Tow A's surface.
+    const TowSurface& surfaceA() const;
+    /// Tow B's surface.
+    const TowSurface& surfaceB() const;
+    /// True when the curve closes.
+    bool closed() const;
+    /// Why the curve is open; empty when closed().
+    const std::string& openReason() const;
+
+    /// The dense exact points of the curve, in order.
+    const std::vector<LoopPoint>& points() const;
+    /// The curve in one tow's (u,v) space, v unwrapped (continuous along the loop).
+    std::vector<UV> uvCurve(LoopSide side) const;
+    /// The curve in one tow's (u,v) space cut into pieces that lie in its parameter rectangle
+    /// (v within [vMin, vMax]): a loop crossing the seam is split there, with an exact
+    /// intersection point inserted on the seam at both piece ends (v = vMin on one piece,
+    /// vMax on the other). A loop that does not cross the seam gives one piece (closed loops
+    /// repeat their first point at the end of it).
+    std::vector<std::vector<UV>> clippedUvCurves(LoopSide side) const;
+    /// True when the loop goes once around tow @p side (its unwrapped v changes by a whole
+    /// period): it encloses no region on that tow's surface.
+    bool windsAround(LoopSide side) const;
+
+    /// The length of the curve (of the polyline through points(), which is within the chordal
+    /// tolerance of the curve).
+    double length() const;
+    /// The area of tow @p side's surface enclosed by a closed loop (integral of |S_u x S_v| over
+    /// the loop's (u,v) polygon). NaN for open loops and for loops that wind around the tow.
+    double enclosedArea(LoopSide side) const;
+    /// The largest distance of a point of points() from tow @p side's surface (bounded by
+    /// |point - S(uv)|); at most the tolerance.
+    double maxDistance(LoopSide side) const;
+
+    /// The exact curve point at arc-length fraction @p s (0 <= s <= 1; 0 and 1 are the first
+    /// point and, for a closed loop, the first point again; for an open curve, the last).
+    LoopPoint at(double s) const;
+    /// Exact curve points spaced at most @p spacing apart along the curve (uniform in arc
+    /// length, at least 3 intervals for a closed loop). Closed loops do not repeat the first
+    /// point; open curves include both ends.
+    /// @throws towgeom::Error (InvalidArgument) if @p spacing is not positive and finite.
+    std::vector<LoopPoint> resample(double spacing) const;
+    /// The curve as an evaluable B-spline interpolating points() (periodic when closed).
+    Curve3 curve() const;
+
+private:
+    std::shared_ptr<const Data> data_;
+};
+
+}  // namespace towgeom

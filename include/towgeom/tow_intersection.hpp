@@ -1,0 +1,60 @@
+/// @file tow_intersection.hpp
+/// @brief intersectTows(): every interpenetration between the tows of a textile, as loops.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "towgeom/intersection_loop.hpp"
+#include "towgeom/intersection_options.hpp"
+#include "towgeom/tow_surface.hpp"
+
+namespace towgeom {
+
+/// Wall-clock time of the stages of intersectTows(), in milliseconds.
+struct IntersectionTimings {
+    double broadPhase = 0.0;  ///< span boxes and their overlaps
+    double exact = 0.0;       ///< seeds, surface-surface walks, consolidation (all pairs, wall clock)
+};
+
+/// The result of intersectTows().
+struct IntersectionReport {
+    /// Every intersection curve, ordered by (towA, towB), then by the curve's first point.
+    std::vector<IntersectionLoop> loops;
+    std::size_t towPairs = 0;         ///< all tow pairs, n (n - 1) / 2
+    std::size_t pairsTested = 0;      ///< pairs whose span boxes overlap: the exact stage ran on these
+    std::size_t windowPairs = 0;      ///< u-window pairs the exact stage searched
+    std::size_t seeds = 0;            ///< crossing facet pairs found in the windows (start guesses)
+    std::size_t walks = 0;            ///< surface-surface walks started
+    IntersectionTimings timings;      ///< where the time went
+    /// The number of loops with closed() false.
+    std::size_t openCount() const;
+};
+
+/// Finds every intersection curve between the tows of @p tows.
+///
+/// 1. Broad phase: a box around each u-span of each surface (from its control points, so it
+///    holds the surface) goes into CGAL's box intersection; only tow pairs with overlapping
+///    span boxes, and only the u-windows where they overlap, go further. The cost grows with
+///    the number of overlapping spans, not with the number of tow pairs.
+/// 2. Seeds: within each window pair, both surfaces are faceted on their section grids and
+///    CGAL's exact triangle-triangle tests give guesses of curve points.
+/// 3. Exact curves: each guess not on a curve already found is refined onto both surfaces and
+///    OpenCASCADE's surface-surface intersection walks the curve from there (IntPatch
+///    marching); where a walk stops at a periodic seam it is continued on the other side, until
+///    the curve closes or runs into a tow's end.
+/// 4. Consolidation: pieces are joined with v unwrapped, every point refined onto both
+///    surfaces by Newton's method and the polyline densified to the chordal tolerance.
+///
+/// Interpenetrations smaller than the facets of the section grid (shallower than the chord
+/// error of the input's sampling) can be missed by the seeds.
+///
+/// @throws towgeom::Error (InvalidArgument) for bad options, (Internal) naming the tow pair if
+///         a kernel fails.
+IntersectionReport intersectTows(const std::vector<TowSurface>& tows, const IntersectionOptions& options = {});
+
+/// The intersection curves of two tows (towA() = 0, towB() = 1).
+std::vector<IntersectionLoop> intersectPair(const TowSurface& a, const TowSurface& b,
+                                            const IntersectionOptions& options = {});
+
+}  // namespace towgeom

@@ -1,0 +1,171 @@
+// towgeom detect: fit the tows, find every interpenetration as an intersection loop, print JSON.
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "cli/args.hpp"
+#include "cli/commands.hpp"
+#include "cli/tow_input.hpp"
+#include "core/json_writer.hpp"
+#include "towgeom/towgeom.hpp"
+
+namespace towgeom::cli {
+
+namespace {
+
+const char* kDetectHelp = R"(Usage: towgeom detect FILE.stw... [options]
+
+Fits a surface to every tow (as 'towgeom fit' does), finds where the tows interpenetrate and
+prints one JSON object on stdout with one entry per intersection curve:
+
+  {"loops":[{"tow_a", "tow_b", "closed", "open_reason", "length", "area_a", "area_b",
+             "max_distance", "point_count", "points"}],
+   "tow_pairs", "pairs_tested", "window_pairs", "seeds", "walks",
+   "timings_ms":{"read", "fit", "broad_phase", "exact", "total"}}
+
+  closed        true for a loop around an interpenetration region; false for a curve that
+                cannot be closed (a tow ends inside the other, the surfaces are tangent)
+  length        length of the curve
+  area_a/b      area of tow a's / b's surface inside the loop (null when open, or when the
+                loop goes around the tow)
+  max_distance  largest distance of a curve point from either surface (<= the tolerance)
+  points        [x,y,z] along the curve, exact intersection points (the first is not
+                repeated for a closed loop); spaced by --spacing when given
+  pairs_tested  tow pairs whose bounding boxes (per span of the surfaces) overlap; only
+                these go to the exact surface-surface intersection
+
+Options:
+  --tolerance T       largest distance of a curve point from either surface, in the input's
+                      units (default: 1e-7 x the tow size, the mean perimeter / pi)
+  --chordal C         largest distance of the curve from a chord between its points
+                      (default: 1e-4 x the tow size)
+  --spacing S         print points spaced at most S apart along each curve instead
+  --allow-open        exit 0 even when a curve is open (still reported in the JSON)
+  --threads N         worker threads for the exact stage (default: all hardware threads)
+  --quiet             no progress lines on stderr
+  -h, --help          this help
+
+Exit status: 0 every curve is closed; 3 some curve is open (one stderr line per tow pair with
+an open curve; the JSON is printed all the same), unless --allow-open; 2 invalid input or
+usage (one line on stderr naming file and line); 1 internal failure.
+
+Example:
+  towgeom detect examples/data/twill/*.stw > loops.json
+)";
+
+double msSince(std::chrono::steady_clock::time_point t0)
+{
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::size_t parseThreads(const Args& args)
+{
+    const auto n = args.number("threads");
+    if (!n) return 0;
+    if (!(*n >= 1.0 && *n <= 1024.0) || std::floor(*n) != *n) throw UsageError("--threads must be a whole number from 1 to 1024");
+    return static_cast<std::size_t>(*n);
+}
+
+double parsePositive(const Args& args, const char* name)
+{
+    const auto x = args.number(name);
+    if (!x) return 0.0;
+    if (!(*x > 0.0) || !std::isfinite(*x)) throw UsageError(std::string("--") + name + " must be a positive number");
+    return *x;
+}
+
+}  // namespace
+
+int runDetect(int argc, char** argv, int first)
+{
+    try {
+        const Args args(argc, argv, first,
+                        {{"help"}, {"quiet"}, {"allow-open"}, {"tolerance", true}, {"chordal", true}, {"spacing", true},
+                         {"threads", true}});
+        if (args.has("help")) {
+            std::cout << kDetectHelp;
+            return kExitOk;
+        }
+        if (args.positional().empty()) throw UsageError("no input files; see towgeom detect --help");
+        IntersectionOptions options;
+        options.tolerance = parsePositive(args, "tolerance");
+        options.chordalTolerance = parsePositive(args, "chordal");
+        options.threads = parseThreads(args);
+        const double spacing = parsePositive(args, "spacing");
+        const bool quiet = args.has("quiet");
+
+        const auto start = std::chrono::steady_clock::now();
+        const std::vector<TowStack> stacks = readStacks(args.positional());
+        const double readMs = msSince(start);
+        const auto fitStart = std::chrono::steady_clock::now();
+        const std::vector<TowSurface> surfaces = fitSurfaces(stacks, {}, "detect", quiet);
+        const double fitMs = msSince(fitStart);
+
+        std::size_t reported = 0;
+        if (!quiet)
+            options.progress = [&reported](std::size_t done, std::size_t total) {
+                // About twenty lines however many pairs there are.
+                if (done == total || done * 20 / total > reported * 20 / total) {
+                    std::cerr << "towgeom detect: [" << done << "/" << total << "] tow pairs intersected\n";
+                    reported = done;
+                }
+            };
+        const IntersectionReport report = intersectTows(surfaces, options);
+
+        std::ostringstream out;
+        detail::JsonWriter json(out);
+        json.beginObject().key("loops").beginArray();
+        for (const IntersectionLoop& l : report.loops) {
+            json.beginObject();
+            json.key("tow_a").value(surfaces[l.towA()].name());
+            json.key("tow_b").value(surfaces[l.towB()].name());
+            json.key("closed").value(l.closed());
+            if (!l.closed()) json.key("open_reason").value(l.openReason());
+            json.key("length").value(l.length());
+            json.key("area_a").value(l.enclosedArea(LoopSide::A));
+            json.key("area_b").value(l.enclosedArea(LoopSide::B));
+            json.key("max_distance").value(std::max(l.maxDistance(LoopSide::A), l.maxDistance(LoopSide::B)));
+            const std::vector<LoopPoint> pts = spacing > 0.0 ? l.resample(spacing) : l.points();
+            json.key("point_count").value(pts.size());
+            json.key("points").beginArray();
+            for (const LoopPoint& p : pts) json.beginArray().value(p.point.x).value(p.point.y).value(p.point.z).endArray();
+            json.endArray();
+            json.endObject();
+        }
+        json.endArray();
+        json.key("tow_pairs").value(report.towPairs);
+        json.key("pairs_tested").value(report.pairsTested);
+        json.key("window_pairs").value(report.windowPairs);
+        json.key("seeds").value(report.seeds);
+        json.key("walks").value(report.walks);
+        json.key("timings_ms").beginObject();
+        json.key("read").value(readMs);
+        json.key("fit").value(fitMs);
+        json.key("broad_phase").value(report.timings.broadPhase);
+        json.key("exact").value(report.timings.exact);
+        json.key("total").value(msSince(start));
+        json.endObject();
+        json.endObject();
+        std::cout << out.str() << "\n";
+
+        if (!quiet)
+            std::cerr << "towgeom detect: " << report.loops.size() << " intersection curves (" << report.openCount()
+                      << " open) among " << report.pairsTested << " candidate tow pairs\n";
+        if (report.openCount() == 0 || args.has("allow-open")) return kExitOk;
+        std::string lastPair;
+        for (const IntersectionLoop& l : report.loops) {
+            if (l.closed()) continue;
+            const std::string pair = surfaces[l.towA()].name() + "' and '" + surfaces[l.towB()].name();
+            if (pair == lastPair) continue;
+            lastPair = pair;
+            std::cerr << "towgeom detect: open intersection curve between tows '" << pair << "': " << l.openReason()
+                      << " [open_curve]\n";
+        }
+        return kExitOpenCurve;
+    } catch (const std::exception& e) {
+        return reportError("detect", e);
+    }
+}
+
+}  // namespace towgeom::cli

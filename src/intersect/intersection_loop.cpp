@@ -1,0 +1,294 @@
+#include "towgeom/intersection_loop.hpp"
+
+#include <GeomAPI_Interpolate.hxx>
+#include <TColgp_HArray1OfPnt.hxx>
+#include <TColStd_HArray1OfReal.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "intersect/intersection_loop_data.hpp"
+#include "surface/curve3_impl.hpp"
+#include "surface/occt_convert.hpp"
+#include "surface/occt_guard.hpp"
+#include "surface/tow_surface_impl.hpp"
+#include "towgeom/error.hpp"
+
+namespace towgeom {
+
+namespace detail {
+
+SurfacePair surfacePairOf(const TowSurface& a, const TowSurface& b)
+{
+    SurfacePair s;
+    s.a = a.impl().surface;
+    s.b = b.impl().surface;
+    const ParameterRange ra = a.parameterRange(), rb = b.parameterRange();
+    s.uMinA = ra.uMin;
+    s.uMaxA = ra.uMax;
+    s.uMinB = rb.uMin;
+    s.uMaxB = rb.uMax;
+    return s;
+}
+
+IntersectionLoop makeLoop(std::size_t towA, std::size_t towB, const TowSurface& a, const TowSurface& b,
+                          const std::vector<PointOn2>& points, bool closed, const std::string& openReason,
+                          double tolerance)
+{
+    auto d = std::make_shared<IntersectionLoop::Data>(a, b);
+    d->towA = towA;
+    d->towB = towB;
+    d->closed = closed;
+    d->openReason = openReason;
+    d->tolerance = tolerance;
+    d->points.reserve(points.size());
+    for (const PointOn2& p : points) {
+        d->points.push_back({p.point, {p.ua, p.va}, {p.ub, p.vb}});
+        d->maxDistanceA = std::max(d->maxDistanceA, distance(p.point, a.point(p.ua, p.va)));
+        d->maxDistanceB = std::max(d->maxDistanceB, distance(p.point, b.point(p.ub, p.vb)));
+    }
+    d->cumulative.assign(1, 0.0);
+    const std::size_t n = d->points.size();
+    const std::size_t segments = n < 2 ? 0 : closed ? n : n - 1;
+    for (std::size_t k = 0; k < segments; ++k)
+        d->cumulative.push_back(d->cumulative.back() + distance(d->points[k].point, d->points[(k + 1) % n].point));
+    return IntersectionLoop(std::move(d));
+}
+
+}  // namespace detail
+
+namespace {
+
+UV sideOf(const LoopPoint& p, LoopSide side) { return side == LoopSide::A ? p.onA : p.onB; }
+
+/// The loop's points with the closing point appended (one turn on) for closed loops.
+std::vector<LoopPoint> walkOrder(const IntersectionLoop::Data& d)
+{
+    std::vector<LoopPoint> pts = d.points;
+    if (d.closed && !pts.empty()) {
+        LoopPoint first = pts.front();
+        const LoopPoint& last = pts.back();
+        const double pa = d.a.parameterRange().vPeriod(), pb = d.b.parameterRange().vPeriod();
+        first.onA.v += pa * std::round((last.onA.v - first.onA.v) / pa);
+        first.onB.v += pb * std::round((last.onB.v - first.onB.v) / pb);
+        pts.push_back(first);
+    }
+    return pts;
+}
+
+detail::PointOn2 toPointOn2(const LoopPoint& p) { return {p.onA.u, p.onA.v, p.onB.u, p.onB.v, p.point, 0.0}; }
+
+LoopPoint toLoopPoint(const detail::PointOn2& p) { return {p.point, {p.ua, p.va}, {p.ub, p.vb}}; }
+
+LoopPoint mix(const LoopPoint& a, const LoopPoint& b, double t)
+{
+    const auto lerp = [t](double x, double y) { return x + t * (y - x); };
+    return {{lerp(a.point.x, b.point.x), lerp(a.point.y, b.point.y), lerp(a.point.z, b.point.z)},
+            {lerp(a.onA.u, b.onA.u), lerp(a.onA.v, b.onA.v)},
+            {lerp(a.onB.u, b.onB.u), lerp(a.onB.v, b.onB.v)}};
+}
+
+/// The exact curve point where the curve crosses the plane normal to the chord [p, q] at
+/// fraction @p t along it; the point on the chord if Newton's method fails.
+LoopPoint exactOnChord(const detail::SurfacePair& sp, const LoopPoint& p, const LoopPoint& q, double t, double tolerance)
+{
+    const LoopPoint guess = mix(p, q, t);
+    detail::PointOn2 x = toPointOn2(guess);
+    detail::PointCondition c;
+    c.kind = detail::PointCondition::Kind::Plane;
+    c.origin = guess.point;
+    c.normal = q.point - p.point;
+    const double n = norm(c.normal);
+    if (!(n > 0.0)) return guess;
+    c.normal = (1.0 / n) * c.normal;
+    return detail::refineOnIntersection(sp, x, c, tolerance) ? toLoopPoint(x) : guess;
+}
+
+}  // namespace
+
+IntersectionLoop::IntersectionLoop(std::shared_ptr<const Data> data) : data_(std::move(data)) {}
+
+std::size_t IntersectionLoop::towA() const { return data_->towA; }
+std::size_t IntersectionLoop::towB() const { return data_->towB; }
+const TowSurface& IntersectionLoop::surfaceA() const { return data_->a; }
+const TowSurface& IntersectionLoop::surfaceB() const { return data_->b; }
+bool IntersectionLoop::closed() const { return data_->closed; }
+const std::string& IntersectionLoop::openReason() const { return data_->openReason; }
+const std::vector<LoopPoint>& IntersectionLoop::points() const { return data_->points; }
+double IntersectionLoop::length() const { return data_->cumulative.back(); }
+
+double IntersectionLoop::maxDistance(LoopSide side) const
+{
+    return side == LoopSide::A ? data_->maxDistanceA : data_->maxDistanceB;
+}
+
+std::vector<UV> IntersectionLoop::uvCurve(LoopSide side) const
+{
+    std::vector<UV> uv;
+    uv.reserve(data_->points.size());
+    for (const LoopPoint& p : data_->points) uv.push_back(sideOf(p, side));
+    return uv;
+}
+
+bool IntersectionLoop::windsAround(LoopSide side) const
+{
+    if (!data_->closed || data_->points.empty()) return false;
+    const std::vector<LoopPoint> pts = walkOrder(*data_);
+    const double period = (side == LoopSide::A ? data_->a : data_->b).parameterRange().vPeriod();
+    return std::abs(sideOf(pts.back(), side).v - sideOf(pts.front(), side).v) > 0.5 * period;
+}
+
+double IntersectionLoop::enclosedArea(LoopSide side) const
+{
+    if (!data_->closed || data_->points.size() < 3 || windsAround(side)) return std::numeric_limits<double>::quiet_NaN();
+    const TowSurface& s = side == LoopSide::A ? data_->a : data_->b;
+    const std::vector<LoopPoint> pts = walkOrder(*data_);
+    double u0 = 1e300;
+    for (const LoopPoint& p : pts) u0 = std::min(u0, sideOf(p, side).u);
+    // Green: area = | closed integral of F dv |, F(u, v) = integral from u0 to u of |S_u x S_v|(s, v) ds.
+    static const double gx[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
+                                 0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
+    static const double gw[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
+                                 0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+    const auto F = [&](double u, double v) {
+        double sum = 0.0;
+        const double h = 0.5 * (u - u0);
+        if (h == 0.0) return 0.0;
+        for (int k = 0; k < 8; ++k) {
+            const SurfaceDerivatives d = s.derivatives(u0 + h * (1.0 + gx[k]), v);
+            sum += gw[k] * norm(cross(d.du, d.dv));
+        }
+        return h * sum;
+    };
+    // Each chord is replaced by the parabola in (u, v) through its ends and the exact curve
+    // point in its middle, so the polygon's chord error does not enter the area.
+    const detail::SurfacePair sp = detail::surfacePairOf(data_->a, data_->b);
+    static const double tx[3] = {0.1127016653792583, 0.5, 0.8872983346207417};
+    static const double tw[3] = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
+    double area = 0.0;
+    for (std::size_t k = 0; k + 1 < pts.size(); ++k) {
+        const UV a = sideOf(pts[k], side), b = sideOf(pts[k + 1], side);
+        const UV m = sideOf(exactOnChord(sp, pts[k], pts[k + 1], 0.5, data_->tolerance), side);
+        double seg = 0.0;
+        for (int q = 0; q < 3; ++q) {
+            const double t = tx[q];
+            // Lagrange basis on t = 0, 1/2, 1 and its derivative.
+            const double l0 = 2.0 * (t - 0.5) * (t - 1.0), l1 = -4.0 * t * (t - 1.0), l2 = 2.0 * t * (t - 0.5);
+            const double d0 = 4.0 * t - 3.0, d1 = 4.0 - 8.0 * t, d2 = 4.0 * t - 1.0;
+            const double u = l0 * a.u + l1 * m.u + l2 * b.u, v = l0 * a.v + l1 * m.v + l2 * b.v;
+            const double dv = d0 * a.v + d1 * m.v + d2 * b.v;
+            seg += tw[q] * F(u, v) * dv;
+        }
+        area += seg;
+    }
+    return std::abs(area);
+}
+
+LoopPoint IntersectionLoop::at(double s) const
+{
+    const Data& d = *data_;
+    if (!(s >= 0.0 && s <= 1.0)) throw Error(ErrorCode::InvalidArgument, "IntersectionLoop::at: s must lie in [0, 1]");
+    const std::vector<LoopPoint> pts = walkOrder(d);
+    if (pts.size() < 2) return pts.front();
+    const double target = s * d.cumulative.back();
+    const std::size_t k =
+        std::min<std::size_t>(std::upper_bound(d.cumulative.begin(), d.cumulative.end(), target) - d.cumulative.begin(),
+                              d.cumulative.size() - 1) - 1;
+    const double len = d.cumulative[k + 1] - d.cumulative[k];
+    const double t = len > 0.0 ? std::clamp((target - d.cumulative[k]) / len, 0.0, 1.0) : 0.0;
+    if (t == 0.0) return pts[k];
+    if (t == 1.0) return pts[k + 1];
+    const detail::SurfacePair sp = detail::surfacePairOf(d.a, d.b);
+    return detail::guarded("", "IntersectionLoop::at", [&] { return exactOnChord(sp, pts[k], pts[k + 1], t, d.tolerance); });
+}
+
+std::vector<LoopPoint> IntersectionLoop::resample(double spacing) const
+{
+    if (!(spacing > 0.0) || !std::isfinite(spacing))
+        throw Error(ErrorCode::InvalidArgument, "IntersectionLoop::resample: spacing must be positive and finite");
+    const double L = length();
+    std::size_t n = static_cast<std::size_t>(std::ceil(L / spacing));
+    if (data_->closed) n = std::max<std::size_t>(n, 3);
+    n = std::max<std::size_t>(n, 1);
+    std::vector<LoopPoint> out;
+    const std::size_t count = data_->closed ? n : n + 1;
+    out.reserve(count);
+    for (std::size_t k = 0; k < count; ++k) out.push_back(at(static_cast<double>(k) / static_cast<double>(n)));
+    return out;
+}
+
+std::vector<std::vector<UV>> IntersectionLoop::clippedUvCurves(LoopSide side) const
+{
+    const Data& d = *data_;
+    const TowSurface& s = side == LoopSide::A ? d.a : d.b;
+    const ParameterRange r = s.parameterRange();
+    const double period = r.vPeriod();
+    std::vector<LoopPoint> pts = d.closed ? walkOrder(d) : d.points;
+    std::vector<std::vector<UV>> pieces(1);
+    const auto cell = [&](double v) { return std::floor((v - r.vMin) / period); };
+    const detail::SurfacePair sp = detail::surfacePairOf(d.a, d.b);
+    std::vector<double> pieceCell{pts.empty() ? 0.0 : cell(sideOf(pts.front(), side).v)};
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+        const UV cur = sideOf(pts[k], side);
+        if (k > 0) {
+            const UV prev = sideOf(pts[k - 1], side);
+            const double c0 = cell(prev.v), c1 = cell(cur.v);
+            if (c0 != c1) {
+                // The seam value between them, and the exact curve point on it.
+                const double seam = r.vMin + period * std::max(c0, c1);
+                const double t = (seam - prev.v) / (cur.v - prev.v);
+                detail::PointOn2 x = toPointOn2(mix(pts[k - 1], pts[k], t));
+                detail::PointCondition c;
+                c.kind = side == LoopSide::A ? detail::PointCondition::Kind::FixVA : detail::PointCondition::Kind::FixVB;
+                c.value = seam;
+                UV onSeam = sideOf(toLoopPoint(x), side);
+                if (detail::refineOnIntersection(sp, x, c, d.tolerance)) onSeam = sideOf(toLoopPoint(x), side);
+                onSeam.v = seam;
+                pieces.back().push_back({onSeam.u, onSeam.v});
+                pieces.emplace_back();
+                pieces.back().push_back({onSeam.u, onSeam.v});
+                pieceCell.push_back(c1);
+            }
+        }
+        pieces.back().push_back(cur);
+    }
+    // Shift each piece into the rectangle; the two seam points of a junction become vMax/vMin.
+    for (std::size_t p = 0; p < pieces.size(); ++p) {
+        const double c = pieceCell[p];
+        for (UV& uv : pieces[p]) uv.v -= period * c;
+        auto& pc = pieces[p];
+        for (UV& uv : pc) uv.v = std::clamp(uv.v, r.vMin, r.vMax);
+    }
+    // A closed loop starts inside a piece: join its last piece to its first.
+    if (d.closed && pieces.size() > 1) {
+        std::vector<UV>& last = pieces.back();
+        last.insert(last.end(), pieces.front().begin() + 1, pieces.front().end());
+        pieces.front() = std::move(last);
+        pieces.pop_back();
+    }
+    return pieces;
+}
+
+Curve3 IntersectionLoop::curve() const
+{
+    const Data& d = *data_;
+    if (d.points.size() < 3) throw Error(ErrorCode::InvalidArgument, "IntersectionLoop::curve: too few points");
+    return detail::guarded("", "IntersectionLoop::curve", [&]() -> Curve3 {
+        const int n = static_cast<int>(d.points.size());
+        Handle(TColgp_HArray1OfPnt) pts = new TColgp_HArray1OfPnt(1, n);
+        // Periodic interpolation takes one parameter more: the period's end.
+        const int np = d.closed ? n + 1 : n;
+        Handle(TColStd_HArray1OfReal) par = new TColStd_HArray1OfReal(1, np);
+        for (int k = 0; k < n; ++k) pts->SetValue(k + 1, detail::toOcct(d.points[k].point));
+        for (int k = 0; k < np; ++k) par->SetValue(k + 1, d.cumulative[k]);
+        GeomAPI_Interpolate interp(pts, par, d.closed ? Standard_True : Standard_False, Precision::Confusion());
+        interp.Perform();
+        if (!interp.IsDone()) throw Error(ErrorCode::Internal, "IntersectionLoop::curve: interpolation failed");
+        auto impl = std::make_shared<Curve3::Impl>();
+        impl->curve = interp.Curve();
+        return Curve3(impl);
+    });
+}
+
+}  // namespace towgeom

@@ -1,0 +1,37 @@
+// The data behind an IntersectionLoop.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "intersect/intersection_point.hpp"
+#include "towgeom/intersection_loop.hpp"
+
+namespace towgeom {
+
+struct IntersectionLoop::Data {
+    Data(TowSurface surfaceA, TowSurface surfaceB) : a(std::move(surfaceA)), b(std::move(surfaceB)) {}
+    std::size_t towA = 0, towB = 1;
+    TowSurface a, b;
+    bool closed = false;
+    std::string openReason;
+    std::vector<LoopPoint> points;
+    std::vector<double> cumulative;  ///< arc length at each point (closed: plus the closing segment)
+    double tolerance = 1e-7;         ///< the point tolerance the loop was computed with
+    double maxDistanceA = 0.0, maxDistanceB = 0.0;
+};
+
+namespace detail {
+
+/// The two surfaces of a loop in kernel form.
+SurfacePair surfacePairOf(const TowSurface& a, const TowSurface& b);
+
+/// Builds a loop from traced points: fills the arc lengths and distances.
+IntersectionLoop makeLoop(std::size_t towA, std::size_t towB, const TowSurface& a, const TowSurface& b,
+                          const std::vector<PointOn2>& points, bool closed, const std::string& openReason,
+                          double tolerance);
+
+}  // namespace detail
+
+}  // namespace towgeom

@@ -1,0 +1,53 @@
+// A point of the intersection of two tow surfaces, with its parameters on both, and the Newton
+// corrector that puts a guess exactly on the intersection curve.
+#pragma once
+
+#include <Geom_BSplineSurface.hxx>
+
+#include "towgeom/point.hpp"
+
+namespace towgeom::detail {
+
+/// A point on two surfaces: (ua, va) on A, (ub, vb) on B. v may be unwrapped (beyond the period).
+struct PointOn2 {
+    double ua = 0.0, va = 0.0, ub = 0.0, vb = 0.0;
+    Point3 point;  ///< the mean of S_A(ua, va) and S_B(ub, vb) after refinement
+    double gap = 0.0;  ///< |S_A(ua, va) - S_B(ub, vb)|
+};
+
+/// The fourth equation that makes "on both surfaces" (three equations, four unknowns) a point.
+struct PointCondition {
+    enum class Kind {
+        Plane,  ///< (S_A - origin) . normal = 0: the point where the curve crosses a plane
+        FixVA,  ///< va = value (where the curve crosses a v-iso line of A, e.g. the seam)
+        FixVB,  ///< vb = value
+        FixUA,  ///< ua = value (where the curve crosses a section of A, e.g. its end)
+        FixUB   ///< ub = value
+    };
+    Kind kind = Kind::Plane;
+    Point3 origin;    ///< Plane only
+    Vector3 normal;   ///< Plane only (need not be unit)
+    double value = 0.0;  ///< Fix* only
+};
+
+/// The two surfaces and their u domains (points beyond a tow's end are refused).
+struct SurfacePair {
+    Handle(Geom_BSplineSurface) a;
+    Handle(Geom_BSplineSurface) b;
+    double uMinA = 0.0, uMaxA = 1.0, uMinB = 0.0, uMaxB = 1.0;
+};
+
+/// The unit tangent of the intersection curve at @p x: the normalised cross product of the two
+/// surface normals, (0,0,0) where the surfaces are tangent.
+Vector3 intersectionTangent(const SurfacePair& s, const PointOn2& x);
+
+/// Newton's method on S_A(ua,va) = S_B(ub,vb) plus @p condition, from @p x. On success @p x is
+/// the refined point (gap <= @p tolerance) and true is returned; false when the iteration does
+/// not converge within a few steps, becomes singular (tangent surfaces) or leaves a tow's ends.
+bool refineOnIntersection(const SurfacePair& s, PointOn2& x, const PointCondition& condition, double tolerance);
+
+/// refineOnIntersection() with the plane through x.point normal to the curve's tangent: the
+/// intersection point nearest a good guess.
+bool refineNearest(const SurfacePair& s, PointOn2& x, double tolerance);
+
+}  // namespace towgeom::detail

@@ -1,0 +1,36 @@
+// From one point on an intersection curve to the whole curve: OCCT walks a piece, which ends at
+// a periodic seam, a tow's end, or back at its start; at a seam the walk is continued on the
+// other side until the curve closes or reaches a tow's end. The pieces are joined with v
+// unwrapped, refined onto both surfaces and densified to a chordal tolerance.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "intersect/intersection_point.hpp"
+#include "intersect/surface_walk.hpp"
+
+namespace towgeom::detail {
+
+/// Tolerances of a trace, in the user's units.
+struct TraceTolerances {
+    double point = 1e-7;     ///< largest gap between the two surfaces at a loop point
+    double chordal = 1e-4;   ///< largest distance of the curve from a chord between loop points
+    double closing = 1e-6;   ///< two piece ends closer than this are the same point
+};
+
+/// One traced intersection curve.
+struct TracedCurve {
+    std::vector<PointOn2> points;  ///< in order, v unwrapped; closed: the first is not repeated
+    bool closed = false;
+    std::string openReason;        ///< why not closed (empty when closed)
+};
+
+/// Traces the curve through @p seed (a point already on the intersection).
+TracedCurve traceCurve(const SurfacePair& surfaces, const SurfaceWalker& walker, const PointOn2& seed,
+                       const TraceTolerances& tolerances);
+
+/// The distance from @p p to the polyline of @p curve (closing segment included when closed).
+double distanceToCurve(const TracedCurve& curve, const Point3& p);
+
+}  // namespace towgeom::detail

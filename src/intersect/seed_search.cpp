@@ -1,0 +1,145 @@
+// CGAL first: OpenCASCADE (through seed_search.hpp) defines a macro named Handle.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/box_intersection_d.h>
+#include <CGAL/intersections.h>
+
+#include "intersect/seed_search.hpp"
+
+#include <algorithm>
+
+namespace towgeom::detail {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Triangle = Kernel::Triangle_3;
+using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 3, std::size_t, CGAL::Box_intersection_d::ID_EXPLICIT>;
+
+/// A facet with the (u, v) of its corners (v unwrapped across the seam).
+struct Facet {
+    Triangle triangle;
+    UV uv[3];
+};
+
+std::vector<Facet> facetsIn(const SurfaceGrid& g, const UWindow& w)
+{
+    std::vector<Facet> facets;
+    const std::size_t m = g.u.size(), n = g.v.size();
+    const auto lo = std::upper_bound(g.u.begin(), g.u.end(), w.uMin);
+    const std::size_t first = lo == g.u.begin() ? 0 : static_cast<std::size_t>(lo - g.u.begin()) - 1;
+    for (std::size_t i = first; i + 1 < m && g.u[i] < w.uMax; ++i)
+        for (std::size_t j = 0; j < n; ++j) {
+            const std::size_t jn = (j + 1) % n;
+            const double vj = g.v[j], vn = j + 1 < n ? g.v[jn] : g.v[0] + g.period;
+            const auto pt = [&](std::size_t r, std::size_t c) {
+                const Point3& q = g.points[r * n + c];
+                return Point(q.x, q.y, q.z);
+            };
+            facets.push_back({Triangle(pt(i, j), pt(i + 1, j), pt(i + 1, jn)),
+                              {{g.u[i], vj}, {g.u[i + 1], vj}, {g.u[i + 1], vn}}});
+            facets.push_back({Triangle(pt(i, j), pt(i + 1, jn), pt(i, jn)),
+                              {{g.u[i], vj}, {g.u[i + 1], vn}, {g.u[i], vn}}});
+        }
+    return facets;
+}
+
+/// (u, v) of the point of @p f's plane nearest @p p, by barycentric interpolation.
+UV interpolate(const Facet& f, const Point& p)
+{
+    const Kernel::Vector_3 e1 = f.triangle[1] - f.triangle[0], e2 = f.triangle[2] - f.triangle[0], d = p - f.triangle[0];
+    const double a = e1 * e1, b = e1 * e2, c = e2 * e2, r1 = d * e1, r2 = d * e2;
+    const double det = a * c - b * b;
+    double s = 1.0 / 3.0, t = 1.0 / 3.0;
+    if (det > 0.0) {
+        s = std::clamp((c * r1 - b * r2) / det, 0.0, 1.0);
+        t = std::clamp((a * r2 - b * r1) / det, 0.0, 1.0 - s);
+    }
+    const double w0 = 1.0 - s - t;
+    return {w0 * f.uv[0].u + s * f.uv[1].u + t * f.uv[2].u, w0 * f.uv[0].v + s * f.uv[1].v + t * f.uv[2].v};
+}
+
+/// A point of the crossing of two triangles known to intersect.
+Point crossingPoint(const Triangle& x, const Triangle& y)
+{
+    const auto r = CGAL::intersection(x, y);
+    if (r) {
+        if (const Point* p = boost::get<Point>(&*r)) return *p;
+        if (const Kernel::Segment_3* s = boost::get<Kernel::Segment_3>(&*r)) return CGAL::midpoint(s->source(), s->target());
+        if (const Triangle* t = boost::get<Triangle>(&*r)) return CGAL::centroid(*t);
+        if (const auto* v = boost::get<std::vector<Point>>(&*r); v && !v->empty()) {
+            double x = 0.0, y = 0.0, z = 0.0;
+            for (const Point& q : *v) {
+                x += q.x();
+                y += q.y();
+                z += q.z();
+            }
+            const double n = static_cast<double>(v->size());
+            return Point(x / n, y / n, z / n);
+        }
+    }
+    return CGAL::midpoint(CGAL::centroid(x), CGAL::centroid(y));
+}
+
+double longestEdge(const Triangle& t)
+{
+    return std::sqrt(std::max({CGAL::squared_distance(t[0], t[1]), CGAL::squared_distance(t[1], t[2]),
+                               CGAL::squared_distance(t[2], t[0])}));
+}
+
+}  // namespace
+
+SurfaceGrid sampleGrid(const TowSurface& tow)
+{
+    SurfaceGrid g;
+    g.u = tow.sectionParameters();
+    g.v = tow.pointParameters();
+    const ParameterRange r = tow.parameterRange();
+    g.period = r.vPeriod();
+    g.points.reserve(g.u.size() * g.v.size());
+    for (double u : g.u)
+        for (double v : g.v) g.points.push_back(tow.point(u, v));
+    const std::size_t n = g.v.size();
+    for (std::size_t i = 0; i < g.u.size(); ++i)
+        for (std::size_t j = 0; j < n; ++j) {
+            const Point3& p = g.points[i * n + j];
+            g.maxEdge = std::max(g.maxEdge, distance(p, g.points[i * n + (j + 1) % n]));
+            if (i + 1 < g.u.size()) {
+                g.maxEdge = std::max(g.maxEdge, distance(p, g.points[(i + 1) * n + j]));
+                g.maxEdge = std::max(g.maxEdge, distance(p, g.points[(i + 1) * n + (j + 1) % n]));
+            }
+        }
+    return g;
+}
+
+std::vector<Seed> findSeeds(const SurfaceGrid& a, const SurfaceGrid& b, const WindowPair& window)
+{
+    const std::vector<Facet> fa = facetsIn(a, window.a), fb = facetsIn(b, window.b);
+    std::vector<Box> ba, bb;
+    ba.reserve(fa.size());
+    bb.reserve(fb.size());
+    for (std::size_t k = 0; k < fa.size(); ++k) ba.emplace_back(fa[k].triangle.bbox(), k);
+    for (std::size_t k = 0; k < fb.size(); ++k) bb.emplace_back(fb[k].triangle.bbox(), k);
+    std::vector<std::pair<std::size_t, std::size_t>> hits;
+    CGAL::box_intersection_d(ba.begin(), ba.end(), bb.begin(), bb.end(), [&](const Box& x, const Box& y) {
+        if (CGAL::do_intersect(fa[x.handle()].triangle, fb[y.handle()].triangle)) hits.emplace_back(x.handle(), y.handle());
+    });
+    std::sort(hits.begin(), hits.end());
+    std::vector<Seed> seeds;
+    seeds.reserve(hits.size());
+    for (const auto& [i, j] : hits) {
+        const Point p = crossingPoint(fa[i].triangle, fb[j].triangle);
+        const UV ua = interpolate(fa[i], p), ub = interpolate(fb[j], p);
+        Seed s;
+        s.guess.ua = ua.u;
+        s.guess.va = ua.v;
+        s.guess.ub = ub.u;
+        s.guess.vb = ub.v;
+        s.guess.point = {p.x(), p.y(), p.z()};
+        s.facetSize = std::max(longestEdge(fa[i].triangle), longestEdge(fb[j].triangle));
+        seeds.push_back(s);
+    }
+    return seeds;
+}
+
+}  // namespace towgeom::detail

@@ -1,0 +1,183 @@
+#include "towgeom/tow_intersection.hpp"
+
+#include <Standard_Failure.hxx>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "intersect/broad_phase.hpp"
+#include "intersect/intersection_loop_data.hpp"
+#include "intersect/loop_tracing.hpp"
+#include "intersect/seed_search.hpp"
+#include "intersect/surface_walk.hpp"
+#include "towgeom/error.hpp"
+
+namespace towgeom {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t0)
+{
+    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+void checkOptions(const IntersectionOptions& o)
+{
+    const auto positive = [](double x) { return x > 0.0 && std::isfinite(x); };
+    const auto nonNegative = [](double x) { return x >= 0.0 && std::isfinite(x); };
+    if (!nonNegative(o.tolerance)) throw Error(ErrorCode::InvalidArgument, "intersection tolerance must be >= 0 and finite");
+    if (!positive(o.relativeTolerance))
+        throw Error(ErrorCode::InvalidArgument, "relative intersection tolerance must be > 0 and finite");
+    if (!nonNegative(o.chordalTolerance)) throw Error(ErrorCode::InvalidArgument, "chordal tolerance must be >= 0 and finite");
+    if (!positive(o.relativeChordalTolerance))
+        throw Error(ErrorCode::InvalidArgument, "relative chordal tolerance must be > 0 and finite");
+}
+
+/// Runs body(i) for i in [0, n) on @p threads threads; rethrows the first exception.
+template <class Body>
+void parallelFor(std::size_t n, std::size_t threads, Body&& body)
+{
+    std::atomic<std::size_t> next{0};
+    std::exception_ptr failure;
+    std::mutex failureMutex;
+    const auto work = [&] {
+        for (std::size_t i = next++; i < n; i = next++) {
+            try {
+                body(i);
+            } catch (...) {
+                std::lock_guard<std::mutex> lock(failureMutex);
+                if (!failure) failure = std::current_exception();
+                next = n;
+            }
+        }
+    };
+    threads = std::max<std::size_t>(1, std::min(threads, n));
+    std::vector<std::thread> pool;
+    for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
+}
+
+struct PairResult {
+    std::vector<IntersectionLoop> loops;
+    std::size_t seeds = 0;
+    std::size_t walks = 0;
+};
+
+PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::vector<detail::SurfaceGrid>& grids,
+                              const detail::CandidatePair& c, const IntersectionOptions& o)
+{
+    const TowSurface& a = tows[c.a];
+    const TowSurface& b = tows[c.b];
+    const double size = std::min(a.towSize(), b.towSize());
+    detail::TraceTolerances tol;
+    tol.point = o.tolerance > 0.0 ? o.tolerance : o.relativeTolerance * size;
+    tol.chordal = o.chordalTolerance > 0.0 ? o.chordalTolerance : o.relativeChordalTolerance * size;
+    tol.closing = std::max(100.0 * tol.point, 1e-3 * tol.chordal);
+    const detail::SurfacePair surfaces = detail::surfacePairOf(a, b);
+    const detail::SurfaceWalker walker(surfaces, tol.point);
+
+    PairResult result;
+    std::vector<detail::TracedCurve> curves;
+    const auto near = [&](const Point3& p, double within) {
+        return std::any_of(curves.begin(), curves.end(),
+                           [&](const detail::TracedCurve& t) { return detail::distanceToCurve(t, p) <= within; });
+    };
+    for (const detail::WindowPair& w : c.windows) {
+        const std::vector<detail::Seed> seeds = detail::findSeeds(grids[c.a], grids[c.b], w);
+        result.seeds += seeds.size();
+        for (const detail::Seed& s : seeds) {
+            // A facet crossing lies within a facet's size of the curve it comes from.
+            if (near(s.guess.point, s.facetSize)) continue;
+            detail::PointOn2 start = s.guess;
+            if (!detail::refineNearest(surfaces, start, tol.point)) continue;
+            if (near(start.point, 2.0 * tol.chordal + tol.closing)) continue;
+            ++result.walks;
+            detail::TracedCurve t = detail::traceCurve(surfaces, walker, start, tol);
+            if (t.points.size() < 2) continue;
+            if (near(t.points[t.points.size() / 2].point, 2.0 * tol.chordal + tol.closing)) continue;
+            curves.push_back(std::move(t));
+        }
+    }
+    for (const detail::TracedCurve& t : curves)
+        result.loops.push_back(detail::makeLoop(c.a, c.b, a, b, t.points, t.closed, t.openReason, tol.point));
+    return result;
+}
+
+}  // namespace
+
+std::size_t IntersectionReport::openCount() const
+{
+    return static_cast<std::size_t>(std::count_if(loops.begin(), loops.end(), [](const IntersectionLoop& l) { return !l.closed(); }));
+}
+
+IntersectionReport intersectTows(const std::vector<TowSurface>& tows, const IntersectionOptions& options)
+{
+    checkOptions(options);
+    IntersectionReport report;
+    report.towPairs = tows.size() * (tows.size() - (tows.empty() ? 0 : 1)) / 2;
+    const std::size_t threads = options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+
+    const Clock::time_point t0 = Clock::now();
+    double margin = 0.0;
+    for (const TowSurface& t : tows)
+        margin = std::max(margin, options.tolerance > 0.0 ? options.tolerance : options.relativeTolerance * t.towSize());
+    std::vector<detail::CandidatePair> candidates;
+    try {
+        candidates = detail::broadPhase(tows, margin);
+    } catch (const Standard_Failure& e) {
+        throw Error(ErrorCode::Internal, std::string("OpenCASCADE failed in the broad phase: ") + e.GetMessageString());
+    }
+    report.timings.broadPhase = msSince(t0);
+    report.pairsTested = candidates.size();
+    for (const auto& c : candidates) report.windowPairs += c.windows.size();
+
+    const Clock::time_point t1 = Clock::now();
+    // Section grids of the tows that take part (in parallel: each costs M x N evaluations).
+    std::vector<char> used(tows.size(), 0);
+    for (const auto& c : candidates) used[c.a] = used[c.b] = 1;
+    std::vector<detail::SurfaceGrid> grids(tows.size());
+    parallelFor(tows.size(), threads, [&](std::size_t i) {
+        if (used[i]) grids[i] = detail::sampleGrid(tows[i]);
+    });
+
+    std::vector<PairResult> results(candidates.size());
+    std::mutex progressMutex;
+    std::size_t done = 0;
+    parallelFor(candidates.size(), threads, [&](std::size_t i) {
+        const detail::CandidatePair& c = candidates[i];
+        try {
+            results[i] = intersectCandidate(tows, grids, c, options);
+        } catch (const Standard_Failure& e) {
+            throw Error(ErrorCode::Internal,
+                        std::string("OpenCASCADE failed intersecting tows '") + tows[c.a].name() + "' and '" +
+                            tows[c.b].name() + "': " + e.GetMessageString());
+        }
+        if (options.progress) {
+            std::lock_guard<std::mutex> lock(progressMutex);
+            options.progress(++done, candidates.size());
+        }
+    });
+    for (PairResult& r : results) {
+        report.seeds += r.seeds;
+        report.walks += r.walks;
+        for (IntersectionLoop& l : r.loops) report.loops.push_back(std::move(l));
+    }
+    report.timings.exact = msSince(t1);
+    return report;
+}
+
+std::vector<IntersectionLoop> intersectPair(const TowSurface& a, const TowSurface& b, const IntersectionOptions& options)
+{
+    return intersectTows({a, b}, options).loops;
+}
+
+}  // namespace towgeom
