@@ -129,7 +129,8 @@ public:
     /// The (u,v) of the surface point closest to @p p (global search).
     UV closestParameters(const Point3& p) const;
     /// The (u,v) of the surface point closest to @p p, searched locally from @p start (fast
-    /// when a good guess is known, e.g. while marching along a curve).
+    /// when a good guess is known, e.g. while marching along a curve). start.v may lie outside
+    /// the period (unwrapped); it is wrapped.
     UV closestParameters(const Point3& p, UV start) const;
     /// A box holding the whole surface (from the control points: conservative).
     BoundingBox boundingBox() const;

@@ -221,52 +221,55 @@ std::vector<LoopPoint> IntersectionLoop::resample(double spacing) const
 std::vector<std::vector<UV>> IntersectionLoop::clippedUvCurves(LoopSide side) const
 {
     const Data& d = *data_;
-    const TowSurface& s = side == LoopSide::A ? d.a : d.b;
-    const ParameterRange r = s.parameterRange();
+    const ParameterRange r = (side == LoopSide::A ? d.a : d.b).parameterRange();
     const double period = r.vPeriod();
-    std::vector<LoopPoint> pts = d.closed ? walkOrder(d) : d.points;
-    std::vector<std::vector<UV>> pieces(1);
-    const auto cell = [&](double v) { return std::floor((v - r.vMin) / period); };
+    const std::vector<LoopPoint> pts = d.closed ? walkOrder(d) : d.points;
+    if (pts.size() < 2) return {uvCurve(side)};
     const detail::SurfacePair sp = detail::surfacePairOf(d.a, d.b);
-    std::vector<double> pieceCell{pts.empty() ? 0.0 : cell(sideOf(pts.front(), side).v)};
-    for (std::size_t k = 0; k < pts.size(); ++k) {
-        const UV cur = sideOf(pts[k], side);
-        if (k > 0) {
-            const UV prev = sideOf(pts[k - 1], side);
-            const double c0 = cell(prev.v), c1 = cell(cur.v);
-            if (c0 != c1) {
-                // The seam value between them, and the exact curve point on it.
-                const double seam = r.vMin + period * std::max(c0, c1);
-                const double t = (seam - prev.v) / (cur.v - prev.v);
-                detail::PointOn2 x = toPointOn2(mix(pts[k - 1], pts[k], t));
-                detail::PointCondition c;
-                c.kind = side == LoopSide::A ? detail::PointCondition::Kind::FixVA : detail::PointCondition::Kind::FixVB;
-                c.value = seam;
-                UV onSeam = sideOf(toLoopPoint(x), side);
-                if (detail::refineOnIntersection(sp, x, c, d.tolerance)) onSeam = sideOf(toLoopPoint(x), side);
-                onSeam.v = seam;
-                pieces.back().push_back({onSeam.u, onSeam.v});
-                pieces.emplace_back();
-                pieces.back().push_back({onSeam.u, onSeam.v});
-                pieceCell.push_back(c1);
-            }
+
+    // 1. Every chord that crosses a seam value gets the exact curve point on the seam.
+    std::vector<UV> uv{sideOf(pts.front(), side)};
+    for (std::size_t k = 1; k < pts.size(); ++k) {
+        const double v0 = sideOf(pts[k - 1], side).v, v1 = sideOf(pts[k], side).v;
+        const double lo = std::min(v0, v1), hi = std::max(v0, v1);
+        const double firstSeam = r.vMin + period * std::floor((lo - r.vMin) / period + 1.0);
+        for (double seam = firstSeam; seam < hi; seam += period) {
+            if (seam <= lo) continue;
+            const double t = (seam - v0) / (v1 - v0);
+            detail::PointOn2 x = toPointOn2(mix(pts[k - 1], pts[k], t));
+            detail::PointCondition c;
+            c.kind = side == LoopSide::A ? detail::PointCondition::Kind::FixVA : detail::PointCondition::Kind::FixVB;
+            c.value = seam;
+            UV onSeam = sideOf(mix(pts[k - 1], pts[k], t), side);
+            if (detail::refineOnIntersection(sp, x, c, d.tolerance)) onSeam = sideOf(toLoopPoint(x), side);
+            onSeam.v = seam;
+            uv.push_back(onSeam);
         }
-        pieces.back().push_back(cur);
+        uv.push_back(sideOf(pts[k], side));
     }
-    // Shift each piece into the rectangle; the two seam points of a junction become vMax/vMin.
-    for (std::size_t p = 0; p < pieces.size(); ++p) {
-        const double c = pieceCell[p];
-        for (UV& uv : pieces[p]) uv.v -= period * c;
-        auto& pc = pieces[p];
-        for (UV& uv : pc) uv.v = std::clamp(uv.v, r.vMin, r.vMax);
+    // 2. Now every chord lies in one period cell: split where the cell changes.
+    const auto cellOf = [&](const UV& a, const UV& b) { return std::floor((0.5 * (a.v + b.v) - r.vMin) / period); };
+    std::vector<std::vector<UV>> pieces;
+    std::vector<double> cells;
+    for (std::size_t k = 1; k < uv.size(); ++k) {
+        if (uv[k].u == uv[k - 1].u && uv[k].v == uv[k - 1].v) continue;
+        const double c = cellOf(uv[k - 1], uv[k]);
+        if (pieces.empty() || c != cells.back()) {
+            pieces.push_back({uv[k - 1]});
+            cells.push_back(c);
+        }
+        pieces.back().push_back(uv[k]);
     }
-    // A closed loop starts inside a piece: join its last piece to its first.
-    if (d.closed && pieces.size() > 1) {
-        std::vector<UV>& last = pieces.back();
-        last.insert(last.end(), pieces.front().begin() + 1, pieces.front().end());
-        pieces.front() = std::move(last);
+    // 3. A closed loop that starts inside a piece: its last piece continues into its first.
+    if (d.closed && pieces.size() > 1 && cells.back() == cells.front()) {
+        pieces.back().insert(pieces.back().end(), pieces.front().begin() + 1, pieces.front().end());
+        pieces.front() = std::move(pieces.back());
         pieces.pop_back();
+        cells.pop_back();
     }
+    // 4. Shift each piece into the rectangle (seam points land exactly on vMin or vMax).
+    for (std::size_t p = 0; p < pieces.size(); ++p)
+        for (UV& q : pieces[p]) q.v = std::clamp(q.v - period * cells[p], r.vMin, r.vMax);
     return pieces;
 }
 

@@ -47,6 +47,7 @@ bool refineOnIntersection(const SurfacePair& s, PointOn2& x, const PointConditio
 {
     PointOn2 y = x;
     constexpr int kMaxIterations = 12;
+    bool polish = false;
     for (int it = 0; it < kMaxIterations; ++it) {
         if (!inside(s, y)) return false;
         const Eval e = evaluate(s, y);
@@ -71,9 +72,12 @@ bool refineOnIntersection(const SurfacePair& s, PointOn2& x, const PointConditio
         case PointCondition::Kind::FixUA: J(3, 0) = 1.0; F(3) = y.ua - c.value; break;
         case PointCondition::Kind::FixUB: J(3, 2) = 1.0; F(3) = y.ub - c.value; break;
         }
-        // Converged well below the tolerance (Newton converges quadratically: one step more
-        // than "within tolerance" costs little and leaves the gap at rounding level).
-        if (f.Magnitude() <= 1e-3 * tolerance && std::abs(F(3)) <= 1e-3 * tolerance) break;
+        // Converged well below the tolerance: one step more (Newton converges quadratically)
+        // costs little and leaves the gap at rounding level.
+        if (f.Magnitude() <= 1e-3 * tolerance && std::abs(F(3)) <= 1e-3 * tolerance) {
+            if (polish) break;
+            polish = true;
+        }
         const Eigen::FullPivLU<Eigen::Matrix4d> lu(J);
         if (lu.rank() < 4) return false;
         const Eigen::Vector4d dx = lu.solve(-F);

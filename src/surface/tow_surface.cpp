@@ -137,6 +137,8 @@ UV TowSurface::closestParameters(const Point3& p, UV start) const
 {
     const ParameterRange r = parameterRange();
     start.u = std::clamp(start.u, r.uMin, r.uMax);
+    // OCCT's local search does not wrap a start outside the period; unwrapped v is common.
+    start.v -= r.vPeriod() * std::floor((start.v - r.vMin) / r.vPeriod());
     GeomAdaptor_Surface adaptor(impl_->surface);
     Extrema_GenLocateExtPS locate(adaptor);
     try {

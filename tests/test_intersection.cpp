@@ -1,0 +1,347 @@
+// IntersectionLoop: analytic crossing tubes (one loop, on both cylinders, area), loops across
+// the periodic seams, two loops per pair, open curves, and woven tows against CGAL's
+// surface intersection of the faceted tubes.
+#include <catch2/catch.hpp>
+
+#include <towgeom/towgeom.hpp>
+
+#include <cmath>
+#include <map>
+
+#include "cgal_reference.hpp"
+#include "synthetic_tows.hpp"
+
+using namespace towgeom;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// A round tube of radius r along +x from x = 0 to x = length, shifted by (dx, dy, dz).
+TowStack tubeAlongX(double r, double length, double dx, double dy, double dz, const testing::Sampling& s,
+                    const std::string& name)
+{
+    TowStack t = testing::ellipticalTube(r, r, length, s, name);
+    for (auto& section : t.sections)
+        for (Point3& p : section) p = {p.x + dx, p.y + dy, p.z + dz};
+    return t;
+}
+
+/// A round tube of radius r along +y from y = -2 to y = 2, its axis at (x = 2, z = d).
+TowStack tubeAlongY(double r, double d, const testing::Sampling& s, const std::string& name)
+{
+    TowStack t = testing::ellipticalTube(r, r, 4.0, s, name);
+    for (auto& section : t.sections)
+        for (Point3& p : section) p = {2.0 - p.y, p.x - 2.0, p.z + d};
+    return t;
+}
+
+testing::Sampling sampling(double startAngle, std::size_t sections = 21, std::size_t points = 96)
+{
+    testing::Sampling s;
+    s.sections = sections;
+    s.points = points;
+    s.startAngle = startAngle;
+    return s;
+}
+
+/// Area of the x-tube (radius R) inside the y-tube (radius r, axis at height d), by quadrature
+/// around the x-tube: integral of 2 R sqrt(r^2 - (R sin t - d)^2) dt where positive.
+double analyticAreaOnX(double R, double r, double d)
+{
+    const int n = 200000;
+    double sum = 0.0;
+    for (int k = 0; k < n; ++k) {
+        const double t = 2.0 * kPi * (k + 0.5) / n;
+        const double q = r * r - std::pow(R * std::sin(t) - d, 2);
+        if (q > 0.0) sum += 2.0 * R * std::sqrt(q);
+    }
+    return sum * 2.0 * kPi / n;
+}
+
+struct TubePair {
+    TowSurface x, y;
+};
+
+TubePair crossing(double R, double r, double d, double startX, double startY)
+{
+    return {TowSurface::fit(tubeAlongX(R, 4.0, 0.0, 0.0, 0.0, sampling(startX), "x")),
+            TowSurface::fit(tubeAlongY(r, d, sampling(startY), "y"))};
+}
+
+/// Checks that every point of @p loop lies on both analytic cylinders to 1e-7 R, and on both
+/// fitted surfaces at its own parameters.
+void checkOnCylinders(const IntersectionLoop& loop, double R, double r, double d)
+{
+    double worst = 0.0;
+    for (const LoopPoint& p : loop.points()) {
+        const double onX = std::abs(std::hypot(p.point.y, p.point.z) - R);
+        const double onY = std::abs(std::hypot(p.point.x - 2.0, p.point.z - d) - r);
+        worst = std::max({worst, onX, onY});
+        CHECK(distance(loop.surfaceA().point(p.onA.u, p.onA.v), p.point) <= 1e-12);
+        CHECK(distance(loop.surfaceB().point(p.onB.u, p.onB.v), p.point) <= 1e-12);
+    }
+    WARN("largest distance of a loop point from the analytic cylinders: " << worst);
+    CHECK(worst <= 1e-7 * R);
+}
+
+/// The unwrapped (u,v) curve is continuous: no jump of more than a tenth of the period.
+void checkContinuous(const std::vector<UV>& uv)
+{
+    for (std::size_t k = 1; k < uv.size(); ++k) {
+        CHECK(std::abs(uv[k].v - uv[k - 1].v) < 0.1);
+        CHECK(std::abs(uv[k].u - uv[k - 1].u) < 0.1);
+    }
+}
+
+bool crossesSeam(const std::vector<UV>& uv)
+{
+    for (std::size_t k = 1; k < uv.size(); ++k)
+        if (std::floor(uv[k].v) != std::floor(uv[k - 1].v)) return true;
+    return false;
+}
+
+}  // namespace
+
+TEST_CASE("two crossing tubes intersect in one closed loop on both cylinders", "[intersection]")
+{
+    const double R = 0.5, r = 0.5;
+    for (const double d : {0.3, 0.7, 0.95}) {
+        INFO("axis offset d = " << d);
+        const TubePair c = crossing(R, r, d, 0.0, 0.0);
+        const std::vector<IntersectionLoop> loops = intersectPair(c.x, c.y);
+        REQUIRE(loops.size() == 1);
+        const IntersectionLoop& l = loops.front();
+        CHECK(l.closed());
+        CHECK(l.openReason().empty());
+        CHECK(l.towA() == 0);
+        CHECK(l.towB() == 1);
+        checkOnCylinders(l, R, r, d);
+        const double tolerance = 1e-7 * c.x.towSize();
+        CHECK(l.maxDistance(LoopSide::A) <= tolerance);
+        CHECK(l.maxDistance(LoopSide::B) <= tolerance);
+        const double exact = analyticAreaOnX(R, r, d);
+        WARN("d = " << d << ": area inside the loop " << l.enclosedArea(LoopSide::A) << ", analytic " << exact);
+        CHECK(l.enclosedArea(LoopSide::A) == Approx(exact).epsilon(1e-5));
+        CHECK(l.enclosedArea(LoopSide::B) == Approx(exact).epsilon(1e-5));  // equal radii: symmetric
+        CHECK_FALSE(l.windsAround(LoopSide::A));
+        // The B-spline through the points has the loop's length.
+        CHECK(l.curve().length() == Approx(l.length()).epsilon(1e-4));
+    }
+}
+
+TEST_CASE("touching and separate tubes give no loop and no failure", "[intersection]")
+{
+    for (const double d : {1.0, 1.0 + 1e-9, 1.2, 3.0}) {
+        INFO("axis offset d = " << d);
+        const TubePair c = crossing(0.5, 0.5, d, 0.0, 0.0);
+        CHECK(intersectPair(c.x, c.y).empty());
+    }
+}
+
+TEST_CASE("a loop crossing the periodic seams is one closed loop with a continuous (u,v) curve", "[intersection][seam]")
+{
+    // The loop sits on top of the x-tube (around t = pi/2) and at the bottom of the y-tube
+    // (t = -pi/2): starting the sections there puts the seam through the loop.
+    const double R = 0.5, r = 0.4, d = 0.6;
+    struct Case {
+        double startX, startY;
+        bool seamX, seamY;
+    };
+    for (const Case k : {Case{kPi / 2, 0.0, true, false}, Case{0.0, -kPi / 2, false, true}, Case{kPi / 2, -kPi / 2, true, true},
+                         Case{kPi / 2 + 0.3, -kPi / 2 - 0.2, true, true}}) {
+        INFO("start angles " << k.startX << ", " << k.startY);
+        const TubePair c = crossing(R, r, d, k.startX, k.startY);
+        const std::vector<IntersectionLoop> loops = intersectPair(c.x, c.y);
+        REQUIRE(loops.size() == 1);
+        const IntersectionLoop& l = loops.front();
+        CHECK(l.closed());
+        checkOnCylinders(l, R, r, d);
+        const std::vector<UV> uvA = l.uvCurve(LoopSide::A), uvB = l.uvCurve(LoopSide::B);
+        checkContinuous(uvA);
+        checkContinuous(uvB);
+        CHECK(crossesSeam(uvA) == k.seamX);
+        CHECK(crossesSeam(uvB) == k.seamY);
+        CHECK_FALSE(l.windsAround(LoopSide::A));
+        CHECK_FALSE(l.windsAround(LoopSide::B));
+        CHECK(l.enclosedArea(LoopSide::A) == Approx(analyticAreaOnX(R, r, d)).epsilon(1e-5));
+        // Clipped to the rectangle: two pieces when the seam is crossed (twice), one otherwise;
+        // every piece inside [0, 1] in v, seam ends exactly on 0 or 1, points on the curve.
+        for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+            const bool seam = side == LoopSide::A ? k.seamX : k.seamY;
+            const auto pieces = l.clippedUvCurves(side);
+            CHECK(pieces.size() == (seam ? 2u : 1u));
+            const TowSurface& s = side == LoopSide::A ? l.surfaceA() : l.surfaceB();
+            const TowSurface& o = side == LoopSide::A ? l.surfaceB() : l.surfaceA();
+            for (const auto& piece : pieces) {
+                REQUIRE(piece.size() >= 2);
+                for (const UV& uv : piece) {
+                    CHECK(uv.v >= 0.0);
+                    CHECK(uv.v <= 1.0);
+                    // On the other surface too: its closest point, searched from the nearest
+                    // loop point's parameters, is within the tolerance.
+                    const Point3 p = s.point(uv.u, uv.v);
+                    const LoopPoint* nearest = &l.points().front();
+                    for (const LoopPoint& q : l.points())
+                        if (distance(q.point, p) < distance(nearest->point, p)) nearest = &q;
+                    // (searched from unwrapped parameters: closestParameters wraps them)
+                    const UV q = o.closestParameters(p, side == LoopSide::A ? nearest->onB : nearest->onA);
+                    CHECK(distance(o.point(q.u, q.v), p) <= 1e-7);
+                }
+                if (seam) {
+                    CHECK((piece.front().v == 0.0 || piece.front().v == 1.0));
+                    CHECK((piece.back().v == 0.0 || piece.back().v == 1.0));
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("a tube crossing a bent tube twice gives two loops", "[intersection]")
+{
+    // Half a ring of centre-line radius 1.5 around z, tube radius 0.3; a straight tube of
+    // radius 0.25 along x at y = 1, z = 0.4 dips into it near x = -1.12 and x = +1.12.
+    const testing::Sampling ringSampling = sampling(0.0, 61, 64), barSampling = sampling(0.0, 41, 64);
+    const TowStack ringStack = testing::bentTube(0.3, 1.5, kPi, ringSampling, "ring");
+    const TowStack barStack = tubeAlongX(0.25, 5.0, -2.5, 1.0, 0.4, barSampling, "bar");
+    const IntersectionReport report = intersectTows({TowSurface::fit(ringStack), TowSurface::fit(barStack)});
+    REQUIRE(report.loops.size() == 2);
+    CHECK(report.pairsTested == 1);
+    double xs[2];
+    for (std::size_t k = 0; k < 2; ++k) {
+        const IntersectionLoop& l = report.loops[k];
+        CHECK(l.closed());
+        double cx = 0.0, worst = 0.0;
+        for (const LoopPoint& p : l.points()) {
+            cx += p.point.x;
+            worst = std::max(worst, std::abs(std::hypot(std::hypot(p.point.x, p.point.y) - 1.5, p.point.z) - 0.3));
+            worst = std::max(worst, std::abs(std::hypot(p.point.y - 1.0, p.point.z - 0.4) - 0.25));
+        }
+        xs[k] = cx / static_cast<double>(l.points().size());
+        CHECK(worst <= 1e-6);
+    }
+    CHECK(std::min(xs[0], xs[1]) == Approx(-std::sqrt(1.5 * 1.5 - 1.0)).margin(0.1));
+    CHECK(std::max(xs[0], xs[1]) == Approx(std::sqrt(1.5 * 1.5 - 1.0)).margin(0.1));
+    CHECK(testing::surfaceIntersection(facetedTube(ringStack, false), facetedTube(barStack, false)).closed == 2);
+}
+
+TEST_CASE("a tube passing through another: loops that go around it", "[intersection]")
+{
+    // The bar (radius 0.25) at z = 0 passes right through the ring tube (radius 0.3) twice and
+    // runs inside its rim in between: two curves around the bar where it enters and leaves,
+    // and one loop where it grazes the rim, as CGAL finds on the faceted tubes.
+    const TowStack ringStack = testing::bentTube(0.3, 1.5, kPi, sampling(0.0, 61, 64), "ring");
+    const TowStack barStack = tubeAlongX(0.25, 5.0, -2.5, 1.0, 0.0, sampling(0.0, 41, 64), "bar");
+    const std::vector<IntersectionLoop> loops = intersectPair(TowSurface::fit(ringStack), TowSurface::fit(barStack));
+    const testing::IntersectionPolylines cgal = testing::surfaceIntersection(facetedTube(ringStack, false), facetedTube(barStack, false));
+    CHECK(cgal.closed == 3);
+    REQUIRE(loops.size() == cgal.closed);
+    std::size_t around = 0;
+    for (const IntersectionLoop& l : loops) {
+        CHECK(l.closed());
+        CHECK_FALSE(l.windsAround(LoopSide::A));
+        if (l.windsAround(LoopSide::B)) {
+            ++around;
+            CHECK(std::isnan(l.enclosedArea(LoopSide::B)));
+        }
+    }
+    CHECK(around == 2);
+}
+
+TEST_CASE("a tow that ends inside another gives an open curve, not a loop", "[intersection][open]")
+{
+    // The x-tube stops at x = 2, in the middle of the y-tube it dips into.
+    const TowSurface x = TowSurface::fit(tubeAlongX(0.5, 2.0, 0.0, 0.0, 0.0, sampling(0.0), "short"));
+    const TowSurface y = TowSurface::fit(tubeAlongY(0.5, 0.7, sampling(0.0), "y"));
+    const std::vector<IntersectionLoop> loops = intersectPair(x, y);
+    REQUIRE(loops.size() == 1);
+    const IntersectionLoop& l = loops.front();
+    CHECK_FALSE(l.closed());
+    CHECK(l.openReason().find("end of the first tow") != std::string::npos);
+    // Both ends on the x-tube's end section u = 1, the curve between them on both cylinders.
+    CHECK(l.points().front().onA.u == Approx(1.0).margin(1e-9));
+    CHECK(l.points().back().onA.u == Approx(1.0).margin(1e-9));
+    CHECK(std::isnan(l.enclosedArea(LoopSide::A)));
+    checkOnCylinders(l, 0.5, 0.5, 0.7);
+}
+
+TEST_CASE("resampled loop points are exact and evenly spaced", "[intersection]")
+{
+    const TubePair c = crossing(0.5, 0.4, 0.6, 0.0, 0.0);
+    const std::vector<IntersectionLoop> loops = intersectPair(c.x, c.y);
+    REQUIRE(loops.size() == 1);
+    const IntersectionLoop& l = loops.front();
+    const double spacing = 0.05;
+    const std::vector<LoopPoint> pts = l.resample(spacing);
+    CHECK(pts.size() == static_cast<std::size_t>(std::ceil(l.length() / spacing)));
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+        CHECK(distance(pts[k].point, pts[(k + 1) % pts.size()].point) <= spacing * (1.0 + 1e-6));
+        CHECK(distance(c.x.point(pts[k].onA.u, pts[k].onA.v), pts[k].point) <= 1e-12);
+        CHECK(distance(c.y.point(pts[k].onB.u, pts[k].onB.v), pts[k].point) <= 1e-12);
+    }
+    CHECK(distance(l.at(0.0).point, l.at(1.0).point) <= 1e-12);
+    CHECK_THROWS_AS(l.resample(0.0), Error);
+    CHECK_THROWS_AS(l.at(1.5), Error);
+}
+
+TEST_CASE("woven tows: closed loops per tow pair match CGAL's intersection of the faceted tubes", "[intersection][weave]")
+{
+    struct Case {
+        WeaveKind kind;
+        double overlap;
+        std::size_t crossings;
+    };
+    for (const Case k : {Case{WeaveKind::Twill, 0.08, 16}, Case{WeaveKind::Plain, 0.12, 16}}) {
+        WeaveOptions o;
+        o.kind = k.kind;
+        o.overlap = k.overlap;
+        if (k.kind == WeaveKind::Twill) o.floatOver = o.floatUnder = 2;
+        const Textile t = generateWeave(o);
+        const std::vector<TowStack> stacks = t.stacks();
+        std::vector<TowSurface> tows;
+        for (const TowStack& s : stacks) tows.push_back(TowSurface::fit(s));
+        const IntersectionReport report = intersectTows(tows);
+        CHECK(report.openCount() == 0);
+        std::map<std::pair<std::size_t, std::size_t>, std::size_t> ours;
+        for (const IntersectionLoop& l : report.loops) {
+            ++ours[{l.towA(), l.towB()}];
+            CHECK(l.maxDistance(LoopSide::A) <= 1e-7 * tows[l.towA()].towSize());
+            CHECK(l.maxDistance(LoopSide::B) <= 1e-7 * tows[l.towB()].towSize());
+        }
+        std::size_t total = 0;
+        for (std::size_t i = 0; i < stacks.size(); ++i)
+            for (std::size_t j = i + 1; j < stacks.size(); ++j) {
+                const testing::IntersectionPolylines cgal =
+                    testing::surfaceIntersection(facetedTube(stacks[i], false), facetedTube(stacks[j], false));
+                INFO(stacks[i].name << " x " << stacks[j].name);
+                CHECK(cgal.open == 0);
+                CHECK(ours[{i, j}] == cgal.closed);
+                total += cgal.closed;
+            }
+        CHECK(total == k.crossings);
+        CHECK(report.loops.size() == k.crossings);
+        // Only crossing warp/weft pairs get past the broad phase, not all 28 pairs.
+        CHECK(report.pairsTested == k.crossings);
+        CHECK(report.towPairs == 28);
+    }
+}
+
+TEST_CASE("intersection options are checked", "[intersection]")
+{
+    const TubePair c = crossing(0.5, 0.5, 0.7, 0.0, 0.0);
+    IntersectionOptions o;
+    o.tolerance = -1.0;
+    CHECK_THROWS_AS(intersectPair(c.x, c.y, o), Error);
+    o = {};
+    o.relativeChordalTolerance = 0.0;
+    CHECK_THROWS_AS(intersectPair(c.x, c.y, o), Error);
+    o = {};
+    o.threads = 1;
+    std::size_t calls = 0;
+    o.progress = [&](std::size_t done, std::size_t total) {
+        ++calls;
+        CHECK(done <= total);
+    };
+    CHECK(intersectPair(c.x, c.y, o).size() == 1);
+    CHECK(calls == 1);
+}
