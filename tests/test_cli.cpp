@@ -1,6 +1,8 @@
 // The towgeom command line: fit's JSON and VTK output, help, usage errors.
 #include <catch2/catch.hpp>
 
+#include "cli_runner.hpp"
+
 #include <towgeom/towgeom.hpp>
 
 #include <algorithm>
@@ -14,45 +16,12 @@
 #include <sys/wait.h>
 
 namespace fs = std::filesystem;
+using towgeom::testing::cli;
+using towgeom::testing::jsonNumber;
+using towgeom::testing::Run;
+using towgeom::testing::slurp;
 
 namespace {
-
-struct Run {
-    int status = -1;
-    std::string out, err;
-};
-
-std::string slurp(const fs::path& p)
-{
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-/// Runs the towgeom executable with @p args (a shell-quoted string).
-Run cli(const std::string& args)
-{
-    const fs::path dir = fs::temp_directory_path() / ("towgeom_cli_test_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    const std::string command =
-        std::string("'") + TOWGEOM_CLI + "' " + args + " >'" + (dir / "out").string() + "' 2>'" + (dir / "err").string() + "'";
-    const int raw = std::system(command.c_str());
-    Run r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = slurp(dir / "out");
-    r.err = slurp(dir / "err");
-    return r;
-}
-
-double jsonNumber(const std::string& json, const std::string& key, std::size_t nth = 0)
-{
-    const std::regex re("\"" + key + "\":(-?[0-9.eE+-]+)");
-    auto it = std::sregex_iterator(json.begin(), json.end(), re);
-    for (std::size_t k = 0; k < nth && it != std::sregex_iterator(); ++k) ++it;
-    REQUIRE(it != std::sregex_iterator());
-    return std::stod((*it)[1].str());
-}
 
 const std::string kTube = std::string(TOWGEOM_EXAMPLE_DATA) + "/straight_tube.stw";
 

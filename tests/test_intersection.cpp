@@ -17,25 +17,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// A round tube of radius r along +x from x = 0 to x = length, shifted by (dx, dy, dz).
-TowStack tubeAlongX(double r, double length, double dx, double dy, double dz, const testing::Sampling& s,
-                    const std::string& name)
-{
-    TowStack t = testing::ellipticalTube(r, r, length, s, name);
-    for (auto& section : t.sections)
-        for (Point3& p : section) p = {p.x + dx, p.y + dy, p.z + dz};
-    return t;
-}
-
-/// A round tube of radius r along +y from y = -2 to y = 2, its axis at (x = 2, z = d).
-TowStack tubeAlongY(double r, double d, const testing::Sampling& s, const std::string& name)
-{
-    TowStack t = testing::ellipticalTube(r, r, 4.0, s, name);
-    for (auto& section : t.sections)
-        for (Point3& p : section) p = {2.0 - p.y, p.x - 2.0, p.z + d};
-    return t;
-}
-
 testing::Sampling sampling(double startAngle, std::size_t sections = 21, std::size_t points = 96)
 {
     testing::Sampling s;
@@ -65,8 +46,8 @@ struct TubePair {
 
 TubePair crossing(double R, double r, double d, double startX, double startY)
 {
-    return {TowSurface::fit(tubeAlongX(R, 4.0, 0.0, 0.0, 0.0, sampling(startX), "x")),
-            TowSurface::fit(tubeAlongY(r, d, sampling(startY), "y"))};
+    return {TowSurface::fit(testing::tubeAlongX(R, 4.0, 0.0, 0.0, 0.0, sampling(startX), "x")),
+            TowSurface::fit(testing::tubeAlongY(r, d, sampling(startY), "y"))};
 }
 
 /// Checks that every point of @p loop lies on both analytic cylinders to 1e-7 R, and on both
@@ -203,7 +184,7 @@ TEST_CASE("a tube crossing a bent tube twice gives two loops", "[intersection]")
     // radius 0.25 along x at y = 1, z = 0.4 dips into it near x = -1.12 and x = +1.12.
     const testing::Sampling ringSampling = sampling(0.0, 61, 64), barSampling = sampling(0.0, 41, 64);
     const TowStack ringStack = testing::bentTube(0.3, 1.5, kPi, ringSampling, "ring");
-    const TowStack barStack = tubeAlongX(0.25, 5.0, -2.5, 1.0, 0.4, barSampling, "bar");
+    const TowStack barStack = testing::tubeAlongX(0.25, 5.0, -2.5, 1.0, 0.4, barSampling, "bar");
     const IntersectionReport report = intersectTows({TowSurface::fit(ringStack), TowSurface::fit(barStack)});
     REQUIRE(report.loops.size() == 2);
     CHECK(report.pairsTested == 1);
@@ -231,7 +212,7 @@ TEST_CASE("a tube passing through another: loops that go around it", "[intersect
     // runs inside its rim in between: two curves around the bar where it enters and leaves,
     // and one loop where it grazes the rim, as CGAL finds on the faceted tubes.
     const TowStack ringStack = testing::bentTube(0.3, 1.5, kPi, sampling(0.0, 61, 64), "ring");
-    const TowStack barStack = tubeAlongX(0.25, 5.0, -2.5, 1.0, 0.0, sampling(0.0, 41, 64), "bar");
+    const TowStack barStack = testing::tubeAlongX(0.25, 5.0, -2.5, 1.0, 0.0, sampling(0.0, 41, 64), "bar");
     const std::vector<IntersectionLoop> loops = intersectPair(TowSurface::fit(ringStack), TowSurface::fit(barStack));
     const testing::IntersectionPolylines cgal = testing::surfaceIntersection(facetedTube(ringStack, false), facetedTube(barStack, false));
     CHECK(cgal.closed == 3);
@@ -251,8 +232,8 @@ TEST_CASE("a tube passing through another: loops that go around it", "[intersect
 TEST_CASE("a tow that ends inside another gives an open curve, not a loop", "[intersection][open]")
 {
     // The x-tube stops at x = 2, in the middle of the y-tube it dips into.
-    const TowSurface x = TowSurface::fit(tubeAlongX(0.5, 2.0, 0.0, 0.0, 0.0, sampling(0.0), "short"));
-    const TowSurface y = TowSurface::fit(tubeAlongY(0.5, 0.7, sampling(0.0), "y"));
+    const TowSurface x = TowSurface::fit(testing::tubeAlongX(0.5, 2.0, 0.0, 0.0, 0.0, sampling(0.0), "short"));
+    const TowSurface y = TowSurface::fit(testing::tubeAlongY(0.5, 0.7, sampling(0.0), "y"));
     const std::vector<IntersectionLoop> loops = intersectPair(x, y);
     REQUIRE(loops.size() == 1);
     const IntersectionLoop& l = loops.front();

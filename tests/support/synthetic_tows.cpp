@@ -78,4 +78,20 @@ TowStack crimpedTow(double a, double b, double length, double amplitude, double 
     });
 }
 
+TowStack tubeAlongX(double r, double length, double dx, double dy, double dz, const Sampling& s, const std::string& name)
+{
+    TowStack t = ellipticalTube(r, r, length, s, name);
+    for (auto& section : t.sections)
+        for (Point3& p : section) p = {p.x + dx, p.y + dy, p.z + dz};
+    return t;
+}
+
+TowStack tubeAlongY(double r, double d, const Sampling& s, const std::string& name)
+{
+    TowStack t = ellipticalTube(r, r, 4.0, s, name);
+    for (auto& section : t.sections)
+        for (Point3& p : section) p = {2.0 - p.y, p.x - 2.0, p.z + d};
+    return t;
+}
+
 }  // namespace towgeom::testing

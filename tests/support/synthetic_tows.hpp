@@ -35,4 +35,13 @@ TowStack growingBentTube(double r0, double r1, double bendRadius, double sweep, 
 TowStack crimpedTow(double a, double b, double length, double amplitude, double wavelength, const Sampling& s = {},
                     const std::string& name = "crimped");
 
+/// A round tube of radius r along +x from x = dx to x = dx + length, its axis at (y = dy,
+/// z = dz); the first point of each section at startAngle from +y towards +z.
+TowStack tubeAlongX(double r, double length, double dx, double dy, double dz, const Sampling& s = {},
+                    const std::string& name = "x");
+
+/// A round tube of radius r along +y from y = -2 to y = 2, its axis at (x = 2, z = d): with
+/// tubeAlongX(R, 4, 0, 0, 0) it makes a crossing whose loop is known in closed form.
+TowStack tubeAlongY(double r, double d, const Sampling& s = {}, const std::string& name = "y");
+
 }  // namespace towgeom::testing

@@ -1,0 +1,54 @@
+// Runs the towgeom executable from the tests and reads what it printed.
+#pragma once
+
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace towgeom::testing {
+
+struct Run {
+    int status = -1;
+    std::string out, err;
+};
+
+inline std::string slurp(const std::filesystem::path& p)
+{
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+/// Runs the towgeom executable with @p args (a shell-quoted string).
+inline Run cli(const std::string& args)
+{
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("towgeom_cli_test_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    const std::string command =
+        std::string("'") + TOWGEOM_CLI + "' " + args + " >'" + (dir / "out").string() + "' 2>'" + (dir / "err").string() + "'";
+    const int raw = std::system(command.c_str());
+    Run r;
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = slurp(dir / "out");
+    r.err = slurp(dir / "err");
+    return r;
+}
+
+inline double jsonNumber(const std::string& json, const std::string& key, std::size_t nth = 0)
+{
+    const std::regex re("\"" + key + "\":(-?[0-9.eE+-]+)");
+    auto it = std::sregex_iterator(json.begin(), json.end(), re);
+    for (std::size_t k = 0; k < nth && it != std::sregex_iterator(); ++k) ++it;
+    REQUIRE(it != std::sregex_iterator());
+    return std::stod((*it)[1].str());
+}
+
+}  // namespace towgeom::testing
