@@ -1,7 +1,7 @@
 // CGAL first: OpenCASCADE (through seed_search.hpp) defines a macro named Handle.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
-#include <CGAL/intersections.h>
+#include <CGAL/intersections.h>  // do_intersect
 
 #include "intersect/seed_search.hpp"
 
@@ -59,25 +59,12 @@ UV interpolate(const Facet& f, const Point& p)
     return {w0 * f.uv[0].u + s * f.uv[1].u + t * f.uv[2].u, w0 * f.uv[0].v + s * f.uv[1].v + t * f.uv[2].v};
 }
 
-/// A point of the crossing of two triangles known to intersect.
-Point crossingPoint(const Triangle& x, const Triangle& y)
+/// A guess of a point of the crossing of two triangles known to intersect: the midpoint of
+/// their centroids, within a facet's size of the crossing. (Constructing the crossing itself
+/// with inexact constructions is not safe: CGAL's coplanar case crashed on coincident tubes,
+/// and Newton's method refines the guess anyway.)
+Point crossingGuess(const Triangle& x, const Triangle& y)
 {
-    const auto r = CGAL::intersection(x, y);
-    if (r) {
-        if (const Point* p = boost::get<Point>(&*r)) return *p;
-        if (const Kernel::Segment_3* s = boost::get<Kernel::Segment_3>(&*r)) return CGAL::midpoint(s->source(), s->target());
-        if (const Triangle* t = boost::get<Triangle>(&*r)) return CGAL::centroid(*t);
-        if (const auto* v = boost::get<std::vector<Point>>(&*r); v && !v->empty()) {
-            double x = 0.0, y = 0.0, z = 0.0;
-            for (const Point& q : *v) {
-                x += q.x();
-                y += q.y();
-                z += q.z();
-            }
-            const double n = static_cast<double>(v->size());
-            return Point(x / n, y / n, z / n);
-        }
-    }
     return CGAL::midpoint(CGAL::centroid(x), CGAL::centroid(y));
 }
 
@@ -128,7 +115,7 @@ std::vector<Seed> findSeeds(const SurfaceGrid& a, const SurfaceGrid& b, const Wi
     std::vector<Seed> seeds;
     seeds.reserve(hits.size());
     for (const auto& [i, j] : hits) {
-        const Point p = crossingPoint(fa[i].triangle, fb[j].triangle);
+        const Point p = crossingGuess(fa[i].triangle, fb[j].triangle);
         const UV ua = interpolate(fa[i], p), ub = interpolate(fb[j], p);
         Seed s;
         s.guess.ua = ua.u;
