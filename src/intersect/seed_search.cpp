@@ -102,11 +102,16 @@ SurfaceGrid sampleGrid(const TowSurface& tow)
 std::vector<Seed> findSeeds(const SurfaceGrid& a, const SurfaceGrid& b, const WindowPair& window)
 {
     const std::vector<Facet> fa = facetsIn(a, window.a), fb = facetsIn(b, window.b);
+    // Only facets that reach into the other window's box can cross it: most of a window (the
+    // far side of each tow) drops out before the box intersection.
+    CGAL::Bbox_3 boxA, boxB;
+    for (const Facet& f : fa) boxA += f.triangle.bbox();
+    for (const Facet& f : fb) boxB += f.triangle.bbox();
     std::vector<Box> ba, bb;
-    ba.reserve(fa.size());
-    bb.reserve(fb.size());
-    for (std::size_t k = 0; k < fa.size(); ++k) ba.emplace_back(fa[k].triangle.bbox(), k);
-    for (std::size_t k = 0; k < fb.size(); ++k) bb.emplace_back(fb[k].triangle.bbox(), k);
+    for (std::size_t k = 0; k < fa.size(); ++k)
+        if (CGAL::do_overlap(fa[k].triangle.bbox(), boxB)) ba.emplace_back(fa[k].triangle.bbox(), k);
+    for (std::size_t k = 0; k < fb.size(); ++k)
+        if (CGAL::do_overlap(fb[k].triangle.bbox(), boxA)) bb.emplace_back(fb[k].triangle.bbox(), k);
     std::vector<std::pair<std::size_t, std::size_t>> hits;
     CGAL::box_intersection_d(ba.begin(), ba.end(), bb.begin(), bb.end(), [&](const Box& x, const Box& y) {
         if (CGAL::do_intersect(fa[x.handle()].triangle, fb[y.handle()].triangle)) hits.emplace_back(x.handle(), y.handle());
