@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "cli/tow_input.hpp"
 #include "core/json_writer.hpp"
+#include "core/parallel.hpp"
 #include "towgeom/towgeom.hpp"
 
 namespace towgeom::cli {
@@ -42,7 +43,8 @@ Options:
                       (default: 1e-4 x the tow size)
   --spacing S         print points spaced at most S apart along each curve instead
   --allow-open        exit 0 even when a curve is open (still reported in the JSON)
-  --threads N         worker threads for the exact stage (default: all hardware threads)
+  --threads N         worker threads for reading, fitting and intersecting (default: all
+                      hardware threads)
   --quiet             no progress lines on stderr
   -h, --help          this help
 
@@ -96,10 +98,10 @@ int runDetect(int argc, char** argv, int first)
         const bool quiet = args.has("quiet");
 
         const auto start = std::chrono::steady_clock::now();
-        const std::vector<TowStack> stacks = readStacks(args.positional());
+        const std::vector<TowStack> stacks = readStacks(args.positional(), options.threads);
         const double readMs = msSince(start);
         const auto fitStart = std::chrono::steady_clock::now();
-        const std::vector<TowSurface> surfaces = fitSurfaces(stacks, {}, "detect", quiet);
+        const std::vector<TowSurface> surfaces = fitSurfaces(stacks, {}, "detect", quiet, options.threads);
         const double fitMs = msSince(fitStart);
 
         std::size_t reported = 0;
@@ -113,20 +115,32 @@ int runDetect(int argc, char** argv, int first)
             };
         const IntersectionReport report = intersectTows(surfaces, options);
 
+        // The per-loop figures (areas cost a quadrature each) on all threads, then the JSON.
+        struct LoopFigures {
+            double areaA = 0.0, areaB = 0.0;
+            std::vector<LoopPoint> points;
+        };
+        std::vector<LoopFigures> figures(report.loops.size());
+        detail::parallelFor(report.loops.size(), detail::workerCount(options.threads), [&](std::size_t k) {
+            const IntersectionLoop& l = report.loops[k];
+            figures[k] = {l.enclosedArea(LoopSide::A), l.enclosedArea(LoopSide::B),
+                          spacing > 0.0 ? l.resample(spacing) : l.points()};
+        });
         std::ostringstream out;
         detail::JsonWriter json(out);
         json.beginObject().key("loops").beginArray();
-        for (const IntersectionLoop& l : report.loops) {
+        for (std::size_t k = 0; k < report.loops.size(); ++k) {
+            const IntersectionLoop& l = report.loops[k];
             json.beginObject();
             json.key("tow_a").value(surfaces[l.towA()].name());
             json.key("tow_b").value(surfaces[l.towB()].name());
             json.key("closed").value(l.closed());
             if (!l.closed()) json.key("open_reason").value(l.openReason());
             json.key("length").value(l.length());
-            json.key("area_a").value(l.enclosedArea(LoopSide::A));
-            json.key("area_b").value(l.enclosedArea(LoopSide::B));
+            json.key("area_a").value(figures[k].areaA);
+            json.key("area_b").value(figures[k].areaB);
             json.key("max_distance").value(std::max(l.maxDistance(LoopSide::A), l.maxDistance(LoopSide::B)));
-            const std::vector<LoopPoint> pts = spacing > 0.0 ? l.resample(spacing) : l.points();
+            const std::vector<LoopPoint>& pts = figures[k].points;
             json.key("point_count").value(pts.size());
             json.key("points").beginArray();
             for (const LoopPoint& p : pts) json.beginArray().value(p.point.x).value(p.point.y).value(p.point.z).endArray();

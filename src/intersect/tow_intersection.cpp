@@ -3,13 +3,11 @@
 #include <Standard_Failure.hxx>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <exception>
 #include <mutex>
-#include <thread>
 
+#include "core/parallel.hpp"
 #include "intersect/broad_phase.hpp"
 #include "intersect/intersection_loop_data.hpp"
 #include "intersect/loop_tracing.hpp"
@@ -38,32 +36,6 @@ void checkOptions(const IntersectionOptions& o)
     if (!nonNegative(o.chordalTolerance)) throw Error(ErrorCode::InvalidArgument, "chordal tolerance must be >= 0 and finite");
     if (!positive(o.relativeChordalTolerance))
         throw Error(ErrorCode::InvalidArgument, "relative chordal tolerance must be > 0 and finite");
-}
-
-/// Runs body(i) for i in [0, n) on @p threads threads; rethrows the first exception.
-template <class Body>
-void parallelFor(std::size_t n, std::size_t threads, Body&& body)
-{
-    std::atomic<std::size_t> next{0};
-    std::exception_ptr failure;
-    std::mutex failureMutex;
-    const auto work = [&] {
-        for (std::size_t i = next++; i < n; i = next++) {
-            try {
-                body(i);
-            } catch (...) {
-                std::lock_guard<std::mutex> lock(failureMutex);
-                if (!failure) failure = std::current_exception();
-                next = n;
-            }
-        }
-    };
-    threads = std::max<std::size_t>(1, std::min(threads, n));
-    std::vector<std::thread> pool;
-    for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
-    work();
-    for (std::thread& t : pool) t.join();
-    if (failure) std::rethrow_exception(failure);
 }
 
 struct PairResult {
@@ -124,7 +96,7 @@ IntersectionReport intersectTows(const std::vector<TowSurface>& tows, const Inte
     checkOptions(options);
     IntersectionReport report;
     report.towPairs = tows.size() * (tows.size() - (tows.empty() ? 0 : 1)) / 2;
-    const std::size_t threads = options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+    const std::size_t threads = detail::workerCount(options.threads);
 
     const Clock::time_point t0 = Clock::now();
     double margin = 0.0;
@@ -145,14 +117,14 @@ IntersectionReport intersectTows(const std::vector<TowSurface>& tows, const Inte
     std::vector<char> used(tows.size(), 0);
     for (const auto& c : candidates) used[c.a] = used[c.b] = 1;
     std::vector<detail::SurfaceGrid> grids(tows.size());
-    parallelFor(tows.size(), threads, [&](std::size_t i) {
+    detail::parallelFor(tows.size(), threads, [&](std::size_t i) {
         if (used[i]) grids[i] = detail::sampleGrid(tows[i]);
     });
 
     std::vector<PairResult> results(candidates.size());
     std::mutex progressMutex;
     std::size_t done = 0;
-    parallelFor(candidates.size(), threads, [&](std::size_t i) {
+    detail::parallelFor(candidates.size(), threads, [&](std::size_t i) {
         const detail::CandidatePair& c = candidates[i];
         try {
             results[i] = intersectCandidate(tows, grids, c, options);
