@@ -351,3 +351,45 @@ TEST_CASE("degenerate pairs: coincident, nested, tangent and parallel tows retur
         for (const LoopPoint& p : l.points()) CHECK(std::abs(p.point.y - 0.45) <= 1e-9);
     }
 }
+
+TEST_CASE("review findings: a thin tow through a coarse one, a loop grazing the seam, coarse chordal tolerance", "[intersection][seam]")
+{
+    // A radius-0.05 tube right through a radius-0.5 tube sampled with only 5 x 6 points: two
+    // loops around the thin tube (the second was once skipped as "near" the first).
+    {
+        const TowSurface big = TowSurface::fit(testing::tubeAlongX(0.5, 4.0, 0, 0, 0, sampling(0.0, 5, 6), "big"));
+        const TowSurface thin = TowSurface::fit(testing::tubeAlongY(0.05, 0.0, sampling(0.3, 21, 24), "thin"));
+        const std::vector<IntersectionLoop> loops = intersectPair(big, thin);
+        REQUIRE(loops.size() == 2);
+        for (const IntersectionLoop& l : loops) {
+            CHECK(l.closed());
+            CHECK(l.windsAround(LoopSide::B));
+            // Around the thin tow: one piece across the rectangle, from one seam side to the other.
+            const auto pieces = l.clippedUvCurves(LoopSide::B);
+            REQUIRE(pieces.size() == 1);
+            CHECK(std::abs(pieces.front().front().v - pieces.front().back().v) == Approx(1.0));
+        }
+    }
+    // The seam of the x-tube through the loop's extreme point (where the loop only touches it):
+    // still one closed loop of the full length (it came back open, or in two pieces).
+    const double R = 0.5, r = 0.5, d = 0.7, touch = std::asin((d - r) / R);
+    const double fullLength = intersectPair(crossing(R, r, d, 0.0, 0.0).x, crossing(R, r, d, 0.0, 0.0).y).front().length();
+    for (const double e : {0.0, 1e-10, 1e-7, 1e-6}) {
+        INFO("seam offset " << e);
+        const TubePair c = crossing(R, r, d, touch + e, kPi + touch + e);
+        const std::vector<IntersectionLoop> loops = intersectPair(c.x, c.y);
+        REQUIRE(loops.size() == 1);
+        CHECK(loops.front().closed());
+        CHECK(loops.front().length() == Approx(fullLength).epsilon(1e-5));
+    }
+    // A chordal tolerance larger than the loop: still a closed loop with at least 3 points and
+    // an area (it collapsed to 2 points).
+    const TubePair c = crossing(R, r, d, 0.0, 0.0);
+    IntersectionOptions coarse;
+    coarse.chordalTolerance = 10.0;
+    const std::vector<IntersectionLoop> loops = intersectPair(c.x, c.y, coarse);
+    REQUIRE(loops.size() == 1);
+    CHECK(loops.front().points().size() >= 3);
+    CHECK(std::isfinite(loops.front().enclosedArea(LoopSide::A)));
+    CHECK_THROWS_AS(loops.front().resample(1e-12), Error);
+}

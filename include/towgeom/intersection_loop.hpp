@@ -65,7 +65,8 @@ public:
     /// (v within [vMin, vMax]): a loop crossing the seam is split there, with an exact
     /// intersection point inserted on the seam at both piece ends (v = vMin on one piece,
     /// vMax on the other). A loop that does not cross the seam gives one piece (closed loops
-    /// repeat their first point at the end of it).
+    /// repeat their first point at the end of it); a loop that winds once around the tow gives
+    /// one piece from one side of the seam (vMin or vMax) to the other.
     std::vector<std::vector<UV>> clippedUvCurves(LoopSide side) const;
     /// True when the loop goes once around tow @p side (its unwrapped v changes by a whole
     /// period): it encloses no region on that tow's surface.
@@ -87,7 +88,8 @@ public:
     /// Exact curve points spaced at most @p spacing apart along the curve (uniform in arc
     /// length, at least 3 intervals for a closed loop). Closed loops do not repeat the first
     /// point; open curves include both ends.
-    /// @throws towgeom::Error (InvalidArgument) if @p spacing is not positive and finite.
+    /// @throws towgeom::Error (InvalidArgument) if @p spacing is not positive and finite, or so
+    ///         small that the curve would get more than 1e7 points.
     std::vector<LoopPoint> resample(double spacing) const;
     /// The curve as an evaluable B-spline interpolating points() (periodic when closed).
     Curve3 curve() const;

@@ -19,7 +19,8 @@ struct IntersectionTimings {
 
 /// The result of intersectTows().
 struct IntersectionReport {
-    /// Every intersection curve, ordered by (towA, towB), then by the curve's first point.
+    /// Every intersection curve, ordered by (towA, towB); within a pair in the order found, which
+    /// depends only on the input (not on the number of threads).
     std::vector<IntersectionLoop> loops;
     std::size_t towPairs = 0;         ///< all tow pairs, n (n - 1) / 2
     std::size_t pairsTested = 0;      ///< pairs whose span boxes overlap: the exact stage ran on these
@@ -46,8 +47,11 @@ struct IntersectionReport {
 /// 4. Consolidation: pieces are joined with v unwrapped, every point refined onto both
 ///    surfaces by Newton's method and the polyline densified to the chordal tolerance.
 ///
-/// Interpenetrations smaller than the facets of the section grid (shallower than the chord
-/// error of the input's sampling) can be missed by the seeds.
+/// Limits: the seeds come from facets of a grid on each surface (the input's stations, made at
+/// least 48 around and no longer along than twice that): an interpenetration shallower than
+/// their chord error can be missed. Surfaces that coincide over an area (identical tows) or meet
+/// at a near-tangent angle along a curve (two equal tubes side by side overlapping by ~1e-6 of
+/// their size) have no transversal intersection curve the walk can follow, and give no curve.
 ///
 /// @throws towgeom::Error (InvalidArgument) for bad options, (Internal) naming the tow pair if
 ///         a kernel fails.

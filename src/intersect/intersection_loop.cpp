@@ -105,6 +105,22 @@ LoopPoint exactOnChord(const detail::SurfacePair& sp, const LoopPoint& p, const 
     return detail::refineOnIntersection(sp, x, c, tolerance) ? toLoopPoint(x) : guess;
 }
 
+/// The exact curve point at arc-length fraction @p s of the loop walked as @p pts.
+LoopPoint pointAt(const IntersectionLoop::Data& d, const std::vector<LoopPoint>& pts, double s)
+{
+    if (pts.size() < 2) return pts.front();
+    const double target = s * d.cumulative.back();
+    const std::size_t k =
+        std::min<std::size_t>(std::upper_bound(d.cumulative.begin(), d.cumulative.end(), target) - d.cumulative.begin(),
+                              d.cumulative.size() - 1) - 1;
+    const double len = d.cumulative[k + 1] - d.cumulative[k];
+    const double t = len > 0.0 ? std::clamp((target - d.cumulative[k]) / len, 0.0, 1.0) : 0.0;
+    if (t == 0.0) return pts[k];
+    if (t == 1.0) return pts[k + 1];
+    const detail::SurfacePair sp = detail::surfacePairOf(d.a, d.b);
+    return detail::guarded("", "IntersectionLoop::at", [&] { return exactOnChord(sp, pts[k], pts[k + 1], t, d.tolerance); });
+}
+
 }  // namespace
 
 IntersectionLoop::IntersectionLoop(std::shared_ptr<const Data> data) : data_(std::move(data)) {}
@@ -187,34 +203,29 @@ double IntersectionLoop::enclosedArea(LoopSide side) const
 
 LoopPoint IntersectionLoop::at(double s) const
 {
-    const Data& d = *data_;
     if (!(s >= 0.0 && s <= 1.0)) throw Error(ErrorCode::InvalidArgument, "IntersectionLoop::at: s must lie in [0, 1]");
-    const std::vector<LoopPoint> pts = walkOrder(d);
-    if (pts.size() < 2) return pts.front();
-    const double target = s * d.cumulative.back();
-    const std::size_t k =
-        std::min<std::size_t>(std::upper_bound(d.cumulative.begin(), d.cumulative.end(), target) - d.cumulative.begin(),
-                              d.cumulative.size() - 1) - 1;
-    const double len = d.cumulative[k + 1] - d.cumulative[k];
-    const double t = len > 0.0 ? std::clamp((target - d.cumulative[k]) / len, 0.0, 1.0) : 0.0;
-    if (t == 0.0) return pts[k];
-    if (t == 1.0) return pts[k + 1];
-    const detail::SurfacePair sp = detail::surfacePairOf(d.a, d.b);
-    return detail::guarded("", "IntersectionLoop::at", [&] { return exactOnChord(sp, pts[k], pts[k + 1], t, d.tolerance); });
+    return pointAt(*data_, walkOrder(*data_), s);
 }
 
 std::vector<LoopPoint> IntersectionLoop::resample(double spacing) const
 {
     if (!(spacing > 0.0) || !std::isfinite(spacing))
         throw Error(ErrorCode::InvalidArgument, "IntersectionLoop::resample: spacing must be positive and finite");
+    constexpr double kMaxPoints = 1e7;
     const double L = length();
+    if (L / spacing > kMaxPoints)
+        throw Error(ErrorCode::InvalidArgument, "IntersectionLoop::resample: spacing " + std::to_string(spacing) +
+                                                    " would give more than 1e7 points on a curve of length " +
+                                                    std::to_string(L));
     std::size_t n = static_cast<std::size_t>(std::ceil(L / spacing));
     if (data_->closed) n = std::max<std::size_t>(n, 3);
     n = std::max<std::size_t>(n, 1);
+    const std::vector<LoopPoint> pts = walkOrder(*data_);
     std::vector<LoopPoint> out;
     const std::size_t count = data_->closed ? n : n + 1;
     out.reserve(count);
-    for (std::size_t k = 0; k < count; ++k) out.push_back(at(static_cast<double>(k) / static_cast<double>(n)));
+    for (std::size_t k = 0; k < count; ++k)
+        out.push_back(pointAt(*data_, pts, static_cast<double>(k) / static_cast<double>(n)));
     return out;
 }
 
@@ -251,8 +262,11 @@ std::vector<std::vector<UV>> IntersectionLoop::clippedUvCurves(LoopSide side) co
     const auto cellOf = [&](const UV& a, const UV& b) { return std::floor((0.5 * (a.v + b.v) - r.vMin) / period); };
     std::vector<std::vector<UV>> pieces;
     std::vector<double> cells;
+    const double tiny = 1e-12 * period;
     for (std::size_t k = 1; k < uv.size(); ++k) {
-        if (uv[k].u == uv[k - 1].u && uv[k].v == uv[k - 1].v) continue;
+        // Chords of (almost) no length, e.g. from a first point within rounding of the seam to
+        // the seam point inserted after it, would make pieces of their own.
+        if (std::abs(uv[k].u - uv[k - 1].u) <= tiny && std::abs(uv[k].v - uv[k - 1].v) <= tiny) continue;
         const double c = cellOf(uv[k - 1], uv[k]);
         if (pieces.empty() || c != cells.back()) {
             pieces.push_back({uv[k - 1]});
@@ -260,10 +274,14 @@ std::vector<std::vector<UV>> IntersectionLoop::clippedUvCurves(LoopSide side) co
         }
         pieces.back().push_back(uv[k]);
     }
-    // 3. A closed loop that starts inside a piece: its last piece continues into its first.
-    if (d.closed && pieces.size() > 1 && cells.back() == cells.front()) {
-        pieces.back().insert(pieces.back().end(), pieces.front().begin() + 1, pieces.front().end());
+    // 3. A closed loop that starts inside a piece: its last piece continues into its first (one
+    //    period cell further on for a loop that winds around the tow).
+    const double winding = std::round((uv.back().v - uv.front().v) / period);
+    if (d.closed && pieces.size() > 1 && cells.back() == cells.front() + winding) {
+        for (auto it = pieces.front().begin() + 1; it != pieces.front().end(); ++it)
+            pieces.back().push_back({it->u, it->v + winding * period});
         pieces.front() = std::move(pieces.back());
+        cells.front() = cells.back();
         pieces.pop_back();
         cells.pop_back();
     }

@@ -123,14 +123,24 @@ struct Tracer {
             c.points = chain;
             return distanceToCurve(c, piece[piece.size() / 2].point) <= tol.closing;
         };
+        // The walk gives the line through its start, which may run both ways from the chain's
+        // end (e.g. where the curve only touches a seam): split it at the point nearest the end
+        // and keep the half that leads away from the chain, starting at the end.
         const auto orient = [&](std::vector<PointOn2> piece) -> std::vector<PointOn2> {
             if (piece.size() < 2) return {};
-            if (distance(piece.back().point, end.point) < distance(piece.front().point, end.point))
-                std::reverse(piece.begin(), piece.end());
-            alignTo(piece, end, d);
-            unwrap(piece, d);
-            if (onChain(piece)) return {};
-            return piece;
+            std::size_t nearest = 0;
+            for (std::size_t k = 1; k < piece.size(); ++k)
+                if (distance(piece[k].point, end.point) < distance(piece[nearest].point, end.point)) nearest = k;
+            std::vector<PointOn2> ahead(piece.begin() + static_cast<std::ptrdiff_t>(nearest), piece.end());
+            std::vector<PointOn2> behind(piece.begin(), piece.begin() + static_cast<std::ptrdiff_t>(nearest) + 1);
+            std::reverse(behind.begin(), behind.end());
+            for (std::vector<PointOn2>* half : {&ahead, &behind}) {
+                if (half->size() < 2) continue;
+                alignTo(*half, end, d);
+                unwrap(*half, d);
+                if (!onChain(*half)) return *half;
+            }
+            return {};
         };
         // Across a seam: the same point with v on the other side of the period.
         const bool seamA = atSeam(end.va, d.vFirstA, d.periodA), seamB = atSeam(end.vb, d.vFirstB, d.periodB);
@@ -173,32 +183,36 @@ struct Tracer {
         return false;
     }
 
-    void refineAll(std::vector<PointOn2>& pts) const
-    {
-        for (PointOn2& p : pts) {
-            PointOn2 q = p;
-            if (refineNearest(s, q, tol.point)) p = q;
-        }
-    }
-
-    void densify(std::vector<PointOn2>& out, const PointOn2& a, const PointOn2& b, int depth) const
-    {
-        if (depth < kMaxDensifyDepth) {
-            PointOn2 m;
-            m.ua = 0.5 * (a.ua + b.ua);
-            m.va = 0.5 * (a.va + b.va);
-            m.ub = 0.5 * (a.ub + b.ub);
-            m.vb = 0.5 * (a.vb + b.vb);
-            m.point = 0.5 * (a.point + b.point);
-            if (refineNearest(s, m, tol.point) && distance(m.point, 0.5 * (a.point + b.point)) > tol.chordal) {
-                densify(out, a, m, depth + 1);
-                densify(out, m, b, depth + 1);
-                return;
-            }
-        }
-        out.push_back(b);
-    }
 };
+
+void refineAll(const SurfacePair& s, std::vector<PointOn2>& pts, double tolerance)
+{
+    for (PointOn2& p : pts) {
+        PointOn2 q = p;
+        if (refineNearest(s, q, tolerance)) p = q;
+    }
+}
+
+/// Appends the points after @p a up to @p b, with refined midpoints inserted wherever the
+/// chord strays more than the chordal tolerance from the curve.
+void densify(const SurfacePair& s, const TraceTolerances& tol, std::vector<PointOn2>& out, const PointOn2& a,
+             const PointOn2& b, int depth)
+{
+    if (depth < kMaxDensifyDepth) {
+        PointOn2 m;
+        m.ua = 0.5 * (a.ua + b.ua);
+        m.va = 0.5 * (a.va + b.va);
+        m.ub = 0.5 * (a.ub + b.ub);
+        m.vb = 0.5 * (a.vb + b.vb);
+        m.point = 0.5 * (a.point + b.point);
+        if (refineNearest(s, m, tol.point) && distance(m.point, 0.5 * (a.point + b.point)) > tol.chordal) {
+            densify(s, tol, out, a, m, depth + 1);
+            densify(s, tol, out, m, b, depth + 1);
+            return;
+        }
+    }
+    out.push_back(b);
+}
 
 /// The distance from @p p to the segment [a, b].
 double segmentDistance(const Point3& p, const Point3& a, const Point3& b)
@@ -231,6 +245,34 @@ std::vector<PointOn2> decimate(const std::vector<PointOn2>& pts, double within)
     return kept;
 }
 
+/// decimate() for a closed loop: split at the point farthest from the first so that each half
+/// keeps its ends, and the loop at least three points.
+std::vector<PointOn2> decimateClosed(const std::vector<PointOn2>& pts, double within)
+{
+    if (pts.size() < 4) return pts;
+    std::size_t far = 1;
+    for (std::size_t k = 2; k < pts.size(); ++k)
+        if (distance(pts[k].point, pts[0].point) > distance(pts[far].point, pts[0].point)) far = k;
+    std::vector<PointOn2> first(pts.begin(), pts.begin() + static_cast<std::ptrdiff_t>(far) + 1);
+    std::vector<PointOn2> second(pts.begin() + static_cast<std::ptrdiff_t>(far), pts.end());
+    second.push_back(pts.front());
+    std::vector<PointOn2> kept = decimate(first, within);
+    const std::vector<PointOn2> rest = decimate(second, within);
+    kept.insert(kept.end(), rest.begin() + 1, rest.end() - 1);  // both ends are already kept
+    if (kept.size() < 3) {  // a straight back-and-forth cannot happen on a loop; keep a triangle
+        kept = {pts[0], pts[far / 2 > 0 ? far / 2 : 1], pts[far]};
+    }
+    return kept;
+}
+
+/// How far apart two curve ends may be and still be joined: a few of the curve's own steps.
+double bridgeDistance(const std::vector<PointOn2>& pts, const TraceTolerances& tol)
+{
+    double step = 0.0;
+    for (std::size_t k = 1; k < pts.size(); ++k) step = std::max(step, distance(pts[k].point, pts[k - 1].point));
+    return std::max(10.0 * tol.closing, 3.0 * step);
+}
+
 }  // namespace
 
 double distanceToCurve(const TracedCurve& curve, const Point3& p)
@@ -242,6 +284,39 @@ double distanceToCurve(const TracedCurve& curve, const Point3& p)
     for (std::size_t k = 0; k < segments; ++k)
         best = std::min(best, segmentDistance(p, q[k].point, q[(k + 1) % q.size()].point));
     return best;
+}
+
+void joinOpenCurves(const SurfacePair& surfaces, std::vector<TracedCurve>& curves, const TraceTolerances& tolerances)
+{
+    const Domain d = domainOf(surfaces);
+    bool joined = true;
+    while (joined) {
+        joined = false;
+        for (std::size_t i = 0; i < curves.size() && !joined; ++i)
+            for (std::size_t j = 0; j < curves.size() && !joined; ++j) {
+                TracedCurve& a = curves[i];
+                TracedCurve& b = curves[j];
+                if (a.closed || b.closed || i == j || a.points.empty() || b.points.empty()) continue;
+                const double bridge = std::max(bridgeDistance(a.points, tolerances), bridgeDistance(b.points, tolerances));
+                // a's end meets b's start (after reversing b if need be), away from tow ends.
+                if (distance(a.points.back().point, b.points.back().point) <
+                    distance(a.points.back().point, b.points.front().point))
+                    std::reverse(b.points.begin(), b.points.end());
+                if (atTowEnd(d, a.points.back()) || distance(a.points.back().point, b.points.front().point) > bridge)
+                    continue;
+                std::vector<PointOn2> tail = b.points;
+                alignTo(tail, a.points.back(), d);
+                a.points.insert(a.points.end(), tail.begin(), tail.end());
+                curves.erase(curves.begin() + static_cast<std::ptrdiff_t>(j));
+                TracedCurve& c = curves[i < j ? i : i - 1];
+                if (!atTowEnd(d, c.points.front()) && !atTowEnd(d, c.points.back()) &&
+                    distance(c.points.front().point, c.points.back().point) <= bridge) {
+                    c.closed = true;
+                    c.openReason.clear();
+                }
+                joined = true;
+            }
+    }
 }
 
 TracedCurve traceCurve(const SurfacePair& surfaces, const SurfaceWalker& walker, const PointOn2& seed,
@@ -263,9 +338,27 @@ TracedCurve traceCurve(const SurfacePair& surfaces, const SurfaceWalker& walker,
         std::reverse(chain.begin(), chain.end());
         if (closed) reason.clear();
     }
-    if (closed) chain.pop_back();  // the closing point repeats the first
+    if (!closed && !atTowEnd(tr.d, chain.front()) && !atTowEnd(tr.d, chain.back()) &&
+        distance(chain.front().point, chain.back().point) <= bridgeDistance(chain, tolerances)) {
+        // Neither end could be continued, yet they are a few walk steps apart and neither is at
+        // a tow's end (the curve grazes a seam there): the gap is one more chord of the loop.
+        closed = true;
+        reason.clear();
+    }
+    if (closed && chain.size() > 2 && distance(chain.back().point, chain.front().point) <= tolerances.closing)
+        chain.pop_back();  // the closing point repeats the first
+    curve.points = std::move(chain);
+    curve.closed = closed;
+    curve.openReason = closed ? std::string() : reason;
+    return curve;
+}
 
-    tr.refineAll(chain);
+void consolidateCurve(const SurfacePair& surfaces, TracedCurve& curve, const TraceTolerances& tolerances)
+{
+    const Domain d = domainOf(surfaces);
+    const bool closed = curve.closed;
+    std::vector<PointOn2> chain = std::move(curve.points);
+    refineAll(surfaces, chain, tolerances.point);
     // Drop points that coincide with their predecessor (piece junctions).
     std::vector<PointOn2> clean;
     for (const PointOn2& p : chain)
@@ -274,24 +367,20 @@ TracedCurve traceCurve(const SurfacePair& surfaces, const SurfaceWalker& walker,
         clean.pop_back();
     // The walk's points are much denser than needed: keep only those the chordal tolerance
     // asks for, then densify where a chord strays from the curve.
-    clean = decimate(clean, 0.5 * tolerances.chordal);
-    // Densify to the chordal tolerance.
+    clean = closed ? decimateClosed(clean, 0.5 * tolerances.chordal) : decimate(clean, 0.5 * tolerances.chordal);
     std::vector<PointOn2> dense;
     if (!clean.empty()) dense.push_back(clean.front());
-    const std::size_t segments = closed ? clean.size() : clean.size() - 1;
-    for (std::size_t k = 0; k < segments && !clean.empty(); ++k) {
+    const std::size_t segments = clean.empty() ? 0 : closed ? clean.size() : clean.size() - 1;
+    for (std::size_t k = 0; k < segments; ++k) {
         PointOn2 b = clean[(k + 1) % clean.size()];
         if (k + 1 == clean.size()) {  // the closing segment: b is the first point, one turn on
-            b.va += tr.d.periodA * std::round((clean[k].va - b.va) / tr.d.periodA);
-            b.vb += tr.d.periodB * std::round((clean[k].vb - b.vb) / tr.d.periodB);
+            b.va += d.periodA * std::round((clean[k].va - b.va) / d.periodA);
+            b.vb += d.periodB * std::round((clean[k].vb - b.vb) / d.periodB);
         }
-        tr.densify(dense, clean[k], b, 0);
+        densify(surfaces, tolerances, dense, clean[k], b, 0);
     }
     if (closed && dense.size() > 1) dense.pop_back();  // the closing segment ended on the first point
     curve.points = std::move(dense);
-    curve.closed = closed;
-    curve.openReason = closed ? std::string() : reason;
-    return curve;
 }
 
 }  // namespace towgeom::detail

@@ -1,7 +1,7 @@
 // From one point on an intersection curve to the whole curve: OCCT walks a piece, which ends at
 // a periodic seam, a tow's end, or back at its start; at a seam the walk is continued on the
 // other side until the curve closes or reaches a tow's end. The pieces are joined with v
-// unwrapped, refined onto both surfaces and densified to a chordal tolerance.
+// unwrapped; consolidation refines them onto both surfaces and sets the density.
 #pragma once
 
 #include <string>
@@ -26,9 +26,19 @@ struct TracedCurve {
     std::string openReason;        ///< why not closed (empty when closed)
 };
 
-/// Traces the curve through @p seed (a point already on the intersection).
+/// Traces the curve through @p seed (a point already on the intersection): the walk's points,
+/// joined across seams, v unwrapped, each within the point tolerance of both surfaces.
 TracedCurve traceCurve(const SurfacePair& surfaces, const SurfaceWalker& walker, const PointOn2& seed,
                        const TraceTolerances& tolerances);
+
+/// Refines every point of a traced curve onto both surfaces (to rounding level), drops
+/// duplicates, thins the walk's points and densifies to the chordal tolerance.
+void consolidateCurve(const SurfacePair& surfaces, TracedCurve& curve, const TraceTolerances& tolerances);
+
+/// Joins open curves whose ends meet (away from tow ends), e.g. the two halves of a loop whose
+/// walks both stopped where it grazes a seam; a joined curve whose ends meet becomes closed.
+/// Call before consolidateCurve().
+void joinOpenCurves(const SurfacePair& surfaces, std::vector<TracedCurve>& curves, const TraceTolerances& tolerances);
 
 /// The distance from @p p to the polyline of @p curve (closing segment included when closed).
 double distanceToCurve(const TracedCurve& curve, const Point3& p);

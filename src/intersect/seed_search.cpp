@@ -6,6 +6,7 @@
 #include "intersect/seed_search.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace towgeom::detail {
 
@@ -78,24 +79,37 @@ double longestEdge(const Triangle& t)
 
 SurfaceGrid sampleGrid(const TowSurface& tow)
 {
-    SurfaceGrid g;
-    g.u = tow.sectionParameters();
-    g.v = tow.pointParameters();
+    // The input's own stations, subdivided where the input is coarse: at least kMinAround
+    // stations around (chord error below ~2e-3 of the size of a round tow), and steps along the
+    // tow no longer than twice those around. Coarse input would otherwise give facets far from
+    // the surface, and shallow interpenetrations no facet crossing.
+    constexpr std::size_t kMinAround = 48;
+    const std::vector<double>& us = tow.sectionParameters();
+    const std::vector<double>& vs = tow.pointParameters();
     const ParameterRange r = tow.parameterRange();
+    SurfaceGrid g;
     g.period = r.vPeriod();
+    const std::size_t perV = (kMinAround + vs.size() - 1) / vs.size();
+    for (std::size_t j = 0; j < vs.size(); ++j) {
+        const double next = j + 1 < vs.size() ? vs[j + 1] : vs[0] + g.period;
+        for (std::size_t k = 0; k < perV; ++k) g.v.push_back(vs[j] + (next - vs[j]) * static_cast<double>(k) / static_cast<double>(perV));
+    }
+    const double stepAround = M_PI * tow.towSize() / static_cast<double>(g.v.size());
+    const auto& sections = tow.sections();
+    const auto centre = [&](std::size_t i) {
+        Point3 c;
+        for (const Point3& p : sections[i]) c = c + p;
+        return (1.0 / static_cast<double>(sections[i].size())) * c;
+    };
+    for (std::size_t i = 0; i + 1 < us.size(); ++i) {
+        const double along = distance(centre(i), centre(i + 1));
+        const std::size_t perU = std::min<std::size_t>(64, std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(along / (2.0 * stepAround)))));
+        for (std::size_t k = 0; k < perU; ++k) g.u.push_back(us[i] + (us[i + 1] - us[i]) * static_cast<double>(k) / static_cast<double>(perU));
+    }
+    g.u.push_back(us.back());
     g.points.reserve(g.u.size() * g.v.size());
     for (double u : g.u)
         for (double v : g.v) g.points.push_back(tow.point(u, v));
-    const std::size_t n = g.v.size();
-    for (std::size_t i = 0; i < g.u.size(); ++i)
-        for (std::size_t j = 0; j < n; ++j) {
-            const Point3& p = g.points[i * n + j];
-            g.maxEdge = std::max(g.maxEdge, distance(p, g.points[i * n + (j + 1) % n]));
-            if (i + 1 < g.u.size()) {
-                g.maxEdge = std::max(g.maxEdge, distance(p, g.points[(i + 1) * n + j]));
-                g.maxEdge = std::max(g.maxEdge, distance(p, g.points[(i + 1) * n + (j + 1) % n]));
-            }
-        }
     return g;
 }
 
@@ -128,7 +142,7 @@ std::vector<Seed> findSeeds(const SurfaceGrid& a, const SurfaceGrid& b, const Wi
         s.guess.ub = ub.u;
         s.guess.vb = ub.v;
         s.guess.point = {p.x(), p.y(), p.z()};
-        s.facetSize = std::max(longestEdge(fa[i].triangle), longestEdge(fb[j].triangle));
+        s.facetSize = std::min(longestEdge(fa[i].triangle), longestEdge(fb[j].triangle));
         seeds.push_back(s);
     }
     return seeds;

@@ -12,23 +12,22 @@
 
 namespace towgeom::detail {
 
-/// A surface sampled at its sections' u and its points' v: the vertices of its facets, each
-/// exactly on the surface with known (u, v).
+/// A surface sampled at its sections' u and its points' v (subdivided where the input is
+/// coarse): the vertices of its facets, each exactly on the surface with known (u, v).
 struct SurfaceGrid {
     std::vector<double> u;       ///< M stations
     std::vector<double> v;       ///< N stations around; the facet after the last wraps to v[0] + period
     std::vector<Point3> points;  ///< M x N, row i = station u[i]
     double period = 1.0;
-    double maxEdge = 0.0;        ///< the longest facet edge
 };
 
-/// The grid of @p tow (its sections' and points' parameters).
+/// The grid of @p tow: its sections' and points' parameters, subdivided where coarse.
 SurfaceGrid sampleGrid(const TowSurface& tow);
 
-/// A guess of a point on an intersection curve, with the size of the facets it came from.
+/// A guess of a point on an intersection curve, with the size of the smaller facet it came from.
 struct Seed {
     PointOn2 guess;
-    double facetSize = 0.0;
+    double facetSize = 0.0;  ///< the longest edge of the smaller of the two facets
 };
 
 /// Guesses where the facets of @p a within @p window.a cross those of @p b within @p window.b,

@@ -67,7 +67,9 @@ PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::ve
         const std::vector<detail::Seed> seeds = detail::findSeeds(grids[c.a], grids[c.b], w);
         result.seeds += seeds.size();
         for (const detail::Seed& s : seeds) {
-            // A facet crossing lies within a facet's size of the curve it comes from.
+            // Cheap pre-check before Newton: the guess lies within a facet's size of the curve it
+            // comes from. The smaller facet is used so that a second loop near the first (a
+            // thin tow through a coarse one) is never skipped, only refined for nothing.
             if (near(s.guess.point, s.facetSize)) continue;
             detail::PointOn2 start = s.guess;
             if (!detail::refineNearest(surfaces, start, tol.point)) continue;
@@ -79,6 +81,8 @@ PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::ve
             curves.push_back(std::move(t));
         }
     }
+    detail::joinOpenCurves(surfaces, curves, tol);
+    for (detail::TracedCurve& t : curves) detail::consolidateCurve(surfaces, t, tol);
     for (const detail::TracedCurve& t : curves)
         result.loops.push_back(detail::makeLoop(c.a, c.b, a, b, t.points, t.closed, t.openReason, tol.point));
     return result;
