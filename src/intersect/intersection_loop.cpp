@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "intersect/intersection_loop_data.hpp"
 #include "surface/curve3_impl.hpp"
@@ -213,10 +214,12 @@ std::vector<LoopPoint> IntersectionLoop::resample(double spacing) const
         throw Error(ErrorCode::InvalidArgument, "IntersectionLoop::resample: spacing must be positive and finite");
     constexpr double kMaxPoints = 1e7;
     const double L = length();
-    if (L / spacing > kMaxPoints)
-        throw Error(ErrorCode::InvalidArgument, "IntersectionLoop::resample: spacing " + std::to_string(spacing) +
-                                                    " would give more than 1e7 points on a curve of length " +
-                                                    std::to_string(L));
+    if (L / spacing > kMaxPoints) {
+        std::ostringstream m;
+        m << "IntersectionLoop::resample: spacing " << spacing << " would give more than 1e7 points on a curve of length "
+          << L;
+        throw Error(ErrorCode::InvalidArgument, m.str());
+    }
     std::size_t n = static_cast<std::size_t>(std::ceil(L / spacing));
     if (data_->closed) n = std::max<std::size_t>(n, 3);
     n = std::max<std::size_t>(n, 1);
