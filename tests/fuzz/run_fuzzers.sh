@@ -50,7 +50,7 @@ for i in "${!targets[@]}"; do
   if ((status)); then
     failed=1
     echo "run_fuzzers: fuzz_$target FAILED (exit $status) after ${runs:-?} executions; log: $log" >&2
-    grep -E "^==[0-9]+==ERROR|runtime error|uncaught|towgeom fuzz:|Test unit written" "$log" >&2 || tail -20 "$log" >&2
+    grep -E "^==[0-9]+== ?ERROR|runtime error|terminate called|what\(\)|towgeom fuzz:|Test unit written" "$log" >&2 || tail -20 "$log" >&2
   else
     echo "run_fuzzers: fuzz_$target: ${runs:-?} executions in ${seconds} s, no crash" >&2
   fi
