@@ -38,4 +38,4 @@ for target in stack_reader stack_fit; do
   mkdir -p "$here/corpus/$target"
   cp "$seeds"/* "$here/corpus/$target/"
 done
-ls "$here/corpus/stack_reader" | wc -l
+echo "make_corpus: $(find "$here/corpus/stack_reader" -type f | wc -l) seeds per target" >&2

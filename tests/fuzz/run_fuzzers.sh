@@ -12,7 +12,7 @@ set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
 seconds=${1:-60}
-jobs=${TOWGEOM_JOBS:-$(nproc 2>/dev/null || echo 2)}
+parallel=${TOWGEOM_JOBS:-$(nproc 2>/dev/null || echo 2)}
 targets=(stack_reader stack_fit)
 declare -A max_len=([stack_reader]=20000 [stack_fit]=20000)
 
@@ -36,7 +36,7 @@ fuzz() {
 
 pids=()
 for target in "${targets[@]}"; do
-  while (($(jobs -rp | wc -l) >= jobs)); do wait -n || true; done
+  while (($(jobs -rp | wc -l) >= parallel)); do wait -n || true; done
   fuzz "$target" &
   pids+=($!)
 done
