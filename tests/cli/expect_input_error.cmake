@@ -1,10 +1,16 @@
-# Runs `towgeom fit GOOD INPUT --out WORK/out` and checks that a bad input is refused properly:
-# exit status 2, one stderr line naming the file (and line, when LINE > 0) and the error code,
-# nothing on stdout, and no file left in the output directory (GOOD alone would have written one).
+# Runs `towgeom SUBCOMMAND GOOD... INPUT --out WORK/out --quiet` and checks that a bad input is
+# refused properly: exit status 2, one stderr line "towgeom SUBCOMMAND: " naming the file (and
+# line, when LINE > 0) and the error code, nothing on stdout, and no file left in the output
+# directory (GOOD alone would have written one).
+#   SUBCOMMAND  default fit; GOOD  valid inputs given before INPUT, separated by '|'
+if(NOT SUBCOMMAND)
+  set(SUBCOMMAND fit)
+endif()
+string(REPLACE "|" ";" good "${GOOD}")
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 execute_process(
-  COMMAND "${CLI}" fit "${GOOD}" "${INPUT}" --out "${WORK}/out" --quiet
+  COMMAND "${CLI}" ${SUBCOMMAND} ${good} "${INPUT}" --out "${WORK}/out" --quiet
   RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT status EQUAL 2)
   message(FATAL_ERROR "expected exit status 2, got '${status}'\nstderr: ${err}")
@@ -18,13 +24,13 @@ if(NOT count EQUAL 1)
   message(FATAL_ERROR "expected exactly one line on stderr, got ${count}: ${err}")
 endif()
 if(LINE GREATER 0)
-  set(where "${INPUT}:${LINE}: ")
+  set(where "towgeom ${SUBCOMMAND}: ${INPUT}:${LINE}: ")
 else()
-  set(where "${INPUT}: ")
+  set(where "towgeom ${SUBCOMMAND}: ${INPUT}: ")
 endif()
 string(FIND "${err}" "${where}" at)
-if(at EQUAL -1)
-  message(FATAL_ERROR "stderr does not name '${where}': ${err}")
+if(NOT at EQUAL 0)
+  message(FATAL_ERROR "stderr does not start with '${where}': ${err}")
 endif()
 string(FIND "${err}" "[${CODE}]" at)
 if(at EQUAL -1)

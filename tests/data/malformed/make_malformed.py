@@ -7,6 +7,7 @@ and LINE the expected line number (0: no line, e.g. a missing file).
 """
 import math
 import os
+import random
 
 N, M = 8, 5
 
@@ -91,6 +92,8 @@ rep = tube()
 rep[2] = list(rep[1])
 case("repeated_section.stw", "degenerate_tow", sections=rep)
 case("binary.stw", "binary_data", raw=b"# header\n0 1 0\n\x00\x01\x02\xff\xfe junk\n")
+# Binary junk from the first byte: a gzip header and 4 KiB of (seeded) random bytes.
+case("junk.stw", "binary_data", raw=b"\x1f\x8b\x08\x00" + random.Random(6).randbytes(4096), line_of=1)
 case("bad_name.stw", "bad_name", edit=lambda lines, where: (lines.__setitem__(1, "tow ../../etc/passwd"), 2)[1])
 
 

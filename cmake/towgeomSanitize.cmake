@@ -1,0 +1,49 @@
+# Sanitizer and fuzzer builds. Both apply to every target of the build (library, CLI, tests,
+# benchmarks): include this before any target is made.
+#
+#   TOWGEOM_SANITIZE=address,undefined   ASan + UBSan (any -fsanitize= list); every UBSan report
+#                                        halts the program (-fno-sanitize-recover=all). Tests
+#                                        labelled 'skip-sanitize' are not meant for this build.
+#   TOWGEOM_BUILD_FUZZERS=ON             clang only: the library is instrumented for libFuzzer
+#                                        (-fsanitize=fuzzer-no-link) and tests/fuzz is built.
+#
+# OpenCASCADE, CGAL's compiled parts and the C++ runtime come from Debian and are not
+# instrumented; ASan still sees every allocation they make through malloc/new.
+set(TOWGEOM_SANITIZE "" CACHE STRING "Sanitizers for every target, e.g. address,undefined (empty: none)")
+option(TOWGEOM_BUILD_FUZZERS "Build the libFuzzer targets of tests/fuzz (clang only)" OFF)
+
+if(TOWGEOM_BUILD_FUZZERS)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "TOWGEOM_BUILD_FUZZERS needs clang (libFuzzer), not ${CMAKE_CXX_COMPILER_ID}: "
+                        "configure with -DCMAKE_CXX_COMPILER=clang++ (see tests/fuzz/run_fuzzers.sh)")
+  endif()
+  if(NOT TOWGEOM_SANITIZE)
+    set(TOWGEOM_SANITIZE "address,undefined" CACHE STRING "" FORCE)
+  endif()
+endif()
+
+if(TOWGEOM_SANITIZE)
+  message(STATUS "towgeom: every target built with -fsanitize=${TOWGEOM_SANITIZE}")
+  add_compile_options(-fsanitize=${TOWGEOM_SANITIZE} -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=${TOWGEOM_SANITIZE} -fno-sanitize-recover=all)
+endif()
+if(TOWGEOM_BUILD_FUZZERS)
+  add_compile_options(-fsanitize=fuzzer-no-link)
+endif()
+
+# Every test runs with these options (ctest reads this file before it starts any test, and the
+# tests' child processes, e.g. the CLI run by a test, inherit them); options already in the
+# environment come last and win. A sanitizer report exits with status 86, which no test
+# expects (the CLI's own codes are 0, 1 and 2), so a report can never pass for an expected
+# failure. LeakSanitizer is on (ASan's default on Linux), stated so that it stays on.
+# No suppressions are needed: OpenCASCADE, CGAL and Eigen run clean (OCCT allocates through
+# malloc/free, so ASan sees no new/free mismatch).
+if(TOWGEOM_SANITIZE)
+  set(asan "exitcode=86:detect_leaks=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1")
+  set(ubsan "exitcode=86:halt_on_error=1:print_stacktrace=1")
+  file(WRITE "${PROJECT_BINARY_DIR}/sanitizer_environment.cmake"
+    "set(ENV{ASAN_OPTIONS} \"${asan}:\$ENV{ASAN_OPTIONS}\")\n"
+    "set(ENV{UBSAN_OPTIONS} \"${ubsan}:\$ENV{UBSAN_OPTIONS}\")\n")
+  set_property(DIRECTORY "${PROJECT_SOURCE_DIR}" APPEND PROPERTY TEST_INCLUDE_FILES
+    "${PROJECT_BINARY_DIR}/sanitizer_environment.cmake")
+endif()
