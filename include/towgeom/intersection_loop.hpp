@@ -78,6 +78,8 @@ public:
     /// The area of tow @p side's surface enclosed by a closed loop (integral of |S_u x S_v| over
     /// the loop's (u,v) polygon). NaN for open loops and for loops that wind around the tow.
     double enclosedArea(LoopSide side) const;
+    /// The point tolerance the loop was computed with (IntersectionOptions::tolerance, resolved).
+    double tolerance() const;
     /// The largest distance of a point of points() from tow @p side's surface (bounded by
     /// |point - S(uv)|); at most the tolerance.
     double maxDistance(LoopSide side) const;

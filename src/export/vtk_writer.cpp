@@ -12,7 +12,7 @@ namespace towgeom {
 
 namespace detail {
 
-void writeVtkPolyData(std::ostream& out, const TriangleMesh& mesh, const std::string& title)
+void writeVtkPolyData(std::ostream& out, const TriangleMesh& mesh, const std::string& title, const VtkCellData& cellData)
 {
     std::string header = title.substr(0, 255);
     for (char& c : header)
@@ -26,6 +26,13 @@ void writeVtkPolyData(std::ostream& out, const TriangleMesh& mesh, const std::st
     if (!mesh.normals.empty() && mesh.normals.size() == mesh.vertices.size()) {
         out << "POINT_DATA " << mesh.vertices.size() << "\nNORMALS normals double\n";
         for (const Vector3& n : mesh.normals) out << n.x << ' ' << n.y << ' ' << n.z << '\n';
+    }
+    if (!cellData.empty()) {
+        out << "CELL_DATA " << mesh.triangles.size() << '\n';
+        for (const auto& [name, values] : cellData) {
+            out << "SCALARS " << name << " int 1\nLOOKUP_TABLE default\n";
+            for (long v : values) out << v << '\n';
+        }
     }
 }
 

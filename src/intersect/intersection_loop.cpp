@@ -134,6 +134,7 @@ bool IntersectionLoop::closed() const { return data_->closed; }
 const std::string& IntersectionLoop::openReason() const { return data_->openReason; }
 const std::vector<LoopPoint>& IntersectionLoop::points() const { return data_->points; }
 double IntersectionLoop::length() const { return data_->cumulative.back(); }
+double IntersectionLoop::tolerance() const { return data_->tolerance; }
 
 double IntersectionLoop::maxDistance(LoopSide side) const
 {

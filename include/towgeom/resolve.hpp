@@ -1,0 +1,85 @@
+/// @file resolve.hpp
+/// @brief resolveTextile(): compatible tow surface meshes that share one surface wherever two
+/// tows interpenetrated (ParametricMesher + ConnectedRegion).
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "towgeom/intersection_options.hpp"
+#include "towgeom/mesh_options.hpp"
+#include "towgeom/textile_mesh.hpp"
+#include "towgeom/tow_intersection.hpp"
+#include "towgeom/tow_surface.hpp"
+
+namespace towgeom {
+
+/// Options for resolveTextile().
+struct ResolveOptions {
+    MeshOptions mesh;                  ///< mesh size and quality
+    IntersectionOptions intersection;  ///< tolerances of the intersection loops (threads below)
+    /// Which tow of a pair keeps its surface: a tow whose name matches one of these shell
+    /// patterns (`*`, `?`, `[...]`) is primary over one that does not. When both or neither
+    /// match, the tow given first (lower index) is primary. Empty (default): the first one.
+    std::vector<std::string> primaryPatterns;
+    /// Worker threads (intersection and meshing); 0: one per hardware thread.
+    std::size_t threads = 0;
+    /// Progress: called with a short stage description; may be empty.
+    std::function<void(const std::string&)> progress;
+};
+
+/// What resolution did to one tow.
+struct TowResolution {
+    bool primaryAnywhere = false;  ///< primary in at least one resolved pair
+    bool secondaryAnywhere = false;  ///< secondary in at least one resolved pair
+    double volumeBefore = 0.0;     ///< volume of its own mesh, ends closed by fans
+    double volumeAfter = 0.0;      ///< the same after the regions were swapped in
+    double area = 0.0;             ///< surface area of the final mesh
+    std::size_t boundaryLoops = 0;  ///< 2 for a tube open at both ends
+};
+
+/// Smallest 3D angles of the final triangles.
+struct MeshQuality {
+    double minAngle = 0.0;                ///< degrees, over all triangles
+    std::vector<std::size_t> histogram;  ///< triangles per 5-degree bin of their smallest angle (0-5, 5-10, ... 55-60)
+    std::size_t triangles = 0;            ///< distinct triangles counted (shared ones once)
+    /// The fraction of triangles whose smallest angle is at least @p degrees.
+    double fractionAtLeast(double degrees) const;
+};
+
+/// Wall-clock time of the stages of resolveTextile(), in milliseconds.
+struct ResolveTimings {
+    double intersect = 0.0;  ///< intersectTows()
+    double mesh = 0.0;       ///< loop nodes and the parametric meshes
+    double regions = 0.0;    ///< classification, swap, volumes, quality
+};
+
+/// The result of resolveTextile().
+struct ResolveResult {
+    IntersectionReport intersections;  ///< every loop found (open ones included)
+    TextileMesh mesh;                  ///< the compatible meshes
+    std::vector<TowResolution> tows;   ///< per input tow
+    /// Loops that were not resolved (open, or winding around a tow), by index in
+    /// intersections.loops, with the reason.
+    std::vector<std::pair<std::size_t, std::string>> skipped;
+    MeshQuality quality;               ///< of the final meshes
+    /// Meshing rounds: where the mesher split a loop or seam edge, the point became a node of
+    /// both sides and the tows concerned were meshed again (1 when nothing was split).
+    std::size_t meshRounds = 0;
+    ResolveTimings timings;            ///< where the time went
+};
+
+/// Meshes every tow in its (u,v) rectangle with the closed intersection loops as constraints
+/// (ParametricMesher: CGAL constrained Delaunay mesher in a parameter space scaled by the
+/// surface's lengths, loop nodes shared by both tows, seam nodes shared by both sides of the
+/// seam), then for each closed loop removes the secondary tow's triangles inside the loop
+/// (exact point-in-polygon on the (u,v) loop, CGAL) and puts the primary's inside triangles in
+/// their place (ConnectedRegion), so the two tows share nodes and triangles there.
+///
+/// Open loops and loops winding around a tow are not resolved (see ResolveResult::skipped).
+/// @throws towgeom::Error (InvalidArgument) for bad options, (Internal) if a kernel fails.
+ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveOptions& options = {});
+
+}  // namespace towgeom

@@ -1,0 +1,57 @@
+/// @file textile_mesh.hpp
+/// @brief TextileMesh: the surface meshes of all tows on one global node numbering, with the
+/// connected regions where tows share their surface.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "towgeom/point.hpp"
+#include "towgeom/triangle_mesh.hpp"
+
+namespace towgeom {
+
+/// One tow's surface mesh: triangles over the global nodes, counter-clockwise seen from outside
+/// the tow (normals point out of the tow, also on a shared region, where they point out of the
+/// tow the triangles belong to).
+struct TowMesh {
+    std::string name;                                  ///< the tow's name
+    std::vector<std::array<std::size_t, 3>> triangles;  ///< global node indices
+    /// For each triangle: the index of the connected region it belongs to, or -1.
+    std::vector<long> region;
+};
+
+/// Where a secondary tow's surface was replaced by the primary's: the primary's triangles inside
+/// one closed intersection loop, now shared by both tows (same nodes, same triangles, opposite
+/// orientation in the secondary).
+struct ConnectedRegion {
+    std::size_t primary = 0;             ///< tow index of the primary tow
+    std::size_t secondary = 0;           ///< tow index of the secondary tow
+    std::size_t loop = 0;                ///< index of the loop in the intersection report
+    std::vector<std::size_t> triangles;  ///< indices into the primary's TowMesh::triangles
+    std::vector<std::size_t> nodes;      ///< global nodes of those triangles (sorted)
+    std::vector<std::size_t> loopNodes;  ///< global nodes on the loop, in loop order
+    double area = 0.0;                   ///< area of the shared surface
+    double volumeRemoved = 0.0;          ///< volume the secondary tow lost
+};
+
+/// The meshes of all tows of a textile on one node numbering: a node on an intersection loop
+/// or in a connected region is the same node in every tow that uses it.
+struct TextileMesh {
+    std::vector<Point3> nodes;             ///< global node positions
+    std::vector<TowMesh> tows;             ///< one per input tow, in input order
+    std::vector<ConnectedRegion> regions;  ///< one per resolved loop
+
+    /// Tow @p tow's mesh as a standalone TriangleMesh (only the nodes it uses, renumbered).
+    TriangleMesh towSurface(std::size_t tow) const;
+    /// The same, with the two open ends closed by a fan from the centroid of each end loop (for
+    /// volumes); meaningful only for a tube with exactly two boundary loops.
+    TriangleMesh closedTowSurface(std::size_t tow) const;
+    /// The number of boundary loops (closed chains of edges used by one triangle only) of tow
+    /// @p tow's mesh: 2 for a tube open at both ends.
+    std::size_t boundaryLoopCount(std::size_t tow) const;
+};
+
+}  // namespace towgeom

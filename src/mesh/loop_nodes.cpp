@@ -1,0 +1,177 @@
+#include "mesh/loop_nodes.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "intersect/intersection_loop_data.hpp"
+#include "intersect/intersection_point.hpp"
+
+namespace towgeom::detail {
+
+namespace {
+
+UV sideOf(const LoopPoint& p, LoopSide side) { return side == LoopSide::A ? p.onA : p.onB; }
+
+double periodOf(const IntersectionLoop& loop, LoopSide side)
+{
+    return (side == LoopSide::A ? loop.surfaceA() : loop.surfaceB()).parameterRange().vPeriod();
+}
+
+double vMinOf(const IntersectionLoop& loop, LoopSide side)
+{
+    return (side == LoopSide::A ? loop.surfaceA() : loop.surfaceB()).parameterRange().vMin;
+}
+
+/// The exact loop point between @p p and @p q where tow @p side's v equals @p seam.
+LoopPoint seamPoint(const SurfacePair& sp, const LoopPoint& p, const LoopPoint& q, LoopSide side, double seam,
+                    double tolerance)
+{
+    const double v0 = sideOf(p, side).v, v1 = sideOf(q, side).v;
+    const double t = (seam - v0) / (v1 - v0);
+    const auto lerp = [t](double a, double b) { return a + t * (b - a); };
+    PointOn2 x{lerp(p.onA.u, q.onA.u), lerp(p.onA.v, q.onA.v), lerp(p.onB.u, q.onB.u), lerp(p.onB.v, q.onB.v),
+               {lerp(p.point.x, q.point.x), lerp(p.point.y, q.point.y), lerp(p.point.z, q.point.z)}, 0.0};
+    PointCondition c;
+    c.kind = side == LoopSide::A ? PointCondition::Kind::FixVA : PointCondition::Kind::FixVB;
+    c.value = seam;
+    refineOnIntersection(sp, x, c, tolerance);  // on failure the interpolated point stays
+    LoopPoint r{x.point, {x.ua, x.va}, {x.ub, x.vb}};
+    (side == LoopSide::A ? r.onA : r.onB).v = seam;  // exactly, so the mesher sees it on the seam
+    return r;
+}
+
+}  // namespace
+
+SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, double spacing,
+                          std::vector<Point3>& globalNodes)
+{
+    const std::vector<LoopPoint> base = loop.resample(spacing);
+    const SurfacePair sp = surfacePairOf(loop.surfaceA(), loop.surfaceB());
+    SharedLoop shared;
+    shared.loop = loopIndex;
+    const std::size_t n = base.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        const LoopPoint& p = base[k];
+        LoopPoint q = base[(k + 1) % n];
+        if (k + 1 == n) {  // the closing chord: the first point one turn on, if the loop winds
+            q.onA.v += periodOf(loop, LoopSide::A) * std::round((p.onA.v - q.onA.v) / periodOf(loop, LoopSide::A));
+            q.onB.v += periodOf(loop, LoopSide::B) * std::round((p.onB.v - q.onB.v) / periodOf(loop, LoopSide::B));
+        }
+        shared.points.push_back(p);
+        // Seam crossings of either tow on this chord, in order along it.
+        std::vector<std::pair<double, LoopPoint>> crossings;
+        for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+            const double period = periodOf(loop, side), vMin = vMinOf(loop, side);
+            const double v0 = sideOf(p, side).v, v1 = sideOf(q, side).v;
+            const double lo = std::min(v0, v1), hi = std::max(v0, v1);
+            for (double seam = vMin + period * std::ceil((lo - vMin) / period); seam < hi; seam += period) {
+                if (seam <= lo) continue;
+                crossings.emplace_back((seam - v0) / (v1 - v0), seamPoint(sp, p, q, side, seam, loop.tolerance()));
+            }
+        }
+        std::sort(crossings.begin(), crossings.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (const auto& c : crossings) shared.points.push_back(c.second);
+    }
+    // A first point that lies exactly on a seam is a seam node as it is.
+    for (const LoopPoint& p : shared.points) {
+        shared.nodes.push_back(globalNodes.size());
+        globalNodes.push_back(p.point);
+    }
+    return shared;
+}
+
+bool splitChord(const IntersectionLoop& loop, SharedLoop& shared, std::size_t a, std::size_t b, double t,
+                std::vector<Point3>& globalNodes)
+{
+    const std::size_t n = shared.nodes.size();
+    std::size_t i = n;
+    for (std::size_t k = 0; k < n && i == n; ++k) {
+        if (shared.nodes[k] == a && shared.nodes[(k + 1) % n] == b) i = k;
+        if (shared.nodes[k] == b && shared.nodes[(k + 1) % n] == a) {
+            i = k;
+            t = 1.0 - t;
+        }
+    }
+    if (i == n) return false;
+    const LoopPoint& p = shared.points[i];
+    LoopPoint q = shared.points[(i + 1) % n];
+    if (i + 1 == n) {  // the closing chord
+        q.onA.v += periodOf(loop, LoopSide::A) * std::round((p.onA.v - q.onA.v) / periodOf(loop, LoopSide::A));
+        q.onB.v += periodOf(loop, LoopSide::B) * std::round((p.onB.v - q.onB.v) / periodOf(loop, LoopSide::B));
+    }
+    const auto lerp = [t](double x, double y) { return x + t * (y - x); };
+    PointOn2 x{lerp(p.onA.u, q.onA.u), lerp(p.onA.v, q.onA.v), lerp(p.onB.u, q.onB.u), lerp(p.onB.v, q.onB.v),
+               {lerp(p.point.x, q.point.x), lerp(p.point.y, q.point.y), lerp(p.point.z, q.point.z)}, 0.0};
+    PointCondition c;
+    c.kind = PointCondition::Kind::Plane;
+    c.origin = x.point;
+    c.normal = q.point - p.point;
+    refineOnIntersection(surfacePairOf(loop.surfaceA(), loop.surfaceB()), x, c, loop.tolerance());
+    shared.points.insert(shared.points.begin() + static_cast<std::ptrdiff_t>(i) + 1, LoopPoint{x.point, {x.ua, x.va}, {x.ub, x.vb}});
+    shared.nodes.insert(shared.nodes.begin() + static_cast<std::ptrdiff_t>(i) + 1, globalNodes.size());
+    globalNodes.push_back(x.point);
+    return true;
+}
+
+std::vector<UV> loopPolygon(const SharedLoop& shared, LoopSide side)
+{
+    std::vector<UV> uv;
+    uv.reserve(shared.points.size());
+    for (const LoopPoint& p : shared.points) uv.push_back(sideOf(p, side));
+    return uv;
+}
+
+std::vector<LoopConstraint> constraintsOn(const SharedLoop& shared, const IntersectionLoop& loop, LoopSide side)
+{
+    const double period = periodOf(loop, side), vMin = vMinOf(loop, side);
+    const std::vector<UV> uv = loopPolygon(shared, side);
+    const std::size_t n = uv.size();
+    const auto onSeam = [&](double v) {
+        const double r = (v - vMin) / period;
+        return r == std::round(r);
+    };
+    // Start at a seam node if there is one, so every piece runs from seam to seam.
+    std::size_t start = n;
+    for (std::size_t k = 0; k < n && start == n; ++k)
+        if (onSeam(uv[k].v)) start = k;
+    if (start == n) {  // no seam crossing: one closed constraint, shifted into the rectangle
+        LoopConstraint c;
+        c.closed = true;
+        double shift = period * std::floor((uv[0].v - vMin) / period);
+        for (std::size_t k = 0; k < n; ++k) {
+            c.uv.push_back({uv[k].u, uv[k].v - shift});
+            c.nodes.push_back(shared.nodes[k]);
+        }
+        return {c};
+    }
+    // The loop walked once from that seam node back to it, v continuous across the closing
+    // chord (one period on for a loop that winds around the tow).
+    const double offset = period * std::round((uv[n - 1].v - uv[0].v) / period);
+    std::vector<LoopConstraint> pieces;
+    LoopConstraint current;
+    for (std::size_t step = 0; step <= n; ++step) {
+        const std::size_t k = (start + step) % n;
+        UV p = uv[k];
+        if (start + step >= n) p.v += offset;  // past the closing chord
+        current.uv.push_back(p);
+        current.nodes.push_back(shared.nodes[k]);
+        if (step > 0 && onSeam(uv[k].v)) {
+            pieces.push_back(std::move(current));
+            current = LoopConstraint{};
+            current.uv.push_back(p);
+            current.nodes.push_back(shared.nodes[k]);
+        }
+    }
+    // Shift each piece into the rectangle by the cell of its first chord's midpoint.
+    for (LoopConstraint& c : pieces) {
+        if (c.uv.size() < 2) continue;
+        const double mid = 0.5 * (c.uv[0].v + c.uv[1].v);
+        const double shift = period * std::floor((mid - vMin) / period);
+        for (UV& q : c.uv) q.v = std::clamp(q.v - shift, vMin, vMin + period);
+    }
+    pieces.erase(std::remove_if(pieces.begin(), pieces.end(), [](const LoopConstraint& c) { return c.uv.size() < 2; }),
+                 pieces.end());
+    return pieces;
+}
+
+}  // namespace towgeom::detail

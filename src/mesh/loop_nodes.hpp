@@ -1,0 +1,43 @@
+// The nodes of an intersection loop that both of its tows' meshes share: the loop resampled at
+// the loop spacing, plus the exact points where it crosses either tow's periodic seam.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "towgeom/intersection_loop.hpp"
+
+namespace towgeom::detail {
+
+/// A closed loop's shared nodes, in loop order (the first is not repeated).
+struct SharedLoop {
+    std::size_t loop = 0;             ///< index in the intersection report
+    std::vector<LoopPoint> points;    ///< exact points, (u,v) unwrapped on both tows
+    std::vector<std::size_t> nodes;   ///< their global node indices
+};
+
+/// One piece of a loop inside a tow's parameter rectangle: a constraint for its mesher.
+struct LoopConstraint {
+    std::vector<UV> uv;               ///< v within [vMin, vMax]; seam points exactly on vMin or vMax
+    std::vector<std::size_t> nodes;   ///< global node of each point
+    bool closed = false;              ///< the piece returns to its first point (not repeated)
+};
+
+/// Resamples @p loop at @p spacing, adds its exact seam crossings on both tows and appends the
+/// points to @p globalNodes.
+SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, double spacing,
+                          std::vector<Point3>& globalNodes);
+
+/// Adds a node on the chord between loop nodes @p a and @p b (consecutive in @p shared) at
+/// fraction @p t: the exact loop point where the curve crosses the plane normal to the chord
+/// there. Appends it to @p globalNodes. False if a and b are not consecutive.
+bool splitChord(const IntersectionLoop& loop, SharedLoop& shared, std::size_t a, std::size_t b, double t,
+                std::vector<Point3>& globalNodes);
+
+/// The pieces of @p shared on tow @p side, cut at that tow's seam and shifted into its rectangle.
+std::vector<LoopConstraint> constraintsOn(const SharedLoop& shared, const IntersectionLoop& loop, LoopSide side);
+
+/// The loop's polygon on tow @p side in unwrapped (u,v), for point-in-polygon tests.
+std::vector<UV> loopPolygon(const SharedLoop& shared, LoopSide side);
+
+}  // namespace towgeom::detail

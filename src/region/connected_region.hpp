@@ -1,0 +1,17 @@
+// ConnectedRegion: which triangles of a tow's parametric mesh lie inside an intersection loop.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "mesh/parametric_mesher.hpp"
+
+namespace towgeom::detail {
+
+/// The triangles of @p mesh whose (u,v) centroid lies inside @p polygon (the loop on this tow,
+/// v unwrapped), by CGAL's exact point-in-polygon test. Centroids are tried at v and v shifted
+/// by whole periods into the polygon's v range, so loops across the seam work. The loop is a
+/// constraint of the mesh, so no triangle straddles it.
+std::vector<std::size_t> trianglesInside(const ParametricMesh& mesh, const std::vector<UV>& polygon, double period);
+
+}  // namespace towgeom::detail

@@ -1,0 +1,285 @@
+#include "towgeom/resolve.hpp"
+
+#include <fnmatch.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "core/parallel.hpp"
+#include "mesh/loop_nodes.hpp"
+#include "mesh/parametric_mesher.hpp"
+#include "region/connected_region.hpp"
+#include "towgeom/error.hpp"
+
+namespace towgeom {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using Triangle = std::array<std::size_t, 3>;
+
+double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+bool matchesAny(const std::string& name, const std::vector<std::string>& patterns)
+{
+    return std::any_of(patterns.begin(), patterns.end(),
+                       [&](const std::string& p) { return fnmatch(p.c_str(), name.c_str(), 0) == 0; });
+}
+
+double triangleArea(const std::vector<Point3>& nodes, const Triangle& t)
+{
+    return 0.5 * norm(cross(nodes[t[1]] - nodes[t[0]], nodes[t[2]] - nodes[t[0]]));
+}
+
+double smallestAngle(const std::vector<Point3>& nodes, const Triangle& t)
+{
+    double best = 180.0;
+    for (int k = 0; k < 3; ++k) {
+        const Vector3 a = nodes[t[(k + 1) % 3]] - nodes[t[k]], b = nodes[t[(k + 2) % 3]] - nodes[t[k]];
+        const double c = dot(a, b) / (norm(a) * norm(b));
+        best = std::min(best, std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / 3.14159265358979323846);
+    }
+    return best;
+}
+
+/// A triangle soup over the global nodes as a standalone mesh.
+TriangleMesh soup(const std::vector<Point3>& nodes, const std::vector<Triangle>& triangles)
+{
+    TriangleMesh m;
+    std::map<std::size_t, std::size_t> local;
+    for (const Triangle& t : triangles) {
+        Triangle r{};
+        for (int k = 0; k < 3; ++k) {
+            const auto [it, fresh] = local.emplace(t[k], m.vertices.size());
+            if (fresh) m.vertices.push_back(nodes[t[k]]);
+            r[k] = it->second;
+        }
+        m.triangles.push_back(r);
+    }
+    return m;
+}
+
+Triangle reversed(const Triangle& t) { return {t[0], t[2], t[1]}; }
+
+void checkOptions(const ResolveOptions& o)
+{
+    const MeshOptions& m = o.mesh;
+    const auto nonNegative = [](double x) { return x >= 0.0 && std::isfinite(x); };
+    if (!nonNegative(m.edgeLength)) throw Error(ErrorCode::InvalidArgument, "mesh edge length must be >= 0 and finite");
+    if (!(m.relativeEdgeLength > 0.0 && std::isfinite(m.relativeEdgeLength)))
+        throw Error(ErrorCode::InvalidArgument, "relative mesh edge length must be > 0 and finite");
+    if (!(m.minAngle > 0.0 && m.minAngle <= 30.0))
+        throw Error(ErrorCode::InvalidArgument, "minimum angle must lie in (0, 30] degrees");
+    if (!nonNegative(m.loopSpacing)) throw Error(ErrorCode::InvalidArgument, "loop spacing must be >= 0 and finite");
+}
+
+}  // namespace
+
+double MeshQuality::fractionAtLeast(double degrees) const
+{
+    if (triangles == 0) return 1.0;
+    std::size_t below = 0;
+    for (std::size_t b = 0; b < histogram.size(); ++b)
+        if (5.0 * static_cast<double>(b + 1) <= degrees) below += histogram[b];
+    return 1.0 - static_cast<double>(below) / static_cast<double>(triangles);
+}
+
+ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveOptions& options)
+{
+    checkOptions(options);
+    const auto say = [&](const std::string& what) {
+        if (options.progress) options.progress(what);
+    };
+    ResolveResult result;
+    const std::size_t threads = detail::workerCount(options.threads);
+
+    // 1. Intersection loops.
+    Clock::time_point t0 = Clock::now();
+    IntersectionOptions io = options.intersection;
+    io.threads = options.threads;
+    say("intersecting " + std::to_string(tows.size()) + " tows");
+    result.intersections = intersectTows(tows, io);
+    result.timings.intersect = msSince(t0);
+    const std::vector<IntersectionLoop>& loops = result.intersections.loops;
+
+    // 2. Shared loop nodes and each tow's constraints.
+    t0 = Clock::now();
+    double size = 1e300;
+    for (const TowSurface& t : tows) size = std::min(size, t.towSize());
+    const double h = options.mesh.edgeLength > 0.0 ? options.mesh.edgeLength : options.mesh.relativeEdgeLength * size;
+    const double spacing = options.mesh.loopSpacing > 0.0 ? options.mesh.loopSpacing : h;
+    std::vector<Point3> nodes;
+    std::vector<detail::SharedLoop> shared;
+    for (std::size_t i = 0; i < loops.size(); ++i) {
+        const IntersectionLoop& l = loops[i];
+        if (!l.closed())
+            result.skipped.emplace_back(i, "open curve: " + l.openReason());
+        else if (l.windsAround(LoopSide::A) || l.windsAround(LoopSide::B))
+            result.skipped.emplace_back(i, "the loop goes around tow '" +
+                                               (l.windsAround(LoopSide::A) ? l.surfaceA() : l.surfaceB()).name() +
+                                               "' (one tow passes through the other)");
+        else
+            shared.push_back(detail::shareLoopNodes(l, i, spacing, nodes));
+    }
+    say("meshing " + std::to_string(tows.size()) + " tows at h = " + std::to_string(h));
+    constexpr std::size_t kLocal = std::size_t(1) << 60;  // marks a tow's own new nodes
+    constexpr int kMaxRounds = 12;
+    std::map<std::size_t, std::size_t> sharedOf;  // loop node -> its shared loop
+    for (std::size_t k = 0; k < shared.size(); ++k)
+        for (std::size_t n : shared[k].nodes) sharedOf[n] = k;
+    std::vector<detail::ParametricMesh> meshes(tows.size());
+    std::vector<std::vector<Point3>> ownNodes(tows.size());
+    std::vector<std::vector<double>> seamU(tows.size());
+    std::vector<char> dirty(tows.size(), 1);
+    const detail::MeshSizes sizes{h, options.mesh.minAngle};
+    int round = 0;
+    for (;; ++round) {
+        if (round == kMaxRounds)
+            throw Error(ErrorCode::Internal, "the meshes did not settle: the mesher keeps splitting loop or seam edges");
+        std::vector<std::vector<detail::LoopConstraint>> constraints(tows.size());
+        for (const detail::SharedLoop& s : shared) {
+            const IntersectionLoop& l = loops[s.loop];
+            for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+                auto pieces = detail::constraintsOn(s, l, side);
+                auto& c = constraints[side == LoopSide::A ? l.towA() : l.towB()];
+                c.insert(c.end(), pieces.begin(), pieces.end());
+            }
+        }
+        std::vector<detail::MeshRequests> requests(tows.size());
+        detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
+            if (!dirty[t]) return;
+            ownNodes[t].clear();
+            meshes[t] = detail::meshTow(tows[t], constraints[t], seamU[t], sizes, ownNodes[t], kLocal, requests[t]);
+        });
+        // Points the mesher put on constraints become nodes on both sides; mesh those tows again.
+        std::fill(dirty.begin(), dirty.end(), 0);
+        std::set<std::pair<std::size_t, std::size_t>> chordsDone;
+        for (std::size_t t = 0; t < tows.size(); ++t) {
+            if (!requests[t].seamU.empty()) {
+                seamU[t].insert(seamU[t].end(), requests[t].seamU.begin(), requests[t].seamU.end());
+                dirty[t] = 1;
+            }
+            for (const detail::MeshRequests::OnLoop& q : requests[t].onLoop) {
+                const std::size_t k = sharedOf.at(q.a);
+                if (!chordsDone.insert({std::min(q.a, q.b), std::max(q.a, q.b)}).second) continue;
+                if (detail::splitChord(loops[shared[k].loop], shared[k], q.a, q.b, q.t, nodes)) {
+                    sharedOf[nodes.size() - 1] = k;
+                    const IntersectionLoop& l = loops[shared[k].loop];
+                    dirty[l.towA()] = dirty[l.towB()] = 1;
+                }
+            }
+        }
+        if (std::none_of(dirty.begin(), dirty.end(), [](char d) { return d != 0; })) break;
+    }
+    result.meshRounds = static_cast<std::size_t>(round + 1);
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        const std::size_t base = nodes.size();
+        nodes.insert(nodes.end(), ownNodes[t].begin(), ownNodes[t].end());
+        for (Triangle& tri : meshes[t].triangles)
+            for (std::size_t& n : tri)
+                if (n >= kLocal) n = base + (n - kLocal);
+    }
+    result.timings.mesh = msSince(t0);
+
+    // 3. Connected regions: the primary's triangles inside each loop replace the secondary's.
+    t0 = Clock::now();
+    say("connecting " + std::to_string(shared.size()) + " regions");
+    result.mesh.nodes = std::move(nodes);
+    const std::vector<Point3>& N = result.mesh.nodes;
+    result.tows.resize(tows.size());
+    std::vector<std::vector<char>> removed(tows.size());
+    std::vector<std::vector<long>> region(tows.size());
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        removed[t].assign(meshes[t].triangles.size(), 0);
+        region[t].assign(meshes[t].triangles.size(), -1);
+    }
+    std::vector<std::vector<std::pair<Triangle, long>>> inserted(tows.size());
+    for (const detail::SharedLoop& s : shared) {
+        const IntersectionLoop& l = loops[s.loop];
+        const bool aMatches = matchesAny(tows[l.towA()].name(), options.primaryPatterns);
+        const bool bMatches = matchesAny(tows[l.towB()].name(), options.primaryPatterns);
+        const bool aPrimary = aMatches == bMatches ? l.towA() < l.towB() : aMatches;
+        const LoopSide ps = aPrimary ? LoopSide::A : LoopSide::B, ss = aPrimary ? LoopSide::B : LoopSide::A;
+        const std::size_t p = aPrimary ? l.towA() : l.towB(), q = aPrimary ? l.towB() : l.towA();
+        const auto period = [&](std::size_t t) { return tows[t].parameterRange().vPeriod(); };
+        const std::vector<std::size_t> inP = detail::trianglesInside(meshes[p], detail::loopPolygon(s, ps), period(p));
+        const std::vector<std::size_t> inQ = detail::trianglesInside(meshes[q], detail::loopPolygon(s, ss), period(q));
+        ConnectedRegion r;
+        r.primary = p;
+        r.secondary = q;
+        r.loop = s.loop;
+        r.triangles = inP;
+        r.loopNodes = s.nodes;
+        const long id = static_cast<long>(result.mesh.regions.size());
+        std::vector<Triangle> lens;  // the boundary of the overlap: both patches, as they face
+        std::set<std::size_t> regionNodes;
+        for (std::size_t k : inP) {
+            const Triangle& tri = meshes[p].triangles[k];
+            region[p][k] = id;
+            r.area += triangleArea(N, tri);
+            regionNodes.insert(tri.begin(), tri.end());
+            inserted[q].emplace_back(reversed(tri), id);
+            lens.push_back(tri);
+        }
+        for (std::size_t k : inQ) {
+            removed[q][k] = 1;
+            lens.push_back(meshes[q].triangles[k]);
+        }
+        r.nodes.assign(regionNodes.begin(), regionNodes.end());
+        // The removed patch (the secondary's surface inside the primary) and the primary's
+        // patch (its surface inside the secondary) share the loop: together they bound the
+        // overlap of the two tows, facing out of it, and its volume is what the secondary loses.
+        r.volumeRemoved = std::abs(enclosedVolume(soup(N, lens)));
+        result.tows[p].primaryAnywhere = true;
+        result.tows[q].secondaryAnywhere = true;
+        result.mesh.regions.push_back(std::move(r));
+    }
+    result.mesh.tows.resize(tows.size());
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        TowMesh& m = result.mesh.tows[t];
+        m.name = tows[t].name();
+        for (std::size_t k = 0; k < meshes[t].triangles.size(); ++k) {
+            if (removed[t][k]) continue;
+            m.triangles.push_back(meshes[t].triangles[k]);
+            m.region.push_back(region[t][k]);
+        }
+        for (const auto& [tri, id] : inserted[t]) {
+            m.triangles.push_back(tri);
+            m.region.push_back(id);
+        }
+    }
+    // Per-tow figures (in parallel: each volume is a CGAL computation over the tow's mesh).
+    detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
+        TowResolution& r = result.tows[t];
+        TowMesh own;
+        own.triangles = meshes[t].triangles;
+        TextileMesh before;
+        before.nodes = N;
+        before.tows.push_back(own);
+        r.volumeBefore = enclosedVolume(before.closedTowSurface(0));
+        r.volumeAfter = enclosedVolume(result.mesh.closedTowSurface(t));
+        for (const Triangle& tri : result.mesh.tows[t].triangles) r.area += triangleArea(N, tri);
+        r.boundaryLoops = result.mesh.boundaryLoopCount(t);
+    });
+    // Quality over distinct triangles (a shared triangle counts once).
+    std::set<Triangle> seen;
+    result.quality.histogram.assign(12, 0);
+    result.quality.minAngle = 180.0;
+    for (const TowMesh& m : result.mesh.tows)
+        for (const Triangle& tri : m.triangles) {
+            Triangle key = tri;
+            std::sort(key.begin(), key.end());
+            if (!seen.insert(key).second) continue;
+            const double a = smallestAngle(N, tri);
+            result.quality.minAngle = std::min(result.quality.minAngle, a);
+            ++result.quality.histogram[std::min<std::size_t>(11, static_cast<std::size_t>(a / 5.0))];
+            ++result.quality.triangles;
+        }
+    result.timings.regions = msSince(t0);
+    return result;
+}
+
+}  // namespace towgeom
