@@ -44,8 +44,11 @@ struct TextileMesh {
     std::vector<TowMesh> tows;             ///< one per input tow, in input order
     std::vector<ConnectedRegion> regions;  ///< one per resolved loop
 
-    /// Tow @p tow's mesh as a standalone TriangleMesh (only the nodes it uses, renumbered).
+    /// Tow @p tow's mesh as a standalone TriangleMesh (only the nodes it uses, renumbered in
+    /// the order the triangles first use them).
     TriangleMesh towSurface(std::size_t tow) const;
+    /// The global node of each vertex of towSurface(@p tow).
+    std::vector<std::size_t> towNodes(std::size_t tow) const;
     /// The same, with the two open ends closed by a fan from the centroid of each end loop (for
     /// volumes); meaningful only for a tube with exactly two boundary loops.
     TriangleMesh closedTowSurface(std::size_t tow) const;

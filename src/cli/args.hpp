@@ -27,6 +27,12 @@ public:
 
     bool has(const std::string& name) const { return values_.count(name) != 0; }
     std::optional<std::string> value(const std::string& name) const;
+    /// Every value given for a repeatable option, in order.
+    std::vector<std::string> values(const std::string& name) const
+    {
+        const auto it = values_.find(name);
+        return it == values_.end() ? std::vector<std::string>{} : it->second;
+    }
     const std::vector<std::string>& positional() const { return positional_; }
     /// The value of @p name as a number; throws UsageError if it is not one.
     std::optional<double> number(const std::string& name) const;

@@ -16,6 +16,9 @@ int runFit(int argc, char** argv, int first);
 /// `towgeom detect FILE.stw... [options]`.
 int runDetect(int argc, char** argv, int first);
 
+/// `towgeom resolve FILE.stw... --out DIR [options]`.
+int runResolve(int argc, char** argv, int first);
+
 /// `towgeom generate --weave KIND --out DIR [options]`.
 int runGenerate(int argc, char** argv, int first);
 

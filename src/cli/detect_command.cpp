@@ -7,8 +7,8 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "cli/tow_input.hpp"
+#include "cli/loop_json.hpp"
 #include "core/json_writer.hpp"
-#include "core/parallel.hpp"
 #include "towgeom/towgeom.hpp"
 
 namespace towgeom::cli {
@@ -115,39 +115,10 @@ int runDetect(int argc, char** argv, int first)
             };
         const IntersectionReport report = intersectTows(surfaces, options);
 
-        // The per-loop figures (areas cost a quadrature each) on all threads, then the JSON.
-        struct LoopFigures {
-            double areaA = 0.0, areaB = 0.0;
-            std::vector<LoopPoint> points;
-        };
-        std::vector<LoopFigures> figures(report.loops.size());
-        detail::parallelFor(report.loops.size(), detail::workerCount(options.threads), [&](std::size_t k) {
-            const IntersectionLoop& l = report.loops[k];
-            figures[k] = {l.enclosedArea(LoopSide::A), l.enclosedArea(LoopSide::B),
-                          spacing > 0.0 ? l.resample(spacing) : l.points()};
-        });
         std::ostringstream out;
         detail::JsonWriter json(out);
-        json.beginObject().key("loops").beginArray();
-        for (std::size_t k = 0; k < report.loops.size(); ++k) {
-            const IntersectionLoop& l = report.loops[k];
-            json.beginObject();
-            json.key("tow_a").value(surfaces[l.towA()].name());
-            json.key("tow_b").value(surfaces[l.towB()].name());
-            json.key("closed").value(l.closed());
-            if (!l.closed()) json.key("open_reason").value(l.openReason());
-            json.key("length").value(l.length());
-            json.key("area_a").value(figures[k].areaA);
-            json.key("area_b").value(figures[k].areaB);
-            json.key("max_distance").value(std::max(l.maxDistance(LoopSide::A), l.maxDistance(LoopSide::B)));
-            const std::vector<LoopPoint>& pts = figures[k].points;
-            json.key("point_count").value(pts.size());
-            json.key("points").beginArray();
-            for (const LoopPoint& p : pts) json.beginArray().value(p.point.x).value(p.point.y).value(p.point.z).endArray();
-            json.endArray();
-            json.endObject();
-        }
-        json.endArray();
+        json.beginObject();
+        writeLoopsJson(json, report, surfaces, spacing, options.threads);
         json.key("tow_pairs").value(report.towPairs);
         json.key("pairs_tested").value(report.pairsTested);
         json.key("window_pairs").value(report.windowPairs);
@@ -167,15 +138,7 @@ int runDetect(int argc, char** argv, int first)
             std::cerr << "towgeom detect: " << report.loops.size() << " intersection curves (" << report.openCount()
                       << " open) among " << report.pairsTested << " candidate tow pairs\n";
         if (report.openCount() == 0 || args.has("allow-open")) return kExitOk;
-        std::string lastPair;
-        for (const IntersectionLoop& l : report.loops) {
-            if (l.closed()) continue;
-            const std::string pair = surfaces[l.towA()].name() + "' and '" + surfaces[l.towB()].name();
-            if (pair == lastPair) continue;
-            lastPair = pair;
-            std::cerr << "towgeom detect: open intersection curve between tows '" << pair << "': " << l.openReason()
-                      << " [open_curve]\n";
-        }
+        reportOpenCurves("detect", report, surfaces);
         return kExitOpenCurve;
     } catch (const std::exception& e) {
         return reportError("detect", e);

@@ -18,6 +18,8 @@ and compatible finite-element meshes.
 Commands:
   fit       fit B-spline surfaces to tow stacks (.stw) and report accuracy and volume
   detect    find every interpenetration between tows as intersection loops (JSON)
+  resolve   mesh every tow and make the meshes compatible where tows interpenetrate
+            (shared connected regions; STL, VTK, Gmsh .msh, Abaqus .inp, report.json)
   generate  generate a woven textile (plain, twill, satin, basket, 3D orthogonal) as tow
             stacks, with controlled overlap or flattened to just touching
 
@@ -76,6 +78,7 @@ int main(int argc, char** argv)
     try {
         if (!std::strcmp(command, "fit")) return runFit(argc, argv, 2);
         if (!std::strcmp(command, "detect")) return runDetect(argc, argv, 2);
+        if (!std::strcmp(command, "resolve")) return runResolve(argc, argv, 2);
         if (!std::strcmp(command, "generate")) return runGenerate(argc, argv, 2);
     } catch (...) {
         // Commands report their own errors; this is the last guard against an unknown one.

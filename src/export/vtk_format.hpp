@@ -13,7 +13,8 @@ namespace towgeom::detail {
 /// Integer data per triangle, by name (e.g. "tow_id", "region_id").
 using VtkCellData = std::vector<std::pair<std::string, std::vector<long>>>;
 
+/// Writes legacy VTK polydata; @p cellData per triangle, @p pointData per vertex (integers).
 void writeVtkPolyData(std::ostream& out, const TriangleMesh& mesh, const std::string& title,
-                      const VtkCellData& cellData = {});
+                      const VtkCellData& cellData = {}, const VtkCellData& pointData = {});
 
 }  // namespace towgeom::detail

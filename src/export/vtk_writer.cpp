@@ -12,7 +12,8 @@ namespace towgeom {
 
 namespace detail {
 
-void writeVtkPolyData(std::ostream& out, const TriangleMesh& mesh, const std::string& title, const VtkCellData& cellData)
+void writeVtkPolyData(std::ostream& out, const TriangleMesh& mesh, const std::string& title, const VtkCellData& cellData,
+                      const VtkCellData& pointData)
 {
     std::string header = title.substr(0, 255);
     for (char& c : header)
@@ -23,9 +24,15 @@ void writeVtkPolyData(std::ostream& out, const TriangleMesh& mesh, const std::st
     for (const Point3& p : mesh.vertices) out << p.x << ' ' << p.y << ' ' << p.z << '\n';
     out << "POLYGONS " << mesh.triangles.size() << ' ' << 4 * mesh.triangles.size() << '\n';
     for (const auto& t : mesh.triangles) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
-    if (!mesh.normals.empty() && mesh.normals.size() == mesh.vertices.size()) {
-        out << "POINT_DATA " << mesh.vertices.size() << "\nNORMALS normals double\n";
+    const bool normals = !mesh.normals.empty() && mesh.normals.size() == mesh.vertices.size();
+    if (normals || !pointData.empty()) out << "POINT_DATA " << mesh.vertices.size() << '\n';
+    if (normals) {
+        out << "NORMALS normals double\n";
         for (const Vector3& n : mesh.normals) out << n.x << ' ' << n.y << ' ' << n.z << '\n';
+    }
+    for (const auto& [name, values] : pointData) {
+        out << "SCALARS " << name << " int 1\nLOOKUP_TABLE default\n";
+        for (long v : values) out << v << '\n';
     }
     if (!cellData.empty()) {
         out << "CELL_DATA " << mesh.triangles.size() << '\n';

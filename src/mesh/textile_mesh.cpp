@@ -70,6 +70,16 @@ TriangleMesh TextileMesh::towSurface(std::size_t tow) const
     return out;
 }
 
+std::vector<std::size_t> TextileMesh::towNodes(std::size_t tow) const
+{
+    std::vector<std::size_t> order;
+    std::set<std::size_t> seen;
+    for (const auto& t : tows.at(tow).triangles)
+        for (std::size_t n : t)
+            if (seen.insert(n).second) order.push_back(n);
+    return order;
+}
+
 TriangleMesh TextileMesh::closedTowSurface(std::size_t tow) const
 {
     TriangleMesh out = towSurface(tow);

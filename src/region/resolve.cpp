@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <set>
 
@@ -278,6 +279,27 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
             ++result.quality.histogram[std::min<std::size_t>(11, static_cast<std::size_t>(a / 5.0))];
             ++result.quality.triangles;
         }
+    // The secondary's nodes inside its removed triangles are used by no triangle now: drop them
+    // and number the rest consecutively.
+    {
+        std::vector<std::size_t> renumber(N.size(), SIZE_MAX);
+        std::vector<Point3> kept;
+        const auto use = [&](std::size_t& n) {
+            if (renumber[n] == SIZE_MAX) {
+                renumber[n] = kept.size();
+                kept.push_back(N[n]);
+            }
+            n = renumber[n];
+        };
+        for (TowMesh& m : result.mesh.tows)
+            for (Triangle& tri : m.triangles)
+                for (std::size_t& n : tri) use(n);
+        for (ConnectedRegion& g : result.mesh.regions) {
+            for (std::size_t& n : g.nodes) use(n);
+            for (std::size_t& n : g.loopNodes) use(n);
+        }
+        result.mesh.nodes = std::move(kept);
+    }
     result.timings.regions = msSince(t0);
     return result;
 }

@@ -1,14 +1,21 @@
 #include "cgal_reference.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/intersection.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/box_intersection_d.h>
+
+#include <stdexcept>
 
 namespace towgeom::testing {
 
 namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+namespace PMP = CGAL::Polygon_mesh_processing;
 
 Mesh toCgal(const TriangleMesh& m)
 {
@@ -17,6 +24,17 @@ Mesh toCgal(const TriangleMesh& m)
     for (const Point3& p : m.vertices) ids.push_back(out.add_vertex(Kernel::Point_3(p.x, p.y, p.z)));
     for (const auto& t : m.triangles) out.add_face(ids[t[0]], ids[t[1]], ids[t[2]]);
     return out;
+}
+
+Mesh closedCgal(const TriangleMesh& m, const char* what)
+{
+    Mesh c = toCgal(m);
+    if (c.number_of_faces() != m.triangles.size())
+        throw std::runtime_error(std::string(what) + ": not a manifold triangle mesh (faces refused)");
+    if (!CGAL::is_closed(c)) throw std::runtime_error(std::string(what) + ": mesh not closed");
+    if (!PMP::does_bound_a_volume(c)) throw std::runtime_error(std::string(what) + ": mesh does not bound a volume");
+    PMP::orient_to_bound_a_volume(c);
+    return c;
 }
 }  // namespace
 
@@ -28,6 +46,80 @@ IntersectionPolylines surfaceIntersection(const TriangleMesh& a, const TriangleM
     IntersectionPolylines r;
     for (const auto& p : polylines) (p.size() > 2 && p.front() == p.back() ? r.closed : r.open) += 1;
     return r;
+}
+
+TriangleCrossings crossingTrianglePairs(const std::vector<Point3>& nodes,
+                                        const std::vector<std::array<std::size_t, 3>>& a,
+                                        const std::vector<std::array<std::size_t, 3>>& b)
+{
+    using Tri = std::array<std::size_t, 3>;
+    using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
+    const auto point = [&](std::size_t n) { return Kernel::Point_3(nodes[n].x, nodes[n].y, nodes[n].z); };
+    const auto boxes = [&](const std::vector<Tri>& ts) {
+        std::vector<Box> out;
+        out.reserve(ts.size());
+        for (std::size_t k = 0; k < ts.size(); ++k) {
+            const Tri& t = ts[k];
+            out.emplace_back(point(t[0]).bbox() + point(t[1]).bbox() + point(t[2]).bbox(), k);
+        }
+        return out;
+    };
+    std::vector<Box> ba = boxes(a), bb = boxes(b);
+    TriangleCrossings r;
+    const auto test = [&](const Box& x, const Box& y) {
+        ++r.boxPairs;
+        const Tri& s = a[x.info()];
+        const Tri& t = b[y.info()];
+        // Which corners are shared: si[k] = index in t of s[k], or -1.
+        int si[3], shared = 0;
+        for (int k = 0; k < 3; ++k) {
+            si[k] = -1;
+            for (int l = 0; l < 3; ++l)
+                if (s[k] == t[l]) si[k] = l;
+            if (si[k] >= 0) ++shared;
+        }
+        const Kernel::Triangle_3 ts(point(s[0]), point(s[1]), point(s[2])), tt(point(t[0]), point(t[1]), point(t[2]));
+        bool crosses = false;
+        if (shared == 3) {
+            ++r.identical;
+            return;
+        }
+        if (shared == 0) {
+            crosses = CGAL::do_intersect(ts, tt);
+        } else if (shared == 2) {
+            ++r.sharing;
+            int ks = 0, kt = 0;  // the corners not shared
+            while (si[ks] >= 0) ++ks;
+            const std::size_t p = s[(ks + 1) % 3], q = s[(ks + 2) % 3];  // the shared edge
+            while (t[kt] == p || t[kt] == q) ++kt;
+            const Kernel::Point_3 P = point(p), Q = point(q), S = point(s[ks]), T = point(t[kt]);
+            crosses = CGAL::coplanar(P, Q, S, T) && CGAL::coplanar_orientation(P, Q, S, T) == CGAL::POSITIVE;
+        } else {
+            ++r.sharing;
+            int ks = 0, kt = 0;  // the shared corner in s and in t
+            while (si[ks] < 0) ++ks;
+            kt = si[ks];
+            const Kernel::Segment_3 oppS(point(s[(ks + 1) % 3]), point(s[(ks + 2) % 3]));
+            const Kernel::Segment_3 oppT(point(t[(kt + 1) % 3]), point(t[(kt + 2) % 3]));
+            crosses = CGAL::do_intersect(oppS, tt) || CGAL::do_intersect(oppT, ts);
+        }
+        if (crosses) {
+            ++r.crossing;
+            if (shared > 0) ++r.crossingSharing;
+        }
+    };
+    CGAL::box_intersection_d(ba.begin(), ba.end(), bb.begin(), bb.end(), test);
+    return r;
+}
+
+double closedMeshVolume(const TriangleMesh& m) { return PMP::volume(closedCgal(m, "volume")); }
+
+double intersectionVolume(const TriangleMesh& a, const TriangleMesh& b)
+{
+    Mesh ma = closedCgal(a, "first mesh"), mb = closedCgal(b, "second mesh"), out;
+    if (!PMP::corefine_and_compute_intersection(ma, mb, out))
+        throw std::runtime_error("corefine_and_compute_intersection failed");
+    return PMP::volume(out);
 }
 
 }  // namespace towgeom::testing

@@ -1,9 +1,12 @@
 // Independent references for the tests, computed with CGAL on faceted meshes (not with the code
-// under test): surface intersection polylines between two faceted tubes.
+// under test): surface intersection polylines between two faceted tubes, crossing triangles
+// between two meshes on one node numbering, and volumes of closed meshes and their overlap.
 #pragma once
 
+#include <towgeom/point.hpp>
 #include <towgeom/triangle_mesh.hpp>
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -16,5 +19,37 @@ struct IntersectionPolylines {
 
 /// CGAL::Polygon_mesh_processing::surface_intersection of two triangle meshes.
 IntersectionPolylines surfaceIntersection(const TriangleMesh& a, const TriangleMesh& b);
+
+/// What crossingTrianglePairs() found.
+struct TriangleCrossings {
+    std::size_t crossing = 0;         ///< pairs that intersect beyond what they share (see below)
+    std::size_t crossingSharing = 0;  ///< of those, pairs that share one or two nodes
+    std::size_t boxPairs = 0;         ///< pairs whose bounding boxes overlap (tested)
+    std::size_t identical = 0;        ///< pairs with the same three nodes (a shared region): skipped
+    std::size_t sharing = 0;          ///< box pairs that share one or two nodes
+};
+
+/// Pairs of triangles, one from @p a and one from @p b (node indices into @p nodes), that cross:
+/// CGAL::box_intersection_d on the triangles' boxes, then exact predicates (Epick) per pair.
+///  - Three shared nodes: the same triangle (a connected region shared by both tows); skipped.
+///  - No shared node: crossing if CGAL::do_intersect(triangle, triangle).
+///  - Two shared nodes (an edge): crossing only if the triangles are coplanar and lie on the same
+///    side of the edge (overlap); otherwise they meet in the edge only.
+///  - One shared node: crossing if the edge opposite the shared node in either triangle meets the
+///    other triangle (they meet beyond the shared node exactly then, as in CGAL's own
+///    self-intersection test); touching at the node only is not crossing.
+/// This is stricter than skipping every pair that shares a node.
+TriangleCrossings crossingTrianglePairs(const std::vector<Point3>& nodes,
+                                        const std::vector<std::array<std::size_t, 3>>& a,
+                                        const std::vector<std::array<std::size_t, 3>>& b);
+
+/// CGAL::Polygon_mesh_processing::volume of a closed triangle mesh (oriented outwards first).
+double closedMeshVolume(const TriangleMesh& m);
+
+/// The volume of the intersection of two closed triangle meshes:
+/// CGAL::Polygon_mesh_processing::corefine_and_compute_intersection, then PMP::volume.
+/// Inputs are oriented to bound a volume first.
+/// @throws std::runtime_error if an input does not bound a volume or the corefinement fails.
+double intersectionVolume(const TriangleMesh& a, const TriangleMesh& b);
 
 }  // namespace towgeom::testing

@@ -1,0 +1,61 @@
+#include "cli/loop_json.hpp"
+
+#include <algorithm>
+#include <iostream>
+
+#include "core/parallel.hpp"
+
+namespace towgeom::cli {
+
+void writeLoopsJson(detail::JsonWriter& json, const IntersectionReport& report, const std::vector<TowSurface>& tows,
+                    double spacing, std::size_t threads)
+{
+    // The per-loop figures (areas cost a quadrature each) on all threads, then the JSON.
+    struct LoopFigures {
+        double areaA = 0.0, areaB = 0.0;
+        std::vector<LoopPoint> points;
+    };
+    std::vector<LoopFigures> figures(report.loops.size());
+    detail::parallelFor(report.loops.size(), detail::workerCount(threads), [&](std::size_t k) {
+        const IntersectionLoop& l = report.loops[k];
+        figures[k] = {l.enclosedArea(LoopSide::A), l.enclosedArea(LoopSide::B), spacing > 0.0 ? l.resample(spacing) : l.points()};
+    });
+    json.key("loops").beginArray();
+    for (std::size_t k = 0; k < report.loops.size(); ++k) {
+        const IntersectionLoop& l = report.loops[k];
+        json.beginObject();
+        json.key("tow_a").value(tows[l.towA()].name());
+        json.key("tow_b").value(tows[l.towB()].name());
+        json.key("closed").value(l.closed());
+        if (!l.closed()) json.key("open_reason").value(l.openReason());
+        json.key("length").value(l.length());
+        json.key("area_a").value(figures[k].areaA);
+        json.key("area_b").value(figures[k].areaB);
+        json.key("max_distance").value(std::max(l.maxDistance(LoopSide::A), l.maxDistance(LoopSide::B)));
+        const std::vector<LoopPoint>& pts = figures[k].points;
+        json.key("point_count").value(pts.size());
+        json.key("points").beginArray();
+        for (const LoopPoint& p : pts) json.beginArray().value(p.point.x).value(p.point.y).value(p.point.z).endArray();
+        json.endArray();
+        json.endObject();
+    }
+    json.endArray();
+}
+
+std::size_t reportOpenCurves(const char* command, const IntersectionReport& report, const std::vector<TowSurface>& tows)
+{
+    std::size_t pairs = 0;
+    std::string lastPair;
+    for (const IntersectionLoop& l : report.loops) {
+        if (l.closed()) continue;
+        const std::string pair = tows[l.towA()].name() + "' and '" + tows[l.towB()].name();
+        if (pair == lastPair) continue;
+        lastPair = pair;
+        ++pairs;
+        std::cerr << "towgeom " << command << ": open intersection curve between tows '" << pair << "': " << l.openReason()
+                  << " [open_curve]\n";
+    }
+    return pairs;
+}
+
+}  // namespace towgeom::cli

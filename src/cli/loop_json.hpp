@@ -1,0 +1,22 @@
+// The "loops" array of detect's and resolve's JSON reports, and the open-curve messages.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "core/json_writer.hpp"
+#include "towgeom/tow_intersection.hpp"
+
+namespace towgeom::cli {
+
+/// Writes key "loops" and the array: per loop tow_a, tow_b, closed, open_reason (when open),
+/// length, area_a, area_b, max_distance, point_count, points (spaced by @p spacing if > 0).
+/// The per-loop figures are computed on @p threads threads first.
+void writeLoopsJson(detail::JsonWriter& json, const IntersectionReport& report, const std::vector<TowSurface>& tows,
+                    double spacing, std::size_t threads);
+
+/// One stderr line per tow pair with an open curve; returns how many pairs.
+std::size_t reportOpenCurves(const char* command, const IntersectionReport& report, const std::vector<TowSurface>& tows);
+
+}  // namespace towgeom::cli

@@ -1,0 +1,240 @@
+// towgeom resolve: compatible tow surface meshes sharing one surface where tows interpenetrated.
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <set>
+#include <sstream>
+
+#include "cli/args.hpp"
+#include "cli/commands.hpp"
+#include "cli/loop_json.hpp"
+#include "cli/tow_input.hpp"
+#include "core/json_writer.hpp"
+#include "export/model_formats.hpp"
+#include "export/stl_format.hpp"
+#include "export/vtk_format.hpp"
+#include "io/output_files.hpp"
+#include "towgeom/towgeom.hpp"
+
+namespace towgeom::cli {
+
+namespace {
+
+const char* kResolveHelp = R"(Usage: towgeom resolve FILE.stw... --out DIR [options]
+
+Fits every tow, finds where tows interpenetrate (as 'towgeom detect'), meshes every tow's
+surface with the closed intersection loops as constraints, and makes the meshes compatible:
+inside each loop the secondary tow's triangles are removed and the primary's put in their place,
+so both tows share nodes and triangles there (a connected region, ready for tie or cohesive
+contact). Writes, all or nothing:
+
+  DIR/NAME.stl     binary STL of each tow's final surface mesh
+  DIR/NAME.vtk     legacy VTK polydata (ParaView): cell data tow_id, region_id (-1 outside
+                   regions), point data node_id (the global node number)
+  DIR/textile.msh  with --formats msh: Gmsh 4.1, physical groups TOW_NAME and REGION_k
+  DIR/textile.inp  with --formats inp: Abaqus, *NODE, *ELEMENT TYPE=S3 with ELSET=TOW_NAME,
+                   *ELSET/*NSET REGION_k
+  DIR/report.json  {"tows":[{"name","role","volume_before","volume_after","area","triangles",
+                   "boundary_loops"}], "loops":[...as detect...], "regions":[{"primary",
+                   "secondary","triangles","area","volume_removed"}], "skipped":[...],
+                   "mesh_quality":{"min_angle_deg","angle_histogram","fraction_at_least_20"},
+                   "mesh_rounds", "timings_ms":{...}}
+
+  role            primary (keeps its surface), secondary (gave volume), both, or none
+  volume_removed  the volume of the overlap the secondary tow lost in that region
+  angle_histogram triangles per 5-degree bin of their smallest 3D angle (0-5, 5-10, ...)
+
+Options:
+  --out DIR          output directory (created if needed)
+  --primary GLOB     tows whose names match are primary over tows that do not (repeatable;
+                     shell patterns, e.g. --primary 'warp_*'); default: of two tows, the one
+                     given first on the command line
+  --mesh-size H      target 3D edge length (default: 0.1 x the smallest tow size)
+  --min-angle DEG    smallest triangle angle the mesher aims for, at most 30 (default 20)
+  --loop-spacing S   node spacing along intersection loops (default: the mesh size)
+  --formats LIST     comma-separated from stl,vtk,msh,inp (default stl,vtk)
+  --tolerance T      intersection point tolerance (default: 1e-7 x the tow size)
+  --allow-open       exit 0 even when an intersection curve is open (it is never resolved)
+  --threads N        worker threads (default: all hardware threads)
+  --quiet            no progress lines on stderr
+  -h, --help         this help
+
+Exit status: 0 success; 3 an intersection curve is open (its tow pair is named on stderr and
+skipped; the files are written all the same) unless --allow-open; 2 invalid input or usage
+(one line on stderr naming file and line; nothing written); 1 a file could not be written.
+
+Example:
+  towgeom resolve examples/data/twill/*.stw --out resolved --formats stl,vtk,msh,inp
+  (then open resolved/*.vtk in ParaView and colour by region_id)
+)";
+
+double msSince(std::chrono::steady_clock::time_point t0)
+{
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+double positiveOption(const Args& args, const char* name)
+{
+    const auto x = args.number(name);
+    if (!x) return 0.0;
+    if (!(*x > 0.0) || !std::isfinite(*x)) throw UsageError(std::string("--") + name + " must be a positive number");
+    return *x;
+}
+
+std::set<std::string> parseFormats(const std::optional<std::string>& text)
+{
+    std::set<std::string> formats;
+    std::stringstream in(text ? *text : std::string("stl,vtk"));
+    for (std::string f; std::getline(in, f, ',');) {
+        if (f != "stl" && f != "vtk" && f != "msh" && f != "inp")
+            throw UsageError("--formats takes stl, vtk, msh and inp, comma-separated, not '" + f + "'");
+        formats.insert(f);
+    }
+    if (formats.empty()) throw UsageError("--formats needs at least one of stl, vtk, msh, inp");
+    return formats;
+}
+
+const char* roleOf(const TowResolution& r)
+{
+    if (r.primaryAnywhere && r.secondaryAnywhere) return "both";
+    if (r.primaryAnywhere) return "primary";
+    if (r.secondaryAnywhere) return "secondary";
+    return "none";
+}
+
+}  // namespace
+
+int runResolve(int argc, char** argv, int first)
+{
+    try {
+        const Args args(argc, argv, first,
+                        {{"help"}, {"quiet"}, {"allow-open"}, {"out", true}, {"primary", true}, {"mesh-size", true},
+                         {"min-angle", true}, {"loop-spacing", true}, {"formats", true}, {"tolerance", true},
+                         {"threads", true}});
+        if (args.has("help")) {
+            std::cout << kResolveHelp;
+            return kExitOk;
+        }
+        if (args.positional().empty()) throw UsageError("no input files; see towgeom resolve --help");
+        const auto outDir = args.value("out");
+        if (!outDir) throw UsageError("--out DIR is required");
+        ResolveOptions options;
+        options.primaryPatterns = args.values("primary");
+        options.mesh.edgeLength = positiveOption(args, "mesh-size");
+        options.mesh.loopSpacing = positiveOption(args, "loop-spacing");
+        if (const auto a = args.number("min-angle")) {
+            if (!(*a > 0.0 && *a <= 30.0)) throw UsageError("--min-angle must lie in (0, 30] degrees");
+            options.mesh.minAngle = *a;
+        }
+        options.intersection.tolerance = positiveOption(args, "tolerance");
+        if (const auto n = args.number("threads")) {
+            if (!(*n >= 1.0 && *n <= 1024.0) || std::floor(*n) != *n)
+                throw UsageError("--threads must be a whole number from 1 to 1024");
+            options.threads = static_cast<std::size_t>(*n);
+        }
+        const std::set<std::string> formats = parseFormats(args.value("formats"));
+        const bool quiet = args.has("quiet");
+        if (!quiet) options.progress = [](const std::string& stage) { std::cerr << "towgeom resolve: " << stage << "\n"; };
+
+        const auto start = std::chrono::steady_clock::now();
+        const std::vector<TowStack> stacks = readStacks(args.positional(), options.threads);
+        const double readMs = msSince(start);
+        auto t0 = std::chrono::steady_clock::now();
+        const std::vector<TowSurface> tows = fitSurfaces(stacks, {}, "resolve", quiet, options.threads);
+        const double fitMs = msSince(t0);
+        const ResolveResult result = resolveTextile(tows, options);
+        const TextileMesh& mesh = result.mesh;
+
+        // Everything is computed before anything is written.
+        t0 = std::chrono::steady_clock::now();
+        std::ostringstream report;
+        detail::JsonWriter json(report);
+        json.beginObject().key("tows").beginArray();
+        for (std::size_t t = 0; t < tows.size(); ++t) {
+            const TowResolution& r = result.tows[t];
+            json.beginObject();
+            json.key("name").value(tows[t].name());
+            json.key("role").value(roleOf(r));
+            json.key("volume_before").value(r.volumeBefore);
+            json.key("volume_after").value(r.volumeAfter);
+            json.key("area").value(r.area);
+            json.key("triangles").value(mesh.tows[t].triangles.size());
+            json.key("boundary_loops").value(r.boundaryLoops);
+            json.endObject();
+        }
+        json.endArray();
+        writeLoopsJson(json, result.intersections, tows, 0.0, options.threads);
+        json.key("regions").beginArray();
+        for (const ConnectedRegion& g : mesh.regions) {
+            json.beginObject();
+            json.key("primary").value(tows[g.primary].name());
+            json.key("secondary").value(tows[g.secondary].name());
+            json.key("triangles").value(g.triangles.size());
+            json.key("nodes").value(g.nodes.size());
+            json.key("area").value(g.area);
+            json.key("volume_removed").value(g.volumeRemoved);
+            json.endObject();
+        }
+        json.endArray();
+        json.key("skipped").beginArray();
+        for (const auto& [loop, why] : result.skipped) {
+            const IntersectionLoop& l = result.intersections.loops[loop];
+            json.beginObject().key("tow_a").value(tows[l.towA()].name()).key("tow_b").value(tows[l.towB()].name());
+            json.key("reason").value(why).endObject();
+        }
+        json.endArray();
+        json.key("nodes").value(mesh.nodes.size());
+        json.key("mesh_quality").beginObject();
+        json.key("min_angle_deg").value(result.quality.minAngle);
+        json.key("angle_histogram").beginArray();
+        for (std::size_t c : result.quality.histogram) json.value(c);
+        json.endArray();
+        json.key("fraction_at_least_20").value(result.quality.fractionAtLeast(20.0));
+        json.key("triangles").value(result.quality.triangles);
+        json.endObject();
+        json.key("mesh_rounds").value(result.meshRounds);
+
+        std::error_code ec;
+        std::filesystem::create_directories(*outDir, ec);
+        if (ec || !std::filesystem::is_directory(*outDir))
+            throw Error(ErrorCode::WriteFailed, "cannot create output directory", *outDir);
+        const auto path = [&](const std::string& file) { return (std::filesystem::path(*outDir) / file).string(); };
+        detail::OutputFiles files;
+        for (std::size_t t = 0; t < tows.size(); ++t) {
+            const TriangleMesh surface = mesh.towSurface(t);
+            if (formats.count("stl") && !detail::writeStlBinary(files.open(path(tows[t].name() + ".stl")), surface))
+                throw Error(ErrorCode::WriteFailed, "CGAL could not write the STL", path(tows[t].name() + ".stl"));
+            if (formats.count("vtk")) {
+                std::vector<long> towId(surface.triangles.size(), static_cast<long>(t)), nodeId;
+                for (std::size_t n : mesh.towNodes(t)) nodeId.push_back(static_cast<long>(n));
+                detail::writeVtkPolyData(files.open(path(tows[t].name() + ".vtk")), surface,
+                                         "towgeom resolved tow " + tows[t].name(),
+                                         {{"tow_id", towId}, {"region_id", mesh.tows[t].region}}, {{"node_id", nodeId}});
+            }
+        }
+        if (formats.count("msh")) detail::writeGmshMsh41(files.open(path("textile.msh")), mesh);
+        if (formats.count("inp")) detail::writeAbaqusInp(files.open(path("textile.inp")), mesh);
+        const double writeMs = msSince(t0);
+        json.key("timings_ms").beginObject();
+        json.key("read").value(readMs).key("fit").value(fitMs);
+        json.key("intersect").value(result.timings.intersect).key("mesh").value(result.timings.mesh);
+        json.key("regions").value(result.timings.regions).key("write").value(writeMs);
+        json.key("total").value(msSince(start));
+        json.endObject().endObject();
+        files.open(path("report.json")) << report.str() << "\n";
+        files.commit();
+
+        if (!quiet)
+            std::cerr << "towgeom resolve: " << mesh.regions.size() << " connected regions, " << mesh.nodes.size() << " nodes, "
+                      << result.quality.triangles << " triangles (smallest angle " << result.quality.minAngle
+                      << " deg); files in " << *outDir << "\n";
+        if (result.intersections.openCount() == 0 || args.has("allow-open")) return kExitOk;
+        reportOpenCurves("resolve", result.intersections, tows);
+        return kExitOpenCurve;
+    } catch (const std::exception& e) {
+        return reportError("resolve", e);
+    }
+}
+
+}  // namespace towgeom::cli

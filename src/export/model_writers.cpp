@@ -1,0 +1,153 @@
+// Gmsh .msh 4.1 (ASCII) and Abaqus .inp, from one global node numbering.
+#include "towgeom/mesh_export.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <iomanip>
+#include <limits>
+#include <map>
+#include <set>
+
+#include "export/model_formats.hpp"
+#include "io/output_files.hpp"
+
+namespace towgeom {
+
+namespace detail {
+
+namespace {
+
+/// Abaqus and Gmsh names: letters, digits and underscores.
+std::string label(const std::string& prefix, const std::string& name)
+{
+    std::string s = prefix + name;
+    for (char& c : s)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') c = '_';
+    return s;
+}
+
+}  // namespace
+
+void writeGmshMsh41(std::ostream& out, const TextileMesh& mesh)
+{
+    out << std::setprecision(std::numeric_limits<double>::max_digits10);
+    // Surface entities: each tow's triangles outside regions, then each region's triangles once
+    // (the primary's copy), in both tows' physical groups. Physical groups: tows 1..T, regions
+    // T+1..T+R. Gmsh reads a triangle given twice as a duplicate element, so the secondary's
+    // reversed copy is not repeated here (the .inp keeps both copies for tie constraints).
+    struct Entity {
+        std::vector<std::array<std::size_t, 3>> triangles;
+        std::vector<std::size_t> physical;
+    };
+    std::vector<Entity> entities;
+    const std::size_t towCount = mesh.tows.size();
+    for (std::size_t t = 0; t < towCount; ++t) {
+        Entity e;
+        e.physical = {t + 1};
+        for (std::size_t k = 0; k < mesh.tows[t].triangles.size(); ++k)
+            if (mesh.tows[t].region[k] < 0) e.triangles.push_back(mesh.tows[t].triangles[k]);
+        if (!e.triangles.empty()) entities.push_back(std::move(e));
+    }
+    for (std::size_t r = 0; r < mesh.regions.size(); ++r) {
+        const ConnectedRegion& g = mesh.regions[r];
+        Entity e;
+        e.physical = {g.primary + 1, g.secondary + 1, towCount + r + 1};
+        for (std::size_t k : g.triangles) e.triangles.push_back(mesh.tows[g.primary].triangles[k]);
+        if (!e.triangles.empty()) entities.push_back(std::move(e));
+    }
+    out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+    out << "$PhysicalNames\n" << towCount + mesh.regions.size() << '\n';
+    for (std::size_t t = 0; t < towCount; ++t) out << "2 " << t + 1 << " \"" << label("TOW_", mesh.tows[t].name) << "\"\n";
+    for (std::size_t r = 0; r < mesh.regions.size(); ++r) out << "2 " << towCount + r + 1 << " \"REGION_" << r + 1 << "\"\n";
+    out << "$EndPhysicalNames\n";
+    // Each node is classified on the first entity that uses it.
+    std::vector<std::size_t> owner(mesh.nodes.size(), 0);
+    std::vector<std::vector<std::size_t>> blocks(entities.size());
+    for (std::size_t e = 0; e < entities.size(); ++e)
+        for (const auto& t : entities[e].triangles)
+            for (std::size_t n : t)
+                if (owner[n] == 0) {
+                    owner[n] = e + 1;
+                    blocks[e].push_back(n);
+                }
+    out << "$Entities\n0 0 " << entities.size() << " 0\n";
+    for (std::size_t e = 0; e < entities.size(); ++e) {
+        Point3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+        for (const auto& t : entities[e].triangles)
+            for (std::size_t n : t) {
+                const Point3& p = mesh.nodes[n];
+                lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+                hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+            }
+        out << e + 1 << ' ' << lo.x << ' ' << lo.y << ' ' << lo.z << ' ' << hi.x << ' ' << hi.y << ' ' << hi.z << ' '
+            << entities[e].physical.size();
+        for (std::size_t p : entities[e].physical) out << ' ' << p;
+        out << " 0\n";
+    }
+    out << "$EndEntities\n";
+    std::size_t used = 0;
+    for (const auto& b : blocks) used += b.size();
+    out << "$Nodes\n" << entities.size() << ' ' << used << " 1 " << mesh.nodes.size() << '\n';
+    for (std::size_t e = 0; e < entities.size(); ++e) {
+        out << "2 " << e + 1 << " 0 " << blocks[e].size() << '\n';
+        for (std::size_t n : blocks[e]) out << n + 1 << '\n';
+        for (std::size_t n : blocks[e]) out << mesh.nodes[n].x << ' ' << mesh.nodes[n].y << ' ' << mesh.nodes[n].z << '\n';
+    }
+    out << "$EndNodes\n";
+    std::size_t elements = 0;
+    for (const Entity& e : entities) elements += e.triangles.size();
+    out << "$Elements\n" << entities.size() << ' ' << elements << " 1 " << elements << '\n';
+    std::size_t id = 0;
+    for (std::size_t e = 0; e < entities.size(); ++e) {
+        out << "2 " << e + 1 << " 2 " << entities[e].triangles.size() << '\n';
+        for (const auto& t : entities[e].triangles) out << ++id << ' ' << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+    }
+    out << "$EndElements\n";
+}
+
+void writeAbaqusInp(std::ostream& out, const TextileMesh& mesh)
+{
+    out << std::setprecision(std::numeric_limits<double>::max_digits10);
+    out << "*HEADING\ntowgeom: compatible tow surface meshes (" << mesh.tows.size() << " tows, " << mesh.regions.size()
+        << " connected regions)\n";
+    out << "*NODE\n";
+    for (std::size_t k = 0; k < mesh.nodes.size(); ++k)
+        out << k + 1 << ", " << mesh.nodes[k].x << ", " << mesh.nodes[k].y << ", " << mesh.nodes[k].z << '\n';
+    std::vector<std::vector<std::size_t>> regionElements(mesh.regions.size());
+    std::size_t id = 0;
+    for (const TowMesh& m : mesh.tows) {
+        out << "*ELEMENT, TYPE=S3, ELSET=" << label("TOW_", m.name) << '\n';
+        for (std::size_t k = 0; k < m.triangles.size(); ++k) {
+            const auto& t = m.triangles[k];
+            out << ++id << ", " << t[0] + 1 << ", " << t[1] + 1 << ", " << t[2] + 1 << '\n';
+            if (m.region[k] >= 0) regionElements[static_cast<std::size_t>(m.region[k])].push_back(id);
+        }
+    }
+    const auto list = [&](const std::vector<std::size_t>& ids, std::size_t offset) {
+        for (std::size_t k = 0; k < ids.size(); ++k) out << ids[k] + offset << (k % 16 == 15 || k + 1 == ids.size() ? "\n" : ", ");
+    };
+    for (std::size_t r = 0; r < mesh.regions.size(); ++r) {
+        out << "*ELSET, ELSET=REGION_" << r + 1 << '\n';
+        list(regionElements[r], 0);
+        out << "*NSET, NSET=REGION_" << r + 1 << '\n';
+        list(mesh.regions[r].nodes, 1);
+    }
+}
+
+}  // namespace detail
+
+void writeGmsh(const TextileMesh& mesh, const std::string& path)
+{
+    detail::OutputFiles files;
+    detail::writeGmshMsh41(files.open(path), mesh);
+    files.commit();
+}
+
+void writeAbaqus(const TextileMesh& mesh, const std::string& path)
+{
+    detail::OutputFiles files;
+    detail::writeAbaqusInp(files.open(path), mesh);
+    files.commit();
+}
+
+}  // namespace towgeom

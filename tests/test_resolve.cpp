@@ -1,0 +1,352 @@
+// resolveTextile(): compatible tow meshes on a 4x4 2/2 twill and on two tubes whose loop crosses
+// both periodic seams. Checked independently with CGAL: no crossing triangles between any two
+// tows, each connected region shared triangle for triangle, two boundary loops per tube, the
+// primaries unchanged, the secondary's volume loss equal to the overlap of the input tubes
+// (corefinement; analytic too for the tubes), and the triangles' smallest angles.
+#include <catch2/catch.hpp>
+
+#include <towgeom/resolve.hpp>
+#include <towgeom/tow_stack.hpp>
+#include <towgeom/tow_surface.hpp>
+#include <towgeom/weave.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <set>
+
+#include "cgal_reference.hpp"
+#include "synthetic_tows.hpp"
+
+using namespace towgeom;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+using Triangle = std::array<std::size_t, 3>;
+
+double seconds(std::chrono::steady_clock::time_point t0)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+testing::Sampling sampling(double startAngle, std::size_t sections, std::size_t points)
+{
+    testing::Sampling s;
+    s.sections = sections;
+    s.points = points;
+    s.startAngle = startAngle;
+    return s;
+}
+
+WeaveOptions twill22(std::size_t sectionsPerYarn = 0, std::size_t pointsPerSection = 32)
+{
+    WeaveOptions o;
+    o.kind = WeaveKind::Twill;
+    o.floatOver = o.floatUnder = 2;
+    o.overlap = 0.08;
+    o.sectionsPerYarn = sectionsPerYarn;
+    o.pointsPerSection = pointsPerSection;
+    return o;
+}
+
+/// The tubes of the seam test: x-tube R = 0.5 along x, y-tube r = 0.4 at height d = 0.6, their
+/// sections starting at pi/2 (x) and -pi/2 (y), so both seams run through the loop.
+constexpr double kR = 0.5, kr = 0.4, kd = 0.6;
+std::vector<TowStack> seamTubes(std::size_t sections, std::size_t points)
+{
+    return {testing::tubeAlongX(kR, 4.0, 0.0, 0.0, 0.0, sampling(kPi / 2, sections, points), "x"),
+            testing::tubeAlongY(kr, kd, sampling(-kPi / 2, sections, points), "y")};
+}
+
+/// The exact overlap of the two tubes: for each height z the y-tube's chord along x times the
+/// x-tube's chord along y (both tubes long enough), integrated over z in [d - r, R].
+double analyticOverlapVolume()
+{
+    const int n = 200000;
+    const double z0 = kd - kr, z1 = kR;
+    double sum = 0.0;
+    for (int k = 0; k < n; ++k) {
+        const double z = z0 + (z1 - z0) * (k + 0.5) / n;
+        sum += 2.0 * std::sqrt(std::max(0.0, kr * kr - (z - kd) * (z - kd))) * 2.0 * std::sqrt(std::max(0.0, kR * kR - z * z));
+    }
+    return sum * (z1 - z0) / n;
+}
+
+std::vector<TowSurface> fit(const std::vector<TowStack>& stacks)
+{
+    std::vector<TowSurface> tows;
+    for (const TowStack& s : stacks) tows.push_back(TowSurface::fit(s));
+    return tows;
+}
+
+Triangle canonical(Triangle t)
+{
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    return t;
+}
+
+Triangle reversed(const Triangle& t) { return {t[0], t[2], t[1]}; }
+
+/// Boundary of one tow mesh, counted without TextileMesh: edges used by one triangle, the
+/// number of boundary edges at each of their nodes, edges used more than twice, interior edges
+/// not used once in each direction, and the boundary's connected components.
+struct Boundary {
+    std::size_t edges = 0, nodesNotTwo = 0, nonManifoldEdges = 0, misorientedEdges = 0, loops = 0;
+};
+
+Boundary boundaryOf(const std::vector<Triangle>& triangles)
+{
+    std::map<std::pair<std::size_t, std::size_t>, int> directed;
+    for (const Triangle& t : triangles)
+        for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
+    std::map<std::pair<std::size_t, std::size_t>, std::pair<int, int>> undirected;  // (forward, backward)
+    for (const auto& [e, n] : directed) {
+        if (e.first < e.second)
+            undirected[e].first += n;
+        else
+            undirected[{e.second, e.first}].second += n;
+    }
+    Boundary b;
+    std::map<std::size_t, std::vector<std::size_t>> adjacent;
+    for (const auto& [e, n] : undirected) {
+        const int uses = n.first + n.second;
+        if (uses == 1) {
+            ++b.edges;
+            adjacent[e.first].push_back(e.second);
+            adjacent[e.second].push_back(e.first);
+        } else if (uses > 2) {
+            ++b.nonManifoldEdges;
+        } else if (n.first != 1 || n.second != 1) {
+            ++b.misorientedEdges;
+        }
+    }
+    std::set<std::size_t> seen;
+    for (const auto& [node, next] : adjacent) {
+        if (next.size() != 2) ++b.nodesNotTwo;
+        if (seen.count(node)) continue;
+        ++b.loops;
+        std::vector<std::size_t> stack{node};
+        seen.insert(node);
+        while (!stack.empty()) {
+            const std::size_t at = stack.back();
+            stack.pop_back();
+            for (std::size_t n : adjacent[at])
+                if (seen.insert(n).second) stack.push_back(n);
+        }
+    }
+    return b;
+}
+
+/// Checks 1a-1d and 3 on a result; returns the number of crossing triangle pairs found.
+std::size_t checkResolved(const ResolveResult& res, std::size_t expectedRegions)
+{
+    const TextileMesh& mesh = res.mesh;
+    const std::size_t n = mesh.tows.size();
+    CHECK(res.skipped.empty());
+    CHECK(res.meshRounds >= 1);
+    CHECK(res.meshRounds <= 12);
+    CHECK(mesh.regions.size() == expectedRegions);
+
+    // a. No crossing triangle pair between any two tows (CGAL, exact predicates).
+    std::size_t crossing = 0, sharingCrossing = 0, boxPairs = 0, identical = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i + 1; j < n; ++j) {
+            const testing::TriangleCrossings c =
+                testing::crossingTrianglePairs(mesh.nodes, mesh.tows[i].triangles, mesh.tows[j].triangles);
+            INFO(mesh.tows[i].name << " x " << mesh.tows[j].name << ": " << c.crossing << " crossing pairs ("
+                                   << c.crossingSharing << " of them sharing a node), " << c.boxPairs << " box pairs, "
+                                   << c.identical << " identical");
+            CHECK(c.crossing == 0);
+            crossing += c.crossing;
+            sharingCrossing += c.crossingSharing;
+            boxPairs += c.boxPairs;
+            identical += c.identical;
+        }
+    WARN("crossing triangle pairs between tows: " << crossing << " (" << sharingCrossing << " sharing a node) of "
+                                                  << boxPairs << " box pairs; identical (shared) pairs: " << identical);
+
+    // b. Each region: the secondary holds every one of the region's primary triangles, reversed.
+    std::size_t sharedTotal = 0;
+    for (std::size_t id = 0; id < mesh.regions.size(); ++id) {
+        const ConnectedRegion& r = mesh.regions[id];
+        INFO("region " << id << ": primary " << mesh.tows[r.primary].name << ", secondary " << mesh.tows[r.secondary].name);
+        const TowMesh& p = mesh.tows[r.primary];
+        const TowMesh& q = mesh.tows[r.secondary];
+        std::set<Triangle> inSecondary;
+        for (const Triangle& t : q.triangles) inSecondary.insert(canonical(t));
+        std::size_t shared = 0, sharedUnreversed = 0;
+        for (std::size_t k = 0; k < p.triangles.size(); ++k) {
+            if (inSecondary.count(canonical(reversed(p.triangles[k])))) ++shared;
+            if (inSecondary.count(canonical(p.triangles[k]))) ++sharedUnreversed;
+        }
+        CHECK(shared >= 1);
+        CHECK(sharedUnreversed == 0);
+        CHECK(shared == r.triangles.size());
+        for (std::size_t k : r.triangles) {
+            REQUIRE(k < p.triangles.size());
+            CHECK(inSecondary.count(canonical(reversed(p.triangles[k]))) == 1);
+        }
+        CHECK(static_cast<std::size_t>(std::count(q.region.begin(), q.region.end(), static_cast<long>(id))) == shared);
+        sharedTotal += shared;
+    }
+    WARN("shared triangles: " << sharedTotal << " in " << mesh.regions.size() << " regions");
+
+    // c. Two boundary loops per tow, also counted without TextileMesh.
+    for (std::size_t t = 0; t < n; ++t) {
+        INFO("tow " << mesh.tows[t].name);
+        const Boundary b = boundaryOf(mesh.tows[t].triangles);
+        CHECK(mesh.boundaryLoopCount(t) == 2);
+        CHECK(res.tows[t].boundaryLoops == 2);
+        CHECK(b.loops == 2);
+        CHECK(b.edges > 0);
+        CHECK(b.nodesNotTwo == 0);
+        CHECK(b.nonManifoldEdges == 0);
+        CHECK(b.misorientedEdges == 0);
+    }
+
+    // d. Primaries that are never secondary keep their mesh: their volume is unchanged, their
+    // triangles belong to no region of another tow, and CGAL measures the same volume.
+    for (std::size_t t = 0; t < n; ++t) {
+        INFO("tow " << mesh.tows[t].name);
+        const TowResolution& r = res.tows[t];
+        const double cgal = testing::closedMeshVolume(mesh.closedTowSurface(t));
+        CHECK(r.volumeAfter == Approx(cgal).epsilon(1e-9));
+        if (r.secondaryAnywhere) continue;
+        CHECK(r.volumeAfter == Approx(r.volumeBefore).epsilon(1e-12));
+        for (long id : mesh.tows[t].region)
+            if (id >= 0) CHECK(mesh.regions[static_cast<std::size_t>(id)].primary == t);
+    }
+    return crossing;
+}
+
+/// 1e: each region's volumeRemoved, and each secondary's volume loss, against CGAL's overlap
+/// volume of the closed faceted input tubes. Returns the worst relative difference per region.
+double checkRemovedVolume(const ResolveResult& res, const std::vector<TowStack>& stacks, double tolerance)
+{
+    const TextileMesh& mesh = res.mesh;
+    std::vector<double> lost(stacks.size(), 0.0), reference(stacks.size(), 0.0);
+    double worst = 0.0;
+    for (const ConnectedRegion& r : mesh.regions) {
+        const double cgal = testing::intersectionVolume(facetedTube(stacks[r.primary], true), facetedTube(stacks[r.secondary], true));
+        const double rel = std::abs(r.volumeRemoved - cgal) / cgal;
+        worst = std::max(worst, rel);
+        INFO(mesh.tows[r.primary].name << " over " << mesh.tows[r.secondary].name << ": removed " << r.volumeRemoved
+                                       << ", CGAL overlap of the faceted tubes " << cgal << " (" << 100.0 * rel << " %)");
+        CHECK(rel <= tolerance);
+        lost[r.secondary] += r.volumeRemoved;
+        reference[r.secondary] += cgal;
+    }
+    for (std::size_t t = 0; t < stacks.size(); ++t) {
+        if (!res.tows[t].secondaryAnywhere) continue;
+        const double drop = res.tows[t].volumeBefore - res.tows[t].volumeAfter;
+        INFO("tow " << mesh.tows[t].name << ": volume " << res.tows[t].volumeBefore << " -> " << res.tows[t].volumeAfter
+                    << ", regions " << lost[t] << ", CGAL " << reference[t]);
+        CHECK(drop == Approx(lost[t]).epsilon(1e-6));
+        CHECK(std::abs(drop - reference[t]) <= tolerance * reference[t]);
+    }
+    return worst;
+}
+
+}  // namespace
+
+TEST_CASE("resolved 4x4 2/2 twill: no crossing triangles, shared regions, tubes, primaries unchanged", "[resolve][weave]")
+{
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::vector<TowStack> stacks = generateWeave(twill22()).stacks();
+    ResolveOptions o;
+    o.mesh.edgeLength = 0.05;
+    const ResolveResult res = resolveTextile(fit(stacks), o);
+    CHECK(res.intersections.loops.size() == 16);
+    CHECK(checkResolved(res, 16) == 0);
+    // Warps come first: every warp is primary only, every weft secondary only, 4 regions each.
+    for (std::size_t t = 0; t < 8; ++t) {
+        CHECK(res.tows[t].primaryAnywhere == (t < 4));
+        CHECK(res.tows[t].secondaryAnywhere == (t >= 4));
+    }
+    WARN("twill: " << res.quality.triangles << " triangles, " << res.meshRounds << " mesh rounds, min angle "
+                   << res.quality.minAngle << ", >= 20 deg: " << res.quality.fractionAtLeast(20) << "; " << seconds(t0)
+                   << " s (intersect " << res.timings.intersect << " ms, mesh " << res.timings.mesh << " ms, regions "
+                   << res.timings.regions << " ms)");
+}
+
+TEST_CASE("resolved tubes whose loop crosses both seams: no crossing triangles, shared region, tubes", "[resolve][seam]")
+{
+    struct Case {
+        std::size_t sections, points;
+    };
+    for (const Case k : {Case{21, 96}, Case{41, 48}}) {
+        INFO(k.sections << " sections x " << k.points << " points");
+        const auto t0 = std::chrono::steady_clock::now();
+        const std::vector<TowStack> stacks = seamTubes(k.sections, k.points);
+        ResolveOptions o;
+        o.mesh.edgeLength = 0.05;
+        const ResolveResult res = resolveTextile(fit(stacks), o);
+        REQUIRE(res.intersections.loops.size() == 1);
+        CHECK(checkResolved(res, 1) == 0);
+        CHECK(res.tows[0].primaryAnywhere);
+        CHECK_FALSE(res.tows[0].secondaryAnywhere);
+        CHECK(res.tows[1].secondaryAnywhere);
+        WARN(k.sections << "x" << k.points << ": " << res.quality.triangles << " triangles, " << res.meshRounds
+                        << " mesh rounds, " << seconds(t0) << " s");
+    }
+}
+
+TEST_CASE("the secondary loses the overlap volume of the tubes (CGAL corefinement, analytic)", "[resolve][volume]")
+{
+    SECTION("crossing tubes, loop across both seams")
+    {
+        const double exact = analyticOverlapVolume();
+        for (const std::size_t points : {96u, 48u}) {
+            const std::vector<TowStack> stacks = seamTubes(points == 96 ? 21 : 41, points);
+            ResolveOptions o;
+            o.mesh.edgeLength = 0.05;
+            const ResolveResult res = resolveTextile(fit(stacks), o);
+            REQUIRE(res.mesh.regions.size() == 1);
+            const ConnectedRegion& r = res.mesh.regions.front();
+            const double cgal = testing::intersectionVolume(facetedTube(stacks[0], true), facetedTube(stacks[1], true));
+            const double drop = res.tows[1].volumeBefore - res.tows[1].volumeAfter;
+            WARN(points << " points: removed " << r.volumeRemoved << ", drop " << drop << ", CGAL (faceted) " << cgal
+                        << ", analytic " << exact << ": " << 100.0 * (r.volumeRemoved / exact - 1.0) << " % vs analytic, "
+                        << 100.0 * (r.volumeRemoved / cgal - 1.0) << " % vs CGAL");
+            CHECK(r.volumeRemoved == Approx(exact).epsilon(0.02));
+            CHECK(drop == Approx(exact).epsilon(0.02));
+            CHECK(checkRemovedVolume(res, stacks, 0.02) <= 0.02);
+        }
+    }
+    SECTION("dense 2/2 twill")
+    {
+        const std::vector<TowStack> stacks = generateWeave(twill22(121, 48)).stacks();
+        ResolveOptions o;
+        o.mesh.edgeLength = 0.05;
+        const ResolveResult res = resolveTextile(fit(stacks), o);
+        REQUIRE(res.mesh.regions.size() == 16);
+        const double worst = checkRemovedVolume(res, stacks, 0.02);
+        WARN("dense twill: worst relative difference of a region's removed volume from CGAL's overlap: " << 100.0 * worst << " %");
+    }
+}
+
+TEST_CASE("mesh quality for small, default and large loop spacing", "[resolve][quality]")
+{
+    const double h = 0.05;
+    const std::vector<TowSurface> twill = fit(generateWeave(twill22()).stacks());
+    const std::vector<TowSurface> tubes = fit(seamTubes(21, 96));
+    for (const double spacing : {0.5 * h, 0.0, 2.0 * h}) {
+        for (const bool weave : {true, false}) {
+            INFO((weave ? "twill" : "tubes") << ", loop spacing " << spacing << " (0: h = " << h << ")");
+            ResolveOptions o;
+            o.mesh.edgeLength = h;
+            o.mesh.loopSpacing = spacing;
+            const ResolveResult res = resolveTextile(weave ? twill : tubes, o);
+            WARN((weave ? "twill" : "tubes") << ", loop spacing " << spacing << ": min angle " << res.quality.minAngle
+                                             << ", >= 20 deg " << res.quality.fractionAtLeast(20) << ", >= 10 deg "
+                                             << res.quality.fractionAtLeast(10) << ", " << res.quality.triangles
+                                             << " triangles, " << res.meshRounds << " rounds");
+            CHECK(res.quality.fractionAtLeast(20) >= 0.99);
+            CHECK(res.quality.minAngle >= 10.0);
+            CHECK(res.skipped.empty());
+        }
+    }
+}
