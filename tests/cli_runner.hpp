@@ -42,6 +42,18 @@ inline Run cli(const std::string& args)
     return r;
 }
 
+/// Runs a shell command, capturing its stdout (redirect stderr in @p command if wanted).
+inline Run runShell(const std::string& command)
+{
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("towgeom_sh_test_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    const int raw = std::system((command + " >'" + (dir / "out").string() + "'").c_str());
+    Run r;
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = slurp(dir / "out");
+    return r;
+}
+
 inline double jsonNumber(const std::string& json, const std::string& key, std::size_t nth = 0)
 {
     const std::regex re("\"" + key + "\":(-?[0-9.eE+-]+)");

@@ -37,7 +37,8 @@ contact). Writes, all or nothing:
                    *ELSET/*NSET REGION_k
   DIR/report.json  {"tows":[{"name","role","volume_before","volume_after","area","triangles",
                    "boundary_loops"}], "loops":[...as detect...], "regions":[{"primary",
-                   "secondary","triangles","area","volume_removed"}], "skipped":[...],
+                   "secondary","triangles","nodes","area","volume_removed"}], "skipped":[...],
+                   "node_count",
                    "mesh_quality":{"min_angle_deg","angle_histogram","fraction_at_least_20"},
                    "mesh_rounds", "timings_ms":{...}}
 
@@ -184,7 +185,7 @@ int runResolve(int argc, char** argv, int first)
             json.key("reason").value(why).endObject();
         }
         json.endArray();
-        json.key("nodes").value(mesh.nodes.size());
+        json.key("node_count").value(mesh.nodes.size());
         json.key("mesh_quality").beginObject();
         json.key("min_angle_deg").value(result.quality.minAngle);
         json.key("angle_histogram").beginArray();

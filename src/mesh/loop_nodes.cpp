@@ -50,6 +50,12 @@ SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, d
     SharedLoop shared;
     shared.loop = loopIndex;
     const std::size_t n = base.size();
+    // Seam crossings of either tow on each chord. One close to a chord end replaces that end (a
+    // node a hair's breadth from another would be a tiny feature the mesher refines forever);
+    // the others are inserted.
+    std::vector<LoopPoint> points = base;
+    std::vector<char> snapped(n, 0);
+    std::vector<std::vector<LoopPoint>> inserted(n);
     for (std::size_t k = 0; k < n; ++k) {
         const LoopPoint& p = base[k];
         LoopPoint q = base[(k + 1) % n];
@@ -57,8 +63,6 @@ SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, d
             q.onA.v += periodOf(loop, LoopSide::A) * std::round((p.onA.v - q.onA.v) / periodOf(loop, LoopSide::A));
             q.onB.v += periodOf(loop, LoopSide::B) * std::round((p.onB.v - q.onB.v) / periodOf(loop, LoopSide::B));
         }
-        shared.points.push_back(p);
-        // Seam crossings of either tow on this chord, in order along it.
         std::vector<std::pair<double, LoopPoint>> crossings;
         for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
             const double period = periodOf(loop, side), vMin = vMinOf(loop, side);
@@ -70,7 +74,27 @@ SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, d
             }
         }
         std::sort(crossings.begin(), crossings.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-        for (const auto& c : crossings) shared.points.push_back(c.second);
+        constexpr double kSnap = 0.25;
+        for (const auto& [t, c] : crossings) {
+            if (t < kSnap && !snapped[k]) {
+                points[k] = c;
+                snapped[k] = 1;
+            } else if (t > 1.0 - kSnap && !snapped[(k + 1) % n]) {
+                LoopPoint r = c;  // back to the first point's own turn on the closing chord
+                if (k + 1 == n) {
+                    r.onA.v -= q.onA.v - base[0].onA.v;
+                    r.onB.v -= q.onB.v - base[0].onB.v;
+                }
+                points[(k + 1) % n] = r;
+                snapped[(k + 1) % n] = 1;
+            } else {
+                inserted[k].push_back(c);
+            }
+        }
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        shared.points.push_back(points[k]);
+        shared.points.insert(shared.points.end(), inserted[k].begin(), inserted[k].end());
     }
     // A first point that lies exactly on a seam is a seam node as it is.
     for (const LoopPoint& p : shared.points) {

@@ -42,7 +42,9 @@ std::vector<double> stations(double length, double h, const std::vector<double>&
     const std::size_t n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(length / h)));
     std::vector<double> s(extra);
     for (std::size_t k = 0; k <= n; ++k) {
-        const double x = length * static_cast<double>(k) / static_cast<double>(n);
+        // The ends exactly (length * n / n need not be length): the rectangle's corners are
+        // shared by two of its sides, and a gap there would let the outside into the domain.
+        const double x = k == n ? length : length * static_cast<double>(k) / static_cast<double>(n);
         const bool crowded = std::any_of(extra.begin(), extra.end(), [&](double e) { return std::abs(e - x) < h / 3.0; });
         if (!crowded || k == 0 || k == n) s.push_back(x);
     }
@@ -187,6 +189,8 @@ ParametricMesh meshTow(const TowSurface& surface, const std::vector<LoopConstrai
         if (v->point().y() == 0.0) seamNode[v->point().x()] = node[v];
     }
     if (!requests.empty()) return out;  // not final: the caller meshes again
+    if (cdt.number_of_faces() == 0 || std::none_of(cdt.finite_faces_begin(), cdt.finite_faces_end(), [](const auto& f) { return f.is_in_domain(); }))
+        throw Error(ErrorCode::Internal, "the parameter rectangle was not meshed", "tow '" + surface.name() + "'");
     for (CDT::Vertex_handle v : later) node[v] = seamNode.at(v->point().x());
     for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
         if (!f->is_in_domain()) continue;

@@ -1,0 +1,170 @@
+// towgeom resolve: files written all or nothing, report.json consistent with the .inp and the
+// meshes, Gmsh reads the .msh, --primary, exit codes.
+#include <catch2/catch.hpp>
+
+#include <towgeom/towgeom.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include "cli_runner.hpp"
+#include "synthetic_tows.hpp"
+
+namespace fs = std::filesystem;
+using namespace towgeom;
+using testing::cli;
+using testing::jsonNumber;
+using testing::Run;
+
+namespace {
+
+std::string twill(const std::vector<std::string>& names)
+{
+    std::string files;
+    for (const std::string& n : names) files += " '" + std::string(TOWGEOM_EXAMPLE_DATA) + "/twill/" + n + ".stw'";
+    return files;
+}
+
+fs::path scratch(const std::string& name)
+{
+    const fs::path p = fs::temp_directory_path() / ("towgeom_resolve_" + name + "_" + std::to_string(::getpid()));
+    fs::remove_all(p);
+    return p;
+}
+
+std::size_t count(const std::string& text, const std::string& what)
+{
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+/// The number of data lines after an Abaqus keyword line starting with @p keyword, up to the
+/// next keyword; entries per line for set lists.
+std::size_t inpEntries(const std::string& inp, const std::string& keyword)
+{
+    std::istringstream in(inp);
+    std::size_t n = 0;
+    bool inside = false;
+    for (std::string line; std::getline(in, line);) {
+        if (!line.empty() && line[0] == '*') {
+            inside = line.rfind(keyword, 0) == 0;
+            continue;
+        }
+        if (!inside) continue;
+        if (keyword.rfind("*NODE", 0) == 0 || keyword.rfind("*ELEMENT", 0) == 0)
+            ++n;
+        else
+            n += static_cast<std::size_t>(std::count(line.begin(), line.end(), ',')) + 1;
+    }
+    return n;
+}
+
+}  // namespace
+
+TEST_CASE("towgeom resolve writes compatible meshes, a consistent report and model files", "[cli][resolve]")
+{
+    const fs::path out = scratch("twill");
+    const Run r = cli("resolve" + twill({"warp_0", "warp_1", "weft_0", "weft_1"}) + " --out '" + out.string() +
+                      "' --formats stl,vtk,msh,inp --threads 2");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.out.empty());
+    CHECK(r.err.find("connecting 4 regions") != std::string::npos);  // progress
+    for (const char* name : {"warp_0", "warp_1", "weft_0", "weft_1"}) {
+        CHECK(fs::file_size(out / (std::string(name) + ".stl")) > 84);
+        const std::string vtk = testing::slurp(out / (std::string(name) + ".vtk"));
+        CHECK(vtk.find("SCALARS region_id int 1") != std::string::npos);
+        CHECK(vtk.find("SCALARS node_id int 1") != std::string::npos);
+    }
+    const std::string report = testing::slurp(out / "report.json");
+    CHECK(count(report, "\"role\":\"primary\"") == 2);
+    CHECK(count(report, "\"role\":\"secondary\"") == 2);
+    CHECK(count(report, "\"boundary_loops\":2") == 4);
+    CHECK(count(report, "\"volume_removed\":") == 4);
+    CHECK(jsonNumber(report, "fraction_at_least_20") >= 0.99);
+    CHECK(jsonNumber(report, "min_angle_deg") >= 10.0);
+    // Warps keep their volume; wefts lose what the regions took.
+    for (std::size_t k = 0; k < 2; ++k) CHECK(jsonNumber(report, "volume_after", k) == jsonNumber(report, "volume_before", k));
+    double removed = 0.0;
+    for (std::size_t k = 0; k < 4; ++k) removed += jsonNumber(report, "volume_removed", k);
+    const double lost = jsonNumber(report, "volume_before", 2) - jsonNumber(report, "volume_after", 2) +
+                        jsonNumber(report, "volume_before", 3) - jsonNumber(report, "volume_after", 3);
+    CHECK(lost == Approx(removed).epsilon(1e-9));
+
+    // The .inp: node and element counts and the sets match the report.
+    const std::string inp = testing::slurp(out / "textile.inp");
+    CHECK(inpEntries(inp, "*NODE") == static_cast<std::size_t>(jsonNumber(report, "node_count")));
+    std::size_t triangles = 0;
+    for (std::size_t k = 0; k < 4; ++k) triangles += static_cast<std::size_t>(jsonNumber(report, "triangles", k));
+    CHECK(inpEntries(inp, "*ELEMENT") == triangles);
+    CHECK(count(inp, "*ELEMENT, TYPE=S3, ELSET=TOW_") == 4);
+    for (std::size_t k = 0; k < 4; ++k) {
+        // Region k+1: both tows' copies of the region's triangles, and its nodes.
+        const std::string region = "REGION_" + std::to_string(k + 1);
+        const std::size_t regionTriangles = static_cast<std::size_t>(jsonNumber(report, "triangles", 4 + k));
+        CHECK(inpEntries(inp, "*ELSET, ELSET=" + region) == 2 * regionTriangles);
+        CHECK(inpEntries(inp, "*NSET, NSET=" + region) == static_cast<std::size_t>(jsonNumber(report, "nodes", k)));
+    }
+    // Gmsh reads the .msh without complaint (gmsh is in the package list; skipped without it).
+    if (std::system("command -v gmsh >/dev/null 2>&1") == 0) {
+        const Run g = testing::runShell("gmsh -check '" + (out / "textile.msh").string() + "' 2>&1");
+        CHECK(g.status == 0);
+        CHECK(g.out.find("Error") == std::string::npos);
+        CHECK(g.out.find("Warning") == std::string::npos);
+        CHECK(g.out.find("Info    : " + std::to_string(static_cast<std::size_t>(jsonNumber(report, "node_count"))) + " nodes") !=
+              std::string::npos);
+    } else {
+        WARN("gmsh not installed: .msh not checked");
+    }
+    fs::remove_all(out);
+}
+
+TEST_CASE("towgeom resolve --primary chooses which tow keeps its surface", "[cli][resolve]")
+{
+    const fs::path out = scratch("primary");
+    const Run r = cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + out.string() + "' --primary 'weft_*' --quiet");
+    REQUIRE(r.status == 0);
+    const std::string report = testing::slurp(out / "report.json");
+    CHECK(report.find("{\"name\":\"warp_0\",\"role\":\"secondary\"") != std::string::npos);
+    CHECK(report.find("{\"name\":\"weft_0\",\"role\":\"primary\"") != std::string::npos);
+    CHECK(report.find("\"primary\":\"weft_0\",\"secondary\":\"warp_0\"") != std::string::npos);
+    fs::remove_all(out);
+}
+
+TEST_CASE("towgeom resolve skips and names an open curve (exit 3), refuses bad usage (exit 2)", "[cli][resolve][open]")
+{
+    const fs::path dir = scratch("open");
+    fs::create_directories(dir);
+    testing::Sampling s;
+    s.points = 48;
+    std::string files;
+    for (const TowStack& t : {testing::tubeAlongX(0.5, 2.0, 0.0, 0.0, 0.0, s, "short"), testing::tubeAlongY(0.5, 0.7, s, "crossing")}) {
+        std::ofstream o(dir / (t.name + ".stw"));
+        writeStack(o, t);
+        files += " '" + (dir / (t.name + ".stw")).string() + "'";
+    }
+    const Run r = cli("resolve" + files + " --out '" + (dir / "out").string() + "' --quiet");
+    CHECK(r.status == 3);
+    CHECK(r.err.find("'short' and 'crossing'") != std::string::npos);
+    const std::string report = testing::slurp(dir / "out" / "report.json");
+    CHECK(report.find("\"skipped\":[{\"tow_a\":\"short\",\"tow_b\":\"crossing\",\"reason\":\"open curve:") != std::string::npos);
+    CHECK(count(report, "\"boundary_loops\":2") == 2);
+    CHECK(cli("resolve" + files + " --out '" + (dir / "out2").string() + "' --quiet --allow-open").status == 0);
+    for (const std::string& args : {std::string("resolve") + files, "resolve" + files + " --out x --formats stl,obj",
+                                    "resolve" + files + " --out x --min-angle 40", "resolve" + files + " --out x --mesh-size -1"}) {
+        DYNAMIC_SECTION(args)
+        {
+            const Run u = cli(args);
+            CHECK(u.status == 2);
+            CHECK(std::count(u.err.begin(), u.err.end(), '\n') == 1);
+        }
+    }
+    CHECK_FALSE(fs::exists("x"));
+    const Run help = cli("resolve --help");
+    for (const char* word : {"--primary", "--mesh-size", "--loop-spacing", "--formats", "report.json", "Exit status", "Example"})
+        CHECK(help.out.find(word) != std::string::npos);
+    fs::remove_all(dir);
+}
