@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job on the bundled example tows: installs what is missing, builds, fits a surface to
-# every tow of examples/data, writing out/fit/NAME.vtk (open in ParaView) and out/fit.json, then
-# finds where the twill's tows interpenetrate, writing out/loops.json.
+# every tow of examples/data (out/fit/NAME.vtk, out/fit.json), then resolves the twill: finds
+# where its tows interpenetrate and writes compatible meshes that share a surface there
+# (out/resolved/: NAME.vtk for ParaView, NAME.stl, textile.msh, textile.inp, report.json).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$root/cmake/ensure_packages.sh"
@@ -9,6 +10,8 @@ bash "$root/cmake/build.sh" -DTOWGEOM_BUILD_TESTS=OFF -DTOWGEOM_BUILD_BENCHMARKS
 mkdir -p "$root/out"
 "$root/build/towgeom" fit "$root"/examples/data/straight_tube.stw "$root"/examples/data/twill/*.stw \
   --out "$root/out/fit" | tee "$root/out/fit.json"
-"$root/build/towgeom" detect "$root"/examples/data/twill/*.stw --quiet > "$root/out/loops.json"
-echo "towgeom: surfaces in out/fit/*.vtk (ParaView), report in out/fit.json," \
-  "intersection loops in out/loops.json" >&2
+"$root/build/towgeom" resolve "$root"/examples/data/twill/*.stw --out "$root/out/resolved" \
+  --formats stl,vtk,msh,inp
+echo "towgeom: fitted surfaces in out/fit/*.vtk and out/fit.json; compatible meshes in" \
+  "out/resolved/*.vtk (ParaView: colour by region_id), model files out/resolved/textile.msh" \
+  "and textile.inp, report out/resolved/report.json" >&2

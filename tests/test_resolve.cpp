@@ -5,6 +5,8 @@
 // (corefinement; analytic too for the tubes), and the triangles' smallest angles.
 #include <catch2/catch.hpp>
 
+#include <towgeom/error.hpp>
+#include <towgeom/intersection_loop.hpp>
 #include <towgeom/resolve.hpp>
 #include <towgeom/tow_stack.hpp>
 #include <towgeom/tow_surface.hpp>
@@ -52,13 +54,13 @@ WeaveOptions twill22(std::size_t sectionsPerYarn = 0, std::size_t pointsPerSecti
     return o;
 }
 
-/// The tubes of the seam test: x-tube R = 0.5 along x, y-tube r = 0.4 at height d = 0.6, their
-/// sections starting at pi/2 (x) and -pi/2 (y), so both seams run through the loop.
+/// The tubes of the seam test: x-tube R = 0.5 along x, y-tube r = 0.4 at height d = 0.6; sections
+/// starting at pi/2 (x) and -pi/2 (y) put both seams through the loop.
 constexpr double kR = 0.5, kr = 0.4, kd = 0.6;
-std::vector<TowStack> seamTubes(std::size_t sections, std::size_t points)
+std::vector<TowStack> seamTubes(std::size_t sections, std::size_t points, double startX, double startY)
 {
-    return {testing::tubeAlongX(kR, 4.0, 0.0, 0.0, 0.0, sampling(kPi / 2, sections, points), "x"),
-            testing::tubeAlongY(kr, kd, sampling(-kPi / 2, sections, points), "y")};
+    return {testing::tubeAlongX(kR, 4.0, 0.0, 0.0, 0.0, sampling(startX, sections, points), "x"),
+            testing::tubeAlongY(kr, kd, sampling(startY, sections, points), "y")};
 }
 
 /// The exact overlap of the two tubes: for each height z the y-tube's chord along x times the
@@ -252,6 +254,30 @@ double checkRemovedVolume(const ResolveResult& res, const std::vector<TowStack>&
 
 }  // namespace
 
+TEST_CASE("the CGAL crossing check finds the crossing of the unresolved tubes, none within one mesh", "[resolve][reference]")
+{
+    // The faceted input tubes on one node numbering cross along the loop; a mesh against itself
+    // (every pair identical or sharing nodes) and against a copy moved clear of it do not.
+    const std::vector<TowStack> stacks = seamTubes(21, 96, kPi / 2, -kPi / 2);
+    const TriangleMesh x = facetedTube(stacks[0], false), y = facetedTube(stacks[1], false);
+    std::vector<Point3> nodes = x.vertices;
+    nodes.insert(nodes.end(), y.vertices.begin(), y.vertices.end());
+    std::vector<Triangle> tx = x.triangles, ty = y.triangles, far = y.triangles;
+    for (Triangle& t : ty)
+        for (std::size_t& n : t) n += x.vertices.size();
+    for (const Point3& p : y.vertices) nodes.push_back(p + Point3{0.0, 0.0, 5.0});
+    for (Triangle& t : far)
+        for (std::size_t& n : t) n += x.vertices.size() + y.vertices.size();
+    const testing::TriangleCrossings crossing = testing::crossingTrianglePairs(nodes, tx, ty);
+    WARN("faceted input tubes: " << crossing.crossing << " crossing triangle pairs");
+    CHECK(crossing.crossing > 0);
+    const testing::TriangleCrossings self = testing::crossingTrianglePairs(nodes, tx, tx);
+    CHECK(self.crossing == 0);
+    CHECK(self.identical == tx.size());
+    CHECK(self.sharing > 0);
+    CHECK(testing::crossingTrianglePairs(nodes, ty, far).crossing == 0);
+}
+
 TEST_CASE("resolved 4x4 2/2 twill: no crossing triangles, shared regions, tubes, primaries unchanged", "[resolve][weave]")
 {
     const auto t0 = std::chrono::steady_clock::now();
@@ -274,79 +300,134 @@ TEST_CASE("resolved 4x4 2/2 twill: no crossing triangles, shared regions, tubes,
 
 TEST_CASE("resolved tubes whose loop crosses both seams: no crossing triangles, shared region, tubes", "[resolve][seam]")
 {
+    // Start angles pi/2 and -pi/2 put the seam of each tube through the loop; 0 and 0 (no seam
+    // through it) is the control.
     struct Case {
         std::size_t sections, points;
+        double startX, startY;
     };
-    for (const Case k : {Case{21, 96}, Case{41, 48}}) {
-        INFO(k.sections << " sections x " << k.points << " points");
+    for (const Case k : {Case{21, 96, kPi / 2, -kPi / 2}, Case{41, 48, kPi / 2, -kPi / 2}, Case{21, 96, 0.0, 0.0}}) {
+        INFO(k.sections << " sections x " << k.points << " points, start angles " << k.startX << ", " << k.startY);
         const auto t0 = std::chrono::steady_clock::now();
-        const std::vector<TowStack> stacks = seamTubes(k.sections, k.points);
+        const std::vector<TowStack> stacks = seamTubes(k.sections, k.points, k.startX, k.startY);
         ResolveOptions o;
         o.mesh.edgeLength = 0.05;
-        const ResolveResult res = resolveTextile(fit(stacks), o);
-        REQUIRE(res.intersections.loops.size() == 1);
-        CHECK(checkResolved(res, 1) == 0);
-        CHECK(res.tows[0].primaryAnywhere);
-        CHECK_FALSE(res.tows[0].secondaryAnywhere);
-        CHECK(res.tows[1].secondaryAnywhere);
-        WARN(k.sections << "x" << k.points << ": " << res.quality.triangles << " triangles, " << res.meshRounds
-                        << " mesh rounds, " << seconds(t0) << " s");
+        try {
+            const ResolveResult res = resolveTextile(fit(stacks), o);
+            REQUIRE(res.intersections.loops.size() == 1);
+            const IntersectionLoop& loop = res.intersections.loops.front();
+            const std::size_t pieces = k.startX == 0.0 ? 1 : 2;  // cut by the seam, or not
+            CHECK(loop.clippedUvCurves(LoopSide::A).size() == pieces);
+            CHECK(loop.clippedUvCurves(LoopSide::B).size() == pieces);
+            CHECK(checkResolved(res, 1) == 0);
+            // Against the analytic cylinders: the secondary (y-tube) keeps only its surface outside
+            // the x-tube, and the shared surface is the x-tube's inside the y-tube.
+            const TextileMesh& m = res.mesh;
+            const double tol = 1e-3 * kr;
+            double worstOutside = 0.0, worstInside = 0.0;
+            for (std::size_t t = 0; t < m.tows[1].triangles.size(); ++t)
+                for (std::size_t n : m.tows[1].triangles[t]) {
+                    const Point3& p = m.nodes[n];
+                    if (m.tows[1].region[t] < 0)
+                        worstOutside = std::max(worstOutside, kR - std::hypot(p.y, p.z));
+                    else
+                        worstInside = std::max(worstInside, std::hypot(p.x - 2.0, p.z - kd) - kr);
+                }
+            WARN("secondary nodes inside the x-tube by at most " << worstOutside << ", shared nodes outside the y-tube by at most "
+                                                                 << worstInside);
+            CHECK(worstOutside <= tol);
+            CHECK(worstInside <= tol);
+            CHECK(res.tows[0].primaryAnywhere);
+            CHECK_FALSE(res.tows[0].secondaryAnywhere);
+            CHECK(res.tows[1].secondaryAnywhere);
+            WARN(k.sections << "x" << k.points << ": " << res.quality.triangles << " triangles, " << res.meshRounds
+                            << " mesh rounds, min angle " << res.quality.minAngle << ", " << seconds(t0) << " s");
+        } catch (const Error& e) {
+            FAIL_CHECK("resolveTextile threw: " << e.what());
+        }
     }
 }
 
 TEST_CASE("the secondary loses the overlap volume of the tubes (CGAL corefinement, analytic)", "[resolve][volume]")
 {
-    SECTION("crossing tubes, loop across both seams")
+    SECTION("crossing tubes")
     {
         const double exact = analyticOverlapVolume();
-        for (const std::size_t points : {96u, 48u}) {
-            const std::vector<TowStack> stacks = seamTubes(points == 96 ? 21 : 41, points);
+        struct Case {
+            std::size_t sections, points;
+            double startX, startY;
+        };
+        for (const Case k : {Case{21, 96, kPi / 2, -kPi / 2}, Case{41, 48, kPi / 2, -kPi / 2}, Case{21, 96, 0.0, 0.0}}) {
+            INFO(k.sections << " sections x " << k.points << " points, start angles " << k.startX << ", " << k.startY);
+            const std::vector<TowStack> stacks = seamTubes(k.sections, k.points, k.startX, k.startY);
             ResolveOptions o;
             o.mesh.edgeLength = 0.05;
-            const ResolveResult res = resolveTextile(fit(stacks), o);
-            REQUIRE(res.mesh.regions.size() == 1);
-            const ConnectedRegion& r = res.mesh.regions.front();
-            const double cgal = testing::intersectionVolume(facetedTube(stacks[0], true), facetedTube(stacks[1], true));
-            const double drop = res.tows[1].volumeBefore - res.tows[1].volumeAfter;
-            WARN(points << " points: removed " << r.volumeRemoved << ", drop " << drop << ", CGAL (faceted) " << cgal
-                        << ", analytic " << exact << ": " << 100.0 * (r.volumeRemoved / exact - 1.0) << " % vs analytic, "
-                        << 100.0 * (r.volumeRemoved / cgal - 1.0) << " % vs CGAL");
-            CHECK(r.volumeRemoved == Approx(exact).epsilon(0.02));
-            CHECK(drop == Approx(exact).epsilon(0.02));
-            CHECK(checkRemovedVolume(res, stacks, 0.02) <= 0.02);
+            try {
+                const ResolveResult res = resolveTextile(fit(stacks), o);
+                REQUIRE(res.mesh.regions.size() == 1);
+                const ConnectedRegion& r = res.mesh.regions.front();
+                const double cgal = testing::intersectionVolume(facetedTube(stacks[0], true), facetedTube(stacks[1], true));
+                const double drop = res.tows[1].volumeBefore - res.tows[1].volumeAfter;
+                WARN(k.sections << "x" << k.points << ", start " << k.startX << ": removed " << r.volumeRemoved << ", drop "
+                                << drop << ", CGAL (faceted) " << cgal << ", analytic " << exact << ": "
+                                << 100.0 * (r.volumeRemoved / exact - 1.0) << " % vs analytic, "
+                                << 100.0 * (r.volumeRemoved / cgal - 1.0) << " % vs CGAL");
+                CHECK(r.volumeRemoved == Approx(exact).epsilon(0.02));
+                CHECK(drop == Approx(exact).epsilon(0.02));
+                CHECK(checkRemovedVolume(res, stacks, 0.02) <= 0.02);
+            } catch (const Error& e) {
+                FAIL_CHECK("resolveTextile threw: " << e.what());
+            }
         }
     }
     SECTION("dense 2/2 twill")
     {
+        const auto t0 = std::chrono::steady_clock::now();
         const std::vector<TowStack> stacks = generateWeave(twill22(121, 48)).stacks();
         ResolveOptions o;
         o.mesh.edgeLength = 0.05;
         const ResolveResult res = resolveTextile(fit(stacks), o);
         REQUIRE(res.mesh.regions.size() == 16);
         const double worst = checkRemovedVolume(res, stacks, 0.02);
-        WARN("dense twill: worst relative difference of a region's removed volume from CGAL's overlap: " << 100.0 * worst << " %");
+        WARN("dense twill: worst relative difference of a region's removed volume from CGAL's overlap: " << 100.0 * worst
+                                                                                                        << " %; " << seconds(t0) << " s");
     }
 }
 
-TEST_CASE("mesh quality for small, default and large loop spacing", "[resolve][quality]")
+namespace {
+
+/// Quality of @p tows resolved with edge length h and loop spacing h/2, h (default) and 2h.
+void checkQuality(const std::vector<TowSurface>& tows, const char* what)
 {
     const double h = 0.05;
-    const std::vector<TowSurface> twill = fit(generateWeave(twill22()).stacks());
-    const std::vector<TowSurface> tubes = fit(seamTubes(21, 96));
     for (const double spacing : {0.5 * h, 0.0, 2.0 * h}) {
-        for (const bool weave : {true, false}) {
-            INFO((weave ? "twill" : "tubes") << ", loop spacing " << spacing << " (0: h = " << h << ")");
-            ResolveOptions o;
-            o.mesh.edgeLength = h;
-            o.mesh.loopSpacing = spacing;
-            const ResolveResult res = resolveTextile(weave ? twill : tubes, o);
-            WARN((weave ? "twill" : "tubes") << ", loop spacing " << spacing << ": min angle " << res.quality.minAngle
-                                             << ", >= 20 deg " << res.quality.fractionAtLeast(20) << ", >= 10 deg "
-                                             << res.quality.fractionAtLeast(10) << ", " << res.quality.triangles
-                                             << " triangles, " << res.meshRounds << " rounds");
+        INFO(what << ", loop spacing " << spacing << " (0: h = " << h << ")");
+        ResolveOptions o;
+        o.mesh.edgeLength = h;
+        o.mesh.loopSpacing = spacing;
+        try {
+            const auto t0 = std::chrono::steady_clock::now();
+            const ResolveResult res = resolveTextile(tows, o);
+            WARN(what << ", loop spacing " << spacing << ": min angle " << res.quality.minAngle << ", >= 20 deg "
+                      << res.quality.fractionAtLeast(20) << ", >= 10 deg " << res.quality.fractionAtLeast(10) << ", "
+                      << res.quality.triangles << " triangles, " << res.meshRounds << " rounds, " << seconds(t0) << " s");
             CHECK(res.quality.fractionAtLeast(20) >= 0.99);
             CHECK(res.quality.minAngle >= 10.0);
             CHECK(res.skipped.empty());
+        } catch (const Error& e) {
+            FAIL_CHECK("resolveTextile threw: " << e.what());
         }
     }
+}
+
+}  // namespace
+
+TEST_CASE("mesh quality for small, default and large loop spacing: twill", "[resolve][quality]")
+{
+    checkQuality(fit(generateWeave(twill22()).stacks()), "twill");
+}
+
+TEST_CASE("mesh quality for small, default and large loop spacing: tubes, loop across both seams", "[resolve][quality][seam]")
+{
+    checkQuality(fit(seamTubes(21, 96, kPi / 2, -kPi / 2)), "tubes");
 }

@@ -90,7 +90,9 @@ ParametricMesh meshTow(const TowSurface& surface, const std::vector<LoopConstrai
     for (const LoopConstraint& c : constraints)
         for (std::size_t k = 0; k < c.uv.size(); ++k)
             if (c.uv[k].v == r.vMin || c.uv[k].v == r.vMax) seamX.push_back(toXY(c.uv[k]).x());
-    const std::vector<double> xs = stations(lx, h, seamX);
+    // Seam stations at half the size: edges that short are seldom encroached, so the mesher
+    // rarely splits them (a split must be copied to the other side and meshed again).
+    const std::vector<double> xs = stations(lx, 0.5 * h, seamX);
     const std::vector<double> ys = stations(ly, h, {});
 
     CDT cdt;

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <map>
-#include <set>
+#include <cstdint>
 
 namespace towgeom {
 
@@ -11,28 +11,34 @@ namespace {
 using Edge = std::pair<std::size_t, std::size_t>;
 
 /// Directed boundary edges (used by one triangle only), as (from, to) in triangle order.
-std::vector<Edge> boundaryEdges(const TowMesh& m)
+std::vector<Edge> boundaryEdges(const std::vector<std::array<std::size_t, 3>>& triangles)
 {
-    std::map<Edge, int> count;
-    for (const auto& t : m.triangles)
-        for (int k = 0; k < 3; ++k) {
-            const std::size_t a = t[k], b = t[(k + 1) % 3];
-            ++count[{std::min(a, b), std::max(a, b)}];
-        }
+    std::vector<Edge> undirected;
+    undirected.reserve(3 * triangles.size());
+    for (const auto& t : triangles)
+        for (int k = 0; k < 3; ++k) undirected.emplace_back(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
+    std::sort(undirected.begin(), undirected.end());
+    std::vector<Edge> once;
+    for (std::size_t i = 0; i < undirected.size();) {
+        std::size_t j = i + 1;
+        while (j < undirected.size() && undirected[j] == undirected[i]) ++j;
+        if (j == i + 1) once.push_back(undirected[i]);
+        i = j;
+    }
     std::vector<Edge> out;
-    for (const auto& t : m.triangles)
+    for (const auto& t : triangles)
         for (int k = 0; k < 3; ++k) {
-            const std::size_t a = t[k], b = t[(k + 1) % 3];
-            if (count[{std::min(a, b), std::max(a, b)}] == 1) out.emplace_back(a, b);
+            const Edge e{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])};
+            if (std::binary_search(once.begin(), once.end(), e)) out.emplace_back(t[k], t[(k + 1) % 3]);
         }
     return out;
 }
 
 /// The boundary edges chained into loops of nodes (each loop in edge order).
-std::vector<std::vector<std::size_t>> boundaryLoops(const TowMesh& m)
+std::vector<std::vector<std::size_t>> boundaryLoops(const std::vector<std::array<std::size_t, 3>>& triangles)
 {
     std::multimap<std::size_t, std::size_t> next;
-    for (const Edge& e : boundaryEdges(m)) next.emplace(e.first, e.second);
+    for (const Edge& e : boundaryEdges(triangles)) next.emplace(e.first, e.second);
     std::vector<std::vector<std::size_t>> loops;
     while (!next.empty()) {
         std::vector<std::size_t> loop;
@@ -52,42 +58,39 @@ std::vector<std::vector<std::size_t>> boundaryLoops(const TowMesh& m)
     return loops;
 }
 
-}  // namespace
-
-TriangleMesh TextileMesh::towSurface(std::size_t tow) const
+/// The triangles over their own nodes, renumbered in order of first use; @p used gets the
+/// global node of each local one.
+TriangleMesh renumbered(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles,
+                        std::vector<std::size_t>& used)
 {
     TriangleMesh out;
-    std::map<std::size_t, std::size_t> local;
-    for (const auto& t : tows.at(tow).triangles) {
+    std::vector<std::size_t> local(nodes.size(), SIZE_MAX);
+    used.clear();
+    out.triangles.reserve(triangles.size());
+    for (const auto& t : triangles) {
         std::array<std::size_t, 3> r{};
         for (int k = 0; k < 3; ++k) {
-            const auto [it, fresh] = local.emplace(t[k], out.vertices.size());
-            if (fresh) out.vertices.push_back(nodes.at(t[k]));
-            r[k] = it->second;
+            if (local[t[k]] == SIZE_MAX) {
+                local[t[k]] = used.size();
+                used.push_back(t[k]);
+                out.vertices.push_back(nodes[t[k]]);
+            }
+            r[k] = local[t[k]];
         }
         out.triangles.push_back(r);
     }
     return out;
 }
 
-std::vector<std::size_t> TextileMesh::towNodes(std::size_t tow) const
-{
-    std::vector<std::size_t> order;
-    std::set<std::size_t> seen;
-    for (const auto& t : tows.at(tow).triangles)
-        for (std::size_t n : t)
-            if (seen.insert(n).second) order.push_back(n);
-    return order;
-}
+}  // namespace
 
-TriangleMesh TextileMesh::closedTowSurface(std::size_t tow) const
+TriangleMesh closedSurface(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles)
 {
-    TriangleMesh out = towSurface(tow);
-    // Same renumbering as towSurface(): rebuild the map to find the loops' local indices.
-    std::map<std::size_t, std::size_t> local;
-    for (const auto& t : tows.at(tow).triangles)
-        for (int k = 0; k < 3; ++k) local.emplace(t[k], local.size());
-    for (const std::vector<std::size_t>& loop : boundaryLoops(tows.at(tow))) {
+    std::vector<std::size_t> used;
+    TriangleMesh out = renumbered(nodes, triangles, used);
+    std::vector<std::size_t> local(nodes.size(), SIZE_MAX);
+    for (std::size_t k = 0; k < used.size(); ++k) local[used[k]] = k;
+    for (const std::vector<std::size_t>& loop : boundaryLoops(triangles)) {
         Point3 c;
         for (std::size_t n : loop) c = c + nodes[n];
         c = (1.0 / static_cast<double>(loop.size())) * c;
@@ -95,11 +98,26 @@ TriangleMesh TextileMesh::closedTowSurface(std::size_t tow) const
         out.vertices.push_back(c);
         // Boundary edges run along the loop in triangle order; the cap closes them the other way.
         for (std::size_t k = 0; k < loop.size(); ++k)
-            out.triangles.push_back({local.at(loop[(k + 1) % loop.size()]), local.at(loop[k]), centre});
+            out.triangles.push_back({local[loop[(k + 1) % loop.size()]], local[loop[k]], centre});
     }
     return out;
 }
 
-std::size_t TextileMesh::boundaryLoopCount(std::size_t tow) const { return boundaryLoops(tows.at(tow)).size(); }
+TriangleMesh TextileMesh::towSurface(std::size_t tow) const
+{
+    std::vector<std::size_t> used;
+    return renumbered(nodes, tows.at(tow).triangles, used);
+}
+
+std::vector<std::size_t> TextileMesh::towNodes(std::size_t tow) const
+{
+    std::vector<std::size_t> used;
+    renumbered(nodes, tows.at(tow).triangles, used);
+    return used;
+}
+
+TriangleMesh TextileMesh::closedTowSurface(std::size_t tow) const { return closedSurface(nodes, tows.at(tow).triangles); }
+
+std::size_t TextileMesh::boundaryLoopCount(std::size_t tow) const { return boundaryLoops(tows.at(tow).triangles).size(); }
 
 }  // namespace towgeom

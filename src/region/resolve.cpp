@@ -157,20 +157,31 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
         });
         // Points the mesher put on constraints become nodes on both sides; mesh those tows again.
         std::fill(dirty.begin(), dirty.end(), 0);
-        std::set<std::pair<std::size_t, std::size_t>> chordsDone;
+        // Every point asked for on a chord (by either tow) is added, in order along it, so one
+        // more round usually settles the chord (the mesher often splits one several times).
+        std::map<std::pair<std::size_t, std::size_t>, std::vector<double>> chords;
         for (std::size_t t = 0; t < tows.size(); ++t) {
             if (!requests[t].seamU.empty()) {
                 seamU[t].insert(seamU[t].end(), requests[t].seamU.begin(), requests[t].seamU.end());
                 dirty[t] = 1;
             }
-            for (const detail::MeshRequests::OnLoop& q : requests[t].onLoop) {
-                const std::size_t k = sharedOf.at(q.a);
-                if (!chordsDone.insert({std::min(q.a, q.b), std::max(q.a, q.b)}).second) continue;
-                if (detail::splitChord(loops[shared[k].loop], shared[k], q.a, q.b, q.t, nodes)) {
-                    sharedOf[nodes.size() - 1] = k;
-                    const IntersectionLoop& l = loops[shared[k].loop];
-                    dirty[l.towA()] = dirty[l.towB()] = 1;
-                }
+            for (const detail::MeshRequests::OnLoop& q : requests[t].onLoop)
+                chords[{q.a, q.b}].push_back(q.t);
+        }
+        for (auto& [chord, ts] : chords) {
+            std::sort(ts.begin(), ts.end());
+            std::size_t a = chord.first;
+            double done = 0.0;  // fraction of the original chord before a
+            for (double t : ts) {
+                if (t - done < 0.02 || t > 0.98) continue;  // as good as a node already there
+                const std::size_t k = sharedOf.at(a);
+                if (!detail::splitChord(loops[shared[k].loop], shared[k], a, chord.second, (t - done) / (1.0 - done), nodes))
+                    break;
+                a = nodes.size() - 1;
+                sharedOf[a] = k;
+                done = t;
+                const IntersectionLoop& l = loops[shared[k].loop];
+                dirty[l.towA()] = dirty[l.towB()] = 1;
             }
         }
         if (std::none_of(dirty.begin(), dirty.end(), [](char d) { return d != 0; })) break;
@@ -255,30 +266,24 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
     // Per-tow figures (in parallel: each volume is a CGAL computation over the tow's mesh).
     detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
         TowResolution& r = result.tows[t];
-        TowMesh own;
-        own.triangles = meshes[t].triangles;
-        TextileMesh before;
-        before.nodes = N;
-        before.tows.push_back(own);
-        r.volumeBefore = enclosedVolume(before.closedTowSurface(0));
+        r.volumeBefore = enclosedVolume(closedSurface(N, meshes[t].triangles));
         r.volumeAfter = enclosedVolume(result.mesh.closedTowSurface(t));
         for (const Triangle& tri : result.mesh.tows[t].triangles) r.area += triangleArea(N, tri);
         r.boundaryLoops = result.mesh.boundaryLoopCount(t);
     });
-    // Quality over distinct triangles (a shared triangle counts once).
-    std::set<Triangle> seen;
+    // Quality over distinct triangles: a secondary's copies of a region's triangles are skipped.
     result.quality.histogram.assign(12, 0);
     result.quality.minAngle = 180.0;
-    for (const TowMesh& m : result.mesh.tows)
-        for (const Triangle& tri : m.triangles) {
-            Triangle key = tri;
-            std::sort(key.begin(), key.end());
-            if (!seen.insert(key).second) continue;
-            const double a = smallestAngle(N, tri);
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        const TowMesh& m = result.mesh.tows[t];
+        for (std::size_t k = 0; k < m.triangles.size(); ++k) {
+            if (m.region[k] >= 0 && result.mesh.regions[static_cast<std::size_t>(m.region[k])].secondary == t) continue;
+            const double a = smallestAngle(N, m.triangles[k]);
             result.quality.minAngle = std::min(result.quality.minAngle, a);
             ++result.quality.histogram[std::min<std::size_t>(11, static_cast<std::size_t>(a / 5.0))];
             ++result.quality.triangles;
         }
+    }
     // The secondary's nodes inside its removed triangles are used by no triangle now: drop them
     // and number the rest consecutively.
     {

@@ -1,0 +1,76 @@
+// Resolve benchmark (issue 4): `towgeom resolve` end to end on a 2/2 twill of 8 warps x 8 wefts
+// (0.08 overlap, 400 sections x 64 points per tow, 64 crossings) at h = yarn width / 20. Prints
+// the time of each stage (from report.json), the wall time, the mesh size and quality, and the
+// peak memory. Goal: <= 3 s on 2 cores.
+//   bench_resolve [--tows N] [--sections M] [--points P] [--threads T] [--h H]
+#include <towgeom/towgeom.hpp>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace fs = std::filesystem;
+
+int main(int argc, char** argv)
+{
+    towgeom::WeaveOptions o;
+    o.kind = towgeom::WeaveKind::Twill;
+    o.overlap = 0.08;
+    o.warps = o.wefts = 8;
+    o.sectionsPerYarn = 400;
+    o.pointsPerSection = 64;
+    std::size_t threads = 2;
+    double h = 0.0;
+    for (int i = 1; i + 1 < argc; i += 2) {
+        if (!std::strcmp(argv[i], "--tows")) o.warps = o.wefts = std::stoul(argv[i + 1]);
+        else if (!std::strcmp(argv[i], "--sections")) o.sectionsPerYarn = std::stoul(argv[i + 1]);
+        else if (!std::strcmp(argv[i], "--points")) o.pointsPerSection = std::stoul(argv[i + 1]);
+        else if (!std::strcmp(argv[i], "--threads")) threads = std::stoul(argv[i + 1]);
+        else if (!std::strcmp(argv[i], "--h")) h = std::stod(argv[i + 1]);
+    }
+    if (h <= 0.0) h = o.width / 20.0;
+    const towgeom::Textile textile = towgeom::generateWeave(o);
+    const fs::path dir = fs::temp_directory_path() / ("towgeom_bench_resolve_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::string command = std::string("'") + TOWGEOM_CLI + "' resolve";
+    for (const towgeom::TowStack& s : textile.stacks()) {
+        const fs::path f = dir / (s.name + ".stw");
+        std::ofstream out(f);
+        towgeom::writeStack(out, s);
+        command += " '" + f.string() + "'";
+    }
+    command += " --out '" + (dir / "out").string() + "' --mesh-size " + std::to_string(h) + " --threads " +
+               std::to_string(threads) + " --formats stl,vtk --quiet";
+    std::printf("towgeom bench_resolve: 2/2 twill, %zu tows of %zu sections x %zu points, %zu crossings, h = %g, %zu threads\n",
+                textile.stacks().size(), o.sectionsPerYarn, o.pointsPerSection, textile.crossings.size(), h, threads);
+    const auto t0 = std::chrono::steady_clock::now();
+    const int status = std::system(command.c_str());
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::ifstream in(dir / "out" / "report.json");
+    const std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    fs::remove_all(dir);
+    const auto number = [&](const std::string& key) {
+        const auto at = report.rfind("\"" + key + "\":");
+        return at == std::string::npos ? -1.0 : std::atof(report.c_str() + at + key.size() + 3);
+    };
+    std::printf("exit %d, wall %.3f s  (goal <= 3 s)\n", WEXITSTATUS(status), wall);
+    std::printf("stages (ms): read %.0f, fit %.0f, intersect %.0f, mesh %.0f, regions %.0f, write %.0f, total %.0f\n",
+                number("read"), number("fit"), number("intersect"), number("mesh"), number("regions"), number("write"),
+                number("total"));
+    std::printf("mesh: %.0f nodes, %.0f distinct triangles, smallest angle %.2f deg, %.4f of triangles >= 20 deg, %.0f rounds\n",
+                number("node_count"), number("triangles"), number("min_angle_deg"), number("fraction_at_least_20"),
+                number("mesh_rounds"));
+    rusage usage{};
+    getrusage(RUSAGE_CHILDREN, &usage);
+    std::printf("peak memory of towgeom resolve: %.1f MiB\n", usage.ru_maxrss / 1024.0);
+    return status == 0 ? 0 : 1;
+}
