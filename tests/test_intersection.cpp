@@ -336,11 +336,24 @@ TEST_CASE("degenerate pairs: coincident, nested, tangent and parallel tows retur
     // Coincident tows (this crashed once in CGAL's coplanar triangle intersection) and tows
     // sharing half their length: surfaces that coincide have no transversal intersection curve.
     // They are not reported as loops (a known limit, see the notes), but must not fail.
-    CHECK_NOTHROW(pair(testing::tubeAlongX(0.5, 4, 0, 0, 0, s, "a"), testing::tubeAlongX(0.5, 4, 0, 0, 0, s, "b")));
-    CHECK_NOTHROW(pair(testing::tubeAlongX(0.5, 4, 0, 0, 0, s, "a"), testing::tubeAlongX(0.5, 4, 2, 0, 0, s, "b")));
-    // A thin tow inside a thick one, and two tows side by side just touching: no curve.
-    CHECK(pair(testing::tubeAlongX(0.5, 4, 0, 0, 0, s, "a"), testing::tubeAlongX(0.2, 3, 0.5, 0, 0, s, "b")).loops.empty());
-    CHECK(pair(testing::tubeAlongX(0.5, 4, 0, 0, 0, s, "a"), testing::tubeAlongX(0.5, 4, 0, 1.0, 0, s, "b")).loops.empty());
+    // They are reported as findings ("touching"), so such input never passes silently.
+    for (const double shift : {0.0, 2.0}) {
+        const IntersectionReport r = pair(testing::tubeAlongX(0.5, 4, 0, 0, 0, s, "a"), testing::tubeAlongX(0.5, 4, shift, 0, 0, s, "b"));
+        CHECK(r.loops.empty());
+        REQUIRE(r.findings.size() == 1);
+        CHECK(r.findings.front().kind == PairFinding::Kind::Touching);
+    }
+    // A thin tow inside a thick one: no curve, a "nested" finding naming both.
+    const IntersectionReport nested =
+        pair(testing::tubeAlongX(0.5, 4, 0, 0, 0, s, "a"), testing::tubeAlongX(0.2, 3, 0.5, 0, 0, s, "b"));
+    CHECK(nested.loops.empty());
+    REQUIRE(nested.findings.size() == 1);
+    CHECK(nested.findings.front().kind == PairFinding::Kind::Nested);
+    CHECK(nested.findings.front().message == "tow 'b' lies inside tow 'a'");
+    // Two tows side by side just touching: no curve and nothing else to say.
+    const IntersectionReport side = pair(testing::tubeAlongX(0.5, 4, 0, 0, 0, s, "a"), testing::tubeAlongX(0.5, 4, 0, 1.0, 0, s, "b"));
+    CHECK(side.loops.empty());
+    CHECK(side.findings.empty());
     // Parallel neighbours overlapping along their whole length: two open curves from end to end.
     const IntersectionReport parallel =
         pair(testing::tubeAlongX(0.5, 4, 0, 0, 0, s, "a"), testing::tubeAlongX(0.5, 4, 0, 0.9, 0, s, "b"));

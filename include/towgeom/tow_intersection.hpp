@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "towgeom/intersection_loop.hpp"
@@ -17,6 +18,19 @@ struct IntersectionTimings {
     double exact = 0.0;       ///< seeds, surface-surface walks, consolidation (all pairs, wall clock)
 };
 
+/// A tow pair whose boxes overlap but whose surfaces give no intersection curve, and why.
+struct PairFinding {
+    /// What was found.
+    enum class Kind {
+        Touching,  ///< facets cross but the surfaces do not cross along a curve (tangent, coincident)
+        Nested     ///< one tow lies inside the other (no surface crossing, full overlap)
+    };
+    std::size_t towA = 0;  ///< lower tow index
+    std::size_t towB = 0;  ///< higher tow index
+    Kind kind = Kind::Touching;  ///< what was found
+    std::string message;   ///< a sentence naming the tows
+};
+
 /// The result of intersectTows().
 struct IntersectionReport {
     /// Every intersection curve, ordered by (towA, towB); within a pair in the order found, which
@@ -28,6 +42,10 @@ struct IntersectionReport {
     std::size_t seeds = 0;            ///< crossing facet pairs found in the windows (start guesses)
     std::size_t walks = 0;            ///< surface-surface walks started
     IntersectionTimings timings;      ///< where the time went
+    /// Candidate pairs with no curve that nevertheless meet: touching or coincident surfaces,
+    /// and tows lying inside others. Not loops (nothing to resolve as a loop); reported so
+    /// that such input never passes silently.
+    std::vector<PairFinding> findings;
     /// The number of loops with closed() false.
     std::size_t openCount() const;
 };

@@ -22,6 +22,7 @@ prints one JSON object on stdout with one entry per intersection curve:
 
   {"loops":[{"tow_a", "tow_b", "closed", "open_reason", "length", "area_a", "area_b",
              "max_distance", "point_count", "points"}],
+   "findings":[{"tow_a", "tow_b", "kind", "message"}],
    "tow_pairs", "pairs_tested", "window_pairs", "seeds", "walks",
    "timings_ms":{"read", "fit", "broad_phase", "exact", "total"}}
 
@@ -35,6 +36,8 @@ prints one JSON object on stdout with one entry per intersection curve:
                 repeated for a closed loop); spaced by --spacing when given
   pairs_tested  tow pairs whose bounding boxes (per span of the surfaces) overlap; only
                 these go to the exact surface-surface intersection
+  findings      pairs that meet without an intersection curve: "touching" (surfaces tangent
+                or coincident) or "nested" (one tow inside the other); also a note on stderr
 
 Options:
   --tolerance T       largest distance of a curve point from either surface, in the input's
@@ -119,6 +122,7 @@ int runDetect(int argc, char** argv, int first)
         detail::JsonWriter json(out);
         json.beginObject();
         writeLoopsJson(json, report, surfaces, spacing, options.threads);
+        writeFindingsJson(json, report, surfaces, "detect", quiet);
         json.key("tow_pairs").value(report.towPairs);
         json.key("pairs_tested").value(report.pairsTested);
         json.key("window_pairs").value(report.windowPairs);

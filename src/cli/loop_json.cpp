@@ -42,6 +42,21 @@ void writeLoopsJson(detail::JsonWriter& json, const IntersectionReport& report, 
     json.endArray();
 }
 
+void writeFindingsJson(detail::JsonWriter& json, const IntersectionReport& report, const std::vector<TowSurface>& tows,
+                       const char* command, bool quiet)
+{
+    json.key("findings").beginArray();
+    for (const PairFinding& f : report.findings) {
+        const char* kind = f.kind == PairFinding::Kind::Nested ? "nested" : "touching";
+        json.beginObject().key("tow_a").value(tows[f.towA].name()).key("tow_b").value(tows[f.towB].name());
+        json.key("kind").value(kind).key("message").value(f.message).endObject();
+        if (!quiet)
+            std::cerr << "towgeom " << command << ": note: tows '" << tows[f.towA].name() << "' and '" << tows[f.towB].name()
+                      << "': " << f.message << "\n";
+    }
+    json.endArray();
+}
+
 std::size_t reportOpenCurves(const char* command, const IntersectionReport& report, const std::vector<TowSurface>& tows)
 {
     std::size_t pairs = 0;

@@ -166,6 +166,7 @@ int runResolve(int argc, char** argv, int first)
         }
         json.endArray();
         writeLoopsJson(json, result.intersections, tows, 0.0, options.threads);
+        writeFindingsJson(json, result.intersections, tows, "resolve", quiet);
         json.key("regions").beginArray();
         for (const ConnectedRegion& g : mesh.regions) {
             json.beginObject();

@@ -9,6 +9,7 @@
 
 #include "core/parallel.hpp"
 #include "intersect/broad_phase.hpp"
+#include "intersect/containment.hpp"
 #include "intersect/intersection_loop_data.hpp"
 #include "intersect/loop_tracing.hpp"
 #include "intersect/seed_search.hpp"
@@ -40,6 +41,7 @@ void checkOptions(const IntersectionOptions& o)
 
 struct PairResult {
     std::vector<IntersectionLoop> loops;
+    std::vector<PairFinding> findings;
     std::size_t seeds = 0;
     std::size_t walks = 0;
 };
@@ -85,6 +87,18 @@ PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::ve
     for (detail::TracedCurve& t : curves) detail::consolidateCurve(surfaces, t, tol);
     for (const detail::TracedCurve& t : curves)
         result.loops.push_back(detail::makeLoop(c.a, c.b, a, b, t.points, t.closed, t.openReason, tol.point));
+    if (result.loops.empty()) {
+        // No curve: say why, if the tows meet at all (their surfaces touch or coincide: facets
+        // cross, yet no transversal curve; or one tow lies inside the other).
+        if (result.seeds > 0)
+            result.findings.push_back({c.a, c.b, PairFinding::Kind::Touching,
+                                       "the surfaces touch or coincide (their facets cross) but do not cross each other "
+                                       "along a curve: no interpenetration loop"});
+        else if (detail::pointOfInsideOther(b, a))
+            result.findings.push_back({c.a, c.b, PairFinding::Kind::Nested, "tow '" + b.name() + "' lies inside tow '" + a.name() + "'"});
+        else if (detail::pointOfInsideOther(a, b))
+            result.findings.push_back({c.a, c.b, PairFinding::Kind::Nested, "tow '" + a.name() + "' lies inside tow '" + b.name() + "'"});
+    }
     return result;
 }
 
@@ -146,6 +160,7 @@ IntersectionReport intersectTows(const std::vector<TowSurface>& tows, const Inte
         report.seeds += r.seeds;
         report.walks += r.walks;
         for (IntersectionLoop& l : r.loops) report.loops.push_back(std::move(l));
+        for (PairFinding& f : r.findings) report.findings.push_back(std::move(f));
     }
     report.timings.exact = msSince(t1);
     return report;
