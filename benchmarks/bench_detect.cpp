@@ -6,6 +6,8 @@
 //   bench_detect [--tows N] [--sections M] [--points P] [--threads T] [--no-cgal]
 #include <towgeom/towgeom.hpp>
 
+#include "bench_twill.hpp"
+
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -32,26 +34,10 @@ double since(std::chrono::steady_clock::time_point t0)
 
 int main(int argc, char** argv)
 {
-    towgeom::WeaveOptions o;
-    o.kind = towgeom::WeaveKind::Twill;
-    o.overlap = 0.08;
-    o.warps = o.wefts = 8;
-    o.sectionsPerYarn = 400;
-    o.pointsPerSection = 64;
-    std::size_t threads = 2;
-    bool cgal = true;
-    for (int i = 1; i < argc; ++i) {
-        const bool more = i + 1 < argc;
-        if (!std::strcmp(argv[i], "--no-cgal")) cgal = false;
-        else if (more && !std::strcmp(argv[i], "--tows")) o.warps = o.wefts = std::stoul(argv[++i]);
-        else if (more && !std::strcmp(argv[i], "--sections")) o.sectionsPerYarn = std::stoul(argv[++i]);
-        else if (more && !std::strcmp(argv[i], "--points")) o.pointsPerSection = std::stoul(argv[++i]);
-        else if (more && !std::strcmp(argv[i], "--threads")) threads = std::stoul(argv[++i]);
-        else {
-            std::fprintf(stderr, "usage: bench_detect [--tows N] [--sections M] [--points P] [--threads T] [--no-cgal]\n");
-            return 2;
-        }
-    }
+    const towgeom::bench::TwillArgs args = towgeom::bench::parseTwillArgs(argc, argv);
+    const towgeom::WeaveOptions& o = args.weave;
+    const std::size_t threads = static_cast<std::size_t>(args.number("--threads", 2));
+    const bool cgal = !args.flag("--no-cgal");
     const towgeom::Textile textile = towgeom::generateWeave(o);
     const std::vector<towgeom::TowStack> stacks = textile.stacks();
     const fs::path dir = fs::temp_directory_path() / ("towgeom_bench_detect_" + std::to_string(::getpid()));

@@ -5,6 +5,8 @@
 //   bench_resolve [--tows N] [--sections M] [--points P] [--threads T] [--h H]
 #include <towgeom/towgeom.hpp>
 
+#include "bench_twill.hpp"
+
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -22,22 +24,10 @@ namespace fs = std::filesystem;
 
 int main(int argc, char** argv)
 {
-    towgeom::WeaveOptions o;
-    o.kind = towgeom::WeaveKind::Twill;
-    o.overlap = 0.08;
-    o.warps = o.wefts = 8;
-    o.sectionsPerYarn = 400;
-    o.pointsPerSection = 64;
-    std::size_t threads = 2;
-    double h = 0.0;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        if (!std::strcmp(argv[i], "--tows")) o.warps = o.wefts = std::stoul(argv[i + 1]);
-        else if (!std::strcmp(argv[i], "--sections")) o.sectionsPerYarn = std::stoul(argv[i + 1]);
-        else if (!std::strcmp(argv[i], "--points")) o.pointsPerSection = std::stoul(argv[i + 1]);
-        else if (!std::strcmp(argv[i], "--threads")) threads = std::stoul(argv[i + 1]);
-        else if (!std::strcmp(argv[i], "--h")) h = std::stod(argv[i + 1]);
-    }
-    if (h <= 0.0) h = o.width / 20.0;
+    const towgeom::bench::TwillArgs args = towgeom::bench::parseTwillArgs(argc, argv);
+    const towgeom::WeaveOptions& o = args.weave;
+    const std::size_t threads = static_cast<std::size_t>(args.number("--threads", 2));
+    const double h = args.number("--h", o.width / 20.0);
     const towgeom::Textile textile = towgeom::generateWeave(o);
     const fs::path dir = fs::temp_directory_path() / ("towgeom_bench_resolve_" + std::to_string(::getpid()));
     fs::create_directories(dir);

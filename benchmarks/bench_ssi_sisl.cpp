@@ -5,6 +5,8 @@
 //   bench_ssi_sisl [--tows N] [--sections M] [--points P] [--pairs K]
 #include <towgeom/towgeom.hpp>
 
+#include "bench_twill.hpp"
+
 #include <Geom_BSplineSurface.hxx>
 #include <TColStd_Array1OfReal.hxx>
 
@@ -82,19 +84,9 @@ SislResult sislIntersect(SISLSurf* a, SISLSurf* b, double tolerance)
 
 int main(int argc, char** argv)
 {
-    towgeom::WeaveOptions o;
-    o.kind = towgeom::WeaveKind::Twill;
-    o.overlap = 0.08;
-    o.warps = o.wefts = 8;
-    o.sectionsPerYarn = 400;
-    o.pointsPerSection = 64;
-    std::size_t pairs = 8;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        if (!std::strcmp(argv[i], "--tows")) o.warps = o.wefts = std::stoul(argv[i + 1]);
-        else if (!std::strcmp(argv[i], "--sections")) o.sectionsPerYarn = std::stoul(argv[i + 1]);
-        else if (!std::strcmp(argv[i], "--points")) o.pointsPerSection = std::stoul(argv[i + 1]);
-        else if (!std::strcmp(argv[i], "--pairs")) pairs = std::stoul(argv[i + 1]);
-    }
+    const towgeom::bench::TwillArgs args = towgeom::bench::parseTwillArgs(argc, argv);
+    const towgeom::WeaveOptions& o = args.weave;
+    const std::size_t pairs = static_cast<std::size_t>(args.number("--pairs", 8));
     const towgeom::Textile textile = towgeom::generateWeave(o);
     std::vector<towgeom::TowSurface> tows;
     for (const towgeom::TowStack& s : textile.stacks()) tows.push_back(towgeom::TowSurface::fit(s));
