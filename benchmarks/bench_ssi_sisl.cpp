@@ -16,7 +16,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
-#include <cstring>
 #include <string>
 #include <vector>
 
