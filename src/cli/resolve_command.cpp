@@ -11,6 +11,7 @@
 #include "cli/loop_json.hpp"
 #include "cli/tow_input.hpp"
 #include "core/json_writer.hpp"
+#include "core/parallel.hpp"
 #include "export/model_formats.hpp"
 #include "export/stl_format.hpp"
 #include "export/vtk_format.hpp"
@@ -203,18 +204,23 @@ int runResolve(int argc, char** argv, int first)
             throw Error(ErrorCode::WriteFailed, "cannot create output directory", *outDir);
         const auto path = [&](const std::string& file) { return (std::filesystem::path(*outDir) / file).string(); };
         detail::OutputFiles files;
+        // Open every file first (OutputFiles is not thread-safe), then fill them on all threads.
+        std::vector<std::ostream*> stl(tows.size(), nullptr), vtk(tows.size(), nullptr);
         for (std::size_t t = 0; t < tows.size(); ++t) {
+            if (formats.count("stl")) stl[t] = &files.open(path(tows[t].name() + ".stl"));
+            if (formats.count("vtk")) vtk[t] = &files.open(path(tows[t].name() + ".vtk"));
+        }
+        detail::parallelFor(tows.size(), detail::workerCount(options.threads), [&](std::size_t t) {
             const TriangleMesh surface = mesh.towSurface(t);
-            if (formats.count("stl") && !detail::writeStlBinary(files.open(path(tows[t].name() + ".stl")), surface))
+            if (stl[t] && !detail::writeStlBinary(*stl[t], surface))
                 throw Error(ErrorCode::WriteFailed, "CGAL could not write the STL", path(tows[t].name() + ".stl"));
-            if (formats.count("vtk")) {
+            if (vtk[t]) {
                 std::vector<long> towId(surface.triangles.size(), static_cast<long>(t)), nodeId;
                 for (std::size_t n : mesh.towNodes(t)) nodeId.push_back(static_cast<long>(n));
-                detail::writeVtkPolyData(files.open(path(tows[t].name() + ".vtk")), surface,
-                                         "towgeom resolved tow " + tows[t].name(),
+                detail::writeVtkPolyData(*vtk[t], surface, "towgeom resolved tow " + tows[t].name(),
                                          {{"tow_id", towId}, {"region_id", mesh.tows[t].region}}, {{"node_id", nodeId}});
             }
-        }
+        });
         if (formats.count("msh")) detail::writeGmshMsh41(files.open(path("textile.msh")), mesh);
         if (formats.count("inp")) detail::writeAbaqusInp(files.open(path("textile.inp")), mesh);
         const double writeMs = msSince(t0);
