@@ -57,6 +57,10 @@ struct TextileMesh {
     std::size_t boundaryLoopCount(std::size_t tow) const;
 };
 
+/// The mesh of @p triangles over @p nodes as a standalone TriangleMesh: only the nodes used,
+/// renumbered in the order the triangles first use them.
+TriangleMesh surfaceOf(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles);
+
 /// The mesh of @p triangles over @p nodes (only the nodes used, renumbered) with each boundary
 /// loop closed by a fan from its centroid: for the volume of an open tube.
 TriangleMesh closedSurface(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles);

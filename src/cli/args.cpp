@@ -61,4 +61,20 @@ std::optional<double> Args::number(const std::string& name) const
     return x;
 }
 
+double Args::positive(const std::string& name) const
+{
+    const auto x = number(name);
+    if (!x) return 0.0;
+    if (!(*x > 0.0)) throw UsageError("--" + name + " must be a positive number");
+    return *x;
+}
+
+std::size_t Args::threads() const
+{
+    const auto n = number("threads");
+    if (!n) return 0;
+    if (!(*n >= 1.0 && *n <= 1024.0) || std::floor(*n) != *n) throw UsageError("--threads must be a whole number from 1 to 1024");
+    return static_cast<std::size_t>(*n);
+}
+
 }  // namespace towgeom::cli

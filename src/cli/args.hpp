@@ -2,6 +2,7 @@
 // repeatable options and positional arguments.
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -36,6 +37,10 @@ public:
     const std::vector<std::string>& positional() const { return positional_; }
     /// The value of @p name as a number; throws UsageError if it is not one.
     std::optional<double> number(const std::string& name) const;
+    /// The value of @p name as a positive finite number, 0 when absent (meaning "default").
+    double positive(const std::string& name) const;
+    /// --threads N as a whole number from 1 to 1024, 0 when absent (all hardware threads).
+    std::size_t threads() const;
 
 private:
     std::map<std::string, std::vector<std::string>> values_;

@@ -64,22 +64,6 @@ double msSince(std::chrono::steady_clock::time_point t0)
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-std::size_t parseThreads(const Args& args)
-{
-    const auto n = args.number("threads");
-    if (!n) return 0;
-    if (!(*n >= 1.0 && *n <= 1024.0) || std::floor(*n) != *n) throw UsageError("--threads must be a whole number from 1 to 1024");
-    return static_cast<std::size_t>(*n);
-}
-
-double parsePositive(const Args& args, const char* name)
-{
-    const auto x = args.number(name);
-    if (!x) return 0.0;
-    if (!(*x > 0.0) || !std::isfinite(*x)) throw UsageError(std::string("--") + name + " must be a positive number");
-    return *x;
-}
-
 }  // namespace
 
 int runDetect(int argc, char** argv, int first)
@@ -94,10 +78,10 @@ int runDetect(int argc, char** argv, int first)
         }
         if (args.positional().empty()) throw UsageError("no input files; see towgeom detect --help");
         IntersectionOptions options;
-        options.tolerance = parsePositive(args, "tolerance");
-        options.chordalTolerance = parsePositive(args, "chordal");
-        options.threads = parseThreads(args);
-        const double spacing = parsePositive(args, "spacing");
+        options.tolerance = args.positive("tolerance");
+        options.chordalTolerance = args.positive("chordal");
+        options.threads = args.threads();
+        const double spacing = args.positive("spacing");
         const bool quiet = args.has("quiet");
 
         const auto start = std::chrono::steady_clock::now();

@@ -76,14 +76,6 @@ double msSince(std::chrono::steady_clock::time_point t0)
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-double positiveOption(const Args& args, const char* name)
-{
-    const auto x = args.number(name);
-    if (!x) return 0.0;
-    if (!(*x > 0.0) || !std::isfinite(*x)) throw UsageError(std::string("--") + name + " must be a positive number");
-    return *x;
-}
-
 std::set<std::string> parseFormats(const std::optional<std::string>& text)
 {
     std::set<std::string> formats;
@@ -123,18 +115,14 @@ int runResolve(int argc, char** argv, int first)
         if (!outDir) throw UsageError("--out DIR is required");
         ResolveOptions options;
         options.primaryPatterns = args.values("primary");
-        options.mesh.edgeLength = positiveOption(args, "mesh-size");
-        options.mesh.loopSpacing = positiveOption(args, "loop-spacing");
+        options.mesh.edgeLength = args.positive("mesh-size");
+        options.mesh.loopSpacing = args.positive("loop-spacing");
         if (const auto a = args.number("min-angle")) {
             if (!(*a > 0.0 && *a <= 30.0)) throw UsageError("--min-angle must lie in (0, 30] degrees");
             options.mesh.minAngle = *a;
         }
-        options.intersection.tolerance = positiveOption(args, "tolerance");
-        if (const auto n = args.number("threads")) {
-            if (!(*n >= 1.0 && *n <= 1024.0) || std::floor(*n) != *n)
-                throw UsageError("--threads must be a whole number from 1 to 1024");
-            options.threads = static_cast<std::size_t>(*n);
-        }
+        options.intersection.tolerance = args.positive("tolerance");
+        options.threads = args.threads();
         const std::set<std::string> formats = parseFormats(args.value("formats"));
         const bool quiet = args.has("quiet");
         if (!quiet) options.progress = [](const std::string& stage) { std::cerr << "towgeom resolve: " << stage << "\n"; };

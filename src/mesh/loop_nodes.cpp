@@ -22,15 +22,20 @@ double vMinOf(const IntersectionLoop& loop, LoopSide side)
     return (side == LoopSide::A ? loop.surfaceA() : loop.surfaceB()).parameterRange().vMin;
 }
 
+/// The point at fraction @p t of the chord [p, q], in 3D and on both tows (v unwrapped).
+PointOn2 onChord(const LoopPoint& p, const LoopPoint& q, double t)
+{
+    const auto lerp = [t](double a, double b) { return a + t * (b - a); };
+    return {lerp(p.onA.u, q.onA.u), lerp(p.onA.v, q.onA.v), lerp(p.onB.u, q.onB.u), lerp(p.onB.v, q.onB.v),
+            {lerp(p.point.x, q.point.x), lerp(p.point.y, q.point.y), lerp(p.point.z, q.point.z)}, 0.0};
+}
+
 /// The exact loop point between @p p and @p q where tow @p side's v equals @p seam.
 LoopPoint seamPoint(const SurfacePair& sp, const LoopPoint& p, const LoopPoint& q, LoopSide side, double seam,
                     double tolerance)
 {
     const double v0 = sideOf(p, side).v, v1 = sideOf(q, side).v;
-    const double t = (seam - v0) / (v1 - v0);
-    const auto lerp = [t](double a, double b) { return a + t * (b - a); };
-    PointOn2 x{lerp(p.onA.u, q.onA.u), lerp(p.onA.v, q.onA.v), lerp(p.onB.u, q.onB.u), lerp(p.onB.v, q.onB.v),
-               {lerp(p.point.x, q.point.x), lerp(p.point.y, q.point.y), lerp(p.point.z, q.point.z)}, 0.0};
+    PointOn2 x = onChord(p, q, (seam - v0) / (v1 - v0));
     PointCondition c;
     c.kind = side == LoopSide::A ? PointCondition::Kind::FixVA : PointCondition::Kind::FixVB;
     c.value = seam;
@@ -123,9 +128,7 @@ bool splitChord(const IntersectionLoop& loop, SharedLoop& shared, std::size_t a,
         q.onA.v += periodOf(loop, LoopSide::A) * std::round((p.onA.v - q.onA.v) / periodOf(loop, LoopSide::A));
         q.onB.v += periodOf(loop, LoopSide::B) * std::round((p.onB.v - q.onB.v) / periodOf(loop, LoopSide::B));
     }
-    const auto lerp = [t](double x, double y) { return x + t * (y - x); };
-    PointOn2 x{lerp(p.onA.u, q.onA.u), lerp(p.onA.v, q.onA.v), lerp(p.onB.u, q.onB.u), lerp(p.onB.v, q.onB.v),
-               {lerp(p.point.x, q.point.x), lerp(p.point.y, q.point.y), lerp(p.point.z, q.point.z)}, 0.0};
+    PointOn2 x = onChord(p, q, t);
     PointCondition c;
     c.kind = PointCondition::Kind::Plane;
     c.origin = x.point;

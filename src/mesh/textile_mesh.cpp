@@ -103,11 +103,13 @@ TriangleMesh closedSurface(const std::vector<Point3>& nodes, const std::vector<s
     return out;
 }
 
-TriangleMesh TextileMesh::towSurface(std::size_t tow) const
+TriangleMesh surfaceOf(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles)
 {
     std::vector<std::size_t> used;
-    return renumbered(nodes, tows.at(tow).triangles, used);
+    return renumbered(nodes, triangles, used);
 }
+
+TriangleMesh TextileMesh::towSurface(std::size_t tow) const { return surfaceOf(nodes, tows.at(tow).triangles); }
 
 std::vector<std::size_t> TextileMesh::towNodes(std::size_t tow) const
 {

@@ -46,23 +46,6 @@ double smallestAngle(const std::vector<Point3>& nodes, const Triangle& t)
     return best;
 }
 
-/// A triangle soup over the global nodes as a standalone mesh.
-TriangleMesh soup(const std::vector<Point3>& nodes, const std::vector<Triangle>& triangles)
-{
-    TriangleMesh m;
-    std::map<std::size_t, std::size_t> local;
-    for (const Triangle& t : triangles) {
-        Triangle r{};
-        for (int k = 0; k < 3; ++k) {
-            const auto [it, fresh] = local.emplace(t[k], m.vertices.size());
-            if (fresh) m.vertices.push_back(nodes[t[k]]);
-            r[k] = it->second;
-        }
-        m.triangles.push_back(r);
-    }
-    return m;
-}
-
 Triangle reversed(const Triangle& t) { return {t[0], t[2], t[1]}; }
 
 void checkOptions(const ResolveOptions& o)
@@ -244,7 +227,7 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
         // The removed patch (the secondary's surface inside the primary) and the primary's
         // patch (its surface inside the secondary) share the loop: together they bound the
         // overlap of the two tows, facing out of it, and its volume is what the secondary loses.
-        r.volumeRemoved = std::abs(enclosedVolume(soup(N, lens)));
+        r.volumeRemoved = std::abs(enclosedVolume(surfaceOf(N, lens)));
         result.tows[p].primaryAnywhere = true;
         result.tows[q].secondaryAnywhere = true;
         result.mesh.regions.push_back(std::move(r));
