@@ -45,6 +45,9 @@ struct MeshQuality {
     double minAngle = 0.0;                ///< degrees, over all triangles
     std::vector<std::size_t> histogram;  ///< triangles per 5-degree bin of their smallest angle (0-5, 5-10, ... 55-60)
     std::size_t triangles = 0;            ///< distinct triangles counted (shared ones once)
+    /// Triangles left over the size or shape bound (in the mesher's parameter space) because
+    /// meeting it would have split a loop or seam edge in the last meshing round.
+    std::size_t facesOverBounds = 0;
     /// The fraction of triangles whose smallest angle is at least @p degrees.
     double fractionAtLeast(double degrees) const;
 };
@@ -65,8 +68,9 @@ struct ResolveResult {
     /// intersections.loops, with the reason.
     std::vector<std::pair<std::size_t, std::string>> skipped;
     MeshQuality quality;               ///< of the final meshes
-    /// Meshing rounds: where the mesher split a loop or seam edge, the point became a node of
-    /// both sides and the tows concerned were meshed again (1 when nothing was split).
+    /// Meshing rounds: the mesher never splits a loop or seam edge itself; where a triangle needs
+    /// such a split to meet the bounds, the split became a node of both sides and the tows
+    /// concerned were meshed again, at most 6 rounds (1 when no split was needed).
     std::size_t meshRounds = 0;
     ResolveTimings timings;            ///< where the time went
 };

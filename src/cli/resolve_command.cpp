@@ -40,12 +40,17 @@ contact). Writes, all or nothing:
                    "boundary_loops"}], "loops":[...as detect...], "regions":[{"primary",
                    "secondary","triangles","nodes","area","volume_removed"}], "skipped":[...],
                    "node_count",
-                   "mesh_quality":{"min_angle_deg","angle_histogram","fraction_at_least_20"},
+                   "mesh_quality":{"min_angle_deg","angle_histogram","fraction_at_least_20",
+                   "triangles","faces_over_bounds"},
                    "mesh_rounds", "timings_ms":{...}}
 
   role            primary (keeps its surface), secondary (gave volume), both, or none
   volume_removed  the volume of the overlap the secondary tow lost in that region
   angle_histogram triangles per 5-degree bin of their smallest 3D angle (0-5, 5-10, ...)
+  faces_over_bounds triangles left longer than H or below the angle bound because fixing them
+                  would split a loop or seam edge once more (after the last of 6 rounds)
+  mesh_rounds     meshing rounds: splits a triangle needs on a loop or seam edge become exact
+                  nodes of both sides, and those tows are meshed again
 
 Options:
   --out DIR          output directory (created if needed)
@@ -183,6 +188,7 @@ int runResolve(int argc, char** argv, int first)
         json.endArray();
         json.key("fraction_at_least_20").value(result.quality.fractionAtLeast(20.0));
         json.key("triangles").value(result.quality.triangles);
+        json.key("faces_over_bounds").value(result.quality.facesOverBounds);
         json.endObject();
         json.key("mesh_rounds").value(result.meshRounds);
 

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "mesh/loop_nodes.hpp"
@@ -19,10 +20,12 @@ struct MeshSizes {
     double minAngle = 20.0;   ///< degrees
 };
 
-/// One tow's mesh over the global nodes.
+/// One tow's mesh: its triangles over global nodes (loop nodes) and its own new nodes.
 struct ParametricMesh {
-    std::vector<std::array<std::size_t, 3>> triangles;  ///< global nodes, outward orientation
+    std::vector<std::array<std::size_t, 3>> triangles;  ///< outward orientation
     std::vector<UV> centroids;                          ///< (u,v) centroid of each triangle
+    std::vector<UV> newNodes;   ///< (u,v) of the tow's own nodes, numbered from firstNewNode on
+    std::size_t badFaces = 0;   ///< faces left beyond the size or shape bound (next to constraints)
 };
 
 /// The surface's mean lengths along u and around v (the scale of the parameter space).
@@ -32,23 +35,56 @@ struct ParameterScale {
 };
 ParameterScale parameterScale(const TowSurface& surface);
 
-/// Points the mesher had to add on constraints, which the other side must have too.
+/// Splits of constraints that would let the mesh meet its bounds everywhere: nodes that both
+/// tows of a loop, or both sides of the seam, must have before the next meshing.
 struct MeshRequests {
     struct OnLoop {
         std::size_t a = 0, b = 0;  ///< the loop chord's end nodes (global)
         double t = 0.0;            ///< where along it (in this tow's scaled (u,v))
     };
-    std::vector<double> seamU;     ///< u of seam nodes that one side of the seam lacks
+    std::vector<double> seamU;     ///< u of new seam stations (both sides)
     std::vector<OnLoop> onLoop;    ///< nodes on loop chords
     bool empty() const { return seamU.empty() && onLoop.empty(); }
 };
 
-/// Meshes @p surface with @p constraints (pieces of loops, nodes already global) and nodes on the
-/// seam at least at @p seamU. The mesh's other nodes are appended to @p newNodes and numbered from
-/// @p firstNewNode on. If the mesher had to split a constraint, the mesh is not usable: the
-/// points are returned in @p requests (add them as nodes and mesh again).
-ParametricMesh meshTow(const TowSurface& surface, const std::vector<LoopConstraint>& constraints,
-                       const std::vector<double>& seamU, const MeshSizes& sizes, std::vector<Point3>& newNodes,
-                       std::size_t firstNewNode, MeshRequests& requests);
+/// A node added on a loop chord: the chord's end nodes, the new node and its (u,v) on this tow.
+struct ChordSplit {
+    std::size_t a = 0, b = 0, node = 0;
+    UV at;
+};
+
+/// Meshes one tow's surface and keeps the triangulation, so that nodes added on its loops or
+/// seam later are put in and refined around, not meshed again from scratch. The parameter
+/// space's scale and the surface metric are computed once, at construction.
+///
+/// Refinement never splits a constraint (a loop chord split on one tow would be a node the other
+/// tow lacks, a seam edge split on one side a node the other side lacks), so the mesh is always
+/// usable. Where a triangle could not be made good without a split, the split is returned in
+/// MeshRequests; the caller adds it to both sides (split()) for a better mesh.
+class ParametricMesher {
+public:
+    ParametricMesher(const TowSurface& surface, const MeshSizes& sizes);
+    ~ParametricMesher();
+    ParametricMesher(ParametricMesher&&) noexcept;
+    ParametricMesher& operator=(ParametricMesher&&) = delete;
+
+    /// Meshes the surface with @p constraints (pieces of loops, nodes already global) and nodes
+    /// on the seam at least at @p seamU.
+    void mesh(const std::vector<LoopConstraint>& constraints, const std::vector<double>& seamU, MeshRequests& requests);
+
+    /// Adds nodes on loop chords and seam stations (at u), then refines again. False if a chord
+    /// is not in the mesh (then mesh() again with the new constraints).
+    bool split(const std::vector<ChordSplit>& splits, const std::vector<double>& seamU, MeshRequests& requests);
+
+    /// Faces over the size or shape bound after the last mesh() or split().
+    std::size_t badFaces() const;
+
+    /// The mesh, the tow's own nodes numbered from @p firstNewNode on.
+    ParametricMesh result(std::size_t firstNewNode) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace towgeom::detail

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <set>
 
 #include "core/parallel.hpp"
@@ -110,72 +111,89 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
     }
     say("meshing " + std::to_string(tows.size()) + " tows at h = " + std::to_string(h));
     constexpr std::size_t kLocal = std::size_t(1) << 60;  // marks a tow's own new nodes
-    constexpr int kMaxRounds = 12;
+    // Round 1 meshes every tow. Refinement never splits a constraint; where a triangle needs a
+    // split of a loop chord or seam edge to meet the bounds, the split becomes an exact loop node
+    // (both tows) or a seam station (both sides), and the next round puts it into the tows
+    // concerned and refines around it. The last round's requests are not taken: its meshes are
+    // consistent, a few triangles stay over the bounds (reported).
+    constexpr int kMaxRounds = 6;
     std::map<std::size_t, std::size_t> sharedOf;  // loop node -> its shared loop
     for (std::size_t k = 0; k < shared.size(); ++k)
         for (std::size_t n : shared[k].nodes) sharedOf[n] = k;
-    std::vector<detail::ParametricMesh> meshes(tows.size());
-    std::vector<std::vector<Point3>> ownNodes(tows.size());
-    std::vector<std::vector<double>> seamU(tows.size());
-    std::vector<char> dirty(tows.size(), 1);
     const detail::MeshSizes sizes{h, options.mesh.minAngle};
-    int round = 0;
-    for (;; ++round) {
-        if (round == kMaxRounds)
-            throw Error(ErrorCode::Internal, "the meshes did not settle: the mesher keeps splitting loop or seam edges");
-        std::vector<std::vector<detail::LoopConstraint>> constraints(tows.size());
+    std::vector<std::unique_ptr<detail::ParametricMesher>> meshers(tows.size());
+    std::vector<detail::MeshRequests> requests(tows.size());
+    const auto constraintsOf = [&](std::size_t t) {
+        std::vector<detail::LoopConstraint> c;
         for (const detail::SharedLoop& s : shared) {
             const IntersectionLoop& l = loops[s.loop];
-            for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
-                auto pieces = detail::constraintsOn(s, l, side);
-                auto& c = constraints[side == LoopSide::A ? l.towA() : l.towB()];
-                c.insert(c.end(), pieces.begin(), pieces.end());
-            }
+            for (const LoopSide side : {LoopSide::A, LoopSide::B})
+                if ((side == LoopSide::A ? l.towA() : l.towB()) == t) {
+                    auto pieces = detail::constraintsOn(s, l, side);
+                    c.insert(c.end(), pieces.begin(), pieces.end());
+                }
         }
-        std::vector<detail::MeshRequests> requests(tows.size());
-        detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
-            if (!dirty[t]) return;
-            ownNodes[t].clear();
-            meshes[t] = detail::meshTow(tows[t], constraints[t], seamU[t], sizes, ownNodes[t], kLocal, requests[t]);
-        });
-        // Points the mesher put on constraints become nodes on both sides; mesh those tows again.
-        std::fill(dirty.begin(), dirty.end(), 0);
-        // Every point asked for on a chord (by either tow) is added, in order along it, so one
-        // more round usually settles the chord (the mesher often splits one several times).
-        std::map<std::pair<std::size_t, std::size_t>, std::vector<double>> chords;
+        return c;
+    };
+    std::vector<std::vector<double>> seamU(tows.size());
+    detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
+        meshers[t] = std::make_unique<detail::ParametricMesher>(tows[t], sizes);
+        meshers[t]->mesh(constraintsOf(t), {}, requests[t]);
+    });
+    int round = 1;
+    for (; round < kMaxRounds; ++round) {
+        // Every split asked for (by either tow) becomes an exact loop node; seam stations are
+        // copied to both sides by the tow itself.
+        std::vector<std::vector<detail::ChordSplit>> splits(tows.size());
+        std::vector<std::vector<double>> newSeamU(tows.size());
+        std::set<std::pair<std::size_t, std::size_t>> chords;
         for (std::size_t t = 0; t < tows.size(); ++t) {
-            if (!requests[t].seamU.empty()) {
-                seamU[t].insert(seamU[t].end(), requests[t].seamU.begin(), requests[t].seamU.end());
-                dirty[t] = 1;
-            }
+            newSeamU[t] = requests[t].seamU;
+            seamU[t].insert(seamU[t].end(), requests[t].seamU.begin(), requests[t].seamU.end());
             for (const detail::MeshRequests::OnLoop& q : requests[t].onLoop)
-                chords[{q.a, q.b}].push_back(q.t);
+                chords.emplace(std::min(q.a, q.b), std::max(q.a, q.b));
         }
-        for (auto& [chord, ts] : chords) {
-            std::sort(ts.begin(), ts.end());
-            std::size_t a = chord.first;
-            double done = 0.0;  // fraction of the original chord before a
-            for (double t : ts) {
-                if (t - done < 0.02 || t > 0.98) continue;  // as good as a node already there
-                const std::size_t k = sharedOf.at(a);
-                if (!detail::splitChord(loops[shared[k].loop], shared[k], a, chord.second, (t - done) / (1.0 - done), nodes))
-                    break;
-                a = nodes.size() - 1;
-                sharedOf[a] = k;
-                done = t;
-                const IntersectionLoop& l = loops[shared[k].loop];
-                dirty[l.towA()] = dirty[l.towB()] = 1;
+        for (const auto& [a, b] : chords) {
+            const std::size_t k = sharedOf.at(a);
+            detail::SharedLoop& s = shared[k];
+            if (!detail::splitChord(loops[s.loop], s, a, b, 0.5, nodes)) continue;
+            const std::size_t node = nodes.size() - 1;
+            sharedOf[node] = k;
+            const LoopPoint& p = s.points[static_cast<std::size_t>(std::find(s.nodes.begin(), s.nodes.end(), node) - s.nodes.begin())];
+            const IntersectionLoop& l = loops[s.loop];
+            splits[l.towA()].push_back({a, b, node, p.onA});
+            splits[l.towB()].push_back({a, b, node, p.onB});
+        }
+        std::vector<std::size_t> busy;
+        for (std::size_t t = 0; t < tows.size(); ++t)
+            if (!splits[t].empty() || !newSeamU[t].empty()) busy.push_back(t);
+        if (busy.empty()) break;
+        for (std::size_t t : busy) requests[t] = {};
+        detail::parallelFor(busy.size(), threads, [&](std::size_t k) {
+            const std::size_t t = busy[k];
+            if (!meshers[t]->split(splits[t], newSeamU[t], requests[t])) {
+                requests[t] = {};
+                meshers[t]->mesh(constraintsOf(t), seamU[t], requests[t]);
             }
-        }
-        if (std::none_of(dirty.begin(), dirty.end(), [](char d) { return d != 0; })) break;
+        });
     }
-    result.meshRounds = static_cast<std::size_t>(round + 1);
+    result.meshRounds = static_cast<std::size_t>(round);
+    // The final meshes, and the tows' own nodes evaluated on their surfaces.
+    std::vector<detail::ParametricMesh> meshes(tows.size());
+    std::vector<std::vector<Point3>> ownNodes(tows.size());
+    detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
+        meshes[t] = meshers[t]->result(kLocal);
+        meshers[t].reset();
+        ownNodes[t].reserve(meshes[t].newNodes.size());
+        for (const UV& p : meshes[t].newNodes) ownNodes[t].push_back(tows[t].point(p.u, p.v));
+    });
     for (std::size_t t = 0; t < tows.size(); ++t) {
         const std::size_t base = nodes.size();
         nodes.insert(nodes.end(), ownNodes[t].begin(), ownNodes[t].end());
         for (Triangle& tri : meshes[t].triangles)
             for (std::size_t& n : tri)
                 if (n >= kLocal) n = base + (n - kLocal);
+        result.quality.facesOverBounds += meshes[t].badFaces;
     }
     result.timings.mesh = msSince(t0);
 
