@@ -9,6 +9,7 @@
 #include <set>
 
 #include "export/model_formats.hpp"
+#include "export/number_writer.hpp"
 #include "io/output_files.hpp"
 
 namespace towgeom {
@@ -88,19 +89,27 @@ void writeGmshMsh41(std::ostream& out, const TextileMesh& mesh)
     std::size_t used = 0;
     for (const auto& b : blocks) used += b.size();
     out << "$Nodes\n" << entities.size() << ' ' << used << " 1 " << mesh.nodes.size() << '\n';
-    for (std::size_t e = 0; e < entities.size(); ++e) {
-        out << "2 " << e + 1 << " 0 " << blocks[e].size() << '\n';
-        for (std::size_t n : blocks[e]) out << n + 1 << '\n';
-        for (std::size_t n : blocks[e]) out << mesh.nodes[n].x << ' ' << mesh.nodes[n].y << ' ' << mesh.nodes[n].z << '\n';
+    {
+        NumberWriter w(out);
+        for (std::size_t e = 0; e < entities.size(); ++e) {
+            w.text("2 ").number(e + 1).text(" 0 ").number(blocks[e].size()).end();
+            for (std::size_t n : blocks[e]) w.number(n + 1).end();
+            for (std::size_t n : blocks[e])
+                w.number(mesh.nodes[n].x).text(" ").number(mesh.nodes[n].y).text(" ").number(mesh.nodes[n].z).end();
+        }
     }
     out << "$EndNodes\n";
     std::size_t elements = 0;
     for (const Entity& e : entities) elements += e.triangles.size();
     out << "$Elements\n" << entities.size() << ' ' << elements << " 1 " << elements << '\n';
     std::size_t id = 0;
-    for (std::size_t e = 0; e < entities.size(); ++e) {
-        out << "2 " << e + 1 << " 2 " << entities[e].triangles.size() << '\n';
-        for (const auto& t : entities[e].triangles) out << ++id << ' ' << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+    {
+        NumberWriter w(out);
+        for (std::size_t e = 0; e < entities.size(); ++e) {
+            w.text("2 ").number(e + 1).text(" 2 ").number(entities[e].triangles.size()).end();
+            for (const auto& t : entities[e].triangles)
+                w.number(++id).text(" ").number(t[0] + 1).text(" ").number(t[1] + 1).text(" ").number(t[2] + 1).end();
+        }
     }
     out << "$EndElements\n";
 }
@@ -110,17 +119,20 @@ void writeAbaqusInp(std::ostream& out, const TextileMesh& mesh)
     out << std::setprecision(std::numeric_limits<double>::max_digits10);
     out << "*HEADING\ntowgeom: compatible tow surface meshes (" << mesh.tows.size() << " tows, " << mesh.regions.size()
         << " connected regions)\n";
-    out << "*NODE\n";
-    for (std::size_t k = 0; k < mesh.nodes.size(); ++k)
-        out << k + 1 << ", " << mesh.nodes[k].x << ", " << mesh.nodes[k].y << ", " << mesh.nodes[k].z << '\n';
     std::vector<std::vector<std::size_t>> regionElements(mesh.regions.size());
-    std::size_t id = 0;
-    for (const TowMesh& m : mesh.tows) {
-        out << "*ELEMENT, TYPE=S3, ELSET=" << label("TOW_", m.name) << '\n';
-        for (std::size_t k = 0; k < m.triangles.size(); ++k) {
-            const auto& t = m.triangles[k];
-            out << ++id << ", " << t[0] + 1 << ", " << t[1] + 1 << ", " << t[2] + 1 << '\n';
-            if (m.region[k] >= 0) regionElements[static_cast<std::size_t>(m.region[k])].push_back(id);
+    {
+        NumberWriter w(out);
+        w.text("*NODE").end();
+        for (std::size_t k = 0; k < mesh.nodes.size(); ++k)
+            w.number(k + 1).text(", ").number(mesh.nodes[k].x).text(", ").number(mesh.nodes[k].y).text(", ").number(mesh.nodes[k].z).end();
+        std::size_t id = 0;
+        for (const TowMesh& m : mesh.tows) {
+            w.text("*ELEMENT, TYPE=S3, ELSET=").text(label("TOW_", m.name).c_str()).end();
+            for (std::size_t k = 0; k < m.triangles.size(); ++k) {
+                const auto& t = m.triangles[k];
+                w.number(++id).text(", ").number(t[0] + 1).text(", ").number(t[1] + 1).text(", ").number(t[2] + 1).end();
+                if (m.region[k] >= 0) regionElements[static_cast<std::size_t>(m.region[k])].push_back(id);
+            }
         }
     }
     const auto list = [&](const std::vector<std::size_t>& ids, std::size_t offset) {

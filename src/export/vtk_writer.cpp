@@ -2,9 +2,8 @@
 // one every ParaView and VisIt version reads and that FE pre-processors import.
 #include "towgeom/vtk_writer.hpp"
 
-#include <iomanip>
-#include <limits>
 
+#include "export/number_writer.hpp"
 #include "export/vtk_format.hpp"
 #include "io/output_files.hpp"
 
@@ -19,27 +18,25 @@ void writeVtkPolyData(std::ostream& out, const TriangleMesh& mesh, const std::st
     for (char& c : header)
         if (c == '\n' || c == '\r') c = ' ';
     out << "# vtk DataFile Version 3.0\n" << header << "\nASCII\nDATASET POLYDATA\n";
-    out << std::setprecision(std::numeric_limits<double>::max_digits10);
-    out << "POINTS " << mesh.vertices.size() << " double\n";
-    for (const Point3& p : mesh.vertices) out << p.x << ' ' << p.y << ' ' << p.z << '\n';
-    out << "POLYGONS " << mesh.triangles.size() << ' ' << 4 * mesh.triangles.size() << '\n';
-    for (const auto& t : mesh.triangles) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+    NumberWriter w(out);
+    w.text("POINTS ").number(mesh.vertices.size()).text(" double").end();
+    for (const Point3& p : mesh.vertices) w.number(p.x).text(" ").number(p.y).text(" ").number(p.z).end();
+    w.text("POLYGONS ").number(mesh.triangles.size()).text(" ").number(4 * mesh.triangles.size()).end();
+    for (const auto& t : mesh.triangles) w.text("3 ").number(t[0]).text(" ").number(t[1]).text(" ").number(t[2]).end();
     const bool normals = !mesh.normals.empty() && mesh.normals.size() == mesh.vertices.size();
-    if (normals || !pointData.empty()) out << "POINT_DATA " << mesh.vertices.size() << '\n';
+    if (normals || !pointData.empty()) w.text("POINT_DATA ").number(mesh.vertices.size()).end();
     if (normals) {
-        out << "NORMALS normals double\n";
-        for (const Vector3& n : mesh.normals) out << n.x << ' ' << n.y << ' ' << n.z << '\n';
+        w.text("NORMALS normals double").end();
+        for (const Vector3& n : mesh.normals) w.number(n.x).text(" ").number(n.y).text(" ").number(n.z).end();
     }
-    for (const auto& [name, values] : pointData) {
-        out << "SCALARS " << name << " int 1\nLOOKUP_TABLE default\n";
-        for (long v : values) out << v << '\n';
-    }
+    const auto scalars = [&](const std::string& name, const std::vector<long>& values) {
+        w.text("SCALARS ").text(name.c_str()).text(" int 1").end().text("LOOKUP_TABLE default").end();
+        for (long v : values) w.number(v).end();
+    };
+    for (const auto& [name, values] : pointData) scalars(name, values);
     if (!cellData.empty()) {
-        out << "CELL_DATA " << mesh.triangles.size() << '\n';
-        for (const auto& [name, values] : cellData) {
-            out << "SCALARS " << name << " int 1\nLOOKUP_TABLE default\n";
-            for (long v : values) out << v << '\n';
-        }
+        w.text("CELL_DATA ").number(mesh.triangles.size()).end();
+        for (const auto& [name, values] : cellData) scalars(name, values);
     }
 }
 

@@ -24,6 +24,7 @@ namespace {
 /// What a triangulation vertex is: a loop node (its global index), or not (-1).
 struct VertexInfo {
     long node = -1;
+    std::size_t own = 0;  ///< the tow's own node number, set by result()
 };
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -443,38 +444,33 @@ bool ParametricMesher::split(const std::vector<ChordSplit>& splits, const std::v
 
 std::size_t ParametricMesher::badFaces() const { return impl_->badFaces; }
 
-ParametricMesh ParametricMesher::result(std::size_t firstNewNode) const
+ParametricMesh ParametricMesher::result(std::size_t firstNewNode)
 {
-    const Impl& m = *impl_;
+    Impl& m = *impl_;
     const double ly = m.scale.aroundV;
     // Loop nodes are global already; the tow's own nodes are numbered from firstNewNode in
     // order; a node at v = vMax is the node at v = vMin.
     ParametricMesh out;
-    std::map<CDT::Vertex_handle, std::size_t> own;
     std::map<double, std::size_t> seamNode;  // x on the v = vMin side -> node
-    const auto nodeOf = [&](CDT::Vertex_handle v) -> std::size_t {
-        if (v->info().node >= 0) return static_cast<std::size_t>(v->info().node);
-        const auto at = own.find(v);
-        if (at != own.end()) return at->second;
-        throw Error(ErrorCode::Internal, "the two sides of the seam have different nodes", "tow '" + m.surface.name() + "'");
+    const auto nodeOf = [](CDT::Vertex_handle v) {
+        return v->info().node >= 0 ? static_cast<std::size_t>(v->info().node) : v->info().own;
     };
     for (auto v = m.cdt.finite_vertices_begin(); v != m.cdt.finite_vertices_end(); ++v) {
-        if (v->info().node >= 0) {
-            if (v->point().y() == 0.0) seamNode[v->point().x()] = static_cast<std::size_t>(v->info().node);
-            continue;
+        if (v->info().node < 0 && v->point().y() != ly) {
+            v->info().own = firstNewNode + out.newNodes.size();
+            out.newNodes.push_back(m.toUV(v->point()));
         }
-        if (v->point().y() == ly) continue;
-        own[v] = firstNewNode + out.newNodes.size();
-        out.newNodes.push_back(m.toUV(v->point()));
-        if (v->point().y() == 0.0) seamNode[v->point().x()] = own[v];
+        if (v->point().y() == 0.0) seamNode[v->point().x()] = nodeOf(v);
     }
     for (auto v = m.cdt.finite_vertices_begin(); v != m.cdt.finite_vertices_end(); ++v) {
         if (v->info().node >= 0 || v->point().y() != ly) continue;
         const auto at = seamNode.find(v->point().x());
         if (at == seamNode.end())
             throw Error(ErrorCode::Internal, "the two sides of the seam have different nodes", "tow '" + m.surface.name() + "'");
-        own[v] = at->second;
+        v->info().own = at->second;
     }
+    out.triangles.reserve(m.cdt.number_of_faces());
+    out.centroids.reserve(m.cdt.number_of_faces());
     for (auto f = m.cdt.finite_faces_begin(); f != m.cdt.finite_faces_end(); ++f) {
         if (!f->is_in_domain()) continue;
         out.triangles.push_back({nodeOf(f->vertex(0)), nodeOf(f->vertex(1)), nodeOf(f->vertex(2))});

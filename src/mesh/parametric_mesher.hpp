@@ -80,7 +80,7 @@ public:
     std::size_t badFaces() const;
 
     /// The mesh, the tow's own nodes numbered from @p firstNewNode on.
-    ParametricMesh result(std::size_t firstNewNode) const;
+    ParametricMesh result(std::size_t firstNewNode);
 
 private:
     struct Impl;

@@ -1,5 +1,7 @@
 #include "towgeom/textile_mesh.hpp"
 
+#include "mesh/mesh_measures.hpp"
+
 #include <algorithm>
 #include <map>
 #include <cstdint>
@@ -13,24 +15,33 @@ using Edge = std::pair<std::size_t, std::size_t>;
 /// Directed boundary edges (used by one triangle only), as (from, to) in triangle order.
 std::vector<Edge> boundaryEdges(const std::vector<std::array<std::size_t, 3>>& triangles)
 {
-    std::vector<Edge> undirected;
-    undirected.reserve(3 * triangles.size());
-    for (const auto& t : triangles)
-        for (int k = 0; k < 3; ++k) undirected.emplace_back(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
-    std::sort(undirected.begin(), undirected.end());
-    std::vector<Edge> once;
-    for (std::size_t i = 0; i < undirected.size();) {
-        std::size_t j = i + 1;
-        while (j < undirected.size() && undirected[j] == undirected[i]) ++j;
-        if (j == i + 1) once.push_back(undirected[i]);
-        i = j;
-    }
-    std::vector<Edge> out;
+    struct Half {
+        std::uint64_t key;  // the undirected edge (smaller node, larger node), packed
+        std::size_t from, to;
+    };
+    std::vector<Half> halves;
+    halves.reserve(3 * triangles.size());
     for (const auto& t : triangles)
         for (int k = 0; k < 3; ++k) {
-            const Edge e{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])};
-            if (std::binary_search(once.begin(), once.end(), e)) out.emplace_back(t[k], t[(k + 1) % 3]);
+            const std::size_t a = t[k], b = t[(k + 1) % 3];
+            const std::uint64_t lo = std::min(a, b), hi = std::max(a, b);
+            halves.push_back({(hi << 32) | lo, a, b});
         }
+    const bool packed = std::all_of(triangles.begin(), triangles.end(), [](const auto& t) {
+        return std::max({t[0], t[1], t[2]}) < (std::size_t(1) << 32);
+    });
+    const auto less = [&](const Half& x, const Half& y) {
+        if (packed) return x.key < y.key;
+        return std::minmax(x.from, x.to) < std::minmax(y.from, y.to);
+    };
+    std::sort(halves.begin(), halves.end(), less);
+    std::vector<Edge> out;
+    for (std::size_t i = 0; i < halves.size();) {
+        std::size_t j = i + 1;
+        while (j < halves.size() && !less(halves[i], halves[j])) ++j;
+        if (j == i + 1) out.emplace_back(halves[i].from, halves[i].to);
+        i = j;
+    }
     return out;
 }
 
@@ -102,6 +113,38 @@ TriangleMesh closedSurface(const std::vector<Point3>& nodes, const std::vector<s
     }
     return out;
 }
+
+namespace detail {
+
+double signedVolume(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles)
+{
+    if (triangles.empty()) return 0.0;
+    const Point3 o = nodes[triangles.front()[0]];  // near the mesh: less cancellation than the origin
+    double sum = 0.0;
+    for (const auto& t : triangles) sum += dot(nodes[t[0]] - o, cross(nodes[t[1]] - o, nodes[t[2]] - o));
+    return sum / 6.0;
+}
+
+double closedVolume(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles,
+                    std::size_t* loopCount)
+{
+    double volume = signedVolume(nodes, triangles);
+    const std::vector<std::vector<std::size_t>> loops = boundaryLoops(triangles);
+    if (loopCount) *loopCount = loops.size();
+    if (triangles.empty()) return volume;
+    const Point3 o = nodes[triangles.front()[0]];
+    for (const std::vector<std::size_t>& loop : loops) {
+        Point3 c;
+        for (std::size_t n : loop) c = c + nodes[n];
+        c = (1.0 / static_cast<double>(loop.size())) * c;
+        // The cap's fan, the other way round the loop than the boundary edges run.
+        for (std::size_t k = 0; k < loop.size(); ++k)
+            volume += dot(nodes[loop[(k + 1) % loop.size()]] - o, cross(nodes[loop[k]] - o, c - o)) / 6.0;
+    }
+    return volume;
+}
+
+}  // namespace detail
 
 TriangleMesh surfaceOf(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles)
 {

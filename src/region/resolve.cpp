@@ -12,6 +12,7 @@
 
 #include "core/parallel.hpp"
 #include "mesh/loop_nodes.hpp"
+#include "mesh/mesh_measures.hpp"
 #include "mesh/parametric_mesher.hpp"
 #include "region/connected_region.hpp"
 #include "towgeom/error.hpp"
@@ -245,7 +246,7 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
         // The removed patch (the secondary's surface inside the primary) and the primary's
         // patch (its surface inside the secondary) share the loop: together they bound the
         // overlap of the two tows, facing out of it, and its volume is what the secondary loses.
-        r.volumeRemoved = std::abs(enclosedVolume(surfaceOf(N, lens)));
+        r.volumeRemoved = std::abs(detail::signedVolume(N, lens));
         result.tows[p].primaryAnywhere = true;
         result.tows[q].secondaryAnywhere = true;
         result.mesh.regions.push_back(std::move(r));
@@ -267,10 +268,9 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
     // Per-tow figures (in parallel: each volume is a CGAL computation over the tow's mesh).
     detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
         TowResolution& r = result.tows[t];
-        r.volumeBefore = enclosedVolume(closedSurface(N, meshes[t].triangles));
-        r.volumeAfter = enclosedVolume(result.mesh.closedTowSurface(t));
+        r.volumeBefore = detail::closedVolume(N, meshes[t].triangles);
+        r.volumeAfter = detail::closedVolume(N, result.mesh.tows[t].triangles, &r.boundaryLoops);
         for (const Triangle& tri : result.mesh.tows[t].triangles) r.area += triangleArea(N, tri);
-        r.boundaryLoops = result.mesh.boundaryLoopCount(t);
     });
     // Quality over distinct triangles: a secondary's copies of a region's triangles are skipped.
     result.quality.histogram.assign(12, 0);
