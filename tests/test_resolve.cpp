@@ -414,6 +414,27 @@ void checkQuality(const std::vector<TowSurface>& tows, const char* what)
             CHECK(res.quality.fractionAtLeast(20) >= 0.99);
             CHECK(res.quality.minAngle >= 10.0);
             CHECK(res.skipped.empty());
+            // Size in 3D: edges other than loop chords (which are at the loop spacing) at most h,
+            // up to the metric's interpolation; faces the mesher could not make good are counted.
+            std::set<std::size_t> loopNodes;
+            for (const ConnectedRegion& g : res.mesh.regions) loopNodes.insert(g.loopNodes.begin(), g.loopNodes.end());
+            std::size_t edges = 0, over = 0;
+            double longest = 0.0;
+            for (const TowMesh& m : res.mesh.tows)
+                for (const Triangle& t : m.triangles)
+                    for (int k = 0; k < 3; ++k) {
+                        const std::size_t a = t[k], b = t[(k + 1) % 3];
+                        if (loopNodes.count(a) && loopNodes.count(b)) continue;
+                        const double l = distance(res.mesh.nodes[a], res.mesh.nodes[b]);
+                        ++edges;
+                        over += l > 1.05 * h;
+                        longest = std::max(longest, l);
+                    }
+            WARN(what << ": " << over << " of " << edges << " edges longer than 1.05 h, longest " << longest / h
+                      << " h, faces over bounds " << res.quality.facesOverBounds);
+            CHECK(over <= edges / 1000);
+            CHECK(longest <= 1.1 * h);
+            CHECK(res.quality.facesOverBounds <= res.quality.triangles / 1000);
         } catch (const Error& e) {
             FAIL_CHECK("resolveTextile threw: " << e.what());
         }

@@ -7,7 +7,9 @@ namespace towgeom {
 /// How each tow's surface is meshed. Lengths are in the user's units; 0 means "relative to the
 /// tow size" (TowSurface::towSize(), the smallest of the textile's tows).
 struct MeshOptions {
-    /// Target edge length h of the 3D triangles. 0 (default): relativeEdgeLength x tow size.
+    /// Target edge length h of the 3D triangles: every edge is at most about h in 3D (measured
+    /// with the surface's metric), except loop chords, which are at the loop spacing.
+    /// 0 (default): relativeEdgeLength x tow size.
     double edgeLength = 0.0;
     /// edgeLength relative to the tow size when edgeLength is 0. Default 0.1.
     double relativeEdgeLength = 0.1;

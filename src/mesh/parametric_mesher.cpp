@@ -1,88 +1,23 @@
 #include "mesh/parametric_mesher.hpp"
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Delaunay_mesh_face_base_2.h>
-#include <CGAL/Delaunay_mesh_size_criteria_2.h>
-#include <CGAL/Delaunay_mesh_vertex_base_2.h>
-#include <CGAL/Delaunay_mesher_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
-
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
 
 #include "mesh/constraint_keeping_mesher.hpp"
+#include "mesh/mesh_cdt.hpp"
+#include "mesh/starting_points.hpp"
 #include "mesh/surface_metric.hpp"
 #include "towgeom/error.hpp"
 
 namespace towgeom::detail {
 
+using mesh2::CDT;
+using mesh2::Criteria;
+using mesh2::K;
+
 namespace {
-
-/// What a triangulation vertex is: a loop node (its global index), or not (-1).
-struct VertexInfo {
-    long node = -1;
-    std::size_t own = 0;  ///< the tow's own node number, set by result()
-};
-
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vbi = CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, K>;
-using Vb = CGAL::Delaunay_mesh_vertex_base_2<K, Vbi>;
-using Fb = CGAL::Delaunay_mesh_face_base_2<K>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
-
-/// CGAL's size-and-shape criteria with the size measured in 3D: an edge is too long when the
-/// surface metric makes it longer than h. The shape bound stays in the scaled space, where
-/// CGAL's refinement is known to terminate. Loop chords (constrained edges between two loop
-/// nodes) are the loop's own sampling, at the loop spacing: they are exempt from the size
-/// bound, so the mesher does not split them only for being a little over h.
-class Criteria : public CGAL::Delaunay_mesh_size_criteria_2<CDT> {
-public:
-    using Base = CGAL::Delaunay_mesh_size_criteria_2<CDT>;
-    Criteria(double shapeBound, double h, const SurfaceMetric& metric) : Base(shapeBound, h), metric_(&metric) {}
-
-    class Is_bad : public Base::Is_bad {
-    public:
-        Is_bad(double shapeBound, double h, const SurfaceMetric& metric)
-            : Base::Is_bad(shapeBound, h, K()), metric_(&metric)
-        {
-        }
-        using Base::Is_bad::operator();
-        CGAL::Mesh_2::Face_badness operator()(const CDT::Face_handle& f, Quality& q) const
-        {
-            q.second = 0.0;
-            for (int k = 0; k < 3; ++k) {
-                const CDT::Vertex_handle a = f->vertex(CDT::cw(k)), b = f->vertex(CDT::ccw(k));
-                if (f->is_constrained(k) && a->info().node >= 0 && b->info().node >= 0) continue;
-                const K::Point_2 &p = a->point(), &r = b->point();
-                const double l2 = metric_->squaredLength(0.5 * (p.x() + r.x()), 0.5 * (p.y() + r.y()), r.x() - p.x(), r.y() - p.y());
-                q.second = std::max(q.second, l2 / this->squared_size_bound);
-            }
-            if (q.size() > 1.0) {
-                q.first = 1.0;
-                return CGAL::Mesh_2::IMPERATIVELY_BAD;
-            }
-            // The shape, in the scaled space: CGAL's own measure with the size bound off.
-            Quality shape;
-            const CGAL::Mesh_2::Face_badness badness = Base::Is_bad(this->B, 0.0, K())(f, shape);
-            q.first = shape.first;
-            return badness;
-        }
-
-    private:
-        const SurfaceMetric* metric_;
-    };
-    Is_bad is_bad_object() const { return Is_bad(this->bound(), this->size_bound(), *metric_); }
-
-private:
-    const SurfaceMetric* metric_;
-};
-// Delaunay refinement may split constrained edges; such points are reported (MeshRequests) so
-// that both tows of a loop, and both sides of the seam, get them before the final meshing.
-using Mesher = CGAL::Delaunay_mesher_2<CDT, Criteria>;
 
 /// Stations along [0, length] at most @p h apart, plus @p extra ones (kept exactly); uniform
 /// stations closer than h/3 to an extra one are dropped.
@@ -100,135 +35,6 @@ std::vector<double> stations(double length, double h, const std::vector<double>&
     std::sort(s.begin(), s.end());
     s.erase(std::unique(s.begin(), s.end()), s.end());
     return s;
-}
-
-/// Segments and points binned by square cells of size h over [0,lx] x [0,ly], for "is anything
-/// within h of here" queries.
-class NearbyIndex {
-public:
-    NearbyIndex(double lx, double ly, double h)
-        : cell_(h), nx_(static_cast<long>(std::ceil(lx / h)) + 1), ny_(static_cast<long>(std::ceil(ly / h)) + 1),
-          segments_(static_cast<std::size_t>(nx_ * ny_)), points_(static_cast<std::size_t>(nx_ * ny_))
-    {
-    }
-    void addSegment(const K::Point_2& a, const K::Point_2& b)
-    {
-        const auto [i0, j0] = binOf(std::min(a.x(), b.x()), std::min(a.y(), b.y()));
-        const auto [i1, j1] = binOf(std::max(a.x(), b.x()), std::max(a.y(), b.y()));
-        for (long i = i0; i <= i1; ++i)
-            for (long j = j0; j <= j1; ++j) segments_[index(i, j)].emplace_back(a, b);
-    }
-    void addPoint(const K::Point_2& p)
-    {
-        const auto [i, j] = binOf(p.x(), p.y());
-        points_[index(i, j)].push_back(p);
-    }
-    /// True if @p p is at least @p segmentGap from every segment, outside every segment's
-    /// diametral circle (so it does not encroach on a constraint), and at least @p pointGap from
-    /// every point; all gaps at most h.
-    bool clear(const K::Point_2& p, double segmentGap, double pointGap) const
-    {
-        const auto [ci, cj] = binOf(p.x(), p.y());
-        for (long i = std::max(0L, ci - 1); i <= std::min(nx_ - 1, ci + 1); ++i)
-            for (long j = std::max(0L, cj - 1); j <= std::min(ny_ - 1, cj + 1); ++j) {
-                for (const auto& [a, b] : segments_[index(i, j)]) {
-                    if (CGAL::squared_distance(p, K::Segment_2(a, b)) < segmentGap * segmentGap) return false;
-                    // Inside the diametral circle, with a margin: the mesher would split a, b.
-                    if (CGAL::squared_distance(p, CGAL::midpoint(a, b)) < 0.3025 * CGAL::squared_distance(a, b)) return false;
-                }
-                for (const K::Point_2& q : points_[index(i, j)])
-                    if (CGAL::squared_distance(p, q) < pointGap * pointGap) return false;
-            }
-        return true;
-    }
-
-private:
-    std::pair<long, long> binOf(double x, double y) const
-    {
-        return {std::clamp(static_cast<long>(std::floor(x / cell_)), 0L, nx_ - 1),
-                std::clamp(static_cast<long>(std::floor(y / cell_)), 0L, ny_ - 1)};
-    }
-    std::size_t index(long i, long j) const { return static_cast<std::size_t>(i * ny_ + j); }
-    double cell_;
-    long nx_, ny_;
-    std::vector<std::vector<std::pair<K::Point_2, K::Point_2>>> segments_;
-    std::vector<std::vector<K::Point_2>> points_;
-};
-
-/// The apexes, on both sides, of the triangle on the chord [a, b] that is equilateral in 3D (by the
-/// surface metric at the chord's middle), or isosceles with sides @p longest if the chord is
-/// nearly that long already (a triangle on a loop chord that is too big is refined, and its
-/// circumcentre, close to the chord, would make the mesher split the chord).
-std::array<K::Point_2, 2> apexes(const K::Point_2& a, const K::Point_2& b, const SurfaceMetric& metric, double longest)
-{
-    const K::Point_2 m = CGAL::midpoint(a, b);
-    const SurfaceMetric::Form f = metric.at(m.x(), m.y());
-    // The metric's Cholesky factor W (x -> w = W x makes it Euclidean): W = [[p, q], [0, r]].
-    const double p = std::sqrt(f.e), q = f.f / p, r = std::sqrt(std::max(f.g - q * q, 1e-300));
-    const double dx = b.x() - a.x(), dy = b.y() - a.y();
-    const double wx = p * dx + q * dy, wy = r * dy, half = 0.5 * std::hypot(wx, wy);
-    const double side = std::max(std::min(2.0 * half, longest), 1.01 * half);
-    // The unit normal (-wy, wx) / 2 half, back from w to (x, y).
-    const double uy = wx / (2.0 * half) / r, ux = (-wy / (2.0 * half) - q * uy) / p;
-    const auto sideLength = [&](const K::Point_2& x) {
-        const auto edge = [&](const K::Point_2& e) {
-            return std::sqrt(metric.squaredLength(0.5 * (e.x() + x.x()), 0.5 * (e.y() + x.y()), x.x() - e.x(), x.y() - e.y()));
-        };
-        return std::max(edge(a), edge(b));
-    };
-    std::array<K::Point_2, 2> out;
-    for (int k = 0; k < 2; ++k) {
-        const double sign = k == 0 ? 1.0 : -1.0;
-        double height = std::sqrt(side * side - half * half);
-        // The metric at the middle of the chord is not the metric at the middle of the sides:
-        // shorten the height until the longer side is what was asked for (where the surface's
-        // speed changes fast, as at the tips of a lenticular section).
-        for (int iteration = 0; iteration < 4; ++iteration) {
-            const double s = sideLength(m + sign * height * K::Vector_2(ux, uy));
-            if (s <= longest) break;
-            const double want = std::max(longest * longest - half * half, 0.0), have = std::max(s * s - half * half, 1e-300);
-            height *= std::max(std::sqrt(want / have), 0.3);
-        }
-        out[static_cast<std::size_t>(k)] = m + sign * height * K::Vector_2(ux, uy);
-    }
-    return out;
-}
-
-/// Points that make the Delaunay triangles of [0,lx] x [0,ly] already of size h and good shape
-/// before refinement, so that CGAL refines little and seldom has to split a constraint (each
-/// split on a loop is a node both tows need: another meshing round):
-/// - along every loop chord, the apex of the equilateral triangle on it, on both sides;
-/// - a hexagonal lattice of spacing h, kept 0.7 h away from the constraints and 0.6 h from the
-///   apexes.
-/// Points that would encroach on a constrained edge, or crowd one another, are left out.
-void insertStartingPoints(CDT& cdt, const std::vector<std::vector<K::Point_2>>& chords, const SurfaceMetric& metric,
-                          double lx, double ly, double h)
-{
-    NearbyIndex near(lx, ly, h);
-    for (auto e = cdt.constrained_edges_begin(); e != cdt.constrained_edges_end(); ++e)
-        near.addSegment(e->first->vertex(CDT::cw(e->second))->point(), e->first->vertex(CDT::ccw(e->second))->point());
-    const auto inside = [&](const K::Point_2& p, double margin) {
-        return p.x() > margin && p.x() < lx - margin && p.y() > margin && p.y() < ly - margin;
-    };
-    std::vector<K::Point_2> points;
-    for (const std::vector<K::Point_2>& loop : chords)
-        for (std::size_t k = 0; k + 1 < loop.size(); ++k)
-            for (const K::Point_2& p : apexes(loop[k], loop[k + 1], metric, 0.97 * h)) {
-                // Gaps relative to the apex's own triangle: it is as far from its chord as it is.
-                const double height = std::sqrt(CGAL::squared_distance(p, K::Segment_2(loop[k], loop[k + 1])));
-                const double side = std::sqrt(CGAL::squared_distance(p, loop[k]));
-                if (inside(p, 0.5 * height) && near.clear(p, 0.7 * height, 0.7 * side)) {
-                    near.addPoint(p);
-                    points.push_back(p);
-                }
-            }
-    const double dy = h * std::sqrt(3.0) / 2.0;
-    for (long j = 1; static_cast<double>(j) * dy < ly; ++j)
-        for (double x = (j % 2 ? 0.5 * h : h); x < lx; x += h) {
-            const K::Point_2 p(x, static_cast<double>(j) * dy);
-            if (near.clear(p, 0.7 * h, 0.6 * h)) points.push_back(p);
-        }
-    cdt.insert(points.begin(), points.end());
 }
 
 /// After refinement, the faces still bad are those whose circumcentre would encroach on a

@@ -1,0 +1,79 @@
+// The constrained Delaunay triangulation each tow is meshed in (its scaled (u,v) rectangle), and
+// the refinement criteria: size measured in 3D with the surface metric, shape in the plane.
+#pragma once
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Delaunay_mesh_face_base_2.h>
+#include <CGAL/Delaunay_mesh_size_criteria_2.h>
+#include <CGAL/Delaunay_mesh_vertex_base_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <algorithm>
+#include <cstddef>
+
+#include "mesh/surface_metric.hpp"
+
+namespace towgeom::detail::mesh2 {
+
+/// What a triangulation vertex is: a loop node (its global index), or not (-1).
+struct VertexInfo {
+    long node = -1;
+    std::size_t own = 0;  ///< the tow's own node number, set by result()
+};
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Vbi = CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, K>;
+using Vb = CGAL::Delaunay_mesh_vertex_base_2<K, Vbi>;
+using Fb = CGAL::Delaunay_mesh_face_base_2<K>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
+
+/// CGAL's size-and-shape criteria with the size measured in 3D: an edge is too long when the
+/// surface metric makes it longer than h. The shape bound stays in the scaled space, where
+/// CGAL's refinement is known to terminate. Loop chords (constrained edges between two loop
+/// nodes) are the loop's own sampling, at the loop spacing: they are exempt from the size
+/// bound, so the mesher does not split them only for being a little over h.
+class Criteria : public CGAL::Delaunay_mesh_size_criteria_2<CDT> {
+public:
+    using Base = CGAL::Delaunay_mesh_size_criteria_2<CDT>;
+    Criteria(double shapeBound, double h, const SurfaceMetric& metric) : Base(shapeBound, h), metric_(&metric) {}
+
+    class Is_bad : public Base::Is_bad {
+    public:
+        Is_bad(double shapeBound, double h, const SurfaceMetric& metric)
+            : Base::Is_bad(shapeBound, h, K()), metric_(&metric)
+        {
+        }
+        using Base::Is_bad::operator();
+        CGAL::Mesh_2::Face_badness operator()(const CDT::Face_handle& f, Quality& q) const
+        {
+            q.second = 0.0;
+            for (int k = 0; k < 3; ++k) {
+                const CDT::Vertex_handle a = f->vertex(CDT::cw(k)), b = f->vertex(CDT::ccw(k));
+                if (f->is_constrained(k) && a->info().node >= 0 && b->info().node >= 0) continue;
+                const K::Point_2 &p = a->point(), &r = b->point();
+                const double l2 = metric_->squaredLength(0.5 * (p.x() + r.x()), 0.5 * (p.y() + r.y()), r.x() - p.x(), r.y() - p.y());
+                q.second = std::max(q.second, l2 / this->squared_size_bound);
+            }
+            if (q.size() > 1.0) {
+                q.first = 1.0;
+                return CGAL::Mesh_2::IMPERATIVELY_BAD;
+            }
+            // The shape, in the scaled space: CGAL's own measure with the size bound off.
+            Quality shape;
+            const CGAL::Mesh_2::Face_badness badness = Base::Is_bad(this->B, 0.0, K())(f, shape);
+            q.first = shape.first;
+            return badness;
+        }
+
+    private:
+        const SurfaceMetric* metric_;
+    };
+    Is_bad is_bad_object() const { return Is_bad(this->bound(), this->size_bound(), *metric_); }
+
+private:
+    const SurfaceMetric* metric_;
+};
+
+}  // namespace towgeom::detail::mesh2
