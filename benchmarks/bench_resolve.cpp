@@ -55,9 +55,10 @@ int main(int argc, char** argv)
     std::printf("stages (ms): read %.0f, fit %.0f, intersect %.0f, mesh %.0f, regions %.0f, write %.0f, total %.0f\n",
                 number("read"), number("fit"), number("intersect"), number("mesh"), number("regions"), number("write"),
                 number("total"));
-    std::printf("mesh: %.0f nodes, %.0f distinct triangles, smallest angle %.2f deg, %.4f of triangles >= 20 deg, %.0f rounds\n",
+    std::printf("mesh: %.0f nodes, %.0f distinct triangles, smallest angle %.2f deg, %.5f of triangles >= 20 deg, "
+                "%.0f over the bounds, %.0f rounds\n",
                 number("node_count"), number("triangles"), number("min_angle_deg"), number("fraction_at_least_20"),
-                number("mesh_rounds"));
+                number("faces_over_bounds"), number("mesh_rounds"));
     rusage usage{};
     getrusage(RUSAGE_CHILDREN, &usage);
     std::printf("peak memory of towgeom resolve: %.1f MiB\n", usage.ru_maxrss / 1024.0);

@@ -275,6 +275,41 @@ double bridgeDistance(const std::vector<PointOn2>& pts, const TraceTolerances& t
 
 }  // namespace
 
+namespace {
+constexpr std::size_t kRun = 32;
+std::size_t segmentCount(const TracedCurve& c)
+{
+    return c.points.empty() ? 0 : (c.closed ? c.points.size() : c.points.size() - 1);
+}
+}  // namespace
+
+CurveProximity::CurveProximity(const TracedCurve& curve) : curve_(&curve)
+{
+    const auto& q = curve.points;
+    const std::size_t segments = segmentCount(curve);
+    for (std::size_t k = 0; k < segments; k += kRun) {
+        BoundingBox& box = runs_.emplace_back();
+        for (std::size_t j = k; j <= std::min(k + kRun, segments); ++j) box.add(q[j % q.size()].point);
+    }
+}
+
+bool CurveProximity::within(const Point3& p, double d) const
+{
+    const auto& q = curve_->points;
+    if (q.empty()) return false;
+    if (distance(p, q.front().point) <= d) return true;
+    const std::size_t segments = segmentCount(*curve_);
+    for (std::size_t r = 0; r < runs_.size(); ++r) {
+        const BoundingBox& b = runs_[r];
+        if (p.x < b.min.x - d || p.x > b.max.x + d || p.y < b.min.y - d || p.y > b.max.y + d || p.z < b.min.z - d ||
+            p.z > b.max.z + d)
+            continue;
+        for (std::size_t k = r * kRun; k < std::min((r + 1) * kRun, segments); ++k)
+            if (segmentDistance(p, q[k].point, q[(k + 1) % q.size()].point) <= d) return true;
+    }
+    return false;
+}
+
 double distanceToCurve(const TracedCurve& curve, const Point3& p)
 {
     const auto& q = curve.points;

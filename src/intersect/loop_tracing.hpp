@@ -43,4 +43,17 @@ void joinOpenCurves(const SurfacePair& surfaces, std::vector<TracedCurve>& curve
 /// The distance from @p p to the polyline of @p curve (closing segment included when closed).
 double distanceToCurve(const TracedCurve& curve, const Point3& p);
 
+/// "Is this point near a curve already traced?" for many points: the curve's segments in runs
+/// of 32 with a bounding box each, so that a far point costs one box test per run.
+class CurveProximity {
+public:
+    explicit CurveProximity(const TracedCurve& curve);
+    /// True if @p p lies within @p distance of the curve's polyline.
+    bool within(const Point3& p, double distance) const;
+
+private:
+    const TracedCurve* curve_;
+    std::vector<BoundingBox> runs_;
+};
+
 }  // namespace towgeom::detail

@@ -61,9 +61,10 @@ PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::ve
 
     PairResult result;
     std::vector<detail::TracedCurve> curves;
+    std::vector<detail::CurveProximity> proximity;  // of each curve, while the seeds are tried
     const auto near = [&](const Point3& p, double within) {
-        return std::any_of(curves.begin(), curves.end(),
-                           [&](const detail::TracedCurve& t) { return detail::distanceToCurve(t, p) <= within; });
+        return std::any_of(proximity.begin(), proximity.end(),
+                           [&](const detail::CurveProximity& c) { return c.within(p, within); });
     };
     for (const detail::WindowPair& w : c.windows) {
         const std::vector<detail::Seed> seeds = detail::findSeeds(grids[c.a], grids[c.b], w);
@@ -81,6 +82,8 @@ PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::ve
             if (t.points.size() < 2) continue;
             if (near(t.points[t.points.size() / 2].point, 2.0 * tol.chordal + tol.closing)) continue;
             curves.push_back(std::move(t));
+            proximity.clear();  // the curves may have moved
+            for (const detail::TracedCurve& c : curves) proximity.emplace_back(c);
         }
     }
     detail::joinOpenCurves(surfaces, curves, tol);

@@ -64,8 +64,9 @@ private:
 /// The apexes, on both sides, of the triangle on the chord [a, b] that is equilateral in 3D (by the
 /// surface metric at the chord's middle), or isosceles with sides @p longest if the chord is
 /// nearly that long already (a triangle on a loop chord that is too big is refined, and its
-/// circumcentre, close to the chord, would make the mesher split the chord).
-std::array<K::Point_2, 2> apexes(const K::Point_2& a, const K::Point_2& b, const SurfaceMetric& metric, double longest)
+/// circumcentre, close to the chord, would make the mesher split the chord). None for a chord
+/// longer than 1.7 x @p longest.
+std::vector<K::Point_2> apexes(const K::Point_2& a, const K::Point_2& b, const SurfaceMetric& metric, double longest)
 {
     const K::Point_2 m = CGAL::midpoint(a, b);
     const SurfaceMetric::Form f = metric.at(m.x(), m.y());
@@ -73,6 +74,9 @@ std::array<K::Point_2, 2> apexes(const K::Point_2& a, const K::Point_2& b, const
     const double p = std::sqrt(f.e), q = f.f / p, r = std::sqrt(std::max(f.g - q * q, 1e-300));
     const double dx = b.x() - a.x(), dy = b.y() - a.y();
     const double wx = p * dx + q * dy, wy = r * dy, half = 0.5 * std::hypot(wx, wy);
+    // A chord much longer than h (a loop spacing over h) has no good triangle of size h on it:
+    // refinement decides there.
+    if (half == 0.0 || half > 0.85 * longest) return {};
     const double side = std::max(std::min(2.0 * half, longest), 1.01 * half);
     // The unit normal (-wy, wx) / 2 half, back from w to (x, y).
     const double uy = wx / (2.0 * half) / r, ux = (-wy / (2.0 * half) - q * uy) / p;
@@ -82,7 +86,7 @@ std::array<K::Point_2, 2> apexes(const K::Point_2& a, const K::Point_2& b, const
         };
         return std::max(edge(a), edge(b));
     };
-    std::array<K::Point_2, 2> out;
+    std::vector<K::Point_2> out(2);
     for (int k = 0; k < 2; ++k) {
         const double sign = k == 0 ? 1.0 : -1.0;
         double height = std::sqrt(side * side - half * half);
