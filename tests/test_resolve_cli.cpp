@@ -73,6 +73,7 @@ TEST_CASE("towgeom resolve writes compatible meshes, a consistent report and mod
     REQUIRE(r.status == 0);
     CHECK(r.out.empty());
     CHECK(r.err.find("connecting 4 regions") != std::string::npos);  // progress
+    CHECK(r.err.find("mesh quality below") == std::string::npos);
     for (const char* name : {"warp_0", "warp_1", "weft_0", "weft_1"}) {
         CHECK(fs::file_size(out / (std::string(name) + ".stl")) > 84);
         const std::string vtk = testing::slurp(out / (std::string(name) + ".vtk"));
@@ -167,4 +168,20 @@ TEST_CASE("towgeom resolve skips and names an open curve (exit 3), refuses bad u
     for (const char* word : {"--primary", "--mesh-size", "--loop-spacing", "--formats", "report.json", "Exit status", "Example"})
         CHECK(help.out.find(word) != std::string::npos);
     fs::remove_all(dir);
+}
+
+TEST_CASE("towgeom resolve says when the mesh size is too coarse for the tows' curvature", "[cli][resolve]")
+{
+    // h = 0.6 on yarns 0.2 thick: the lenticular sections' tips cannot be meshed well.
+    const fs::path out = scratch("coarse");
+    const Run r = cli("resolve" + twill({"warp_0", "warp_1", "warp_2", "warp_3", "weft_0", "weft_1", "weft_2", "weft_3"}) +
+                      " --out '" + out.string() + "' --mesh-size 0.6");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const std::string report = testing::slurp(out / "report.json");
+    const bool below = jsonNumber(report, "fraction_at_least_20") < 0.99 || jsonNumber(report, "min_angle_deg") < 10.0;
+    CHECK(below);
+    CHECK((r.err.find("note: mesh quality below the usual target") != std::string::npos) == below);
+    CHECK(r.err.find("try a smaller --mesh-size") != std::string::npos);
+    fs::remove_all(out);
 }

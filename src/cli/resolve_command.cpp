@@ -161,6 +161,11 @@ int runResolve(int argc, char** argv, int first)
         json.endArray();
         writeLoopsJson(json, result.intersections, tows, 0.0, options.threads);
         writeFindingsJson(json, result.intersections, tows, "resolve", quiet);
+        if (!quiet && (result.quality.fractionAtLeast(20.0) < 0.99 || result.quality.minAngle < 10.0))
+            std::cerr << "towgeom resolve: note: mesh quality below the usual target (smallest angle "
+                      << result.quality.minAngle << " deg, " << 100.0 * result.quality.fractionAtLeast(20.0)
+                      << " % of triangles at least 20 deg): the mesh size may be too coarse for the tows' curvature; "
+                         "try a smaller --mesh-size\n";
         json.key("regions").beginArray();
         for (const ConnectedRegion& g : mesh.regions) {
             json.beginObject();

@@ -29,9 +29,9 @@ using Fb = CGAL::Delaunay_mesh_face_base_2<K>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
 
-/// CGAL's size-and-shape criteria with the size measured in 3D: an edge is too long when the
-/// surface metric makes it longer than h. The shape bound stays in the scaled space, where
-/// CGAL's refinement is known to terminate. Loop chords (constrained edges between two loop
+/// CGAL's size-and-shape criteria measured in 3D: an edge is too long when the surface metric
+/// makes it longer than h; a face is badly shaped when its smallest angle is below the bound in
+/// the scaled space (CGAL's own test) or, for faces longer than h/8, by the metric's lengths. Loop chords (constrained edges between two loop
 /// nodes) are the loop's own sampling, at the loop spacing: they are exempt from the size
 /// bound, so the mesher does not split them only for being a little over h.
 class Criteria : public CGAL::Delaunay_mesh_size_criteria_2<CDT> {
@@ -49,12 +49,13 @@ public:
         CGAL::Mesh_2::Face_badness operator()(const CDT::Face_handle& f, Quality& q) const
         {
             q.second = 0.0;
+            double l2[3];
             for (int k = 0; k < 3; ++k) {
                 const CDT::Vertex_handle a = f->vertex(CDT::cw(k)), b = f->vertex(CDT::ccw(k));
-                if (f->is_constrained(k) && a->info().node >= 0 && b->info().node >= 0) continue;
                 const K::Point_2 &p = a->point(), &r = b->point();
-                const double l2 = metric_->squaredLength(0.5 * (p.x() + r.x()), 0.5 * (p.y() + r.y()), r.x() - p.x(), r.y() - p.y());
-                q.second = std::max(q.second, l2 / this->squared_size_bound);
+                l2[k] = metric_->squaredLength(0.5 * (p.x() + r.x()), 0.5 * (p.y() + r.y()), r.x() - p.x(), r.y() - p.y());
+                if (f->is_constrained(k) && a->info().node >= 0 && b->info().node >= 0) continue;
+                q.second = std::max(q.second, l2[k] / this->squared_size_bound);
             }
             if (q.size() > 1.0) {
                 q.first = 1.0;
@@ -62,8 +63,20 @@ public:
             }
             // The shape, in the scaled space: CGAL's own measure with the size bound off.
             Quality shape;
-            const CGAL::Mesh_2::Face_badness badness = Base::Is_bad(this->B, 0.0, K())(f, shape);
+            CGAL::Mesh_2::Face_badness badness = Base::Is_bad(this->B, 0.0, K())(f, shape);
             q.first = shape.first;
+            std::sort(l2, l2 + 3);
+            if (64.0 * l2[2] > this->squared_size_bound) {
+                // The same measure with the edges' 3D lengths, so that angles are good in 3D
+                // where the metric is not the plane's: sine^2 of the smallest angle is
+                // (2 area)^2 / (longest^2 second^2), the area by Heron's formula. Only for faces
+                // longer than h/8: an xy refinement may not converge on a metric's shape, and
+                // the plane's bound (CGAL's, which terminates) still holds below.
+                const double area4sq = 2.0 * (l2[0] * l2[1] + l2[1] * l2[2] + l2[2] * l2[0]) - (l2[0] * l2[0] + l2[1] * l2[1] + l2[2] * l2[2]);
+                const double sine2 = std::max(area4sq, 0.0) / 4.0 / (l2[2] * l2[1]);
+                if (sine2 < q.first) q.first = sine2;
+                if (q.first < this->B) badness = CGAL::Mesh_2::BAD;
+            }
             return badness;
         }
 
