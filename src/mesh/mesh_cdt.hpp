@@ -37,7 +37,8 @@ using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predi
 class Criteria : public CGAL::Delaunay_mesh_size_criteria_2<CDT> {
 public:
     using Base = CGAL::Delaunay_mesh_size_criteria_2<CDT>;
-    Criteria(double shapeBound, double h, const SurfaceMetric& metric) : Base(shapeBound, h), metric_(&metric) {}
+    Criteria(double shapeBound, double h, const SurfaceMetric& metric)
+        : CGAL::Delaunay_mesh_criteria_2<CDT>(shapeBound), Base(shapeBound, h), metric_(&metric) {}
 
     class Is_bad : public Base::Is_bad {
     public:
