@@ -172,10 +172,11 @@ TEST_CASE("towgeom resolve skips and names an open curve (exit 3), refuses bad u
 
 TEST_CASE("towgeom resolve says when the mesh size is too coarse for the tows' curvature", "[cli][resolve]")
 {
-    // h = 0.6 on yarns 0.2 thick: the lenticular sections' tips cannot be meshed well.
+    // h = 0.4 on yarns 0.2 thick (about 1.7 around): the lenticular sections' tips cannot be
+    // meshed well.
     const fs::path out = scratch("coarse");
     const Run r = cli("resolve" + twill({"warp_0", "warp_1", "warp_2", "warp_3", "weft_0", "weft_1", "weft_2", "weft_3"}) +
-                      " --out '" + out.string() + "' --mesh-size 0.6");
+                      " --out '" + out.string() + "' --mesh-size 0.4");
     INFO(r.err);
     REQUIRE(r.status == 0);
     const std::string report = testing::slurp(out / "report.json");

@@ -12,6 +12,7 @@
 
 #include <CGAL/Delaunay_mesher_no_edge_refinement_2.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace towgeom::detail {
@@ -35,6 +36,11 @@ public:
             z.locate_type == CDT::OUTSIDE_AFFINE_HULL)
             return CGAL::CONFLICT_AND_ELEMENT_SHOULD_BE_DROPPED;
         if (z.locate_type == CDT::EDGE && z.fh->is_constrained(z.i)) return CGAL::CONFLICT_AND_ELEMENT_SHOULD_BE_DROPPED;
+        // The point must see the face it refines: a point behind a constraint (the face is not
+        // in its conflict zone) leaves the face as it is, so the face is refined again and again
+        // (the same circumcentre rounded differently: clusters of coincident vertices).
+        if (std::find(z.faces.begin(), z.faces.end(), z.parent_face) == z.faces.end())
+            return CGAL::CONFLICT_AND_ELEMENT_SHOULD_BE_DROPPED;
         for (const typename CDT::Edge& e : z.boundary_edges)
             if (e.first->is_constrained(e.second) && !this->is_locally_conform(this->tr, e.first, e.second, p))
                 return CGAL::CONFLICT_AND_ELEMENT_SHOULD_BE_DROPPED;

@@ -134,6 +134,15 @@ bool splitChord(const IntersectionLoop& loop, SharedLoop& shared, std::size_t a,
     c.origin = x.point;
     c.normal = q.point - p.point;
     refineOnIntersection(surfacePairOf(loop.surfaceA(), loop.surfaceB()), x, c, loop.tolerance());
+    // The new node must lie in the chord's period cell on both tows: the chord does not cross a
+    // seam (seam crossings are nodes), but the curve may dip across one between two nodes (a loop
+    // touching a seam); such a node would fall outside the tow's rectangle. Such a chord stays.
+    for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+        const double period = periodOf(loop, side), vMin = vMinOf(loop, side);
+        const double v0 = sideOf(p, side).v, v1 = sideOf(q, side).v, vm = side == LoopSide::A ? x.va : x.vb;
+        const double cell = vMin + period * std::floor((0.5 * (v0 + v1) - vMin) / period);
+        if (vm < cell || vm > cell + period) return false;
+    }
     shared.points.insert(shared.points.begin() + static_cast<std::ptrdiff_t>(i) + 1, LoopPoint{x.point, {x.ua, x.va}, {x.ub, x.vb}});
     shared.nodes.insert(shared.nodes.begin() + static_cast<std::ptrdiff_t>(i) + 1, globalNodes.size());
     globalNodes.push_back(x.point);

@@ -30,7 +30,8 @@ SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, d
 
 /// Adds a node on the chord between loop nodes @p a and @p b (consecutive in @p shared) at
 /// fraction @p t: the exact loop point where the curve crosses the plane normal to the chord
-/// there. Appends it to @p globalNodes. False if a and b are not consecutive.
+/// there. Appends it to @p globalNodes. False if a and b are not consecutive, or if the point
+/// would leave the chord's period cell on either tow (the curve dips across a seam there).
 bool splitChord(const IntersectionLoop& loop, SharedLoop& shared, std::size_t a, std::size_t b, double t,
                 std::vector<Point3>& globalNodes);
 

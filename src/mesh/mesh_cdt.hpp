@@ -43,7 +43,7 @@ public:
     class Is_bad : public Base::Is_bad {
     public:
         Is_bad(double shapeBound, double h, const SurfaceMetric& metric)
-            : Base::Is_bad(shapeBound, h, K()), metric_(&metric)
+            : Base::Is_bad(shapeBound, h, traits()), metric_(&metric)
         {
         }
         using Base::Is_bad::operator();
@@ -64,7 +64,7 @@ public:
             }
             // The shape, in the scaled space: CGAL's own measure with the size bound off.
             Quality shape;
-            CGAL::Mesh_2::Face_badness badness = Base::Is_bad(this->B, 0.0, K())(f, shape);
+            CGAL::Mesh_2::Face_badness badness = Base::Is_bad(this->B, 0.0, traits())(f, shape);
             q.first = shape.first;
             std::sort(l2, l2 + 3);
             if (64.0 * l2[2] > this->squared_size_bound) {
@@ -82,6 +82,12 @@ public:
         }
 
     private:
+        /// CGAL keeps a reference to the traits: one that outlives every Is_bad.
+        static const K& traits()
+        {
+            static const K k;
+            return k;
+        }
         const SurfaceMetric* metric_;
     };
     Is_bad is_bad_object() const { return Is_bad(this->bound(), this->size_bound(), *metric_); }

@@ -1,6 +1,7 @@
-// Volumes of triangle meshes over a global node list, without copying them (the resolve
-// reports' figures). The meshes are closed by construction, so no check is made here; the
-// public enclosedVolume() checks and measures any TriangleMesh with CGAL.
+// Volumes and checks of triangle meshes over a global node list, without copying them (the
+// resolve reports' figures). closedVolume() does not check the mesh: resolve checks every tow
+// with nonManifoldEdges() and its boundary loop count; the public enclosedVolume() checks and
+// measures any TriangleMesh with CGAL.
 #pragma once
 
 #include <array>
@@ -14,6 +15,10 @@ namespace towgeom::detail {
 /// The signed volume bounded by @p triangles (a closed surface; outward orientation gives a
 /// positive volume), by the divergence theorem.
 double signedVolume(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles);
+
+/// The edges of @p triangles that make them no oriented 2-manifold: used by more than two
+/// triangles, twice in the same direction, or joining a node to itself.
+std::size_t nonManifoldEdges(const std::vector<std::array<std::size_t, 3>>& triangles);
 
 /// The signed volume of @p triangles with every boundary loop closed by a fan around its
 /// centroid (as closedSurface() does); @p loopCount, if given, gets the number of loops.

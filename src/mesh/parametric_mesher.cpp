@@ -70,6 +70,9 @@ std::size_t requestSplits(const CDT& cdt, const Criteria& criteria, double ly, d
         Criteria::Quality q;
         if (!f->is_in_domain() || isBad(f, q) == CGAL::Mesh_2::NOT_BAD) continue;
         ++bad;
+        // An angle between two constraints comes from the input (a loop meeting the seam at a
+        // shallow angle, a sharp turn of a loop): splitting would not help.
+        if (int(f->is_constrained(0)) + int(f->is_constrained(1)) + int(f->is_constrained(2)) >= 2) continue;
         const K::Point_2 c = CGAL::circumcenter(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
         CDT::Locate_type lt;
         int li = 0;
@@ -139,6 +142,12 @@ struct ParametricMesher::Impl {
     CDT::Vertex_handle insertLoopNode(const K::Point_2& p, std::size_t node)
     {
         const CDT::Vertex_handle v = cdt.insert(p);
+        if (v->info().node >= 0 && static_cast<std::size_t>(v->info().node) != node)
+            throw Error(ErrorCode::Internal,
+                        "two intersection-loop nodes (" + std::to_string(v->info().node) + ", " + std::to_string(node) +
+                            ") fall on the same point of the surface: intersection loops meet there (three tows "
+                            "interpenetrate at one point, or a loop touches itself), which resolve does not handle",
+                        "tow '" + surface.name() + "'");
         v->info().node = static_cast<long>(node);
         loopVertex.emplace(node, v);
         return v;
@@ -255,25 +264,40 @@ ParametricMesh ParametricMesher::result(std::size_t firstNewNode)
     Impl& m = *impl_;
     const double ly = m.scale.aroundV;
     // Loop nodes are global already; the tow's own nodes are numbered from firstNewNode in
-    // order; a node at v = vMax is the node at v = vMin.
+    // order. The seam's two sides are one row of nodes: a vertex at v = vMax is the vertex at
+    // v = vMin (the same loop node if either is one: a loop may touch the seam at a node).
     ParametricMesh out;
-    std::map<double, std::size_t> seamNode;  // x on the v = vMin side -> node
     const auto nodeOf = [](CDT::Vertex_handle v) {
         return v->info().node >= 0 ? static_cast<std::size_t>(v->info().node) : v->info().own;
     };
+    const auto seamError = [&](double x) {
+        return Error(ErrorCode::Internal, "the two sides of the seam have different nodes at u = " + std::to_string(m.toUV({x, 0.0}).u),
+                     "tow '" + m.surface.name() + "'");
+    };
+    std::map<double, std::pair<CDT::Vertex_handle, CDT::Vertex_handle>> seam;  // x -> (v = vMin, v = vMax)
     for (auto v = m.cdt.finite_vertices_begin(); v != m.cdt.finite_vertices_end(); ++v) {
-        if (v->info().node < 0 && v->point().y() != ly) {
+        if (v->point().y() == 0.0) {
+            seam[v->point().x()].first = v;
+        } else if (v->point().y() == ly) {
+            seam[v->point().x()].second = v;
+        } else if (v->info().node < 0) {
             v->info().own = firstNewNode + out.newNodes.size();
             out.newNodes.push_back(m.toUV(v->point()));
         }
-        if (v->point().y() == 0.0) seamNode[v->point().x()] = nodeOf(v);
     }
-    for (auto v = m.cdt.finite_vertices_begin(); v != m.cdt.finite_vertices_end(); ++v) {
-        if (v->info().node >= 0 || v->point().y() != ly) continue;
-        const auto at = seamNode.find(v->point().x());
-        if (at == seamNode.end())
-            throw Error(ErrorCode::Internal, "the two sides of the seam have different nodes", "tow '" + m.surface.name() + "'");
-        v->info().own = at->second;
+    for (auto& [x, pair] : seam) {
+        const auto [bottom, top] = pair;
+        if (bottom == CDT::Vertex_handle() || top == CDT::Vertex_handle()) throw seamError(x);
+        const long a = bottom->info().node, b = top->info().node;
+        if (a >= 0 && b >= 0 && a != b) throw seamError(x);
+        std::size_t node = 0;
+        if (a >= 0 || b >= 0) {
+            node = static_cast<std::size_t>(std::max(a, b));
+        } else {
+            node = firstNewNode + out.newNodes.size();
+            out.newNodes.push_back(m.toUV(bottom->point()));
+        }
+        bottom->info().own = top->info().own = node;
     }
     out.triangles.reserve(m.cdt.number_of_faces());
     out.centroids.reserve(m.cdt.number_of_faces());

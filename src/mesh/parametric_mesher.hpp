@@ -58,9 +58,10 @@ struct ChordSplit {
 /// space's scale and the surface metric are computed once, at construction.
 ///
 /// Refinement never splits a constraint (a loop chord split on one tow would be a node the other
-/// tow lacks, a seam edge split on one side a node the other side lacks), so the mesh is always
-/// usable. Where a triangle could not be made good without a split, the split is returned in
-/// MeshRequests; the caller adds it to both sides (split()) for a better mesh.
+/// tow lacks, a seam edge split on one side a node the other side lacks), so the mesh after any
+/// round is consistent with the other tows'. Where a triangle could not be made good without a
+/// split, the split is returned in MeshRequests; the caller adds it to both sides (split()) for
+/// a better mesh. result() checks that the seam's two sides have the same nodes.
 class ParametricMesher {
 public:
     ParametricMesher(const TowSurface& surface, const MeshSizes& sizes);

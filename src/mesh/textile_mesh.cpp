@@ -12,8 +12,15 @@ namespace {
 
 using Edge = std::pair<std::size_t, std::size_t>;
 
-/// Directed boundary edges (used by one triangle only), as (from, to) in triangle order.
-std::vector<Edge> boundaryEdges(const std::vector<std::array<std::size_t, 3>>& triangles)
+/// How a triangle soup uses its edges: the directed boundary edges (used by one triangle only,
+/// as (from, to) in triangle order), and the edges that make it no oriented 2-manifold (used by
+/// more than two triangles, or twice the same way round).
+struct EdgeUse {
+    std::vector<Edge> boundary;
+    std::size_t bad = 0;
+};
+
+EdgeUse edgeUse(const std::vector<std::array<std::size_t, 3>>& triangles)
 {
     struct Half {
         std::uint64_t key;  // the undirected edge (smaller node, larger node), packed
@@ -35,11 +42,12 @@ std::vector<Edge> boundaryEdges(const std::vector<std::array<std::size_t, 3>>& t
         return std::minmax(x.from, x.to) < std::minmax(y.from, y.to);
     };
     std::sort(halves.begin(), halves.end(), less);
-    std::vector<Edge> out;
+    EdgeUse out;
     for (std::size_t i = 0; i < halves.size();) {
         std::size_t j = i + 1;
         while (j < halves.size() && !less(halves[i], halves[j])) ++j;
-        if (j == i + 1) out.emplace_back(halves[i].from, halves[i].to);
+        if (j == i + 1) out.boundary.emplace_back(halves[i].from, halves[i].to);
+        if (j > i + 2 || (j == i + 2 && halves[i].from == halves[i + 1].from) || halves[i].from == halves[i].to) ++out.bad;
         i = j;
     }
     return out;
@@ -49,7 +57,7 @@ std::vector<Edge> boundaryEdges(const std::vector<std::array<std::size_t, 3>>& t
 std::vector<std::vector<std::size_t>> boundaryLoops(const std::vector<std::array<std::size_t, 3>>& triangles)
 {
     std::multimap<std::size_t, std::size_t> next;
-    for (const Edge& e : boundaryEdges(triangles)) next.emplace(e.first, e.second);
+    for (const Edge& e : edgeUse(triangles).boundary) next.emplace(e.first, e.second);
     std::vector<std::vector<std::size_t>> loops;
     while (!next.empty()) {
         std::vector<std::size_t> loop;
@@ -124,6 +132,8 @@ double signedVolume(const std::vector<Point3>& nodes, const std::vector<std::arr
     for (const auto& t : triangles) sum += dot(nodes[t[0]] - o, cross(nodes[t[1]] - o, nodes[t[2]] - o));
     return sum / 6.0;
 }
+
+std::size_t nonManifoldEdges(const std::vector<std::array<std::size_t, 3>>& triangles) { return edgeUse(triangles).bad; }
 
 double closedVolume(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles,
                     std::size_t* loopCount)

@@ -81,6 +81,20 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
     };
     ResolveResult result;
     const std::size_t threads = detail::workerCount(options.threads);
+    double size = 1e300;
+    std::string smallest;
+    for (const TowSurface& t : tows)
+        if (t.towSize() < size) {
+            size = t.towSize();
+            smallest = t.name();
+        }
+    const double h = options.mesh.edgeLength > 0.0 ? options.mesh.edgeLength : options.mesh.relativeEdgeLength * size;
+    // At least 4 edges around every tow: a coarser mesh cannot be a tube.
+    const double around = 3.14159265358979323846 * size;
+    if (!tows.empty() && h > around / 4.0)
+        throw Error(ErrorCode::InvalidArgument,
+                    "mesh size " + std::to_string(h) + " is too coarse: tow '" + smallest + "' is " + std::to_string(around) +
+                        " around, and needs at least 4 edges around (mesh size at most " + std::to_string(around / 4.0) + ")");
 
     // 1. Intersection loops.
     Clock::time_point t0 = Clock::now();
@@ -93,9 +107,6 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
 
     // 2. Shared loop nodes and each tow's constraints.
     t0 = Clock::now();
-    double size = 1e300;
-    for (const TowSurface& t : tows) size = std::min(size, t.towSize());
-    const double h = options.mesh.edgeLength > 0.0 ? options.mesh.edgeLength : options.mesh.relativeEdgeLength * size;
     const double spacing = options.mesh.loopSpacing > 0.0 ? options.mesh.loopSpacing : h;
     std::vector<Point3> nodes;
     std::vector<detail::SharedLoop> shared;
@@ -265,13 +276,23 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
             m.region.push_back(id);
         }
     }
-    // Per-tow figures (in parallel: each volume is a CGAL computation over the tow's mesh).
+    // Per-tow figures, in parallel. Every tow must still be a tube: a closed oriented surface
+    // but for its two ends; anything else is a defect, never written out.
+    std::vector<std::size_t> badEdges(tows.size(), 0);
     detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
         TowResolution& r = result.tows[t];
         r.volumeBefore = detail::closedVolume(N, meshes[t].triangles);
         r.volumeAfter = detail::closedVolume(N, result.mesh.tows[t].triangles, &r.boundaryLoops);
+        badEdges[t] = detail::nonManifoldEdges(result.mesh.tows[t].triangles);
         for (const Triangle& tri : result.mesh.tows[t].triangles) r.area += triangleArea(N, tri);
     });
+    for (std::size_t t = 0; t < tows.size(); ++t)
+        if (badEdges[t] != 0 || result.tows[t].boundaryLoops != 2)
+            throw Error(ErrorCode::Internal,
+                        "the mesh is not a tube open at its two ends (" + std::to_string(badEdges[t]) +
+                            " edges not shared by exactly two triangles the opposite way round, " +
+                            std::to_string(result.tows[t].boundaryLoops) + " boundary loops)",
+                        "tow '" + tows[t].name() + "'");
     // Quality over distinct triangles: a secondary's copies of a region's triangles are skipped.
     result.quality.histogram.assign(12, 0);
     result.quality.minAngle = 180.0;
