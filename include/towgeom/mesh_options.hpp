@@ -9,7 +9,8 @@ namespace towgeom {
 struct MeshOptions {
     /// Target edge length h of the 3D triangles: every edge is at most about h in 3D (measured
     /// with the surface's metric), except loop chords, which are at the loop spacing.
-    /// 0 (default): relativeEdgeLength x tow size.
+    /// 0 (default): relativeEdgeLength x tow size. At most a quarter of the smallest tow's
+    /// circumference (pi x tow size).
     double edgeLength = 0.0;
     /// edgeLength relative to the tow size when edgeLength is 0. Default 0.1.
     double relativeEdgeLength = 0.1;

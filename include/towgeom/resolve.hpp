@@ -83,7 +83,9 @@ struct ResolveResult {
 /// their place (ConnectedRegion), so the two tows share nodes and triangles there.
 ///
 /// Open loops and loops winding around a tow are not resolved (see ResolveResult::skipped).
-/// @throws towgeom::Error (InvalidArgument) for bad options, (Internal) if a kernel fails.
+/// @throws towgeom::Error (InvalidArgument) for bad options, including a mesh size over a
+/// quarter of the smallest tow's circumference; (Internal) if a kernel fails, if loops of
+/// different tow pairs meet on a tow, or if a resolved tow is not a tube open at its two ends.
 ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveOptions& options = {});
 
 }  // namespace towgeom

@@ -57,7 +57,8 @@ Options:
   --primary GLOB     tows whose names match are primary over tows that do not (repeatable;
                      shell patterns, e.g. --primary 'warp_*'); default: of two tows, the one
                      given first on the command line
-  --mesh-size H      target 3D edge length (default: 0.1 x the smallest tow size)
+  --mesh-size H      target 3D edge length (default: 0.1 x the smallest tow size; at most a
+                     quarter of the smallest tow's circumference)
   --min-angle DEG    smallest triangle angle the mesher aims for, at most 30 (default 20)
   --loop-spacing S   node spacing along intersection loops (default: the mesh size)
   --formats LIST     comma-separated from stl,vtk,msh,inp (default stl,vtk)
