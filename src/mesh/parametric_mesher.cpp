@@ -61,7 +61,7 @@ std::size_t requestSplits(const CDT& cdt, const Criteria& criteria, double ly, d
         } else if (a->info().node >= 0 && b->info().node >= 0) {
             const long lo = std::min(a->info().node, b->info().node), hi = std::max(a->info().node, b->info().node);
             if (chords.emplace(lo, hi).second)
-                requests.onLoop.push_back({static_cast<std::size_t>(lo), static_cast<std::size_t>(hi), 0.5});
+                requests.onLoop.push_back({static_cast<std::size_t>(lo), static_cast<std::size_t>(hi)});
         }
     };
     std::size_t bad = 0;

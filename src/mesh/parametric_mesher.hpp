@@ -39,8 +39,7 @@ ParameterScale parameterScale(const TowSurface& surface);
 /// tows of a loop, or both sides of the seam, must have before the next meshing.
 struct MeshRequests {
     struct OnLoop {
-        std::size_t a = 0, b = 0;  ///< the loop chord's end nodes (global)
-        double t = 0.0;            ///< where along it (in this tow's scaled (u,v))
+        std::size_t a = 0, b = 0;  ///< the loop chord's end nodes (global): split in the middle
     };
     std::vector<double> seamU;     ///< u of new seam stations (both sides)
     std::vector<OnLoop> onLoop;    ///< nodes on loop chords
