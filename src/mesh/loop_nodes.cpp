@@ -10,6 +10,8 @@ namespace towgeom::detail {
 
 namespace {
 
+constexpr double kSeamSnap = 1e-9;  // of the period
+
 UV sideOf(const LoopPoint& p, LoopSide side) { return side == LoopSide::A ? p.onA : p.onB; }
 
 double periodOf(const IntersectionLoop& loop, LoopSide side)
@@ -160,8 +162,14 @@ std::vector<UV> loopPolygon(const SharedLoop& shared, LoopSide side)
 std::vector<LoopConstraint> constraintsOn(const SharedLoop& shared, const IntersectionLoop& loop, LoopSide side)
 {
     const double period = periodOf(loop, side), vMin = vMinOf(loop, side);
-    const std::vector<UV> uv = loopPolygon(shared, side);
+    std::vector<UV> uv = loopPolygon(shared, side);
     const std::size_t n = uv.size();
+    // A node a hair's breadth from the seam (a loop touching it) is put on it: it would otherwise
+    // make a sliver with the seam's edge. On the seam it is a node of both sides.
+    for (UV& p : uv) {
+        const double r = (p.v - vMin) / period;
+        if (std::abs(r - std::round(r)) < kSeamSnap) p.v = vMin + period * std::round(r);
+    }
     const auto onSeam = [&](double v) {
         const double r = (v - vMin) / period;
         return r == std::round(r);

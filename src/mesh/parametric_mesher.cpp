@@ -239,11 +239,16 @@ bool ParametricMesher::split(const std::vector<ChordSplit>& splits, const std::v
                 }
         if (va == CDT::Vertex_handle()) return false;
         // The new node's v, by whole periods, next to the chord's (a chord may end on the seam).
+        // A node a hair's breadth from the seam goes on it, on both sides (as constraintsOn()).
         K::Point_2 p = m.toXY(s.at);
         const double middle = 0.5 * (va->point().y() + vb->point().y());
-        p = K::Point_2(p.x(), p.y() + period * std::round((middle - p.y()) / period));
+        double y = p.y() + period * std::round((middle - p.y()) / period);
+        if (std::abs(y) < 1e-9 * period) y = 0.0;
+        if (std::abs(y - m.scale.aroundV) < 1e-9 * period) y = m.scale.aroundV;
+        p = K::Point_2(p.x(), y);
         m.cdt.remove_constrained_edge(f, i);
         const CDT::Vertex_handle vm = m.insertLoopNode(p, s.node);
+        if (y == 0.0 || y == m.scale.aroundV) m.cdt.insert(K::Point_2(p.x(), y == 0.0 ? m.scale.aroundV : 0.0));
         m.cdt.insert_constraint(va, vm);
         m.cdt.insert_constraint(vm, vb);
     }
