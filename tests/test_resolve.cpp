@@ -298,15 +298,23 @@ TEST_CASE("resolved 4x4 2/2 twill: no crossing triangles, shared regions, tubes,
                    << res.timings.regions << " ms)");
 }
 
+namespace {
+
+/// Crossing tubes sampled two ways with start angles that put each tube's seam through the loop
+/// (pi/2, -pi/2), and a control without a seam through it (0, 0).
+struct SeamTubeCase {
+    std::size_t sections, points;
+    double startX, startY;
+};
+const SeamTubeCase kSeamTubeCases[] = {{21, 96, kPi / 2, -kPi / 2}, {41, 48, kPi / 2, -kPi / 2}, {21, 96, 0.0, 0.0}};
+
+}  // namespace
+
 TEST_CASE("resolved tubes whose loop crosses both seams: no crossing triangles, shared region, tubes", "[resolve][seam]")
 {
     // Start angles pi/2 and -pi/2 put the seam of each tube through the loop; 0 and 0 (no seam
     // through it) is the control.
-    struct Case {
-        std::size_t sections, points;
-        double startX, startY;
-    };
-    for (const Case k : {Case{21, 96, kPi / 2, -kPi / 2}, Case{41, 48, kPi / 2, -kPi / 2}, Case{21, 96, 0.0, 0.0}}) {
+    for (const SeamTubeCase k : kSeamTubeCases) {
         INFO(k.sections << " sections x " << k.points << " points, start angles " << k.startX << ", " << k.startY);
         const auto t0 = std::chrono::steady_clock::now();
         const std::vector<TowStack> stacks = seamTubes(k.sections, k.points, k.startX, k.startY);
@@ -353,11 +361,7 @@ TEST_CASE("the secondary loses the overlap volume of the tubes (CGAL corefinemen
     SECTION("crossing tubes")
     {
         const double exact = analyticOverlapVolume();
-        struct Case {
-            std::size_t sections, points;
-            double startX, startY;
-        };
-        for (const Case k : {Case{21, 96, kPi / 2, -kPi / 2}, Case{41, 48, kPi / 2, -kPi / 2}, Case{21, 96, 0.0, 0.0}}) {
+        for (const SeamTubeCase k : kSeamTubeCases) {
             INFO(k.sections << " sections x " << k.points << " points, start angles " << k.startX << ", " << k.startY);
             const std::vector<TowStack> stacks = seamTubes(k.sections, k.points, k.startX, k.startY);
             ResolveOptions o;

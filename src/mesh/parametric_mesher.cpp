@@ -92,7 +92,11 @@ std::size_t requestSplits(const CDT& cdt, const Criteria& criteria, double ly, d
     return bad;
 }
 
-}  // namespace
+/// The surface's mean lengths along u and around v (the scale of the parameter space).
+struct ParameterScale {
+    double alongU = 1.0;
+    double aroundV = 1.0;
+};
 
 ParameterScale parameterScale(const TowSurface& surface)
 {
@@ -112,6 +116,9 @@ ParameterScale parameterScale(const TowSurface& surface)
     scale.aroundV = 3.14159265358979323846 * surface.towSize();
     return scale;
 }
+
+}  // namespace
+
 
 struct ParametricMesher::Impl {
     const TowSurface& surface;

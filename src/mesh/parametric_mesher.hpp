@@ -28,13 +28,6 @@ struct ParametricMesh {
     std::size_t badFaces = 0;   ///< faces left beyond the size or shape bound (next to constraints)
 };
 
-/// The surface's mean lengths along u and around v (the scale of the parameter space).
-struct ParameterScale {
-    double alongU = 1.0;
-    double aroundV = 1.0;
-};
-ParameterScale parameterScale(const TowSurface& surface);
-
 /// Splits of constraints that would let the mesh meet its bounds everywhere: nodes that both
 /// tows of a loop, or both sides of the seam, must have before the next meshing.
 struct MeshRequests {
