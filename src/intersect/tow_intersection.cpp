@@ -14,6 +14,8 @@
 #include "intersect/loop_tracing.hpp"
 #include "intersect/seed_search.hpp"
 #include "intersect/surface_walk.hpp"
+#include "surface/frame.hpp"
+#include "surface/tow_surface_impl.hpp"
 #include "towgeom/error.hpp"
 
 namespace towgeom {
@@ -112,9 +114,11 @@ std::size_t IntersectionReport::openCount() const
     return static_cast<std::size_t>(std::count_if(loops.begin(), loops.end(), [](const IntersectionLoop& l) { return !l.closed(); }));
 }
 
-IntersectionReport intersectTows(const std::vector<TowSurface>& tows, const IntersectionOptions& options)
+namespace {
+
+/// intersectTows() on tows already in the normalised frame (options in its units too).
+IntersectionReport intersectInFrame(const std::vector<TowSurface>& tows, const IntersectionOptions& options)
 {
-    checkOptions(options);
     IntersectionReport report;
     report.towPairs = tows.size() * (tows.size() - (tows.empty() ? 0 : 1)) / 2;
     const std::size_t threads = detail::workerCount(options.threads);
@@ -166,6 +170,40 @@ IntersectionReport intersectTows(const std::vector<TowSurface>& tows, const Inte
         for (PairFinding& f : r.findings) report.findings.push_back(std::move(f));
     }
     report.timings.exact = msSince(t1);
+    return report;
+}
+
+/// The frame the textile is intersected in: its box centred at the origin, its smallest tow
+/// about unit size.
+detail::Frame textileFrame(const std::vector<TowSurface>& tows)
+{
+    BoundingBox box;
+    double smallest = 0.0;
+    for (const TowSurface& t : tows) {
+        const BoundingBox b = t.boundingBox();
+        box.add(b.min);
+        box.add(b.max);
+        smallest = smallest > 0.0 ? std::min(smallest, t.towSize()) : t.towSize();
+    }
+    return detail::Frame::around(box, smallest);
+}
+
+}  // namespace
+
+IntersectionReport intersectTows(const std::vector<TowSurface>& tows, const IntersectionOptions& options)
+{
+    checkOptions(options);
+    // Computed in a frame where the tows are about unit size, so that the kernel's absolute
+    // tolerances mean the same at every scale; loops go back to the user's tows and units.
+    const detail::Frame frame = textileFrame(tows);
+    std::vector<TowSurface> moved;
+    moved.reserve(tows.size());
+    for (const TowSurface& t : tows) moved.push_back(detail::inFrame(t, frame));
+    IntersectionOptions inFrame = options;
+    inFrame.tolerance = frame.lengthToFrame(options.tolerance);
+    inFrame.chordalTolerance = frame.lengthToFrame(options.chordalTolerance);
+    IntersectionReport report = intersectInFrame(moved, inFrame);
+    for (IntersectionLoop& l : report.loops) l = detail::loopToUser(l, tows[l.towA()], tows[l.towB()], frame);
     return report;
 }
 
