@@ -17,7 +17,7 @@ enum class ErrorCode {
     NonNumeric,               ///< A token that should be a number is not one.
     WrongCoordinateCount,     ///< A point line does not hold exactly three coordinates.
     NonFinite,                ///< A coordinate is NaN or infinite.
-    OutOfRange,               ///< A coordinate's magnitude exceeds 1e150.
+    OutOfRange,               ///< A coordinate's magnitude exceeds 1e100, or a section is less than 1e-100 across.
     BadName,                  ///< A `tow NAME` line is malformed or the name is unsafe as a file name.
     UnequalSectionSize,       ///< Sections do not all have the same number of points.
     TooFewSections,           ///< Fewer than 4 sections.

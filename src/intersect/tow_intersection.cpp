@@ -14,7 +14,7 @@
 #include "intersect/loop_tracing.hpp"
 #include "intersect/seed_search.hpp"
 #include "intersect/surface_walk.hpp"
-#include "surface/frame.hpp"
+#include "intersect/textile_frame.hpp"
 #include "surface/tow_surface_impl.hpp"
 #include "towgeom/error.hpp"
 
@@ -114,9 +114,8 @@ std::size_t IntersectionReport::openCount() const
     return static_cast<std::size_t>(std::count_if(loops.begin(), loops.end(), [](const IntersectionLoop& l) { return !l.closed(); }));
 }
 
-namespace {
+namespace detail {
 
-/// intersectTows() on tows already in the normalised frame (options in its units too).
 IntersectionReport intersectInFrame(const std::vector<TowSurface>& tows, const IntersectionOptions& options)
 {
     IntersectionReport report;
@@ -173,9 +172,7 @@ IntersectionReport intersectInFrame(const std::vector<TowSurface>& tows, const I
     return report;
 }
 
-/// The frame the textile is intersected in: its box centred at the origin, its smallest tow
-/// about unit size.
-detail::Frame textileFrame(const std::vector<TowSurface>& tows)
+Frame textileFrame(const std::vector<TowSurface>& tows)
 {
     BoundingBox box;
     double smallest = 0.0;
@@ -185,25 +182,40 @@ detail::Frame textileFrame(const std::vector<TowSurface>& tows)
         box.add(b.max);
         smallest = smallest > 0.0 ? std::min(smallest, t.towSize()) : t.towSize();
     }
-    return detail::Frame::around(box, smallest);
+    return Frame::around(box, smallest);
 }
 
-}  // namespace
+std::vector<TowSurface> towsInFrame(const std::vector<TowSurface>& tows, const Frame& frame)
+{
+    std::vector<TowSurface> moved;
+    moved.reserve(tows.size());
+    for (const TowSurface& t : tows) moved.push_back(inFrame(t, frame));
+    return moved;
+}
+
+void reportToUser(IntersectionReport& report, const std::vector<TowSurface>& tows, const Frame& frame)
+{
+    for (IntersectionLoop& l : report.loops) l = loopToUser(l, tows[l.towA()], tows[l.towB()], frame);
+}
+
+IntersectionOptions optionsInFrame(const IntersectionOptions& options, const Frame& frame)
+{
+    IntersectionOptions o = options;
+    o.tolerance = frame.lengthToFrame(options.tolerance);
+    o.chordalTolerance = frame.lengthToFrame(options.chordalTolerance);
+    return o;
+}
+
+}  // namespace detail
 
 IntersectionReport intersectTows(const std::vector<TowSurface>& tows, const IntersectionOptions& options)
 {
     checkOptions(options);
     // Computed in a frame where the tows are about unit size, so that the kernel's absolute
     // tolerances mean the same at every scale; loops go back to the user's tows and units.
-    const detail::Frame frame = textileFrame(tows);
-    std::vector<TowSurface> moved;
-    moved.reserve(tows.size());
-    for (const TowSurface& t : tows) moved.push_back(detail::inFrame(t, frame));
-    IntersectionOptions inFrame = options;
-    inFrame.tolerance = frame.lengthToFrame(options.tolerance);
-    inFrame.chordalTolerance = frame.lengthToFrame(options.chordalTolerance);
-    IntersectionReport report = intersectInFrame(moved, inFrame);
-    for (IntersectionLoop& l : report.loops) l = detail::loopToUser(l, tows[l.towA()], tows[l.towB()], frame);
+    const detail::Frame frame = detail::textileFrame(tows);
+    IntersectionReport report = detail::intersectInFrame(detail::towsInFrame(tows, frame), detail::optionsInFrame(options, frame));
+    detail::reportToUser(report, tows, frame);
     return report;
 }
 

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "core/parallel.hpp"
+#include "intersect/textile_frame.hpp"
 #include "mesh/loop_nodes.hpp"
 #include "mesh/mesh_measures.hpp"
 #include "mesh/parametric_mesher.hpp"
@@ -73,35 +74,25 @@ double MeshQuality::fractionAtLeast(double degrees) const
     return 1.0 - static_cast<double>(below) / static_cast<double>(triangles);
 }
 
-ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveOptions& options)
+namespace {
+
+/// resolveTextile() on tows already in a normalised frame, with options in the frame's units
+/// (the mesh size set).
+ResolveResult resolveInFrame(const std::vector<TowSurface>& tows, const ResolveOptions& options)
 {
-    checkOptions(options);
     const auto say = [&](const std::string& what) {
         if (options.progress) options.progress(what);
     };
     ResolveResult result;
     const std::size_t threads = detail::workerCount(options.threads);
-    double size = 1e300;
-    std::string smallest;
-    for (const TowSurface& t : tows)
-        if (t.towSize() < size) {
-            size = t.towSize();
-            smallest = t.name();
-        }
-    const double h = options.mesh.edgeLength > 0.0 ? options.mesh.edgeLength : options.mesh.relativeEdgeLength * size;
-    // At least 4 edges around every tow: a coarser mesh cannot be a tube.
-    const double around = 3.14159265358979323846 * size;
-    if (!tows.empty() && h > around / 4.0)
-        throw Error(ErrorCode::InvalidArgument,
-                    "mesh size " + std::to_string(h) + " is too coarse: tow '" + smallest + "' is " + std::to_string(around) +
-                        " around, and needs at least 4 edges around (mesh size at most " + std::to_string(around / 4.0) + ")");
+    const double h = options.mesh.edgeLength;  // set by resolveTextile()
 
     // 1. Intersection loops.
     Clock::time_point t0 = Clock::now();
     IntersectionOptions io = options.intersection;
     io.threads = options.threads;
     say("intersecting " + std::to_string(tows.size()) + " tows");
-    result.intersections = intersectTows(tows, io);
+    result.intersections = detail::intersectInFrame(tows, io);
     result.timings.intersect = msSince(t0);
     const std::vector<IntersectionLoop>& loops = result.intersections.loops;
 
@@ -328,6 +319,61 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
         result.mesh.nodes = std::move(kept);
     }
     result.timings.regions = msSince(t0);
+    return result;
+}
+
+/// The mesh size h in the user's units, checked against the smallest tow.
+double meshSize(const std::vector<TowSurface>& tows, const MeshOptions& mesh)
+{
+    double size = 1e300;
+    std::string smallest;
+    for (const TowSurface& t : tows)
+        if (t.towSize() < size) {
+            size = t.towSize();
+            smallest = t.name();
+        }
+    const double h = mesh.edgeLength > 0.0 ? mesh.edgeLength : mesh.relativeEdgeLength * size;
+    // At least 4 edges around every tow: a coarser mesh cannot be a tube.
+    const double around = 3.14159265358979323846 * size;
+    if (!tows.empty() && h > around / 4.0)
+        throw Error(ErrorCode::InvalidArgument,
+                    "mesh size " + std::to_string(h) + " is too coarse: tow '" + smallest + "' is " + std::to_string(around) +
+                        " around, and needs at least 4 edges around (mesh size at most " + std::to_string(around / 4.0) + ")");
+    return h;
+}
+
+/// @p result, computed on tows moved into @p frame, in the user's units and tows.
+void resultToUser(ResolveResult& result, const std::vector<TowSurface>& tows, const detail::Frame& frame)
+{
+    detail::reportToUser(result.intersections, tows, frame);
+    for (Point3& p : result.mesh.nodes) p = frame.toUser(p);
+    const double s = frame.scale;
+    for (TowResolution& t : result.tows) {
+        t.volumeBefore /= s * s * s;
+        t.volumeAfter /= s * s * s;
+        t.area /= s * s;
+    }
+    for (ConnectedRegion& r : result.mesh.regions) {
+        r.area /= s * s;
+        r.volumeRemoved /= s * s * s;
+    }
+}
+
+}  // namespace
+
+ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveOptions& options)
+{
+    checkOptions(options);
+    const double h = meshSize(tows, options.mesh);
+    // Computed in the textile's normalised frame (as intersectTows()), so that the meshes do not
+    // depend on the user's units; the results go back to the user's units.
+    const detail::Frame frame = detail::textileFrame(tows);
+    ResolveOptions o = options;
+    o.mesh.edgeLength = frame.lengthToFrame(h);
+    o.mesh.loopSpacing = frame.lengthToFrame(options.mesh.loopSpacing);
+    o.intersection = detail::optionsInFrame(options.intersection, frame);
+    ResolveResult result = resolveInFrame(detail::towsInFrame(tows, frame), o);
+    resultToUser(result, tows, frame);
     return result;
 }
 
