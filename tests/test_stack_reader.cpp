@@ -109,13 +109,25 @@ TEST_CASE("a coordinate below the smallest double reads as zero and huge scales 
     for (int i = 0; i < 4; ++i) text += (i ? "\n" : "") + hexagon(i);
     text.replace(0, 5, "1e-400 1 0");
     CHECK(parse(text).sections[0][0].x == 0.0);
-    // Scaled by 1e140 and by 1e-140: valid tows, whatever their units.
-    for (const double scale : {1e140, 1e-140}) {
+    // Scaled by 1e90 and by 1e-90: valid tows, whatever their units. Beyond 1e100 (coordinates)
+    // and below 1e-100 (section extents) volumes could not be represented: refused.
+    for (const double scale : {1e90, 1e-90, 1e110, 1e-110}) {
+        INFO("scale " << scale);
         testing::Sampling sampling;
         TowStack s = testing::ellipticalTube(0.5, 0.3, 3.0, sampling, "scaled");
         for (auto& section : s.sections)
             for (Point3& p : section) p = scale * p;
-        CHECK_NOTHROW(validateStack(s));
+        if (scale > 1e-100 && scale < 1e100) {
+            CHECK_NOTHROW(validateStack(s));
+        } else {
+            try {
+                validateStack(s);
+                FAIL("accepted");
+            } catch (const Error& e) {
+                CHECK(e.code() == ErrorCode::OutOfRange);
+                CHECK(std::string(e.what()).find(scale > 1.0 ? "beyond +-1e100" : "below 1e-100") != std::string::npos);
+            }
+        }
     }
 }
 
