@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <set>
@@ -76,28 +77,47 @@ double MeshQuality::fractionAtLeast(double degrees) const
 
 namespace {
 
-/// resolveTextile() on tows already in a normalised frame, with options in the frame's units
-/// (the mesh size set).
-ResolveResult resolveInFrame(const std::vector<TowSurface>& tows, const ResolveOptions& options)
+using TowPair = std::pair<std::size_t, std::size_t>;
+
+/// The meshes of tow @p tow could not be made with the loops of @p pairs on it.
+struct TowMeshFailure {
+    std::size_t tow = 0;
+    std::string message;
+    std::set<TowPair> pairs;  ///< the tow pairs with resolved loops on that tow
+};
+
+/// Runs @p body for tow @p tow; any failure becomes a TowMeshFailure naming the tow's pairs.
+template <class Body>
+void onTow(std::size_t tow, const std::vector<IntersectionLoop>& loops, const std::vector<detail::SharedLoop>& shared, Body&& body)
+{
+    try {
+        body();
+    } catch (const std::exception& e) {
+        TowMeshFailure f{tow, e.what(), {}};
+        for (const detail::SharedLoop& s : shared) {
+            const IntersectionLoop& l = loops[s.loop];
+            if (l.towA() == tow || l.towB() == tow) f.pairs.emplace(l.towA(), l.towB());
+        }
+        throw f;
+    }
+}
+
+/// Stages 2 and 3 of resolveTextile() on tows already in a normalised frame, with options in the
+/// frame's units (the mesh size set): @p result holds the intersections; loops of the tow pairs
+/// in @p excluded are left out.
+/// @throws TowMeshFailure when a tow's mesh cannot be made or is not a tube.
+void meshAndConnect(const std::vector<TowSurface>& tows, const ResolveOptions& options, const std::set<TowPair>& excluded,
+                    ResolveResult& result)
 {
     const auto say = [&](const std::string& what) {
         if (options.progress) options.progress(what);
     };
-    ResolveResult result;
     const std::size_t threads = detail::workerCount(options.threads);
     const double h = options.mesh.edgeLength;  // set by resolveTextile()
-
-    // 1. Intersection loops.
-    Clock::time_point t0 = Clock::now();
-    IntersectionOptions io = options.intersection;
-    io.threads = options.threads;
-    say("intersecting " + std::to_string(tows.size()) + " tows");
-    result.intersections = detail::intersectInFrame(tows, io);
-    result.timings.intersect = msSince(t0);
     const std::vector<IntersectionLoop>& loops = result.intersections.loops;
 
     // 2. Shared loop nodes and each tow's constraints.
-    t0 = Clock::now();
+    Clock::time_point t0 = Clock::now();
     const double spacing = options.mesh.loopSpacing > 0.0 ? options.mesh.loopSpacing : h;
     std::vector<Point3> nodes;
     std::vector<detail::SharedLoop> shared;
@@ -109,7 +129,7 @@ ResolveResult resolveInFrame(const std::vector<TowSurface>& tows, const ResolveO
             result.skipped.emplace_back(i, "the loop goes around tow '" +
                                                (l.windsAround(LoopSide::A) ? l.surfaceA() : l.surfaceB()).name() +
                                                "' (one tow passes through the other)");
-        else
+        else if (!excluded.count({l.towA(), l.towB()}))
             shared.push_back(detail::shareLoopNodes(l, i, spacing, nodes));
     }
     say("meshing " + std::to_string(tows.size()) + " tows at h = " + std::to_string(h));
@@ -140,8 +160,10 @@ ResolveResult resolveInFrame(const std::vector<TowSurface>& tows, const ResolveO
     };
     std::vector<std::vector<double>> seamU(tows.size());
     detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
-        meshers[t] = std::make_unique<detail::ParametricMesher>(tows[t], sizes);
-        meshers[t]->mesh(constraintsOf(t), {}, requests[t]);
+        onTow(t, loops, shared, [&] {
+            meshers[t] = std::make_unique<detail::ParametricMesher>(tows[t], sizes);
+            meshers[t]->mesh(constraintsOf(t), {}, requests[t]);
+        });
     });
     int round = 1;
     for (; round < kMaxRounds; ++round) {
@@ -174,10 +196,12 @@ ResolveResult resolveInFrame(const std::vector<TowSurface>& tows, const ResolveO
         for (std::size_t t : busy) requests[t] = {};
         detail::parallelFor(busy.size(), threads, [&](std::size_t k) {
             const std::size_t t = busy[k];
-            if (!meshers[t]->split(splits[t], newSeamU[t], requests[t])) {
-                requests[t] = {};
-                meshers[t]->mesh(constraintsOf(t), seamU[t], requests[t]);
-            }
+            onTow(t, loops, shared, [&] {
+                if (!meshers[t]->split(splits[t], newSeamU[t], requests[t])) {
+                    requests[t] = {};
+                    meshers[t]->mesh(constraintsOf(t), seamU[t], requests[t]);
+                }
+            });
         });
     }
     result.meshRounds = static_cast<std::size_t>(round);
@@ -213,20 +237,51 @@ ResolveResult resolveInFrame(const std::vector<TowSurface>& tows, const ResolveO
         region[t].assign(meshes[t].triangles.size(), -1);
     }
     std::vector<std::vector<std::pair<Triangle, long>>> inserted(tows.size());
-    for (const detail::SharedLoop& s : shared) {
+    // Loops of one tow pair nested in each other: the tows overlap inside an odd number of them.
+    // A loop inside an even number of its pair's loops bounds a region; the loops directly inside
+    // it bound islands where the surfaces separate again: holes of that region.
+    const auto period = [&](std::size_t t) { return tows[t].parameterRange().vPeriod(); };
+    std::vector<std::size_t> depth(shared.size(), 0);
+    std::vector<std::vector<std::size_t>> inside(shared.size());  // the pair's loops inside each loop
+    for (std::size_t a = 0; a < shared.size(); ++a)
+        for (std::size_t b = 0; b < shared.size(); ++b) {
+            const IntersectionLoop& la = loops[shared[a].loop];
+            const IntersectionLoop& lb = loops[shared[b].loop];
+            if (a == b || la.towA() != lb.towA() || la.towB() != lb.towB()) continue;
+            if (detail::insideLoop(detail::loopPolygon(shared[a], LoopSide::A), shared[b].points.front().onA, period(la.towA()))) {
+                ++depth[b];
+                inside[a].push_back(b);
+            }
+        }
+    for (std::size_t k = 0; k < shared.size(); ++k) {
+        const detail::SharedLoop& s = shared[k];
+        if (depth[k] % 2 == 1) continue;  // a hole of the region around it
+        std::vector<std::size_t> holes;
+        for (std::size_t b : inside[k])
+            if (depth[b] == depth[k] + 1) holes.push_back(b);
         const IntersectionLoop& l = loops[s.loop];
         const bool aMatches = matchesAny(tows[l.towA()].name(), options.primaryPatterns);
         const bool bMatches = matchesAny(tows[l.towB()].name(), options.primaryPatterns);
         const bool aPrimary = aMatches == bMatches ? l.towA() < l.towB() : aMatches;
         const LoopSide ps = aPrimary ? LoopSide::A : LoopSide::B, ss = aPrimary ? LoopSide::B : LoopSide::A;
         const std::size_t p = aPrimary ? l.towA() : l.towB(), q = aPrimary ? l.towB() : l.towA();
-        const auto period = [&](std::size_t t) { return tows[t].parameterRange().vPeriod(); };
-        const std::vector<std::size_t> inP = detail::trianglesInside(meshes[p], detail::loopPolygon(s, ps), period(p));
-        const std::vector<std::size_t> inQ = detail::trianglesInside(meshes[q], detail::loopPolygon(s, ss), period(q));
+        const auto within = [&](std::size_t t, LoopSide side) {
+            std::vector<std::size_t> in = detail::trianglesInside(meshes[t], detail::loopPolygon(s, side), period(t));
+            for (std::size_t b : holes) {
+                const std::vector<std::size_t> hole = detail::trianglesInside(meshes[t], detail::loopPolygon(shared[b], side), period(t));
+                std::vector<std::size_t> rest;
+                std::set_difference(in.begin(), in.end(), hole.begin(), hole.end(), std::back_inserter(rest));
+                in = std::move(rest);
+            }
+            return in;
+        };
+        const std::vector<std::size_t> inP = within(p, ps);
+        const std::vector<std::size_t> inQ = within(q, ss);
         ConnectedRegion r;
         r.primary = p;
         r.secondary = q;
         r.loop = s.loop;
+        for (std::size_t b : holes) r.holes.push_back(shared[b].loop);
         r.triangles = inP;
         r.loopNodes = s.nodes;
         const long id = static_cast<long>(result.mesh.regions.size());
@@ -279,11 +334,13 @@ ResolveResult resolveInFrame(const std::vector<TowSurface>& tows, const ResolveO
     });
     for (std::size_t t = 0; t < tows.size(); ++t)
         if (badEdges[t] != 0 || result.tows[t].boundaryLoops != 2)
-            throw Error(ErrorCode::Internal,
-                        "the mesh is not a tube open at its two ends (" + std::to_string(badEdges[t]) +
-                            " edges not shared by exactly two triangles the opposite way round, " +
-                            std::to_string(result.tows[t].boundaryLoops) + " boundary loops)",
-                        "tow '" + tows[t].name() + "'");
+            onTow(t, loops, shared, [&] {
+                throw Error(ErrorCode::Internal,
+                            "the mesh is not a tube open at its two ends (" + std::to_string(badEdges[t]) +
+                                " edges not shared by exactly two triangles the opposite way round, " +
+                                std::to_string(result.tows[t].boundaryLoops) + " boundary loops)",
+                            "tow '" + tows[t].name() + "'");
+            });
     // Quality over distinct triangles: a secondary's copies of a region's triangles are skipped.
     result.quality.histogram.assign(12, 0);
     result.quality.minAngle = 180.0;
@@ -319,7 +376,44 @@ ResolveResult resolveInFrame(const std::vector<TowSurface>& tows, const ResolveO
         result.mesh.nodes = std::move(kept);
     }
     result.timings.regions = msSince(t0);
-    return result;
+}
+
+/// resolveTextile() on tows already in a normalised frame, with options in the frame's units
+/// (the mesh size set). A tow whose mesh fails costs only the tow pairs with loops on it: they
+/// are left unresolved (named in the result) and the rest is meshed again without them.
+ResolveResult resolveInFrame(const std::vector<TowSurface>& tows, const ResolveOptions& options)
+{
+    ResolveResult result;
+    const Clock::time_point t0 = Clock::now();
+    IntersectionOptions io = options.intersection;
+    io.threads = options.threads;
+    if (options.progress) options.progress("intersecting " + std::to_string(tows.size()) + " tows");
+    result.intersections = detail::intersectInFrame(tows, io);
+    result.timings.intersect = msSince(t0);
+    std::set<TowPair> excluded;
+    std::vector<UnresolvedPair> unresolved;
+    for (;;) {
+        ResolveResult attempt;
+        attempt.intersections = result.intersections;
+        attempt.timings.intersect = result.timings.intersect;
+        try {
+            meshAndConnect(tows, options, excluded, attempt);
+        } catch (const TowMeshFailure& f) {
+            if (f.pairs.empty()) throw Error(ErrorCode::Internal, f.message, "tow '" + tows[f.tow].name() + "'");
+            for (const TowPair& p : f.pairs) {
+                excluded.insert(p);
+                unresolved.push_back({p.first, p.second, UnresolvedPair::Reason::MeshFailed,
+                                      "tow '" + tows[f.tow].name() + "' could not be meshed with the loops of tows '" +
+                                          tows[p.first].name() + "' and '" + tows[p.second].name() + "': " + f.message});
+            }
+            if (options.progress)
+                options.progress("meshing again without the " + std::to_string(f.pairs.size()) + " tow pair(s) on tow '" +
+                                 tows[f.tow].name() + "'");
+            continue;
+        }
+        attempt.unresolved = std::move(unresolved);
+        return attempt;
+    }
 }
 
 /// The mesh size h in the user's units, checked against the smallest tow.
