@@ -186,3 +186,32 @@ TEST_CASE("towgeom resolve says when the mesh size is too coarse for the tows' c
     CHECK(r.err.find("try a smaller --mesh-size") != std::string::npos);
     fs::remove_all(out);
 }
+
+TEST_CASE("a failed resolve leaves the output directory exactly as it was", "[cli][resolve][output]")
+{
+    // report.json, the last file renamed into place, is a directory that is not empty: the run
+    // fails at its last rename, after warp_0.vtk (older, replaced) and three new files went in.
+    const fs::path out = scratch("rollback");
+    fs::create_directories(out / "report.json");
+    std::ofstream(out / "report.json" / "inside") << "x";
+    std::ofstream(out / "warp_0.vtk", std::ios::binary) << "older warp_0.vtk\n";
+    std::ofstream(out / "notes.txt") << "the user's own file\n";
+    const auto before = testing::snapshot(out);
+    const Run r = cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + out.string() + "' --quiet");
+    INFO(r.err);
+    CHECK(r.status == 1);
+    CHECK(r.err == "towgeom resolve: " + (out / "report.json").string() + ": cannot rename into place: Is a directory [write_failed]\n");
+    const auto after = testing::snapshot(out);
+    INFO("after: " << testing::names(after));
+    CHECK(after == before);
+    CHECK(after.at("warp_0.vtk") == "older warp_0.vtk\n");
+
+    // Without the obstacle: written, the older file replaced, no backup or temporary left.
+    fs::remove_all(out / "report.json");
+    const Run ok = cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + out.string() + "' --quiet");
+    CHECK(ok.status == 0);
+    const auto written = testing::snapshot(out);
+    CHECK(testing::names(written) == "notes.txt report.json warp_0.stl warp_0.vtk weft_0.stl weft_0.vtk ");
+    CHECK(written.at("warp_0.vtk").rfind("# vtk DataFile Version 3.0\n", 0) == 0);
+    fs::remove_all(out);
+}

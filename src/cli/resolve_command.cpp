@@ -198,12 +198,9 @@ int runResolve(int argc, char** argv, int first)
         json.endObject();
         json.key("mesh_rounds").value(result.meshRounds);
 
-        std::error_code ec;
-        std::filesystem::create_directories(*outDir, ec);
-        if (ec || !std::filesystem::is_directory(*outDir))
-            throw Error(ErrorCode::WriteFailed, "cannot create output directory", *outDir);
         const auto path = [&](const std::string& file) { return (std::filesystem::path(*outDir) / file).string(); };
         detail::OutputFiles files;
+        files.makeDirectory(*outDir);
         // Open every file first (OutputFiles is not thread-safe), then fill them on all threads.
         std::vector<std::ostream*> stl(tows.size(), nullptr), vtk(tows.size(), nullptr);
         for (std::size_t t = 0; t < tows.size(); ++t) {
