@@ -146,3 +146,24 @@ TEST_CASE("towgeom generate refuses bad options and writes nothing", "[cli][weav
     }
     CHECK(cli("generate --help").out.find("--flatten TAU") != std::string::npos);
 }
+
+TEST_CASE("a failed fit --out leaves the output directory exactly as it was", "[cli][output]")
+{
+    // warp_0.vtk, the last file renamed into place, is a directory that is not empty.
+    const fs::path out = fs::temp_directory_path() / ("towgeom_fit_rollback_" + std::to_string(::getpid()));
+    fs::remove_all(out);
+    fs::create_directories(out / "warp_0.vtk");
+    std::ofstream(out / "warp_0.vtk" / "inside") << "x";
+    std::ofstream(out / "straight_tube.vtk", std::ios::binary) << "older straight_tube.vtk\n";
+    const auto before = towgeom::testing::snapshot(out);
+    const std::string warp = std::string(TOWGEOM_EXAMPLE_DATA) + "/twill/warp_0.stw";
+    const Run r = cli("fit '" + kTube + "' '" + warp + "' --out '" + out.string() + "' --quiet");
+    CHECK(r.status == 1);
+    CHECK(r.out.empty());
+    CHECK(r.err == "towgeom fit: " + (out / "warp_0.vtk").string() + ": cannot rename into place: Is a directory [write_failed]\n");
+    const auto after = towgeom::testing::snapshot(out);
+    INFO("after: " << towgeom::testing::names(after));
+    CHECK(after == before);
+    CHECK(after.at("straight_tube.vtk") == "older straight_tube.vtk\n");
+    fs::remove_all(out);
+}

@@ -204,3 +204,36 @@ TEST_CASE("an in-memory stack that breaks a rule is refused naming its section",
         CHECK(std::string(e.what()).find("tow 'mem_tow'") != std::string::npos);
     }
 }
+
+TEST_CASE("coinciding sections are named by their own numbers", "[reader][malformed]")
+{
+    // repeated_section.stw: its third section (1-based) repeats the second, from line 21.
+    const std::string path = std::string(TOWGEOM_TEST_DATA) + "/malformed/repeated_section.stw";
+    try {
+        readStackFile(path);
+        FAIL("accepted a repeated section");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::DegenerateTow);
+        CHECK(e.message() == "section 3 coincides with section 2");
+        CHECK(e.line() == 21);
+        CHECK(std::string(e.what()) == path + ":21: section 3 coincides with section 2");
+    }
+    // In memory, at both ends of a 21-section tube: the first and the last pair.
+    for (const std::size_t second : {std::size_t(1), std::size_t(20)}) {
+        DYNAMIC_SECTION("section " << second + 1 << " repeats section " << second)
+        {
+            TowStack s = testing::ellipticalTube(1.0, 0.5, 2.0, {}, "mem_tow");
+            s.source.clear();
+            s.sections[second] = s.sections[second - 1];
+            try {
+                validateStack(s);
+                FAIL("accepted a repeated section");
+            } catch (const Error& e) {
+                CHECK(e.code() == ErrorCode::DegenerateTow);
+                CHECK(e.message() ==
+                      "section " + std::to_string(second + 1) + " coincides with section " + std::to_string(second));
+                CHECK(e.file() == "tow 'mem_tow'");
+            }
+        }
+    }
+}

@@ -142,11 +142,8 @@ int runFit(int argc, char** argv, int first)
         json.endArray().endObject();
 
         if (outDir) {
-            std::error_code ec;
-            std::filesystem::create_directories(*outDir, ec);
-            if (ec || !std::filesystem::is_directory(*outDir))
-                throw Error(ErrorCode::WriteFailed, "cannot create output directory", *outDir);
             detail::OutputFiles files;
+            files.makeDirectory(*outDir);
             for (const TowSurface& s : surfaces) {
                 const std::size_t nu = samples.u ? samples.u : 3 * (s.sectionCount() - 1) + 1;
                 const std::size_t nv = samples.v ? samples.v : 3 * s.pointsPerSection();

@@ -154,7 +154,7 @@ void checkAlongTow(const TowStack& s)
         double chord = 0.0;
         for (std::size_t j = 0; j < s.sections[i].size(); ++j) chord += distance(s.sections[i][j], s.sections[i + 1][j]);
         if (chord / s.sections[i].size() <= kDuplicateTolerance * size)
-            fail(s, ErrorCode::DegenerateTow, sectionLabel(i + 2) + " coincides with " + sectionLabel(i + 1), i + 1);
+            fail(s, ErrorCode::DegenerateTow, sectionLabel(i + 1) + " coincides with " + sectionLabel(i), i + 1);
     }
     for (std::size_t i = 0; i + 1 < m; ++i) checkStartPoints(s, i);
     int orientation = 0;
