@@ -50,7 +50,9 @@ contact). Writes, all or nothing:
   unresolved      tow pairs that meet but were not resolved (their meshes still overlap), once
                   per pair and reason: open_curve (a curve runs into a tow's end), winds_around
                   (a loop goes around a tow: one passes through the other), nested (one tow
-                  inside the other), identical_or_touching (surfaces coincide or touch, no curve)
+                  inside the other), identical_or_touching (surfaces coincide or touch, no curve),
+                  mesh_failed (a tow could not be meshed with the pair's loops, e.g. loops of
+                  three tows crossing at one point: those pairs are left out, the rest resolved)
   skipped         every loop not resolved (open or around a tow), with the reason as a sentence
   volume_removed  the volume of the overlap the secondary tow lost in that region
   angle_histogram triangles per 5-degree bin of their smallest 3D angle (0-5, 5-10, ...)

@@ -56,6 +56,8 @@ std::vector<UnresolvedPair> unresolvedPairs(const ResolveResult& result)
         else
             addOnce(pairs, {l.towA(), l.towB(), reason::kOpenCurve, "open intersection curve: " + l.openReason()});
     }
+    for (const towgeom::UnresolvedPair& u : result.unresolved)
+        if (u.reason == towgeom::UnresolvedPair::Reason::MeshFailed) addOnce(pairs, {u.towA, u.towB, reason::kMeshFailed, u.message});
     addFindings(result.intersections, pairs);
     sortByPair(pairs);
     return pairs;

@@ -19,6 +19,7 @@ constexpr const char* kOpenCurve = "open_curve";           ///< a curve runs int
 constexpr const char* kWindsAround = "winds_around";       ///< a loop goes around a tow (resolve only)
 constexpr const char* kNested = "nested";                  ///< one tow lies inside the other
 constexpr const char* kIdenticalOrTouching = "identical_or_touching";  ///< surfaces coincide or touch, no curve
+constexpr const char* kMeshFailed = "mesh_failed";  ///< a tow could not be meshed with the pair's loops (resolve only)
 }  // namespace reason
 
 /// One tow pair that meets without a resolvable intersection loop.
