@@ -134,7 +134,7 @@ TEST_CASE("nested loops resolve at 6 mesh sizes from the largest accepted to a t
     CHECK_THROWS_AS(resolveTextile(tows, o), Error);
 }
 
-TEST_CASE("a tow pair that cannot be meshed is left unresolved and named; the rest is resolved", "[resolve][scan][unresolved]")
+TEST_CASE("a tow pair that cannot be meshed is left unresolved and named, the rest is resolved", "[resolve][scan][unresolved]")
 {
     // x: a round tube along x; y crosses it at x = 2; w, thinner, runs diagonally through y where
     // y meets x, so the loops of (x, y) and (x, w) cross each other on x (three tows at one point,
