@@ -167,3 +167,29 @@ TEST_CASE("a failed fit --out leaves the output directory exactly as it was", "[
     CHECK(after.at("straight_tube.vtk") == "older straight_tube.vtk\n");
     fs::remove_all(out);
 }
+
+TEST_CASE("towgeom fit refuses a tessellation over --max-triangles at once (exit 2)", "[cli][budget]")
+{
+    const fs::path out = fs::temp_directory_path() / ("towgeom_fit_budget_" + std::to_string(::getpid()));
+    fs::remove_all(out);
+    // 2 (U - 1) V = 2 x 99999 x 100000 triangles for the one tube (it once ended in
+    // std::bad_alloc, exit 1).
+    const Run huge = cli("fit '" + kTube + "' --out '" + out.string() + "' --samples 100000,100000 --quiet");
+    CHECK(huge.status == 2);
+    CHECK(huge.out.empty());
+    CHECK(huge.err ==
+          "towgeom fit: the tessellations for --out would have 19999800000 triangles (2 (U - 1) V per tow, 1 tows), over the limit "
+          "of 20000000; --max-triangles N raises it, a smaller --samples U,V makes fewer [too_large]\n");
+    CHECK_FALSE(fs::exists(out));
+    // Either side of the limit: --samples 11,10 gives 200 triangles.
+    const Run low = cli("fit '" + kTube + "' --out '" + out.string() + "' --samples 11,10 --max-triangles 199 --quiet");
+    CHECK(low.status == 2);
+    CHECK(low.err.find("would have 200 triangles") != std::string::npos);
+    CHECK(low.err.find("over the limit of 199;") != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+    const Run ok = cli("fit '" + kTube + "' --out '" + out.string() + "' --samples 11,10 --max-triangles 200 --quiet");
+    CHECK(ok.status == 0);
+    CHECK(slurp(out / "straight_tube.vtk").find("\nPOLYGONS 200 800\n") != std::string::npos);
+    CHECK(cli("fit '" + kTube + "' --max-triangles 200").status == 2);  // applies to --out only
+    fs::remove_all(out);
+}

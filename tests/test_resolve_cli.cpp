@@ -5,6 +5,8 @@
 #include <towgeom/towgeom.hpp>
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -286,5 +288,54 @@ TEST_CASE("towgeom resolve --quiet still notes a mesh too coarse for the tows' c
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     CHECK(std::stod(r.err.substr(prefix.size())) == Approx(smallest).epsilon(1e-5));
     CHECK(r.err.find("try a smaller --mesh-size\n") != std::string::npos);
+    fs::remove_all(out);
+}
+
+TEST_CASE("towgeom resolve refuses a mesh over --max-triangles at once, with the estimate (exit 2)", "[cli][resolve][budget]")
+{
+    // The bundled twill at h = 1e-5: about 3 x area / (sqrt(3)/4 h^2) = 4.7e12 triangles (it once
+    // ended in std::bad_alloc after 30 s, exit 1).
+    const std::vector<std::string> names{"warp_0", "warp_1", "warp_2", "warp_3", "weft_0", "weft_1", "weft_2", "weft_3"};
+    double area = 0.0;
+    for (const std::string& n : names) area += TowSurface::fit(readStackFile(std::string(TOWGEOM_EXAMPLE_DATA) + "/twill/" + n + ".stw")).area();
+    const double expected = 3.0 * area / (std::sqrt(3.0) / 4.0 * 1e-10);
+    const fs::path out = scratch("budget");
+    const auto t0 = std::chrono::steady_clock::now();
+    const Run r = cli("resolve" + twill(names) + " --out '" + out.string() + "' --mesh-size 1e-5 --quiet");
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK(seconds < 5.0);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    std::smatch m;
+    REQUIRE(std::regex_search(r.err, m, std::regex("^towgeom resolve: the meshes would have about ([0-9.e+]+) triangles \\(")));
+    CHECK(std::stod(m[1].str()) == Approx(expected).epsilon(5e-3));
+    CHECK(r.err.find("at mesh size h = 1e-05), over the limit of 20000000 (MeshOptions::maxTriangles); refused before meshing; "
+                     "--max-triangles N raises the limit") != std::string::npos);
+    CHECK(r.err.find("[too_large]\n") != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+
+    // A small case either side of its estimate: the straight tube at h = 0.1, 3 x 12.566 /
+    // (sqrt(3)/4 0.01) = 8706 triangles.
+    const std::string tube = " '" + std::string(TOWGEOM_EXAMPLE_DATA) + "/straight_tube.stw' --mesh-size 0.1 --quiet --out '" + out.string() + "'";
+    const Run low = cli("resolve" + tube + " --max-triangles 8000");
+    CHECK(low.status == 2);
+    CHECK(low.err.find("over the limit of 8000 (MeshOptions::maxTriangles)") != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+    const Run raised = cli("resolve" + tube + " --max-triangles 9000");
+    INFO(raised.err);
+    REQUIRE(raised.status == 0);
+    const double triangles = jsonNumber(testing::slurp(out / "report.json"), "triangles");
+    CHECK(triangles <= 9000);
+    CHECK(triangles >= 0.9 * 8706);
+    for (const char* bad : {"0", "1.5", "-3", "many"}) {
+        DYNAMIC_SECTION("--max-triangles " << bad)
+        {
+            const Run u = cli("resolve" + tube + " --max-triangles " + bad);
+            CHECK(u.status == 2);
+            CHECK(u.err.find("--max-triangles") != std::string::npos);
+            CHECK(std::count(u.err.begin(), u.err.end(), '\n') == 1);
+        }
+    }
     fs::remove_all(out);
 }

@@ -8,11 +8,16 @@
 #include <towgeom/tow_surface.hpp>
 #include <towgeom/weave.hpp>
 
+#include <towgeom/tow_intersection.hpp>
+
 #include <algorithm>
+#include <cmath>
 #include <map>
+#include <regex>
 #include <string>
 
 #include "cli_runner.hpp"
+#include "synthetic_tows.hpp"
 
 using namespace towgeom;
 using towgeom::testing::cli;
@@ -143,4 +148,80 @@ TEST_CASE("a basket weave whose loops meet on a tow: a typed error, not a crash"
     CHECK(r.status >= 0);
     CHECK(r.status <= 3);
     if (r.status != 0) CHECK(r.err.find("towgeom resolve: ") != std::string::npos);
+}
+
+namespace {
+
+/// The triangle estimate in a TooLarge message: "... would have about X triangles (...".
+double estimateIn(const std::string& message)
+{
+    std::smatch m;
+    REQUIRE(std::regex_search(message, m, std::regex("would have about ([0-9.e+]+) triangles \\(")));
+    return std::stod(m[1].str());
+}
+
+}  // namespace
+
+TEST_CASE("a mesh over the triangle limit is refused before meshing, with the estimate", "[resolve][budget]")
+{
+    // Two crossing tubes of radius 0.5, axes 0.7 apart: one closed loop.
+    testing::Sampling s;
+    s.points = 32;
+    const std::vector<TowSurface> tows{TowSurface::fit(testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "x")),
+                                       TowSurface::fit(testing::tubeAlongY(0.5, 0.7, s, "y"))};
+    const double h = 0.1;
+    // The lateral areas of the two tubes (2 pi r L each, L = 4), in triangles of side h, times 3.
+    const double area = 2.0 * (2.0 * 3.14159265358979323846 * 0.5 * 4.0);
+    CHECK(tows[0].area() + tows[1].area() == Approx(area).epsilon(1e-3));  // 32-gon sampling
+    const double byArea = 3.0 * (tows[0].area() + tows[1].area()) / (std::sqrt(3.0) / 4.0 * h * h);
+    ResolveOptions o;
+    o.mesh.edgeLength = h;
+    o.threads = 2;
+
+    SECTION("over the limit by area: refused before intersecting")
+    {
+        o.mesh.maxTriangles = static_cast<std::size_t>(byArea) - 1;
+        try {
+            resolveTextile(tows, o);
+            FAIL("a mesh over the limit was made");
+        } catch (const Error& e) {
+            INFO(e.what());
+            CHECK(e.code() == ErrorCode::TooLarge);
+            CHECK(estimateIn(e.message()) == Approx(byArea).epsilon(5e-3));  // printed to 3 digits
+            CHECK(e.message().find("at mesh size h = 0.1), over the limit of " + std::to_string(o.mesh.maxTriangles) +
+                                   " (MeshOptions::maxTriangles); refused before meshing") != std::string::npos);
+            CHECK(e.message().find("loops") == std::string::npos);
+        }
+    }
+    SECTION("under it by area, over it with a fine loop spacing: refused once the loops are known")
+    {
+        o.mesh.maxTriangles = static_cast<std::size_t>(byArea) + 1;
+        o.mesh.loopSpacing = 1e-4;
+        const double loopLength = intersectPair(tows[0], tows[1]).at(0).length();
+        try {
+            resolveTextile(tows, o);
+            FAIL("a mesh over the limit was made");
+        } catch (const Error& e) {
+            INFO(e.what());
+            CHECK(e.code() == ErrorCode::TooLarge);
+            CHECK(estimateIn(e.message()) == Approx(byArea + 20.0 * loopLength * (1e4 - 1.0 / h)).epsilon(5e-3));
+            CHECK(e.message().find("at loop spacing s = 0.0001), over the limit of") != std::string::npos);
+        }
+    }
+    SECTION("under it: meshed, with about the estimated number of triangles")
+    {
+        o.mesh.maxTriangles = static_cast<std::size_t>(byArea) + 1;
+        const ResolveResult r = resolveTextile(tows, o);
+        CHECK(r.mesh.regions.size() == 1);
+        std::size_t triangles = 0;
+        for (const TowMesh& m : r.mesh.tows) triangles += m.triangles.size();
+        INFO(triangles << " triangles, estimated " << byArea);
+        CHECK(std::abs(static_cast<double>(triangles) / byArea - 1.0) < 0.1);
+    }
+    SECTION("a limit of 0 is refused")
+    {
+        o.mesh.maxTriangles = 0;
+        CHECK_THROWS_MATCHES(resolveTextile(tows, o), Error,
+                             Catch::Matchers::Predicate<Error>([](const Error& e) { return e.code() == ErrorCode::InvalidArgument; }));
+    }
 }

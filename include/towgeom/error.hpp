@@ -32,7 +32,10 @@ enum class ErrorCode {
     InvalidArgument,          ///< A caller-supplied option or argument is out of its domain.
     FitFailed,                ///< The surface fit could not be computed (singular system, ...).
     WriteFailed,              ///< An output file could not be written.
-    Internal                  ///< A geometry kernel failed unexpectedly; the message says where.
+    Internal,                 ///< A geometry kernel failed unexpectedly; the message says where.
+    TooLarge                  ///< The mesh or tessellation asked for would exceed its size limit
+                              ///< (MeshOptions::maxTriangles); refused before it is made, the
+                              ///< message gives the estimate and the limit.
 };
 
 /// A short, stable, machine-readable name of a code, e.g. "non_numeric".

@@ -102,8 +102,10 @@ struct ResolveResult {
 ///
 /// Open loops and loops winding around a tow are not resolved (see ResolveResult::skipped).
 /// @throws towgeom::Error (InvalidArgument) for bad options, including a mesh size over a
-/// quarter of the smallest tow's circumference; (Internal) if a kernel fails, if loops of
-/// different tow pairs meet on a tow, or if a resolved tow is not a tube open at its two ends.
+/// quarter of the smallest tow's circumference; (TooLarge) when the estimated triangle count is
+/// over MeshOptions::maxTriangles (checked before intersecting, and with the loops' refinement
+/// before meshing); (Internal) if a kernel fails, if loops of different tow pairs meet on a
+/// tow, or if a resolved tow is not a tube open at its two ends.
 ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveOptions& options = {});
 
 }  // namespace towgeom

@@ -72,6 +72,9 @@ Options:
   --loop-spacing S   node spacing along intersection loops (default: the mesh size)
   --formats LIST     comma-separated from stl,vtk,msh,inp (default stl,vtk)
   --tolerance T      intersection point tolerance (default: 1e-7 x the tow size)
+  --max-triangles N  refuse (exit 2, before meshing) meshes estimated at more than N triangles,
+                     all tows together (default 20000000, about 5 GB; the estimate: about 3 x
+                     the tows' area / (sqrt(3)/4 H^2), plus the refinement along loops)
   --allow-open       exit 0 even when an intersection curve is open (it is never resolved,
                      and still named on stderr); other unresolved pairs still exit 3
   --threads N        worker threads (default: all hardware threads)
@@ -124,7 +127,7 @@ int runResolve(int argc, char** argv, int first)
         const Args args(argc, argv, first,
                         {{"help"}, {"quiet"}, {"allow-open"}, {"out", true}, {"primary", true}, {"mesh-size", true},
                          {"min-angle", true}, {"loop-spacing", true}, {"formats", true}, {"tolerance", true},
-                         {"threads", true}});
+                         {"threads", true}, {"max-triangles", true}});
         if (args.has("help")) {
             std::cout << kResolveHelp;
             return kExitOk;
@@ -140,6 +143,7 @@ int runResolve(int argc, char** argv, int first)
             if (!(*a > 0.0 && *a <= 30.0)) throw UsageError("--min-angle must lie in (0, 30] degrees");
             options.mesh.minAngle = *a;
         }
+        options.mesh.maxTriangles = args.maxTriangles(options.mesh.maxTriangles);
         options.intersection.tolerance = args.positive("tolerance");
         options.threads = args.threads();
         const std::set<std::string> formats = parseFormats(args.value("formats"));
@@ -152,7 +156,15 @@ int runResolve(int argc, char** argv, int first)
         auto t0 = std::chrono::steady_clock::now();
         const std::vector<TowSurface> tows = fitSurfaces(stacks, {}, "resolve", quiet, options.threads);
         const double fitMs = msSince(t0);
-        const ResolveResult result = resolveTextile(tows, options);
+        const ResolveResult result = [&] {
+            try {
+                return resolveTextile(tows, options);
+            } catch (const Error& e) {
+                if (e.code() != ErrorCode::TooLarge) throw;
+                throw Error(e.code(), e.message() + "; --max-triangles N raises the limit, a larger --mesh-size or "
+                                                    "--loop-spacing makes fewer", e.file(), e.line());
+            }
+        }();
         const TextileMesh& mesh = result.mesh;
 
         // Everything is computed before anything is written.
