@@ -101,7 +101,7 @@ TEST_CASE("hierarchical and brute-force collision detection find the same pairs"
         CHECK(fast.collisions[k].yarnB == brute.collisions[k].yarnB);
         CHECK(fast.collisions[k].triangles == brute.collisions[k].triangles);
     }
-    CHECK(fast.trianglePairsTested * 20 < brute.trianglePairsTested);
+    CHECK(fast.trianglePairsTested * 1000 < brute.trianglePairsTested);  // observed 6726 of 25804800 (was 1/20)
     // Every crossing has its own collisions, and every colliding pair is attributed to one.
     const Textile textile = generateWeave(o);
     const std::vector<std::size_t> perCrossing = collisionsPerCrossing(textile, stacks, fast);
