@@ -150,8 +150,13 @@ TEST_CASE("towgeom resolve writes compatible meshes, a consistent report and mod
     CHECK(count(report, "\"boundary_loops\":2") == 4);
     checkTubes(out, {"warp_0", "warp_1", "weft_0", "weft_1"});  // counted by the test from the VTK files
     CHECK(count(report, "\"volume_removed\":") == 4);
-    CHECK(jsonNumber(report, "fraction_at_least_20") >= 0.99);
-    CHECK(jsonNumber(report, "min_angle_deg") >= 10.0);
+    // Observed: 0.99997 of the triangles >= 20 deg, the smallest 17.6 deg, 2 rounds, nothing
+    // over the bounds (was >= 0.99 and >= 10 deg).
+    CHECK(jsonNumber(report, "fraction_at_least_20") >= 0.9999);
+    CHECK(jsonNumber(report, "min_angle_deg") >= 16.0);
+    CHECK(jsonNumber(report, "faces_over_bounds") == 0);
+    CHECK(jsonNumber(report, "mesh_rounds") >= 1);
+    CHECK(jsonNumber(report, "mesh_rounds") <= 6);
     // Warps keep their volume; wefts lose what the regions took.
     for (std::size_t k = 0; k < 2; ++k) CHECK(jsonNumber(report, "volume_after", k) == jsonNumber(report, "volume_before", k));
     double removed = 0.0;
