@@ -2,10 +2,12 @@
 // sections x 64 points per tow (64 overlapping crossings). Times `towgeom detect` end to end on
 // the .stw files (read, fit, broad phase, exact SSI, consolidation, JSON) and, in the same
 // run, CGAL's Polygon_mesh_processing::surface_intersection on the faceted tubes of every
-// overlapping pair; prints both, their ratio and the loop counts. Goal: towgeom >= 4x faster.
-//   bench_detect [--tows N] [--sections M] [--points P] [--threads T] [--no-cgal]
+// overlapping pair; prints both, their ratio and the loop counts. Goal: towgeom >= 4x faster;
+// exits 1 when it is missed (bench_goal.hpp; --smoke: the ratio is only required to be measured).
+//   bench_detect [--tows N] [--sections M] [--points P] [--threads T] [--no-cgal] [--smoke]
 #include <towgeom/towgeom.hpp>
 
+#include "bench_goal.hpp"
 #include "bench_twill.hpp"
 
 #include <sys/resource.h>
@@ -37,6 +39,7 @@ int main(int argc, char** argv)
     const towgeom::WeaveOptions& o = args.weave;
     const std::size_t threads = static_cast<std::size_t>(args.number("--threads", 2));
     const bool cgal = !args.flag("--no-cgal");
+    towgeom::bench::Goals goals(args.flag("--smoke"));
     const towgeom::Textile textile = towgeom::generateWeave(o);
     const std::vector<towgeom::TowStack> stacks = textile.stacks();
     const fs::path dir = fs::temp_directory_path() / ("towgeom_bench_detect_" + std::to_string(::getpid()));
@@ -91,9 +94,14 @@ int main(int argc, char** argv)
                     textile.crossings.size(), tCgal, cgalClosed, cgalOpen);
         std::printf("%-10s %12s %12s %10s\n", "", "towgeom_s", "cgal_s", "ratio");
         std::printf("%-10s %12.3f %12.3f %9.1fx  (goal >= 4x)\n", "detect", tTowgeom, tCgal, tCgal / tTowgeom);
+        goals.ratioAtLeast("detect vs CGAL", tCgal / tTowgeom, 4.0);
+    } else {
+        std::printf("no CGAL run (--no-cgal): the ratio goal is not checked\n");
     }
     rusage usage{};
     getrusage(RUSAGE_CHILDREN, &usage);
     std::printf("peak memory of towgeom detect: %.1f MiB\n", usage.ru_maxrss / 1024.0);
-    return status == 0 && closed == textile.crossings.size() ? 0 : 1;
+    goals.require("towgeom detect exits 0", status == 0);
+    goals.require("one closed loop per crossing", closed == textile.crossings.size() && open == 0);
+    return goals.exitStatus();
 }

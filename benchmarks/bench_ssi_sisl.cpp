@@ -1,10 +1,12 @@
 // Surface-surface intersection per tow pair (issue 3): towgeom (OpenCASCADE's marching from
 // facet-crossing seeds, consolidated and refined) against SISL (s1859 topology + s1310
 // marching, the engine of the original method) on the same B-spline surfaces at the same
-// geometric tolerance. Prints per-pair times and their ratio. Goal: towgeom not slower.
-//   bench_ssi_sisl [--tows N] [--sections M] [--points P] [--pairs K]
+// geometric tolerance. Prints per-pair times and their ratio. Goal: towgeom not slower; exits 1
+// when it is missed (bench_goal.hpp; --smoke: the ratio is only required to be measured).
+//   bench_ssi_sisl [--tows N] [--sections M] [--points P] [--pairs K] [--smoke]
 #include <towgeom/towgeom.hpp>
 
+#include "bench_goal.hpp"
 #include "bench_twill.hpp"
 
 #include <Geom_BSplineSurface.hxx>
@@ -126,5 +128,8 @@ int main(int argc, char** argv)
     // Every crossing of the generated twill overlaps: one closed loop each (CGAL agrees on the
     // faceted tubes, see bench_detect and the tests).
     std::printf("closed loops at %zu crossings: towgeom %zu, SISL %zu\n", pairsRun, ours, sislClosed);
-    return ours == pairsRun ? 0 : 1;
+    towgeom::bench::Goals goals(args.flag("--smoke"));
+    goals.ratioAtLeast("towgeom vs SISL", tSisl / tTowgeom, 1.0);
+    goals.require("towgeom finds one closed loop per crossing", ours == pairsRun && pairsRun > 0);
+    return goals.exitStatus();
 }

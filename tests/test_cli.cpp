@@ -1,6 +1,7 @@
 // The towgeom command line: fit's JSON and VTK output, help, usage errors.
 #include <catch2/catch.hpp>
 
+#include "analytic_reference.hpp"
 #include "cli_runner.hpp"
 
 #include <towgeom/towgeom.hpp>
@@ -37,10 +38,14 @@ TEST_CASE("towgeom fit prints the accuracy report and writes VTK", "[cli]")
     CHECK(r.out.find("\"name\":\"straight_tube\"") != std::string::npos);
     CHECK(jsonNumber(r.out, "sections") == 21);
     CHECK(jsonNumber(r.out, "points") == 24);
-    CHECK(jsonNumber(r.out, "max_deviation") <= 1e-9);
-    const double exact = 3.14159265358979323846;
-    CHECK(std::fabs(jsonNumber(r.out, "volume") / exact - 1) < 5e-4);
-    CHECK(jsonNumber(r.out, "faceted_volume") < 0.99 * exact);
+    CHECK(jsonNumber(r.out, "max_deviation") <= 5e-15);  // observed 1.3e-15
+    // The tube (r = 0.5, L = 4, 24 points around, coordinates to 12 digits): the fitted section
+    // is the periodic cubic B-spline through the 24-gon (testing::uniformBSplineCircle), 1.3e-5
+    // below pi r^2; the faceted tube is the prism over the 24-gon, 12 r^2 sin(pi / 12) L.
+    const towgeom::testing::BSplineCircle section = towgeom::testing::uniformBSplineCircle(24, towgeom::testing::interpolatingControlRadius(24, 0.5));
+    CHECK(jsonNumber(r.out, "volume") == Approx(section.area * 4.0).epsilon(1e-10));
+    CHECK(jsonNumber(r.out, "area") == Approx(section.perimeter * 4.0).epsilon(1e-10));
+    CHECK(jsonNumber(r.out, "faceted_volume") == Approx(12.0 * 0.25 * std::sin(3.14159265358979323846 / 12.0) * 4.0).epsilon(1e-10));
     CHECK(r.err.find("[1/1] straight_tube") != std::string::npos);  // progress
 
     const std::string vtk = slurp(out / "straight_tube.vtk");
@@ -59,7 +64,9 @@ TEST_CASE("towgeom fit --mode controlnet and approximate report their deviations
     const Run net = cli("fit '" + kTube + "' --mode controlnet --quiet");
     REQUIRE(net.status == 0);
     CHECK(net.err.empty());
-    CHECK(jsonNumber(net.out, "max_deviation") > 0.005);
+    // At a control point the curve is at (P[j-1] + 4 P[j] + P[j+1]) / 6: r (1 - (4 + 2 cos 15deg) / 6).
+    CHECK(jsonNumber(net.out, "max_deviation") == Approx(0.5 * (1 - (4 + 2 * std::cos(3.14159265358979323846 / 12)) / 6)).epsilon(1e-9));
+    CHECK(jsonNumber(net.out, "volume") == Approx(towgeom::testing::uniformBSplineCircle(24, 0.5).area * 4.0).epsilon(1e-10));
     const Run approx = cli("fit '" + kTube + "' --mode approximate --tolerance 1e-3 --quiet");
     REQUIRE(approx.status == 0);
     CHECK(jsonNumber(approx.out, "max_deviation") <= 1e-3);

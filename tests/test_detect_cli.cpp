@@ -5,6 +5,7 @@
 #include <towgeom/towgeom.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -43,6 +44,36 @@ std::string write(const fs::path& dir, const TowStack& stack)
     return " '" + p.string() + "'";
 }
 
+/// Each loop object of detect's JSON: its "length" and its "points", read by the test.
+struct JsonLoop {
+    double length = 0.0;
+    std::size_t pointCount = 0;
+    std::vector<Point3> points;
+};
+
+std::vector<JsonLoop> jsonLoops(const std::string& json)
+{
+    std::vector<JsonLoop> loops;
+    const std::regex number("-?[0-9.]+(?:[eE][-+]?[0-9]+)?");
+    for (std::size_t at = json.find("{\"tow_a\""); at != std::string::npos; at = json.find("{\"tow_a\"", at + 1)) {
+        const std::size_t end = json.find("]]}", at);
+        REQUIRE(end != std::string::npos);
+        const std::string loop = json.substr(at, end + 2 - at);
+        JsonLoop l;
+        l.length = testing::jsonNumber(loop, "length");
+        l.pointCount = static_cast<std::size_t>(testing::jsonNumber(loop, "point_count"));
+        const std::size_t from = loop.find("\"points\":[");
+        REQUIRE(from != std::string::npos);
+        std::vector<double> xyz;
+        for (auto it = std::sregex_iterator(loop.begin() + static_cast<long>(from), loop.end(), number); it != std::sregex_iterator(); ++it)
+            xyz.push_back(std::stod(it->str()));
+        REQUIRE(xyz.size() % 3 == 0);
+        for (std::size_t k = 0; k < xyz.size(); k += 3) l.points.push_back({xyz[k], xyz[k + 1], xyz[k + 2]});
+        loops.push_back(l);
+    }
+    return loops;
+}
+
 }  // namespace
 
 TEST_CASE("towgeom detect finds one closed loop per crossing of the bundled twill", "[cli][intersection]")
@@ -54,15 +85,35 @@ TEST_CASE("towgeom detect finds one closed loop per crossing of the bundled twil
     CHECK(count(r.out, "\"closed\":false") == 0);
     CHECK(testing::jsonNumber(r.out, "pairs_tested") == 16);
     CHECK(testing::jsonNumber(r.out, "tow_pairs") == 28);
-    for (std::size_t k = 0; k < 16; ++k) CHECK(testing::jsonNumber(r.out, "max_distance", k) <= 1e-7);
+    // Refined to rounding level: observed at most 2.0e-15 (tows of size ~0.5; was 1e-7).
+    for (std::size_t k = 0; k < 16; ++k) CHECK(testing::jsonNumber(r.out, "max_distance", k) <= 5e-15);
     CHECK(r.out.find("\"timings_ms\":{\"read\":") != std::string::npos);
     CHECK(r.err.find("tow pairs intersected") != std::string::npos);  // progress
     const Run quiet = cli("detect" + twillFiles() + " --quiet --spacing 0.1");
     CHECK(quiet.status == 0);
     CHECK(quiet.err.empty());
-    // Points spaced by at most 0.1 along loops of length ~1.7: 17 or 18 each.
-    CHECK(testing::jsonNumber(quiet.out, "point_count") >= 17);
-    CHECK(testing::jsonNumber(quiet.out, "point_count") <= 18);
+    CHECK(count(quiet.out, "\"closed\":true") == 16);
+    // Every loop (lengths 1.55 to 1.76) resampled to ceil(length / 0.1) points (16 to 18), no
+    // chord (closing one included) longer than 0.1, and their sum, the polyline's length, at
+    // most the loop's and within 1 % of it (chords of 0.1 on curves of radius ~0.25).
+    const std::vector<JsonLoop> loops = jsonLoops(quiet.out);
+    REQUIRE(loops.size() == 16);
+    for (const JsonLoop& l : loops) {
+        INFO("loop of length " << l.length);
+        CHECK(l.length > 1.5);
+        CHECK(l.length < 1.8);
+        CHECK(l.pointCount == static_cast<std::size_t>(std::ceil(l.length / 0.1)));
+        REQUIRE(l.points.size() == l.pointCount);
+        double longest = 0.0, sum = 0.0;
+        for (std::size_t k = 0; k < l.points.size(); ++k) {
+            const double chord = distance(l.points[k], l.points[(k + 1) % l.points.size()]);
+            longest = std::max(longest, chord);
+            sum += chord;
+        }
+        CHECK(longest <= 0.1 * (1.0 + 1e-9));
+        CHECK(sum <= l.length * (1.0 + 1e-12));
+        CHECK(sum >= 0.99 * l.length);
+    }
 }
 
 TEST_CASE("towgeom detect exits 3 naming the pair when a curve is open", "[cli][intersection][open]")

@@ -19,7 +19,9 @@
 #include <numeric>
 #include <set>
 
+#include "analytic_reference.hpp"
 #include "cgal_reference.hpp"
+#include "mesh_checks.hpp"
 #include "synthetic_tows.hpp"
 
 using namespace towgeom;
@@ -63,19 +65,8 @@ std::vector<TowStack> seamTubes(std::size_t sections, std::size_t points, double
             testing::tubeAlongY(kr, kd, sampling(startY, sections, points), "y")};
 }
 
-/// The exact overlap of the two tubes: for each height z the y-tube's chord along x times the
-/// x-tube's chord along y (both tubes long enough), integrated over z in [d - r, R].
-double analyticOverlapVolume()
-{
-    const int n = 200000;
-    const double z0 = kd - kr, z1 = kR;
-    double sum = 0.0;
-    for (int k = 0; k < n; ++k) {
-        const double z = z0 + (z1 - z0) * (k + 0.5) / n;
-        sum += 2.0 * std::sqrt(std::max(0.0, kr * kr - (z - kd) * (z - kd))) * 2.0 * std::sqrt(std::max(0.0, kR * kR - z * z));
-    }
-    return sum * (z1 - z0) / n;
-}
+/// The exact overlap of the two tubes' cylinders (both tubes long enough).
+double analyticOverlapVolume() { return testing::CrossingCylinders{kR, kr, kd}.overlapVolume(); }
 
 std::vector<TowSurface> fit(const std::vector<TowStack>& stacks)
 {
@@ -92,64 +83,17 @@ Triangle canonical(Triangle t)
 
 Triangle reversed(const Triangle& t) { return {t[0], t[2], t[1]}; }
 
-/// Boundary of one tow mesh, counted without TextileMesh: edges used by one triangle, the
-/// number of boundary edges at each of their nodes, edges used more than twice, interior edges
-/// not used once in each direction, and the boundary's connected components.
-struct Boundary {
-    std::size_t edges = 0, nodesNotTwo = 0, nonManifoldEdges = 0, misorientedEdges = 0, loops = 0;
-};
-
-Boundary boundaryOf(const std::vector<Triangle>& triangles)
-{
-    std::map<std::pair<std::size_t, std::size_t>, int> directed;
-    for (const Triangle& t : triangles)
-        for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
-    std::map<std::pair<std::size_t, std::size_t>, std::pair<int, int>> undirected;  // (forward, backward)
-    for (const auto& [e, n] : directed) {
-        if (e.first < e.second)
-            undirected[e].first += n;
-        else
-            undirected[{e.second, e.first}].second += n;
-    }
-    Boundary b;
-    std::map<std::size_t, std::vector<std::size_t>> adjacent;
-    for (const auto& [e, n] : undirected) {
-        const int uses = n.first + n.second;
-        if (uses == 1) {
-            ++b.edges;
-            adjacent[e.first].push_back(e.second);
-            adjacent[e.second].push_back(e.first);
-        } else if (uses > 2) {
-            ++b.nonManifoldEdges;
-        } else if (n.first != 1 || n.second != 1) {
-            ++b.misorientedEdges;
-        }
-    }
-    std::set<std::size_t> seen;
-    for (const auto& [node, next] : adjacent) {
-        if (next.size() != 2) ++b.nodesNotTwo;
-        if (seen.count(node)) continue;
-        ++b.loops;
-        std::vector<std::size_t> stack{node};
-        seen.insert(node);
-        while (!stack.empty()) {
-            const std::size_t at = stack.back();
-            stack.pop_back();
-            for (std::size_t n : adjacent[at])
-                if (seen.insert(n).second) stack.push_back(n);
-        }
-    }
-    return b;
-}
-
 /// Checks 1a-1d and 3 on a result; returns the number of crossing triangle pairs found.
 std::size_t checkResolved(const ResolveResult& res, std::size_t expectedRegions)
 {
     const TextileMesh& mesh = res.mesh;
     const std::size_t n = mesh.tows.size();
     CHECK(res.skipped.empty());
+    // At most 6 rounds (resolve.cpp's kMaxRounds; resolve.hpp documents it), and nothing left
+    // over the bounds after them (README: 0 on every textile in the tests).
     CHECK(res.meshRounds >= 1);
-    CHECK(res.meshRounds <= 12);
+    CHECK(res.meshRounds <= 6);
+    CHECK(res.quality.facesOverBounds == 0);
     CHECK(mesh.regions.size() == expectedRegions);
 
     // a. No crossing triangle pair between any two tows (CGAL, exact predicates).
@@ -199,7 +143,7 @@ std::size_t checkResolved(const ResolveResult& res, std::size_t expectedRegions)
     // c. Two boundary loops per tow, also counted without TextileMesh.
     for (std::size_t t = 0; t < n; ++t) {
         INFO("tow " << mesh.tows[t].name);
-        const Boundary b = boundaryOf(mesh.tows[t].triangles);
+        const testing::Boundary b = testing::boundaryOf(mesh.tows[t].triangles);
         CHECK(mesh.boundaryLoopCount(t) == 2);
         CHECK(res.tows[t].boundaryLoops == 2);
         CHECK(b.loops == 2);
@@ -305,8 +249,20 @@ namespace {
 struct SeamTubeCase {
     std::size_t sections, points;
     double startX, startY;
+    /// Relative difference of the removed volume from CGAL's overlap of the faceted input tubes
+    /// (whose own error grows as the points around get fewer), 2-3x the observed: 1.1e-4 and
+    /// 5.3e-5 at 96 points, 7.0e-3 at 48.
+    double cgalTolerance;
 };
-const SeamTubeCase kSeamTubeCases[] = {{21, 96, kPi / 2, -kPi / 2}, {41, 48, kPi / 2, -kPi / 2}, {21, 96, 0.0, 0.0}};
+const SeamTubeCase kSeamTubeCases[] = {
+    {21, 96, kPi / 2, -kPi / 2, 3e-4}, {41, 48, kPi / 2, -kPi / 2, 1.5e-2}, {21, 96, 0.0, 0.0, 3e-4}};
+
+/// How far a fitted tube of radius r sampled by n points around lies inside its cylinder: the
+/// interpolating B-spline's sag at mid-span (testing::uniformBSplineCircle).
+double fitSag(std::size_t n, double r)
+{
+    return r - testing::uniformBSplineCircle(n, testing::interpolatingControlRadius(n, r)).midRadius;
+}
 
 }  // namespace
 
@@ -329,9 +285,11 @@ TEST_CASE("resolved tubes whose loop crosses both seams: no crossing triangles, 
             CHECK(loop.clippedUvCurves(LoopSide::B).size() == pieces);
             CHECK(checkResolved(res, 1) == 0);
             // Against the analytic cylinders: the secondary (y-tube) keeps only its surface outside
-            // the x-tube, and the shared surface is the x-tube's inside the y-tube.
+            // the x-tube (its loop nodes are on the fitted x-tube, inside the cylinder by at most
+            // the fit's sag), and the shared surface is the x-tube's inside the y-tube (its loop
+            // nodes on the fitted y-tube, which is inside its cylinder).
             const TextileMesh& m = res.mesh;
-            const double tol = 1e-3 * kr;
+            const double sag = fitSag(k.points, kR);
             double worstOutside = 0.0, worstInside = 0.0;
             for (std::size_t t = 0; t < m.tows[1].triangles.size(); ++t)
                 for (std::size_t n : m.tows[1].triangles[t]) {
@@ -343,8 +301,8 @@ TEST_CASE("resolved tubes whose loop crosses both seams: no crossing triangles, 
                 }
             WARN("secondary nodes inside the x-tube by at most " << worstOutside << ", shared nodes outside the y-tube by at most "
                                                                  << worstInside);
-            CHECK(worstOutside <= tol);
-            CHECK(worstInside <= tol);
+            CHECK(worstOutside <= sag * (1.0 + 1e-6) + 1e-14);
+            CHECK(worstInside <= 1e-14);
             CHECK(res.tows[0].primaryAnywhere);
             CHECK_FALSE(res.tows[0].secondaryAnywhere);
             CHECK(res.tows[1].secondaryAnywhere);
@@ -376,9 +334,12 @@ TEST_CASE("the secondary loses the overlap volume of the tubes (CGAL corefinemen
                                 << drop << ", CGAL (faceted) " << cgal << ", analytic " << exact << ": "
                                 << 100.0 * (r.volumeRemoved / exact - 1.0) << " % vs analytic, "
                                 << 100.0 * (r.volumeRemoved / cgal - 1.0) << " % vs CGAL");
-                CHECK(r.volumeRemoved == Approx(exact).epsilon(0.02));
-                CHECK(drop == Approx(exact).epsilon(0.02));
-                CHECK(checkRemovedVolume(res, stacks, 0.02) <= 0.02);
+                // Both patches bounding the removed volume are inscribed in convex cylinders, so it
+                // is below the exact overlap: observed 0.240 % to 0.246 % below.
+                CHECK(r.volumeRemoved < exact);
+                CHECK(r.volumeRemoved > (1.0 - 0.005) * exact);
+                CHECK(drop == Approx(r.volumeRemoved).epsilon(1e-9));
+                CHECK(checkRemovedVolume(res, stacks, k.cgalTolerance) <= k.cgalTolerance);
             } catch (const Error& e) {
                 FAIL_CHECK("resolveTextile threw: " << e.what());
             }
@@ -392,7 +353,7 @@ TEST_CASE("the secondary loses the overlap volume of the tubes (CGAL corefinemen
         o.mesh.edgeLength = 0.05;
         const ResolveResult res = resolveTextile(fit(stacks), o);
         REQUIRE(res.mesh.regions.size() == 16);
-        const double worst = checkRemovedVolume(res, stacks, 0.02);
+        const double worst = checkRemovedVolume(res, stacks, 0.01);  // observed 0.49 %
         WARN("dense twill: worst relative difference of a region's removed volume from CGAL's overlap: " << 100.0 * worst
                                                                                                         << " %; " << seconds(t0) << " s");
     }
@@ -415,8 +376,10 @@ void checkQuality(const std::vector<TowSurface>& tows, const char* what)
             WARN(what << ", loop spacing " << spacing << ": min angle " << res.quality.minAngle << ", >= 20 deg "
                       << res.quality.fractionAtLeast(20) << ", >= 10 deg " << res.quality.fractionAtLeast(10) << ", "
                       << res.quality.triangles << " triangles, " << res.meshRounds << " rounds, " << seconds(t0) << " s");
-            CHECK(res.quality.fractionAtLeast(20) >= 0.99);
-            CHECK(res.quality.minAngle >= 10.0);
+            // Observed: at least 0.99989 of the triangles >= 20 deg, the smallest 18.05 deg (twill)
+            // and 20.3 deg (tubes).
+            CHECK(res.quality.fractionAtLeast(20) >= 0.9997);
+            CHECK(res.quality.minAngle >= 16.0);
             CHECK(res.skipped.empty());
             // Size in 3D: edges other than loop chords (which are at the loop spacing) at most h,
             // up to the metric's interpolation; faces the mesher could not make good are counted.
@@ -436,9 +399,11 @@ void checkQuality(const std::vector<TowSurface>& tows, const char* what)
                     }
             WARN(what << ": " << over << " of " << edges << " edges longer than 1.05 h, longest " << longest / h
                       << " h, faces over bounds " << res.quality.facesOverBounds);
-            CHECK(over <= edges / 1000);
+            // Observed: at most 2 of 484004 edges over 1.05 h, the longest 1.064 h, no face over
+            // the bounds (README: 0 on every textile in the tests).
+            CHECK(over <= edges / 100000);
             CHECK(longest <= 1.1 * h);
-            CHECK(res.quality.facesOverBounds <= res.quality.triangles / 1000);
+            CHECK(res.quality.facesOverBounds == 0);
         } catch (const Error& e) {
             FAIL_CHECK("resolveTextile threw: " << e.what());
         }

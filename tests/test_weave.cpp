@@ -101,7 +101,7 @@ TEST_CASE("hierarchical and brute-force collision detection find the same pairs"
         CHECK(fast.collisions[k].yarnB == brute.collisions[k].yarnB);
         CHECK(fast.collisions[k].triangles == brute.collisions[k].triangles);
     }
-    CHECK(fast.trianglePairsTested * 20 < brute.trianglePairsTested);
+    CHECK(fast.trianglePairsTested * 1000 < brute.trianglePairsTested);  // observed 6726 of 25804800 (was 1/20)
     // Every crossing has its own collisions, and every colliding pair is attributed to one.
     const Textile textile = generateWeave(o);
     const std::vector<std::size_t> perCrossing = collisionsPerCrossing(textile, stacks, fast);
@@ -237,8 +237,9 @@ TEST_CASE("a yarn's section may vary along it", "[weave][section]")
     const TowSurface tow = TowSurface::fit(y.stack(o.pointsPerSection));
     const double full = 3.14159265358979323846 * o.width * o.height / 4;
     // Ends of a crimped yarn are straight here (one spacing beyond the last crossing).
-    CHECK(tow.sectionArea(0.0) == Approx(full).epsilon(2e-3));
-    CHECK(tow.sectionArea(1.0) == Approx(full / 4).epsilon(2e-3));
+    // Observed 5.0e-5 above the ellipse at both ends (32 points around).
+    CHECK(tow.sectionArea(0.0) == Approx(full).epsilon(1.2e-4));
+    CHECK(tow.sectionArea(1.0) == Approx(full / 4).epsilon(1.2e-4));
     y.sections.pop_back();
     CHECK_THROWS_AS(y.stack(o.pointsPerSection), Error);
 }

@@ -3,8 +3,9 @@
 # per target (default 60); the long run is `run_fuzzers.sh 600`.
 #
 # Builds build-fuzz/ (reused) and runs the targets side by side, TOWGEOM_JOBS at a time (default:
-# the number of cores). Each target starts from its committed seeds (tests/fuzz/corpus/TARGET,
-# read only) and from what earlier runs found (build-fuzz/fuzz/TARGET/corpus). A crash, a leak,
+# the number of cores). Each target starts from its committed seeds and regression inputs
+# (tests/fuzz/corpus/TARGET, tests/fuzz/regressions/TARGET, read only) and from what earlier runs
+# found (build-fuzz/fuzz/TARGET/corpus). A crash, a leak,
 # an uncaught exception, an input taking over 10 s or needing over 2 GB fails the run; the input
 # that did it is kept in build-fuzz/fuzz/TARGET/artifacts/ and the log in build-fuzz/fuzz/TARGET.log.
 # Reproduce with: build-fuzz/tests/fuzz/fuzz_TARGET ARTIFACT
@@ -28,7 +29,7 @@ bash "$root/cmake/build.sh" --dir build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAK
 fuzz() {
   local target=$1 work=$root/build-fuzz/fuzz/$1
   mkdir -p "$work/corpus" "$work/artifacts"
-  "$root/build-fuzz/tests/fuzz/fuzz_$target" "$work/corpus" "$here/corpus/$target" \
+  "$root/build-fuzz/tests/fuzz/fuzz_$target" "$work/corpus" "$here/corpus/$target" "$here/regressions/$target" \
     -dict="$here/stw.dict" -max_total_time="$seconds" -max_len="${max_len[$target]}" \
     -timeout=10 -rss_limit_mb=2048 -artifact_prefix="$work/artifacts/" -print_final_stats=1 \
     >"$work.log" 2>&1
