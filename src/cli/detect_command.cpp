@@ -132,7 +132,7 @@ int runDetect(int argc, char** argv, int first)
             std::cerr << "towgeom detect: " << report.loops.size() << " intersection curves (" << report.openCount()
                       << " open) among " << report.pairsTested << " candidate tow pairs\n";
         // Warnings, not progress: printed whatever --quiet says.
-        const std::vector<UnresolvedPair> unresolved = unresolvedPairs(report);
+        const std::vector<UnresolvedEntry> unresolved = unresolvedPairs(report);
         reportUnresolved("detect", unresolved, surfaces);
         return exitsUnresolved(unresolved, args.has("allow-open")) ? kExitUnresolved : kExitOk;
     } catch (const std::exception& e) {

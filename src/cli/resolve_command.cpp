@@ -187,7 +187,7 @@ int runResolve(int argc, char** argv, int first)
         json.endArray();
         writeLoopsJson(json, result.intersections, tows, 0.0, options.threads);
         writeFindingsJson(json, result.intersections, tows);
-        const std::vector<UnresolvedPair> unresolved = unresolvedPairs(result);
+        const std::vector<UnresolvedEntry> unresolved = unresolvedPairs(result);
         writeUnresolvedJson(json, unresolved, tows);
         json.key("regions").beginArray();
         for (const ConnectedRegion& g : mesh.regions) {

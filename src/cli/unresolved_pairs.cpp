@@ -9,7 +9,7 @@ namespace towgeom::cli {
 namespace {
 
 /// The findings of @p report (pairs that meet without a curve) as unresolved pairs.
-void addFindings(const IntersectionReport& report, std::vector<UnresolvedPair>& pairs)
+void addFindings(const IntersectionReport& report, std::vector<UnresolvedEntry>& pairs)
 {
     for (const PairFinding& f : report.findings) {
         const bool nested = f.kind == PairFinding::Kind::Nested;
@@ -19,26 +19,26 @@ void addFindings(const IntersectionReport& report, std::vector<UnresolvedPair>& 
 }
 
 /// Adds @p p unless the same pair already has an entry with the same reason.
-void addOnce(std::vector<UnresolvedPair>& pairs, UnresolvedPair p)
+void addOnce(std::vector<UnresolvedEntry>& pairs, UnresolvedEntry p)
 {
-    const bool seen = std::any_of(pairs.begin(), pairs.end(), [&](const UnresolvedPair& q) {
+    const bool seen = std::any_of(pairs.begin(), pairs.end(), [&](const UnresolvedEntry& q) {
         return q.towA == p.towA && q.towB == p.towB && std::strcmp(q.reason, p.reason) == 0;
     });
     if (!seen) pairs.push_back(std::move(p));
 }
 
-void sortByPair(std::vector<UnresolvedPair>& pairs)
+void sortByPair(std::vector<UnresolvedEntry>& pairs)
 {
-    std::stable_sort(pairs.begin(), pairs.end(), [](const UnresolvedPair& a, const UnresolvedPair& b) {
+    std::stable_sort(pairs.begin(), pairs.end(), [](const UnresolvedEntry& a, const UnresolvedEntry& b) {
         return std::make_pair(a.towA, a.towB) < std::make_pair(b.towA, b.towB);
     });
 }
 
 }  // namespace
 
-std::vector<UnresolvedPair> unresolvedPairs(const IntersectionReport& report)
+std::vector<UnresolvedEntry> unresolvedPairs(const IntersectionReport& report)
 {
-    std::vector<UnresolvedPair> pairs;
+    std::vector<UnresolvedEntry> pairs;
     for (const IntersectionLoop& l : report.loops)
         if (!l.closed()) addOnce(pairs, {l.towA(), l.towB(), reason::kOpenCurve, "open intersection curve: " + l.openReason()});
     addFindings(report, pairs);
@@ -46,9 +46,9 @@ std::vector<UnresolvedPair> unresolvedPairs(const IntersectionReport& report)
     return pairs;
 }
 
-std::vector<UnresolvedPair> unresolvedPairs(const ResolveResult& result)
+std::vector<UnresolvedEntry> unresolvedPairs(const ResolveResult& result)
 {
-    std::vector<UnresolvedPair> pairs;
+    std::vector<UnresolvedEntry> pairs;
     for (const auto& [index, why] : result.skipped) {
         const IntersectionLoop& l = result.intersections.loops[index];
         if (l.closed())
@@ -63,27 +63,27 @@ std::vector<UnresolvedPair> unresolvedPairs(const ResolveResult& result)
     return pairs;
 }
 
-void writeUnresolvedJson(detail::JsonWriter& json, const std::vector<UnresolvedPair>& pairs, const std::vector<TowSurface>& tows)
+void writeUnresolvedJson(detail::JsonWriter& json, const std::vector<UnresolvedEntry>& pairs, const std::vector<TowSurface>& tows)
 {
     json.key("unresolved").beginArray();
-    for (const UnresolvedPair& p : pairs) {
+    for (const UnresolvedEntry& p : pairs) {
         json.beginObject().key("tow_a").value(tows[p.towA].name()).key("tow_b").value(tows[p.towB].name());
         json.key("reason").value(p.reason).key("message").value(p.message).endObject();
     }
     json.endArray();
 }
 
-void reportUnresolved(const char* command, const std::vector<UnresolvedPair>& pairs, const std::vector<TowSurface>& tows)
+void reportUnresolved(const char* command, const std::vector<UnresolvedEntry>& pairs, const std::vector<TowSurface>& tows)
 {
-    for (const UnresolvedPair& p : pairs)
+    for (const UnresolvedEntry& p : pairs)
         std::cerr << "towgeom " << command << ": unresolved tow pair '" << tows[p.towA].name() << "' and '"
                   << tows[p.towB].name() << "': " << p.message << " [" << p.reason << "]\n";
 }
 
-bool exitsUnresolved(const std::vector<UnresolvedPair>& pairs, bool allowOpen)
+bool exitsUnresolved(const std::vector<UnresolvedEntry>& pairs, bool allowOpen)
 {
     return std::any_of(pairs.begin(), pairs.end(),
-                       [&](const UnresolvedPair& p) { return !allowOpen || std::strcmp(p.reason, reason::kOpenCurve) != 0; });
+                       [&](const UnresolvedEntry& p) { return !allowOpen || std::strcmp(p.reason, reason::kOpenCurve) != 0; });
 }
 
 }  // namespace towgeom::cli
