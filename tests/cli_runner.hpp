@@ -20,6 +20,14 @@ struct Run {
     std::string out, err;
 };
 
+/// How often @p what occurs in @p text (overlapping occurrences counted).
+inline std::size_t count(const std::string& text, const std::string& what)
+{
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
 inline std::string slurp(const std::filesystem::path& p)
 {
     std::ifstream in(p, std::ios::binary);

@@ -19,12 +19,7 @@ using testing::Run;
 
 namespace {
 
-std::size_t count(const std::string& text, const std::string& what)
-{
-    std::size_t n = 0;
-    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-    return n;
-}
+using testing::count;
 
 std::string twillFiles()
 {

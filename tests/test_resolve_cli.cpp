@@ -39,12 +39,7 @@ fs::path scratch(const std::string& name)
     return p;
 }
 
-std::size_t count(const std::string& text, const std::string& what)
-{
-    std::size_t n = 0;
-    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-    return n;
-}
+using testing::count;
 
 /// The number of data lines after an Abaqus keyword line starting with @p keyword, up to the
 /// next keyword; entries per line for set lists.

@@ -172,21 +172,30 @@ TEST_CASE("a mesh size near or over the tow circumference is refused or gives tu
 // CGAL (insert_constraint(v, v)). Run through the CLI so that a crash would not take the test
 // binary down. Today this input is refused: exit 1 (README: loops of different pairs meeting on
 // a tow are not resolved), one line naming the tow, code [internal], nothing written.
-TEST_CASE("a basket weave whose loops meet on a tow: a typed error, not a crash", "[resolve][robustness][cli]")
+TEST_CASE("a basket weave whose loops meet on a tow: the pairs on that tow are unresolved, the rest is written", "[resolve][robustness][cli]")
 {
     const auto dir = std::filesystem::temp_directory_path() / ("towgeom_review_basket_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     const Run g = cli("generate --weave basket --overlap 0.2 --quiet --out '" + (dir / "in").string() + "'");
     REQUIRE(g.status == 0);
-    const Run r = cli("resolve '" + (dir / "in").string() + "'/*.stw --quiet --loop-spacing 0.4 --out '" + (dir / "out").string() + "'");
-    INFO(r.err);
-    CHECK(r.status == 1);
-    CHECK(r.out.empty());
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-    CHECK(r.err.rfind("towgeom resolve: tow 'weft_1': two intersection-loop nodes (", 0) == 0);
-    CHECK(r.err.find("fall on the same point of the surface: intersection loops meet there") != std::string::npos);
-    CHECK(r.err.find("[internal]\n") != std::string::npos);
-    CHECK_FALSE(std::filesystem::exists(dir / "out"));
+    // Two loop nodes of different pairs fall on one point of warp_2: its 4 pairs are left out
+    // (mesh_failed, named), the other 12 loops resolved, every tow written as a tube. The same
+    // pairs whatever the number of threads.
+    for (const char* threads : {"1", "3"}) {
+        const std::string out = (dir / (std::string("out") + threads)).string();
+        const Run r = cli("resolve '" + (dir / "in").string() + "'/*.stw --quiet --loop-spacing 0.4 --threads " + threads + " --out '" + out + "'");
+        INFO(r.err);
+        CHECK(r.status == 3);
+        CHECK(r.out.empty());
+        for (const char* weft : {"weft_0", "weft_1", "weft_2", "weft_3"})
+            CHECK(r.err.find(std::string("towgeom resolve: unresolved tow pair 'warp_2' and '") + weft + "': tow 'warp_2' could not be meshed") !=
+                  std::string::npos);
+        CHECK(r.err.find("fall on the same point of the surface: intersection loops meet there") != std::string::npos);
+        const std::string report = testing::slurp(std::filesystem::path(out) / "report.json");
+        CHECK(testing::count(report, "\"reason\":\"mesh_failed\"") == 4);
+        CHECK(testing::count(report, "\"volume_removed\"") == 12);
+        CHECK(testing::count(report, "\"boundary_loops\":2") == 8);
+    }
     std::filesystem::remove_all(dir);
 }
 

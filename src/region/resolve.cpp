@@ -121,21 +121,41 @@ struct TowMeshFailure {
     std::set<TowPair> pairs;  ///< the tow pairs with resolved loops on that tow
 };
 
-/// Runs @p body for tow @p tow; any failure becomes a TowMeshFailure naming the tow's pairs.
-template <class Body>
-void onTow(std::size_t tow, const std::vector<IntersectionLoop>& loops, const std::vector<detail::SharedLoop>& shared, Body&& body)
-{
-    try {
-        body();
-    } catch (const std::exception& e) {
-        TowMeshFailure f{tow, e.what(), {}};
-        for (const detail::SharedLoop& s : shared) {
-            const IntersectionLoop& l = loops[s.loop];
-            if (l.towA() == tow || l.towB() == tow) f.pairs.emplace(l.towA(), l.towB());
-        }
-        throw f;
+/// The failures of the tows meshed in parallel, kept per tow so that the one reported (the
+/// lowest tow index) does not depend on the threads' timing.
+class TowFailures {
+public:
+    TowFailures(const std::vector<IntersectionLoop>& loops, const std::vector<detail::SharedLoop>& shared, std::size_t tows)
+        : loops_(loops), shared_(shared), failures_(tows)
+    {
     }
-}
+    /// Runs @p body for tow @p tow; a failure is kept as a TowMeshFailure naming the tow's pairs.
+    template <class Body>
+    void run(std::size_t tow, Body&& body)
+    {
+        try {
+            body();
+        } catch (const std::exception& e) {
+            auto f = std::make_unique<TowMeshFailure>(TowMeshFailure{tow, e.what(), {}});
+            for (const detail::SharedLoop& s : shared_) {
+                const IntersectionLoop& l = loops_[s.loop];
+                if (l.towA() == tow || l.towB() == tow) f->pairs.emplace(l.towA(), l.towB());
+            }
+            failures_[tow] = std::move(f);
+        }
+    }
+    /// Throws the failure of the lowest tow index, if any.
+    void throwFirst() const
+    {
+        for (const auto& f : failures_)
+            if (f) throw *f;
+    }
+
+private:
+    const std::vector<IntersectionLoop>& loops_;
+    const std::vector<detail::SharedLoop>& shared_;
+    std::vector<std::unique_ptr<TowMeshFailure>> failures_;
+};
 
 /// Stages 2 and 3 of resolveTextile() on tows already in a normalised frame, with options in the
 /// frame's units (the mesh size set): @p result holds the intersections; loops of the tow pairs
@@ -194,12 +214,14 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const ResolveOptions& o
         return c;
     };
     std::vector<std::vector<double>> seamU(tows.size());
+    TowFailures failures(loops, shared, tows.size());
     detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
-        onTow(t, loops, shared, [&] {
+        failures.run(t, [&] {
             meshers[t] = std::make_unique<detail::ParametricMesher>(tows[t], sizes);
             meshers[t]->mesh(constraintsOf(t), {}, requests[t]);
         });
     });
+    failures.throwFirst();
     int round = 1;
     for (; round < kMaxRounds; ++round) {
         // Every split asked for (by either tow) becomes an exact loop node; seam stations are
@@ -231,13 +253,14 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const ResolveOptions& o
         for (std::size_t t : busy) requests[t] = {};
         detail::parallelFor(busy.size(), threads, [&](std::size_t k) {
             const std::size_t t = busy[k];
-            onTow(t, loops, shared, [&] {
+            failures.run(t, [&] {
                 if (!meshers[t]->split(splits[t], newSeamU[t], requests[t])) {
                     requests[t] = {};
                     meshers[t]->mesh(constraintsOf(t), seamU[t], requests[t]);
                 }
             });
         });
+        failures.throwFirst();
     }
     result.meshRounds = static_cast<std::size_t>(round);
     // The final meshes, and the tows' own nodes evaluated on their surfaces.
@@ -369,13 +392,14 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const ResolveOptions& o
     });
     for (std::size_t t = 0; t < tows.size(); ++t)
         if (badEdges[t] != 0 || result.tows[t].boundaryLoops != 2)
-            onTow(t, loops, shared, [&] {
+            failures.run(t, [&] {
                 throw Error(ErrorCode::Internal,
                             "the mesh is not a tube open at its two ends (" + std::to_string(badEdges[t]) +
                                 " edges not shared by exactly two triangles the opposite way round, " +
                                 std::to_string(result.tows[t].boundaryLoops) + " boundary loops)",
                             "tow '" + tows[t].name() + "'");
             });
+    failures.throwFirst();
     // Quality over distinct triangles: a secondary's copies of a region's triangles are skipped.
     result.quality.histogram.assign(12, 0);
     result.quality.minAngle = 180.0;
