@@ -137,25 +137,32 @@ TEST_CASE("a loop that dips across the seam between two nodes keeps both sides o
     }
 }
 
-// h near or over the tow's circumference: refused up front with InvalidArgument (at least 4 edges
-// around: h at most a quarter of the smallest tow's circumference, 1.6656 / 4 = 0.4164 here);
-// just below that limit, tubes without a triangle with a repeated node or an edge of three
-// triangles.
-TEST_CASE("a mesh size near or over the tow circumference is refused or gives tubes", "[resolve][robustness]")
+// h near or over the tow's circumference: each tow is meshed at most at a quarter of its own
+// circumference (at least 4 edges around: 1.6656 / 4 = 0.4164 here), and says so in meshSize;
+// a relative size over pi / 4 is refused. Just below the limit, tubes without a triangle with a
+// repeated node or an edge of three triangles.
+TEST_CASE("a mesh size near or over the tow circumference is capped per tow and gives tubes", "[resolve][robustness]")
 {
     const std::vector<TowSurface> tows = fitted(weave(WeaveKind::Plain, 0.1, 2));
     for (const double h : {0.42, 1.0, 5.0}) {
         INFO("h = " << h);
         ResolveOptions o;
         o.mesh.edgeLength = h;
-        try {
-            resolveTextile(tows, o);
-            FAIL_CHECK("mesh size " << h << " accepted");
-        } catch (const Error& e) {
-            CHECK(e.code() == ErrorCode::InvalidArgument);
-            CHECK(std::string(e.what()).find("is too coarse: tow 'warp_0' is 1.665") != std::string::npos);
-            CHECK(std::string(e.what()).find("needs at least 4 edges around (mesh size at most 0.4163") != std::string::npos);
-        }
+        const ResolveResult r = resolveTextile(tows, o);
+        for (std::size_t t = 0; t < tows.size(); ++t)
+            CHECK(r.tows[t].meshSize == Approx(3.14159265358979323846 * tows[t].towSize() / 4.0).epsilon(1e-15));
+        CHECK(r.mesh.regions.size() == 4);
+        CHECK(r.unresolved.empty());
+        checkTubes(r);
+    }
+    ResolveOptions relative;
+    relative.mesh.relativeEdgeLength = 0.8;  // over pi / 4
+    try {
+        resolveTextile(tows, relative);
+        FAIL_CHECK("relative mesh size 0.8 accepted");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::InvalidArgument);
+        CHECK(std::string(e.what()).find("needs at least 4 edges around (relative mesh size at most pi / 4)") != std::string::npos);
     }
     ResolveOptions o;
     o.mesh.edgeLength = 0.4;

@@ -128,10 +128,14 @@ TEST_CASE("nested loops resolve at 6 mesh sizes from the largest accepted to a t
         CHECK(crossings(res, 0, 1) == 0);
         checkTubes(res);
     }
-    // Above the largest: refused, naming the limit.
+    // Above the largest: each tow meshed at a quarter of its own circumference.
     ResolveOptions o;
-    o.mesh.edgeLength = 1.01 * largest;
-    CHECK_THROWS_AS(resolveTextile(tows, o), Error);
+    o.mesh.edgeLength = 2.0 * largest;
+    const ResolveResult capped = resolveTextile(tows, o);
+    CHECK(capped.tows[1].meshSize == Approx(largest).epsilon(1e-15));
+    CHECK(capped.tows[0].meshSize == Approx(kPi * tows[0].towSize() / 4.0).epsilon(1e-15));
+    CHECK(capped.mesh.regions.size() == 1);
+    CHECK(crossings(capped, 0, 1) == 0);
 }
 
 TEST_CASE("a tow pair that cannot be meshed is left unresolved and named, the rest is resolved", "[resolve][scan][unresolved]")

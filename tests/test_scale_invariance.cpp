@@ -151,10 +151,10 @@ TEST_CASE("resolve gives the same regions and no crossing triangles at scales 1e
         for (std::size_t t = 0; t < 2; ++t) CHECK(res.tows[t].boundaryLoops == 2);
         // The meshes differ from scale to scale only as any rounding changes a Delaunay
         // refinement (a 1e-15 relative change of the input moves the node count by ~1 %): the
-        // volumes agree to 1e-3. Inscribed facets at h = 0.1 x tow size lose 2.8 % of this shallow
-        // lens (depth r / 5) at every scale.
+        // volumes agree to 1e-3. Inscribed facets at h = 0.1 x each tow's size lose 3.2 % of this
+        // shallow lens (depth r / 5) at every scale.
         CHECK(relative(res.mesh.regions[0].volumeRemoved / (s * s * s), ref.mesh.regions[0].volumeRemoved) <= 1e-3);
-        CHECK(relative(res.mesh.regions[0].volumeRemoved / (s * s * s), exact) <= 0.03);
+        CHECK(relative(res.mesh.regions[0].volumeRemoved / (s * s * s), exact) <= 0.035);
         CHECK(relative(res.tows[0].volumeAfter / (s * s * s), ref.tows[0].volumeAfter) <= 1e-3);
         CHECK(relative(res.tows[1].volumeAfter / (s * s * s), ref.tows[1].volumeAfter) <= 1e-3);
     }

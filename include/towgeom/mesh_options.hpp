@@ -7,19 +7,21 @@
 namespace towgeom {
 
 /// How each tow's surface is meshed. Lengths are in the user's units; 0 means "relative to the
-/// tow size" (TowSurface::towSize(), the smallest of the textile's tows).
+/// tow size" (TowSurface::towSize() of each tow).
 struct MeshOptions {
     /// Target edge length h of the 3D triangles: every edge is at most about h in 3D (measured
     /// with the surface's metric), except loop chords, which are at the loop spacing.
-    /// 0 (default): relativeEdgeLength x tow size. At most a quarter of the smallest tow's
-    /// circumference (pi x tow size).
+    /// 0 (default): relativeEdgeLength x each tow's own size. A size given here applies to
+    /// every tow, but a tow is meshed at most at a quarter of its own circumference (pi x its
+    /// size; at least 4 edges around): TowResolution::meshSize says what each tow got.
     double edgeLength = 0.0;
     /// edgeLength relative to the tow size when edgeLength is 0. Default 0.1.
     double relativeEdgeLength = 0.1;
     /// The smallest angle the mesher aims for, in degrees (at most 30). Default 20.
     double minAngle = 20.0;
-    /// Spacing of the nodes along intersection loops. 0 (default): the edge length h. A smaller
-    /// spacing refines the mesh along loops ("high" refinement), a larger one coarsens it.
+    /// Spacing of the nodes along intersection loops. 0 (default): the smaller mesh size of the
+    /// loop's two tows. A smaller spacing refines the mesh along loops ("high" refinement), a
+    /// larger one coarsens it.
     double loopSpacing = 0.0;
     /// The most triangles the meshes may have, all tows together (about 250 bytes of memory
     /// each while meshing). resolveTextile() estimates the count before meshing (about 3 x the

@@ -38,6 +38,9 @@ struct TowResolution {
     double volumeAfter = 0.0;      ///< the same after the regions were swapped in
     double area = 0.0;             ///< surface area of the final mesh
     std::size_t boundaryLoops = 0;  ///< 2 for a tube open at both ends
+    /// The mesh size h this tow was meshed at: MeshOptions::relativeEdgeLength x its own size,
+    /// or MeshOptions::edgeLength, at most a quarter of its circumference.
+    double meshSize = 0.0;
 };
 
 /// Smallest 3D angles of the final triangles.
@@ -100,12 +103,15 @@ struct ResolveResult {
 /// (exact point-in-polygon on the (u,v) loop, CGAL) and puts the primary's inside triangles in
 /// their place (ConnectedRegion), so the two tows share nodes and triangles there.
 ///
-/// Open loops and loops winding around a tow are not resolved (see ResolveResult::skipped).
-/// @throws towgeom::Error (InvalidArgument) for bad options, including a mesh size over a
-/// quarter of the smallest tow's circumference; (TooLarge) when the estimated triangle count is
+/// Loops of one tow pair nested in each other: the region is inside an odd number of them (an
+/// island loop is a hole, ConnectedRegion::holes). Open loops and loops winding around a tow are
+/// not resolved (see ResolveResult::skipped). A tow whose mesh cannot be made (e.g. loops of
+/// three tows crossing at one point) costs only the tow pairs with loops on it: they are listed
+/// in ResolveResult::unresolved and the rest of the textile is resolved.
+/// @throws towgeom::Error (InvalidArgument) for bad options, including a relative mesh size
+/// over pi / 4; (TooLarge) when the estimated triangle count is
 /// over MeshOptions::maxTriangles (checked before intersecting, and with the loops' refinement
-/// before meshing); (Internal) if a kernel fails, if loops of different tow pairs meet on a
-/// tow, or if a resolved tow is not a tube open at its two ends.
+/// before meshing); (Internal) if a kernel fails outside the meshing of a tow.
 ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveOptions& options = {});
 
 }  // namespace towgeom

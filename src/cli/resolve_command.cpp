@@ -38,7 +38,7 @@ contact). Writes, all or nothing:
   DIR/textile.inp  with --formats inp: Abaqus, *NODE, *ELEMENT TYPE=S3 with ELSET=TOW_NAME,
                    *ELSET/*NSET REGION_k
   DIR/report.json  {"tows":[{"name","role","volume_before","volume_after","area","triangles",
-                   "boundary_loops"}], "loops":[...as detect...], "findings":[...as detect...],
+                   "boundary_loops","mesh_size"}], "loops":[...as detect...], "findings":[...as detect...],
                    "unresolved":[{"tow_a","tow_b","reason","message"}], "regions":[{"primary",
                    "secondary","triangles","nodes","area","volume_removed"}],
                    "skipped":[{"tow_a","tow_b","reason"}], "node_count",
@@ -66,10 +66,12 @@ Options:
   --primary GLOB     tows whose names match are primary over tows that do not (repeatable;
                      shell patterns, e.g. --primary 'warp_*'); default: of two tows, the one
                      given first on the command line
-  --mesh-size H      target 3D edge length (default: 0.1 x the smallest tow size; at most a
-                     quarter of the smallest tow's circumference)
+  --mesh-size H      target 3D edge length (default: 0.1 x each tow's own size); a tow is meshed
+                     at most at a quarter of its circumference (noted on stderr, and each
+                     tow's "mesh_size" in report.json)
   --min-angle DEG    smallest triangle angle the mesher aims for, at most 30 (default 20)
-  --loop-spacing S   node spacing along intersection loops (default: the mesh size)
+  --loop-spacing S   node spacing along intersection loops (default: the smaller mesh size of
+                     the loop's two tows)
   --formats LIST     comma-separated from stl,vtk,msh,inp (default stl,vtk)
   --tolerance T      intersection point tolerance (default: 1e-7 x the tow size)
   --max-triangles N  refuse (exit 2, before meshing) meshes estimated at more than N triangles,
@@ -182,6 +184,7 @@ int runResolve(int argc, char** argv, int first)
             json.key("area").value(r.area);
             json.key("triangles").value(mesh.tows[t].triangles.size());
             json.key("boundary_loops").value(r.boundaryLoops);
+            json.key("mesh_size").value(r.meshSize);
             json.endObject();
         }
         json.endArray();
@@ -257,6 +260,12 @@ int runResolve(int argc, char** argv, int first)
                       << result.quality.triangles << " triangles (smallest angle " << result.quality.minAngle
                       << " deg); files in " << *outDir << "\n";
         // Warnings, not progress: printed whatever --quiet says.
+        if (options.mesh.edgeLength > 0.0)
+            for (std::size_t t = 0; t < tows.size(); ++t)
+                if (result.tows[t].meshSize < options.mesh.edgeLength)
+                    std::cerr << "towgeom resolve: note: tow '" << tows[t].name() << "' meshed at h = " << result.tows[t].meshSize
+                              << ", a quarter of its circumference (--mesh-size " << options.mesh.edgeLength
+                              << " would leave fewer than 4 edges around it)\n";
         if (result.quality.fractionAtLeast(20.0) < 0.99 || result.quality.minAngle < 10.0)
             std::cerr << "towgeom resolve: note: mesh quality below the usual target (smallest angle "
                       << result.quality.minAngle << " deg, " << 100.0 * result.quality.fractionAtLeast(20.0)

@@ -161,19 +161,21 @@ private:
 /// frame's units (the mesh size set): @p result holds the intersections; loops of the tow pairs
 /// in @p excluded are left out.
 /// @throws TowMeshFailure when a tow's mesh cannot be made or is not a tube.
-void meshAndConnect(const std::vector<TowSurface>& tows, const ResolveOptions& options, const std::set<TowPair>& excluded,
-                    ResolveResult& result)
+void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<double>& towH, const ResolveOptions& options,
+                    const std::set<TowPair>& excluded, ResolveResult& result)
 {
     const auto say = [&](const std::string& what) {
         if (options.progress) options.progress(what);
     };
     const std::size_t threads = detail::workerCount(options.threads);
-    const double h = options.mesh.edgeLength;  // set by resolveTextile()
     const std::vector<IntersectionLoop>& loops = result.intersections.loops;
 
-    // 2. Shared loop nodes and each tow's constraints.
+    // 2. Shared loop nodes and each tow's constraints: loop spacing the finer of the two tows'
+    // mesh sizes unless given.
     Clock::time_point t0 = Clock::now();
-    const double spacing = options.mesh.loopSpacing > 0.0 ? options.mesh.loopSpacing : h;
+    const auto spacingOf = [&](const IntersectionLoop& l) {
+        return options.mesh.loopSpacing > 0.0 ? options.mesh.loopSpacing : std::min(towH[l.towA()], towH[l.towB()]);
+    };
     std::vector<Point3> nodes;
     std::vector<detail::SharedLoop> shared;
     for (std::size_t i = 0; i < loops.size(); ++i) {
@@ -185,9 +187,13 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const ResolveOptions& o
                                                (l.windsAround(LoopSide::A) ? l.surfaceA() : l.surfaceB()).name() +
                                                "' (one tow passes through the other)");
         else if (!excluded.count({l.towA(), l.towB()}))
-            shared.push_back(detail::shareLoopNodes(l, i, spacing, nodes));
+            shared.push_back(detail::shareLoopNodes(l, i, spacingOf(l), nodes));
     }
-    say("meshing " + std::to_string(tows.size()) + " tows at h = " + std::to_string(h));
+    if (!tows.empty()) {
+        const auto [lo, hi] = std::minmax_element(towH.begin(), towH.end());
+        say("meshing " + std::to_string(tows.size()) + " tows at h = " + std::to_string(*lo) +
+            (*hi > *lo ? " to " + std::to_string(*hi) : std::string()));
+    }
     constexpr std::size_t kLocal = std::size_t(1) << 60;  // marks a tow's own new nodes
     // Round 1 meshes every tow. Refinement never splits a constraint; where a triangle needs a
     // split of a loop chord or seam edge to meet the bounds, the split becomes an exact loop node
@@ -198,7 +204,6 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const ResolveOptions& o
     std::map<std::size_t, std::size_t> sharedOf;  // loop node -> its shared loop
     for (std::size_t k = 0; k < shared.size(); ++k)
         for (std::size_t n : shared[k].nodes) sharedOf[n] = k;
-    const detail::MeshSizes sizes{h, options.mesh.minAngle};
     std::vector<std::unique_ptr<detail::ParametricMesher>> meshers(tows.size());
     std::vector<detail::MeshRequests> requests(tows.size());
     const auto constraintsOf = [&](std::size_t t) {
@@ -217,7 +222,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const ResolveOptions& o
     TowFailures failures(loops, shared, tows.size());
     detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
         failures.run(t, [&] {
-            meshers[t] = std::make_unique<detail::ParametricMesher>(tows[t], sizes);
+            meshers[t] = std::make_unique<detail::ParametricMesher>(tows[t], detail::MeshSizes{towH[t], options.mesh.minAngle});
             meshers[t]->mesh(constraintsOf(t), {}, requests[t]);
         });
     });
@@ -441,7 +446,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const ResolveOptions& o
 /// (the mesh size set); @p checkLoopRefinement is given the loops' length (frame units) before
 /// meshing. A tow whose mesh fails costs only the tow pairs with loops on it: they
 /// are left unresolved (named in the result) and the rest is meshed again without them.
-ResolveResult resolveInFrame(const std::vector<TowSurface>& tows, const ResolveOptions& options,
+ResolveResult resolveInFrame(const std::vector<TowSurface>& tows, const std::vector<double>& towH, const ResolveOptions& options,
                              const std::function<void(double)>& checkLoopRefinement)
 {
     ResolveResult result;
@@ -462,7 +467,7 @@ ResolveResult resolveInFrame(const std::vector<TowSurface>& tows, const ResolveO
         attempt.intersections = result.intersections;
         attempt.timings.intersect = result.timings.intersect;
         try {
-            meshAndConnect(tows, options, excluded, attempt);
+            meshAndConnect(tows, towH, options, excluded, attempt);
         } catch (const TowMeshFailure& f) {
             if (f.pairs.empty()) throw Error(ErrorCode::Internal, f.message, "tow '" + tows[f.tow].name() + "'");
             for (const TowPair& p : f.pairs) {
@@ -481,23 +486,23 @@ ResolveResult resolveInFrame(const std::vector<TowSurface>& tows, const ResolveO
     }
 }
 
-/// The mesh size h in the user's units, checked against the smallest tow.
-double meshSize(const std::vector<TowSurface>& tows, const MeshOptions& mesh)
+/// The mesh size of each tow in the user's units: relativeEdgeLength x its own size, or the
+/// edge length given, at most a quarter of the tow's circumference (at least 4 edges around).
+std::vector<double> meshSizes(const std::vector<TowSurface>& tows, const MeshOptions& mesh)
 {
-    double size = 1e300;
-    std::string smallest;
-    for (const TowSurface& t : tows)
-        if (t.towSize() < size) {
-            size = t.towSize();
-            smallest = t.name();
+    std::vector<double> h;
+    for (const TowSurface& t : tows) {
+        const double around = 3.14159265358979323846 * t.towSize();
+        if (mesh.edgeLength > 0.0) {
+            h.push_back(std::min(mesh.edgeLength, around / 4.0));
+            continue;
         }
-    const double h = mesh.edgeLength > 0.0 ? mesh.edgeLength : mesh.relativeEdgeLength * size;
-    // At least 4 edges around every tow: a coarser mesh cannot be a tube.
-    const double around = 3.14159265358979323846 * size;
-    if (!tows.empty() && h > around / 4.0)
-        throw Error(ErrorCode::InvalidArgument,
-                    "mesh size " + std::to_string(h) + " is too coarse: tow '" + smallest + "' is " + std::to_string(around) +
-                        " around, and needs at least 4 edges around (mesh size at most " + std::to_string(around / 4.0) + ")");
+        h.push_back(mesh.relativeEdgeLength * t.towSize());
+        if (h.back() > around / 4.0)
+            throw Error(ErrorCode::InvalidArgument,
+                        "relative mesh size " + std::to_string(mesh.relativeEdgeLength) + " is too coarse: tow '" + t.name() +
+                            "' needs at least 4 edges around (relative mesh size at most pi / 4)");
+    }
     return h;
 }
 
@@ -523,24 +528,32 @@ void resultToUser(ResolveResult& result, const std::vector<TowSurface>& tows, co
 ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveOptions& options)
 {
     checkOptions(options);
-    const double h = meshSize(tows, options.mesh);
+    const std::vector<double> towH = meshSizes(tows, options.mesh);
     // Refuse a mesh too large for memory now, before intersecting; the loops' part once their
-    // lengths are known. In the user's units, for the message.
-    double area = 0.0;
-    for (const TowSurface& t : tows) area += t.area();
+    // lengths are known. In the user's units, for the message; h is the tows' mesh sizes
+    // averaged as the triangle count sees them (area-weighted in 1/h^2).
+    double area = 0.0, perH2 = 0.0;
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        const double a = tows[t].area();
+        area += a;
+        perH2 += a / (towH[t] * towH[t]);
+    }
+    const double h = perH2 > 0.0 ? std::sqrt(area / perH2) : 1.0;
     const double spacing = options.mesh.loopSpacing > 0.0 ? options.mesh.loopSpacing : h;
     checkMeshSize(options.mesh, area, h, 0.0, spacing);
     // Computed in the textile's normalised frame (as intersectTows()), so that the meshes do not
     // depend on the user's units; the results go back to the user's units.
     const detail::Frame frame = detail::textileFrame(tows);
     ResolveOptions o = options;
-    o.mesh.edgeLength = frame.lengthToFrame(h);
+    std::vector<double> towHInFrame;
+    for (double x : towH) towHInFrame.push_back(frame.lengthToFrame(x));
     o.mesh.loopSpacing = frame.lengthToFrame(options.mesh.loopSpacing);
     o.intersection = detail::optionsInFrame(options.intersection, frame);
-    ResolveResult result = resolveInFrame(detail::towsInFrame(tows, frame), o, [&](double loopLength) {
+    ResolveResult result = resolveInFrame(detail::towsInFrame(tows, frame), towHInFrame, o, [&](double loopLength) {
         checkMeshSize(options.mesh, area, h, frame.lengthToUser(loopLength), spacing);
     });
     resultToUser(result, tows, frame);
+    for (std::size_t t = 0; t < tows.size(); ++t) result.tows[t].meshSize = towH[t];
     return result;
 }
 
