@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -18,6 +19,14 @@ struct Run {
     int status = -1;
     std::string out, err;
 };
+
+/// How often @p what occurs in @p text (overlapping occurrences counted).
+inline std::size_t count(const std::string& text, const std::string& what)
+{
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
 
 inline std::string slurp(const std::filesystem::path& p)
 {
@@ -52,6 +61,32 @@ inline Run runShell(const std::string& command)
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
     r.out = slurp(dir / "out");
     return r;
+}
+
+/// Every entry under @p dir, recursively, by relative path: a file's bytes, "<dir>" for a
+/// directory, "<link>" + target for a symbolic link. Two snapshots compare equal when nothing
+/// under @p dir was added, removed or changed.
+inline std::map<std::string, std::string> snapshot(const std::filesystem::path& dir)
+{
+    std::map<std::string, std::string> entries;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) {
+        const std::string name = e.path().lexically_relative(dir).string();
+        if (e.is_symlink())
+            entries[name] = "<link>" + std::filesystem::read_symlink(e.path()).string();
+        else if (e.is_directory())
+            entries[name] = "<dir>";
+        else
+            entries[name] = slurp(e.path());
+    }
+    return entries;
+}
+
+/// The names in a snapshot, for messages.
+inline std::string names(const std::map<std::string, std::string>& entries)
+{
+    std::string s;
+    for (const auto& [name, content] : entries) s += name + " ";
+    return s;
 }
 
 inline double jsonNumber(const std::string& json, const std::string& key, std::size_t nth = 0)

@@ -153,3 +153,50 @@ TEST_CASE("towgeom generate refuses bad options and writes nothing", "[cli][weav
     }
     CHECK(cli("generate --help").out.find("--flatten TAU") != std::string::npos);
 }
+
+TEST_CASE("a failed fit --out leaves the output directory exactly as it was", "[cli][output]")
+{
+    // warp_0.vtk, the last file renamed into place, is a directory that is not empty.
+    const fs::path out = fs::temp_directory_path() / ("towgeom_fit_rollback_" + std::to_string(::getpid()));
+    fs::remove_all(out);
+    fs::create_directories(out / "warp_0.vtk");
+    std::ofstream(out / "warp_0.vtk" / "inside") << "x";
+    std::ofstream(out / "straight_tube.vtk", std::ios::binary) << "older straight_tube.vtk\n";
+    const auto before = towgeom::testing::snapshot(out);
+    const std::string warp = std::string(TOWGEOM_EXAMPLE_DATA) + "/twill/warp_0.stw";
+    const Run r = cli("fit '" + kTube + "' '" + warp + "' --out '" + out.string() + "' --quiet");
+    CHECK(r.status == 1);
+    CHECK(r.out.empty());
+    CHECK(r.err == "towgeom fit: " + (out / "warp_0.vtk").string() + ": cannot rename into place: Is a directory [write_failed]\n");
+    const auto after = towgeom::testing::snapshot(out);
+    INFO("after: " << towgeom::testing::names(after));
+    CHECK(after == before);
+    CHECK(after.at("straight_tube.vtk") == "older straight_tube.vtk\n");
+    fs::remove_all(out);
+}
+
+TEST_CASE("towgeom fit refuses a tessellation over --max-triangles at once (exit 2)", "[cli][budget]")
+{
+    const fs::path out = fs::temp_directory_path() / ("towgeom_fit_budget_" + std::to_string(::getpid()));
+    fs::remove_all(out);
+    // 2 (U - 1) V = 2 x 99999 x 100000 triangles for the one tube (it once ended in
+    // std::bad_alloc, exit 1).
+    const Run huge = cli("fit '" + kTube + "' --out '" + out.string() + "' --samples 100000,100000 --quiet");
+    CHECK(huge.status == 2);
+    CHECK(huge.out.empty());
+    CHECK(huge.err ==
+          "towgeom fit: the tessellations for --out would have 19999800000 triangles (2 (U - 1) V per tow, 1 tows), over the limit "
+          "of 20000000; --max-triangles N raises it, a smaller --samples U,V makes fewer [too_large]\n");
+    CHECK_FALSE(fs::exists(out));
+    // Either side of the limit: --samples 11,10 gives 200 triangles.
+    const Run low = cli("fit '" + kTube + "' --out '" + out.string() + "' --samples 11,10 --max-triangles 199 --quiet");
+    CHECK(low.status == 2);
+    CHECK(low.err.find("would have 200 triangles") != std::string::npos);
+    CHECK(low.err.find("over the limit of 199;") != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+    const Run ok = cli("fit '" + kTube + "' --out '" + out.string() + "' --samples 11,10 --max-triangles 200 --quiet");
+    CHECK(ok.status == 0);
+    CHECK(slurp(out / "straight_tube.vtk").find("\nPOLYGONS 200 800\n") != std::string::npos);
+    CHECK(cli("fit '" + kTube + "' --max-triangles 200").status == 2);  // applies to --out only
+    fs::remove_all(out);
+}

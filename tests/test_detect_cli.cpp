@@ -19,12 +19,7 @@ using testing::Run;
 
 namespace {
 
-std::size_t count(const std::string& text, const std::string& what)
-{
-    std::size_t n = 0;
-    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-    return n;
-}
+using testing::count;
 
 std::string twillFiles()
 {
@@ -133,8 +128,58 @@ TEST_CASE("towgeom detect exits 3 naming the pair when a curve is open", "[cli][
     CHECK(r.err.find("[open_curve]") != std::string::npos);
     const Run allowed = cli("detect" + files + " --quiet --allow-open");
     CHECK(allowed.status == 0);
+    CHECK(allowed.err == r.err);  // still named: a warning, not progress
     // The same report apart from the timings.
     CHECK(allowed.out.substr(0, allowed.out.find("\"timings_ms\"")) == r.out.substr(0, r.out.find("\"timings_ms\"")));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("towgeom detect exits 3 naming nested and identical tows, --quiet or not", "[cli][intersection][unresolved]")
+{
+    // A complete overlap has no intersection curve, yet the tows are not resolved: the pair is
+    // named on stderr whatever --quiet and --allow-open say, and the exit status is 3.
+    const fs::path dir = fs::temp_directory_path() / ("towgeom_detect_nested_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    testing::Sampling s;
+    s.points = 32;
+    const std::string outer = write(dir, testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "outer"));
+    const std::string inner = write(dir, testing::tubeAlongX(0.25, 4.0, 0.0, 0.0, 0.0, s, "inner"));  // scaled about the axis
+    const std::string twin = write(dir, testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "twin"));
+    const std::string nestedLine =
+        "towgeom detect: unresolved tow pair 'outer' and 'inner': tow 'inner' lies inside tow 'outer' (a complete overlap: no "
+        "intersection curve) [nested]\n";
+    for (const char* options : {" --quiet", " --quiet --allow-open", ""}) {
+        DYNAMIC_SECTION("nested," << options)
+        {
+            const Run r = cli("detect" + outer + inner + options);
+            CHECK(r.status == 3);
+            CHECK(r.out.find("\"loops\":[]") != std::string::npos);
+            CHECK(r.out.find("\"findings\":[{\"tow_a\":\"outer\",\"tow_b\":\"inner\",\"kind\":\"nested\"") != std::string::npos);
+            if (std::string(options).find("--quiet") != std::string::npos)
+                CHECK(r.err == nestedLine);
+            else
+                CHECK(count(r.err, nestedLine) == 1);
+        }
+        DYNAMIC_SECTION("identical," << options)
+        {
+            const Run r = cli("detect" + outer + twin + options);
+            CHECK(r.status == 3);
+            CHECK(r.out.find("\"loops\":[]") != std::string::npos);
+            const std::string line =
+                "towgeom detect: unresolved tow pair 'outer' and 'twin': the surfaces touch or coincide (their facets cross) but "
+                "do not cross each other along a curve: no interpenetration loop [identical_or_touching]\n";
+            if (std::string(options).find("--quiet") != std::string::npos)
+                CHECK(r.err == line);
+            else
+                CHECK(count(r.err, line) == 1);
+        }
+    }
+    // Given the other way round, the pair is named in the order given.
+    const Run reversed = cli("detect" + inner + outer + " --quiet");
+    CHECK(reversed.status == 3);
+    CHECK(reversed.err ==
+          "towgeom detect: unresolved tow pair 'inner' and 'outer': tow 'inner' lies inside tow 'outer' (a complete overlap: no "
+          "intersection curve) [nested]\n");
     fs::remove_all(dir);
 }
 

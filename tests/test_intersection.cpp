@@ -388,10 +388,17 @@ TEST_CASE("degenerate pairs: coincident, nested, tangent and parallel tows retur
     REQUIRE(nested.findings.size() == 1);
     CHECK(nested.findings.front().kind == PairFinding::Kind::Nested);
     CHECK(nested.findings.front().message == "tow 'b' lies inside tow 'a'");
-    // Two tows side by side just touching: no curve and nothing else to say.
+    // Two tows side by side touching along the line y = 0.5, z = 0 (their input points meet
+    // there exactly): no curve, a "touching" finding.
     const IntersectionReport side = pair(testing::tubeAlongX(0.5, 4, 0, 0, 0, s, "a"), testing::tubeAlongX(0.5, 4, 0, 1.0, 0, s, "b"));
     CHECK(side.loops.empty());
-    CHECK(side.findings.empty());
+    REQUIRE(side.findings.size() == 1);
+    CHECK(side.findings.front().kind == PairFinding::Kind::Touching);
+    // A gap of 1e-6 of their size: nothing at all.
+    const IntersectionReport apart =
+        pair(testing::tubeAlongX(0.5, 4, 0, 0, 0, s, "a"), testing::tubeAlongX(0.5, 4, 0, 1.0 + 1e-6, 0, s, "b"));
+    CHECK(apart.loops.empty());
+    CHECK(apart.findings.empty());
     // Parallel neighbours overlapping along their whole length: two open curves from end to end.
     const IntersectionReport parallel =
         pair(testing::tubeAlongX(0.5, 4, 0, 0, 0, s, "a"), testing::tubeAlongX(0.5, 4, 0, 0.9, 0, s, "b"));

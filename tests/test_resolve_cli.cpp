@@ -6,9 +6,12 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <set>
 
 #include "cli_runner.hpp"
 #include "mesh_checks.hpp"
@@ -36,12 +39,7 @@ fs::path scratch(const std::string& name)
     return p;
 }
 
-std::size_t count(const std::string& text, const std::string& what)
-{
-    std::size_t n = 0;
-    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-    return n;
-}
+using testing::count;
 
 /// The number of data lines after an Abaqus keyword line starting with @p keyword, up to the
 /// next keyword; entries per line for set lists.
@@ -223,7 +221,12 @@ TEST_CASE("towgeom resolve skips and names an open curve (exit 3), refuses bad u
     CHECK(report.find("\"skipped\":[{\"tow_a\":\"short\",\"tow_b\":\"crossing\",\"reason\":\"open curve:") != std::string::npos);
     CHECK(count(report, "\"boundary_loops\":2") == 2);
     checkTubes(dir / "out", {"short", "crossing"});
-    CHECK(cli("resolve" + files + " --out '" + (dir / "out2").string() + "' --quiet --allow-open").status == 0);
+    const Run allowed = cli("resolve" + files + " --out '" + (dir / "out2").string() + "' --quiet --allow-open");
+    CHECK(allowed.status == 0);
+    CHECK(allowed.err == r.err);  // still named: a warning, not progress
+    CHECK(r.err ==
+          "towgeom resolve: unresolved tow pair 'short' and 'crossing': open intersection curve: the curve reaches an end of the "
+          "first tow [open_curve]\n");
     for (const std::string& args : {std::string("resolve") + files, "resolve" + files + " --out x --formats stl,obj",
                                     "resolve" + files + " --out x --min-angle 40", "resolve" + files + " --out x --mesh-size -1"}) {
         DYNAMIC_SECTION(args)
@@ -235,7 +238,7 @@ TEST_CASE("towgeom resolve skips and names an open curve (exit 3), refuses bad u
     }
     CHECK_FALSE(fs::exists("x"));
     const Run help = cli("resolve --help");
-    for (const char* word : {"--primary", "--mesh-size", "--loop-spacing", "--formats", "report.json", "Exit status", "Example"})
+    for (const char* word : {"--primary", "--mesh-size", "--loop-spacing", "--formats", "report.json", "\"unresolved\"", "Exit status", "Example"})
         CHECK(help.out.find(word) != std::string::npos);
     fs::remove_all(dir);
 }
@@ -254,5 +257,150 @@ TEST_CASE("towgeom resolve says when the mesh size is too coarse for the tows' c
     CHECK(below);
     CHECK((r.err.find("note: mesh quality below the usual target") != std::string::npos) == below);
     CHECK(r.err.find("try a smaller --mesh-size") != std::string::npos);
+    fs::remove_all(out);
+}
+
+TEST_CASE("a failed resolve leaves the output directory exactly as it was", "[cli][resolve][output]")
+{
+    // report.json, the last file renamed into place, is a directory that is not empty: the run
+    // fails at its last rename, after warp_0.vtk (older, replaced) and three new files went in.
+    const fs::path out = scratch("rollback");
+    fs::create_directories(out / "report.json");
+    std::ofstream(out / "report.json" / "inside") << "x";
+    std::ofstream(out / "warp_0.vtk", std::ios::binary) << "older warp_0.vtk\n";
+    std::ofstream(out / "notes.txt") << "the user's own file\n";
+    const auto before = testing::snapshot(out);
+    const Run r = cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + out.string() + "' --quiet");
+    INFO(r.err);
+    CHECK(r.status == 1);
+    CHECK(r.err == "towgeom resolve: " + (out / "report.json").string() + ": cannot rename into place: Is a directory [write_failed]\n");
+    const auto after = testing::snapshot(out);
+    INFO("after: " << testing::names(after));
+    CHECK(after == before);
+    CHECK(after.at("warp_0.vtk") == "older warp_0.vtk\n");
+
+    // Without the obstacle: written, the older file replaced, no backup or temporary left.
+    fs::remove_all(out / "report.json");
+    const Run ok = cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + out.string() + "' --quiet");
+    CHECK(ok.status == 0);
+    const auto written = testing::snapshot(out);
+    CHECK(testing::names(written) == "notes.txt report.json warp_0.stl warp_0.vtk weft_0.stl weft_0.vtk ");
+    CHECK(written.at("warp_0.vtk").rfind("# vtk DataFile Version 3.0\n", 0) == 0);
+    fs::remove_all(out);
+}
+
+TEST_CASE("towgeom resolve: nested, identical and through-going tows are unresolved pairs (exit 3), named under --quiet", "[cli][resolve][unresolved]")
+{
+    const fs::path dir = scratch("unresolved");
+    testing::Sampling s;
+    s.points = 32;
+    const auto file = [&](const TowStack& t) {
+        fs::create_directories(dir);
+        std::ofstream o(dir / (t.name + ".stw"));
+        writeStack(o, t);
+        return " '" + (dir / (t.name + ".stw")).string() + "'";
+    };
+    const std::string outer = file(testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "outer"));
+    const std::string inner = file(testing::tubeAlongX(0.25, 4.0, 0.0, 0.0, 0.0, s, "inner"));  // scaled about the axis
+    const std::string twin = file(testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "twin"));
+    const std::string thin = file(testing::tubeAlongY(0.1, 0.0, s, "thin"));  // right through outer
+    struct Case {
+        std::string label, files, a, b, reason, message;
+    };
+    const std::vector<Case> cases{
+        {"nested", outer + inner, "outer", "inner", "nested", "tow 'inner' lies inside tow 'outer' (a complete overlap: no intersection curve)"},
+        {"identical", outer + twin, "outer", "twin", "identical_or_touching",
+         "the surfaces touch or coincide (their facets cross) but do not cross each other along a curve: no interpenetration loop"},
+        {"through", outer + thin, "outer", "thin", "winds_around", "the loop goes around tow 'thin' (one tow passes through the other)"}};
+    for (const Case& c : cases) {
+        for (const char* options : {" --quiet", " --quiet --allow-open"}) {
+            DYNAMIC_SECTION(c.label << options)
+            {
+                const fs::path out = dir / ("out_" + c.label);
+                fs::remove_all(out);
+                const Run r = cli("resolve" + c.files + " --out '" + out.string() + "'" + options);
+                CHECK(r.status == 3);
+                CHECK(r.err == "towgeom resolve: unresolved tow pair '" + c.a + "' and '" + c.b + "': " + c.message + " [" + c.reason + "]\n");
+                // The rest is written all the same: both tows meshed as tubes, no region.
+                const std::string report = testing::slurp(out / "report.json");
+                CHECK(report.find("\"unresolved\":[{\"tow_a\":\"" + c.a + "\",\"tow_b\":\"" + c.b + "\",\"reason\":\"" + c.reason +
+                                  "\",\"message\":\"" + c.message + "\"}]") != std::string::npos);
+                CHECK(report.find("\"regions\":[]") != std::string::npos);
+                CHECK(count(report, "\"boundary_loops\":2") == 2);
+                std::set<std::string> written;
+                for (const auto& entry : testing::snapshot(out)) written.insert(entry.first);
+                CHECK(written == std::set<std::string>{c.a + ".stl", c.a + ".vtk", c.b + ".stl", c.b + ".vtk", "report.json"});
+            }
+        }
+    }
+    fs::remove_all(dir);
+}
+
+TEST_CASE("towgeom resolve --quiet still notes a mesh too coarse for the tows' curvature", "[cli][resolve][unresolved]")
+{
+    // The bundled twill at h = 0.4: the smallest 3D angle is about 3 degrees.
+    const fs::path out = scratch("coarse_quiet");
+    const Run r = cli("resolve" + twill({"warp_0", "warp_1", "warp_2", "warp_3", "weft_0", "weft_1", "weft_2", "weft_3"}) +
+                      " --out '" + out.string() + "' --mesh-size 0.4 --quiet");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const std::string report = testing::slurp(out / "report.json");
+    const double smallest = jsonNumber(report, "min_angle_deg");
+    CHECK(smallest < 10.0);
+    // Exactly one line: the note, with the report's smallest angle (printed to 6 digits).
+    const std::string prefix = "towgeom resolve: note: mesh quality below the usual target (smallest angle ";
+    REQUIRE(r.err.rfind(prefix, 0) == 0);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(std::stod(r.err.substr(prefix.size())) == Approx(smallest).epsilon(1e-5));
+    CHECK(r.err.find("try a smaller --mesh-size\n") != std::string::npos);
+    fs::remove_all(out);
+}
+
+TEST_CASE("towgeom resolve refuses a mesh over --max-triangles at once, with the estimate (exit 2)", "[cli][resolve][budget]")
+{
+    // The bundled twill at h = 1e-5: about 3 x area / (sqrt(3)/4 h^2) = 4.7e12 triangles (it once
+    // ended in std::bad_alloc after 30 s, exit 1).
+    const std::vector<std::string> names{"warp_0", "warp_1", "warp_2", "warp_3", "weft_0", "weft_1", "weft_2", "weft_3"};
+    double area = 0.0;
+    for (const std::string& n : names) area += TowSurface::fit(readStackFile(std::string(TOWGEOM_EXAMPLE_DATA) + "/twill/" + n + ".stw")).area();
+    const double expected = 3.0 * area / (std::sqrt(3.0) / 4.0 * 1e-10);
+    const fs::path out = scratch("budget");
+    const auto t0 = std::chrono::steady_clock::now();
+    const Run r = cli("resolve" + twill(names) + " --out '" + out.string() + "' --mesh-size 1e-5 --quiet");
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK(seconds < 5.0);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    std::smatch m;
+    REQUIRE(std::regex_search(r.err, m, std::regex("^towgeom resolve: the meshes would have about ([0-9.e+]+) triangles \\(")));
+    CHECK(std::stod(m[1].str()) == Approx(expected).epsilon(5e-3));
+    CHECK(r.err.find("at mesh size h = 1e-05), over the limit of 20000000 (MeshOptions::maxTriangles); refused before meshing; "
+                     "--max-triangles N raises the limit") != std::string::npos);
+    CHECK(r.err.find("[too_large]\n") != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+
+    // A small case either side of its estimate: the straight tube at h = 0.1, 3 x 12.566 /
+    // (sqrt(3)/4 0.01) = 8706 triangles.
+    const std::string tube = " '" + std::string(TOWGEOM_EXAMPLE_DATA) + "/straight_tube.stw' --mesh-size 0.1 --quiet --out '" + out.string() + "'";
+    const Run low = cli("resolve" + tube + " --max-triangles 8000");
+    CHECK(low.status == 2);
+    CHECK(low.err.find("over the limit of 8000 (MeshOptions::maxTriangles)") != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+    const Run raised = cli("resolve" + tube + " --max-triangles 9000");
+    INFO(raised.err);
+    REQUIRE(raised.status == 0);
+    const double triangles = jsonNumber(testing::slurp(out / "report.json"), "triangles");
+    CHECK(triangles <= 9000);
+    CHECK(triangles >= 0.9 * 8706);
+    for (const char* bad : {"0", "1.5", "-3", "many"}) {
+        DYNAMIC_SECTION("--max-triangles " << bad)
+        {
+            const Run u = cli("resolve" + tube + " --max-triangles " + bad);
+            CHECK(u.status == 2);
+            CHECK(u.err.find("--max-triangles") != std::string::npos);
+            CHECK(std::count(u.err.begin(), u.err.end(), '\n') == 1);
+        }
+    }
     fs::remove_all(out);
 }

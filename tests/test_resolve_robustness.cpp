@@ -10,13 +10,18 @@
 #include <towgeom/tow_surface.hpp>
 #include <towgeom/weave.hpp>
 
+#include <towgeom/tow_intersection.hpp>
+
 #include <algorithm>
+#include <cmath>
 #include <map>
+#include <regex>
 #include <string>
 
 #include "cgal_reference.hpp"
 #include "cli_runner.hpp"
 #include "mesh_checks.hpp"
+#include "synthetic_tows.hpp"
 
 using namespace towgeom;
 using towgeom::testing::cli;
@@ -205,20 +210,105 @@ TEST_CASE("a mesh size near or over the tow circumference is refused or gives tu
 // CGAL (insert_constraint(v, v)). Run through the CLI so that a crash would not take the test
 // binary down. Today this input is refused: exit 1 (README: loops of different pairs meeting on
 // a tow are not resolved), one line naming the tow, code [internal], nothing written.
-TEST_CASE("a basket weave whose loops meet on a tow: a typed error, not a crash", "[resolve][robustness][cli]")
+TEST_CASE("a basket weave whose loops meet on a tow: the pairs on that tow are unresolved, the rest is written", "[resolve][robustness][cli]")
 {
     const auto dir = std::filesystem::temp_directory_path() / ("towgeom_review_basket_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     const Run g = cli("generate --weave basket --overlap 0.2 --quiet --out '" + (dir / "in").string() + "'");
     REQUIRE(g.status == 0);
-    const Run r = cli("resolve '" + (dir / "in").string() + "'/*.stw --quiet --loop-spacing 0.4 --out '" + (dir / "out").string() + "'");
-    INFO(r.err);
-    CHECK(r.status == 1);
-    CHECK(r.out.empty());
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-    CHECK(r.err.rfind("towgeom resolve: tow 'weft_1': two intersection-loop nodes (", 0) == 0);
-    CHECK(r.err.find("fall on the same point of the surface: intersection loops meet there") != std::string::npos);
-    CHECK(r.err.find("[internal]\n") != std::string::npos);
-    CHECK_FALSE(std::filesystem::exists(dir / "out"));
+    // Two loop nodes of different pairs fall on one point of warp_2: its 4 pairs are left out
+    // (mesh_failed, named), the other 12 loops resolved, every tow written as a tube. The same
+    // pairs whatever the number of threads.
+    for (const char* threads : {"1", "3"}) {
+        const std::string out = (dir / (std::string("out") + threads)).string();
+        const Run r = cli("resolve '" + (dir / "in").string() + "'/*.stw --quiet --loop-spacing 0.4 --threads " + threads + " --out '" + out + "'");
+        INFO(r.err);
+        CHECK(r.status == 3);
+        CHECK(r.out.empty());
+        for (const char* weft : {"weft_0", "weft_1", "weft_2", "weft_3"})
+            CHECK(r.err.find(std::string("towgeom resolve: unresolved tow pair 'warp_2' and '") + weft + "': tow 'warp_2' could not be meshed") !=
+                  std::string::npos);
+        CHECK(r.err.find("fall on the same point of the surface: intersection loops meet there") != std::string::npos);
+        const std::string report = testing::slurp(std::filesystem::path(out) / "report.json");
+        CHECK(testing::count(report, "\"reason\":\"mesh_failed\"") == 4);
+        CHECK(testing::count(report, "\"volume_removed\"") == 12);
+        CHECK(testing::count(report, "\"boundary_loops\":2") == 8);
+    }
     std::filesystem::remove_all(dir);
+}
+
+namespace {
+
+/// The triangle estimate in a TooLarge message: "... would have about X triangles (...".
+double estimateIn(const std::string& message)
+{
+    std::smatch m;
+    REQUIRE(std::regex_search(message, m, std::regex("would have about ([0-9.e+]+) triangles \\(")));
+    return std::stod(m[1].str());
+}
+
+}  // namespace
+
+TEST_CASE("a mesh over the triangle limit is refused before meshing, with the estimate", "[resolve][budget]")
+{
+    // Two crossing tubes of radius 0.5, axes 0.7 apart: one closed loop.
+    testing::Sampling s;
+    s.points = 32;
+    const std::vector<TowSurface> tows{TowSurface::fit(testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "x")),
+                                       TowSurface::fit(testing::tubeAlongY(0.5, 0.7, s, "y"))};
+    const double h = 0.1;
+    // The lateral areas of the two tubes (2 pi r L each, L = 4), in triangles of side h, times 3.
+    const double area = 2.0 * (2.0 * 3.14159265358979323846 * 0.5 * 4.0);
+    CHECK(tows[0].area() + tows[1].area() == Approx(area).epsilon(1e-3));  // 32-gon sampling
+    const double byArea = 3.0 * (tows[0].area() + tows[1].area()) / (std::sqrt(3.0) / 4.0 * h * h);
+    ResolveOptions o;
+    o.mesh.edgeLength = h;
+    o.threads = 2;
+
+    SECTION("over the limit by area: refused before intersecting")
+    {
+        o.mesh.maxTriangles = static_cast<std::size_t>(byArea) - 1;
+        try {
+            resolveTextile(tows, o);
+            FAIL("a mesh over the limit was made");
+        } catch (const Error& e) {
+            INFO(e.what());
+            CHECK(e.code() == ErrorCode::TooLarge);
+            CHECK(estimateIn(e.message()) == Approx(byArea).epsilon(5e-3));  // printed to 3 digits
+            CHECK(e.message().find("at mesh size h = 0.1), over the limit of " + std::to_string(o.mesh.maxTriangles) +
+                                   " (MeshOptions::maxTriangles); refused before meshing") != std::string::npos);
+            CHECK(e.message().find("loops") == std::string::npos);
+        }
+    }
+    SECTION("under it by area, over it with a fine loop spacing: refused once the loops are known")
+    {
+        o.mesh.maxTriangles = static_cast<std::size_t>(byArea) + 1;
+        o.mesh.loopSpacing = 1e-4;
+        const double loopLength = intersectPair(tows[0], tows[1]).at(0).length();
+        try {
+            resolveTextile(tows, o);
+            FAIL("a mesh over the limit was made");
+        } catch (const Error& e) {
+            INFO(e.what());
+            CHECK(e.code() == ErrorCode::TooLarge);
+            CHECK(estimateIn(e.message()) == Approx(byArea + 20.0 * loopLength * (1e4 - 1.0 / h)).epsilon(5e-3));
+            CHECK(e.message().find("at loop spacing s = 0.0001), over the limit of") != std::string::npos);
+        }
+    }
+    SECTION("under it: meshed, with about the estimated number of triangles")
+    {
+        o.mesh.maxTriangles = static_cast<std::size_t>(byArea) + 1;
+        const ResolveResult r = resolveTextile(tows, o);
+        CHECK(r.mesh.regions.size() == 1);
+        std::size_t triangles = 0;
+        for (const TowMesh& m : r.mesh.tows) triangles += m.triangles.size();
+        INFO(triangles << " triangles, estimated " << byArea);
+        CHECK(std::abs(static_cast<double>(triangles) / byArea - 1.0) < 0.1);
+    }
+    SECTION("a limit of 0 is refused")
+    {
+        o.mesh.maxTriangles = 0;
+        CHECK_THROWS_MATCHES(resolveTextile(tows, o), Error,
+                             Catch::Matchers::Predicate<Error>([](const Error& e) { return e.code() == ErrorCode::InvalidArgument; }));
+    }
 }

@@ -109,13 +109,25 @@ TEST_CASE("a coordinate below the smallest double reads as zero and huge scales 
     for (int i = 0; i < 4; ++i) text += (i ? "\n" : "") + hexagon(i);
     text.replace(0, 5, "1e-400 1 0");
     CHECK(parse(text).sections[0][0].x == 0.0);
-    // Scaled by 1e140 and by 1e-140: valid tows, whatever their units.
-    for (const double scale : {1e140, 1e-140}) {
+    // Scaled by 1e90 and by 1e-90: valid tows, whatever their units. Beyond 1e100 (coordinates)
+    // and below 1e-100 (section extents) volumes could not be represented: refused.
+    for (const double scale : {1e90, 1e-90, 1e110, 1e-110}) {
+        INFO("scale " << scale);
         testing::Sampling sampling;
         TowStack s = testing::ellipticalTube(0.5, 0.3, 3.0, sampling, "scaled");
         for (auto& section : s.sections)
             for (Point3& p : section) p = scale * p;
-        CHECK_NOTHROW(validateStack(s));
+        if (scale > 1e-100 && scale < 1e100) {
+            CHECK_NOTHROW(validateStack(s));
+        } else {
+            try {
+                validateStack(s);
+                FAIL("accepted");
+            } catch (const Error& e) {
+                CHECK(e.code() == ErrorCode::OutOfRange);
+                CHECK(std::string(e.what()).find(scale > 1.0 ? "beyond +-1e100" : "below 1e-100") != std::string::npos);
+            }
+        }
     }
 }
 
@@ -190,5 +202,38 @@ TEST_CASE("an in-memory stack that breaks a rule is refused naming its section",
     } catch (const Error& e) {
         CHECK(e.code() == ErrorCode::NonFinite);
         CHECK(std::string(e.what()).find("tow 'mem_tow'") != std::string::npos);
+    }
+}
+
+TEST_CASE("coinciding sections are named by their own numbers", "[reader][malformed]")
+{
+    // repeated_section.stw: its third section (1-based) repeats the second, from line 21.
+    const std::string path = std::string(TOWGEOM_TEST_DATA) + "/malformed/repeated_section.stw";
+    try {
+        readStackFile(path);
+        FAIL("accepted a repeated section");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::DegenerateTow);
+        CHECK(e.message() == "section 3 coincides with section 2");
+        CHECK(e.line() == 21);
+        CHECK(std::string(e.what()) == path + ":21: section 3 coincides with section 2");
+    }
+    // In memory, at both ends of a 21-section tube: the first and the last pair.
+    for (const std::size_t second : {std::size_t(1), std::size_t(20)}) {
+        DYNAMIC_SECTION("section " << second + 1 << " repeats section " << second)
+        {
+            TowStack s = testing::ellipticalTube(1.0, 0.5, 2.0, {}, "mem_tow");
+            s.source.clear();
+            s.sections[second] = s.sections[second - 1];
+            try {
+                validateStack(s);
+                FAIL("accepted a repeated section");
+            } catch (const Error& e) {
+                CHECK(e.code() == ErrorCode::DegenerateTow);
+                CHECK(e.message() ==
+                      "section " + std::to_string(second + 1) + " coincides with section " + std::to_string(second));
+                CHECK(e.file() == "tow 'mem_tow'");
+            }
+        }
     }
 }

@@ -17,7 +17,7 @@ enum class ErrorCode {
     NonNumeric,               ///< A token that should be a number is not one.
     WrongCoordinateCount,     ///< A point line does not hold exactly three coordinates.
     NonFinite,                ///< A coordinate is NaN or infinite.
-    OutOfRange,               ///< A coordinate's magnitude exceeds 1e150.
+    OutOfRange,               ///< A coordinate's magnitude exceeds 1e100, or a section is less than 1e-100 across.
     BadName,                  ///< A `tow NAME` line is malformed or the name is unsafe as a file name.
     UnequalSectionSize,       ///< Sections do not all have the same number of points.
     TooFewSections,           ///< Fewer than 4 sections.
@@ -32,7 +32,10 @@ enum class ErrorCode {
     InvalidArgument,          ///< A caller-supplied option or argument is out of its domain.
     FitFailed,                ///< The surface fit could not be computed (singular system, ...).
     WriteFailed,              ///< An output file could not be written.
-    Internal                  ///< A geometry kernel failed unexpectedly; the message says where.
+    Internal,                 ///< A geometry kernel failed unexpectedly; the message says where.
+    TooLarge                  ///< The mesh or tessellation asked for would exceed its size limit
+                              ///< (MeshOptions::maxTriangles); refused before it is made, the
+                              ///< message gives the estimate and the limit.
 };
 
 /// A short, stable, machine-readable name of a code, e.g. "non_numeric".

@@ -93,8 +93,12 @@ public:
     /// @throws towgeom::Error (InvalidArgument) if @p spacing is not positive and finite, or so
     ///         small that the curve would get more than 1e7 points.
     std::vector<LoopPoint> resample(double spacing) const;
-    /// The curve as an evaluable B-spline interpolating points() (periodic when closed).
+    /// The curve as an evaluable B-spline interpolating points() (periodic when closed); its
+    /// parameter is proportional to the arc length of the polyline through points().
     Curve3 curve() const;
+
+    /// The loop's data; for the library's own use.
+    const Data& data() const { return *data_; }
 
 private:
     std::shared_ptr<const Data> data_;

@@ -2,6 +2,8 @@
 /// @brief MeshOptions: size and quality of the tow surface meshes (ParametricMesher).
 #pragma once
 
+#include <cstddef>
+
 namespace towgeom {
 
 /// How each tow's surface is meshed. Lengths are in the user's units; 0 means "relative to the
@@ -19,6 +21,12 @@ struct MeshOptions {
     /// Spacing of the nodes along intersection loops. 0 (default): the edge length h. A smaller
     /// spacing refines the mesh along loops ("high" refinement), a larger one coarsens it.
     double loopSpacing = 0.0;
+    /// The most triangles the meshes may have, all tows together (about 250 bytes of memory
+    /// each while meshing). resolveTextile() estimates the count before meshing (about 3 x the
+    /// tows' area / (sqrt(3)/4 h^2), the mesher keeping every edge below h, plus about 20 x the
+    /// loops' length x (1/loopSpacing - 1/h) for a loop spacing below h) and refuses a mesh over
+    /// this with ErrorCode::TooLarge. Default 20 million (about 5 GB); must be at least 1.
+    std::size_t maxTriangles = 20000000;
 };
 
 }  // namespace towgeom

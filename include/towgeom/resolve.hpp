@@ -59,6 +59,21 @@ struct ResolveTimings {
     double regions = 0.0;    ///< classification, swap, volumes, quality
 };
 
+/// A tow pair whose interpenetration was not resolved, and why. The rest of the textile is.
+struct UnresolvedPair {
+    /// Why the pair was left out.
+    enum class Reason {
+        /// The mesh of one of the tows could not be made with this pair's loops as constraints
+        /// (or was not a tube): every pair with loops on that tow was left out and the textile
+        /// meshed again without them.
+        MeshFailed
+    };
+    std::size_t towA = 0;  ///< lower tow index
+    std::size_t towB = 0;  ///< higher tow index
+    Reason reason = Reason::MeshFailed;  ///< why
+    std::string message;   ///< a sentence naming the tows and the failure
+};
+
 /// The result of resolveTextile().
 struct ResolveResult {
     IntersectionReport intersections;  ///< every loop found (open ones included)
@@ -67,6 +82,9 @@ struct ResolveResult {
     /// Loops that were not resolved (open, or winding around a tow), by index in
     /// intersections.loops, with the reason.
     std::vector<std::pair<std::size_t, std::string>> skipped;
+    /// Tow pairs left unresolved so that the rest of the textile could be (their loops are in
+    /// intersections.loops but bound no region).
+    std::vector<UnresolvedPair> unresolved;
     MeshQuality quality;               ///< of the final meshes
     /// Meshing rounds: the mesher never splits a loop or seam edge itself; where a triangle needs
     /// such a split to meet the bounds, the split became a node of both sides and the tows
@@ -84,8 +102,10 @@ struct ResolveResult {
 ///
 /// Open loops and loops winding around a tow are not resolved (see ResolveResult::skipped).
 /// @throws towgeom::Error (InvalidArgument) for bad options, including a mesh size over a
-/// quarter of the smallest tow's circumference; (Internal) if a kernel fails, if loops of
-/// different tow pairs meet on a tow, or if a resolved tow is not a tube open at its two ends.
+/// quarter of the smallest tow's circumference; (TooLarge) when the estimated triangle count is
+/// over MeshOptions::maxTriangles (checked before intersecting, and with the loops' refinement
+/// before meshing); (Internal) if a kernel fails, if loops of different tow pairs meet on a
+/// tow, or if a resolved tow is not a tube open at its two ends.
 ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveOptions& options = {});
 
 }  // namespace towgeom

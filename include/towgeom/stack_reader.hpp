@@ -32,7 +32,7 @@ namespace towgeom {
 /// Streams the file line by line (memory grows with the number of points, not the file's size).
 /// @throws towgeom::Error naming the file and line for a missing or unreadable file, an empty
 ///         file, binary data, an over-long line, a non-numeric token, a line with other than 3
-///         coordinates, NaN/Inf, a coordinate beyond 1e150, and every rule of validateStack().
+///         coordinates, NaN/Inf, a coordinate beyond 1e100, and every rule of validateStack().
 TowStack readStackFile(const std::string& path);
 
 /// Reads and validates a stack from a stream; @p sourceName is used in messages and

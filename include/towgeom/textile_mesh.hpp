@@ -30,6 +30,9 @@ struct ConnectedRegion {
     std::size_t primary = 0;             ///< tow index of the primary tow
     std::size_t secondary = 0;           ///< tow index of the secondary tow
     std::size_t loop = 0;                ///< index of the loop in the intersection report
+    /// Loops of the same tow pair inside this one (islands where the surfaces separate again):
+    /// holes of the region, by index in the intersection report.
+    std::vector<std::size_t> holes;
     std::vector<std::size_t> triangles;  ///< indices into the primary's TowMesh::triangles
     std::vector<std::size_t> nodes;      ///< global nodes of those triangles (sorted)
     std::vector<std::size_t> loopNodes;  ///< global nodes on the loop, in loop order
@@ -42,7 +45,7 @@ struct ConnectedRegion {
 struct TextileMesh {
     std::vector<Point3> nodes;             ///< global node positions
     std::vector<TowMesh> tows;             ///< one per input tow, in input order
-    std::vector<ConnectedRegion> regions;  ///< one per resolved loop
+    std::vector<ConnectedRegion> regions;  ///< one per resolved loop that is not a hole of another
 
     /// Tow @p tow's mesh as a standalone TriangleMesh (only the nodes it uses, renumbered in
     /// the order the triangles first use them).

@@ -44,7 +44,7 @@ struct TowStack {
 /// Checks a stack against every rule a TowSurface relies on and throws towgeom::Error naming the
 /// source and line of the first offence:
 /// at least TowStack::kMinSections sections and TowStack::kMinPointsPerSection points each, equal
-/// point counts, finite coordinates of magnitude at most 1e150, no consecutive duplicate points,
+/// point counts, finite coordinates of magnitude at most 1e100, sections at least 1e-100 across, no consecutive duplicate points,
 /// no zero-area or self-intersecting section (checked exactly, in the section's best-fit plane),
 /// one orientation for all sections, no two consecutive sections that coincide, and consistent
 /// first points (a section whose points, rotated by k places, match the previous section much

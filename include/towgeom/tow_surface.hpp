@@ -15,6 +15,10 @@
 
 namespace towgeom {
 
+namespace detail {
+struct TowSurfaceAccess;
+}  // namespace detail
+
 /// The parameter rectangle of a TowSurface.
 struct ParameterRange {
     double uMin = 0.0;  ///< first u (first section)
@@ -163,6 +167,7 @@ public:
     const Impl& impl() const { return *impl_; }
 
 private:
+    friend struct detail::TowSurfaceAccess;
     explicit TowSurface(std::shared_ptr<const Impl> impl);
     std::shared_ptr<const Impl> impl_;
 };

@@ -77,4 +77,12 @@ std::size_t Args::threads() const
     return static_cast<std::size_t>(*n);
 }
 
+std::size_t Args::maxTriangles(std::size_t fallback) const
+{
+    const auto n = number("max-triangles");
+    if (!n) return fallback;
+    if (!(*n >= 1.0 && *n <= 1e15) || std::floor(*n) != *n) throw UsageError("--max-triangles must be a whole number from 1 to 1e15");
+    return static_cast<std::size_t>(*n);
+}
+
 }  // namespace towgeom::cli

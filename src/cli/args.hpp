@@ -41,6 +41,8 @@ public:
     double positive(const std::string& name) const;
     /// --threads N as a whole number from 1 to 1024, 0 when absent (all hardware threads).
     std::size_t threads() const;
+    /// --max-triangles N as a whole number from 1 to 1e15; @p fallback when absent.
+    std::size_t maxTriangles(std::size_t fallback) const;
 
 private:
     std::map<std::string, std::vector<std::string>> values_;

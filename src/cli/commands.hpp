@@ -1,6 +1,7 @@
 // The towgeom subcommands. Each returns the process exit code:
 //   0 success, 2 bad input or usage (one line on stderr), 1 failure to write or internal error,
-//   3 (detect) an intersection curve is open.
+//   3 (detect, resolve) a tow pair is unresolved: an open intersection curve, tows that overlap
+//   without a curve (nested, identical, touching), or (resolve) a loop around a tow.
 #pragma once
 
 namespace towgeom::cli {
@@ -8,7 +9,7 @@ namespace towgeom::cli {
 constexpr int kExitOk = 0;
 constexpr int kExitFailure = 1;
 constexpr int kExitInput = 2;
-constexpr int kExitOpenCurve = 3;
+constexpr int kExitUnresolved = 3;
 
 /// `towgeom fit FILE.stw... [options]`; argv[first] is the first argument after "fit".
 int runFit(int argc, char** argv, int first);

@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "cli/tow_input.hpp"
 #include "cli/loop_json.hpp"
+#include "cli/unresolved_pairs.hpp"
 #include "core/json_writer.hpp"
 #include "towgeom/towgeom.hpp"
 
@@ -37,7 +38,8 @@ prints one JSON object on stdout with one entry per intersection curve:
   pairs_tested  tow pairs whose bounding boxes (per span of the surfaces) overlap; only
                 these go to the exact surface-surface intersection
   findings      pairs that meet without an intersection curve: "touching" (surfaces tangent
-                or coincident) or "nested" (one tow inside the other); also a note on stderr
+                or coincident, e.g. identical tows) or "nested" (one tow inside the other):
+                complete overlaps, unresolved pairs (exit 3, named on stderr)
 
 Options:
   --tolerance T       largest distance of a curve point from either surface, in the input's
@@ -45,15 +47,19 @@ Options:
   --chordal C         largest distance of the curve from a chord between its points
                       (default: 1e-4 x the tow size)
   --spacing S         print points spaced at most S apart along each curve instead
-  --allow-open        exit 0 even when a curve is open (still reported in the JSON)
+  --allow-open        exit 0 even when a curve is open (still named on stderr and reported in
+                      the JSON); nested, identical or touching tows still exit 3
   --threads N         worker threads for reading, fitting and intersecting (default: all
                       hardware threads)
-  --quiet             no progress lines on stderr
+  --quiet             no progress lines on stderr (warnings are always printed)
   -h, --help          this help
 
-Exit status: 0 every curve is closed; 3 some curve is open (one stderr line per tow pair with
-an open curve; the JSON is printed all the same), unless --allow-open; 2 invalid input or
-usage (one line on stderr naming file and line); 1 internal failure.
+Exit status: 0 every curve is closed and no tows overlap without one; 3 a tow pair is
+unresolved: a curve is open (unless --allow-open), or two tows overlap with no curve (one inside
+the other, identical or touching). One stderr line per such pair, also with --quiet:
+  towgeom detect: unresolved tow pair 'a' and 'b': MESSAGE [open_curve|nested|identical_or_touching]
+and the JSON is printed all the same. 2 invalid input or usage (one line on stderr naming file
+and line); 1 internal failure.
 
 Example:
   towgeom detect examples/data/twill/*.stw > loops.json
@@ -106,7 +112,7 @@ int runDetect(int argc, char** argv, int first)
         detail::JsonWriter json(out);
         json.beginObject();
         writeLoopsJson(json, report, surfaces, spacing, options.threads);
-        writeFindingsJson(json, report, surfaces, "detect", quiet);
+        writeFindingsJson(json, report, surfaces);
         json.key("tow_pairs").value(report.towPairs);
         json.key("pairs_tested").value(report.pairsTested);
         json.key("window_pairs").value(report.windowPairs);
@@ -125,9 +131,10 @@ int runDetect(int argc, char** argv, int first)
         if (!quiet)
             std::cerr << "towgeom detect: " << report.loops.size() << " intersection curves (" << report.openCount()
                       << " open) among " << report.pairsTested << " candidate tow pairs\n";
-        if (report.openCount() == 0 || args.has("allow-open")) return kExitOk;
-        reportOpenCurves("detect", report, surfaces);
-        return kExitOpenCurve;
+        // Warnings, not progress: printed whatever --quiet says.
+        const std::vector<UnresolvedEntry> unresolved = unresolvedPairs(report);
+        reportUnresolved("detect", unresolved, surfaces);
+        return exitsUnresolved(unresolved, args.has("allow-open")) ? kExitUnresolved : kExitOk;
     } catch (const std::exception& e) {
         return reportError("detect", e);
     }

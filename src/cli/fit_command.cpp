@@ -41,11 +41,14 @@ Options:
                   (legacy VTK polydata with normals). Files appear only if every tow succeeds.
   --samples U,V   tessellation density for --out: U stations along, V around
                   (default: 3 per section interval along, 3 per input point around)
+  --max-triangles N  refuse (exit 2, before fitting) tessellations of more than N triangles,
+                  2 (U - 1) V per tow, all tows together (default 20000000)
   --quiet         no progress lines on stderr
   -h, --help      this help
 
-Exit status: 0 success; 2 invalid input or usage (one line on stderr naming file and line);
-1 an output file could not be written.
+Exit status: 0 success; 2 invalid input or usage (one line on stderr naming file and line),
+or a tessellation over --max-triangles; 1 an output file could not be written, or an internal
+failure (a failed run leaves DIR exactly as it was).
 
 Example:
   towgeom fit examples/data/*.stw --out fitted/ > fit.json
@@ -91,7 +94,8 @@ int runFit(int argc, char** argv, int first)
 {
     try {
         const Args args(argc, argv, first,
-                        {{"help"}, {"quiet"}, {"mode", true}, {"tolerance", true}, {"out", true}, {"samples", true}});
+                        {{"help"}, {"quiet"}, {"mode", true}, {"tolerance", true}, {"out", true}, {"samples", true},
+                         {"max-triangles", true}});
         if (args.has("help")) {
             std::cout << kFitHelp;
             return kExitOk;
@@ -107,10 +111,30 @@ int runFit(int argc, char** argv, int first)
         const Samples samples = parseSamples(args.value("samples"));
         const auto outDir = args.value("out");
         if (!outDir && args.has("samples")) throw UsageError("--samples applies to --out only");
+        if (!outDir && args.has("max-triangles")) throw UsageError("--max-triangles applies to --out only");
+        const std::size_t maxTriangles = args.maxTriangles(MeshOptions{}.maxTriangles);
         const bool quiet = args.has("quiet");
 
         // Read everything first: one bad file stops the run before anything is written.
         const std::vector<TowStack> stacks = readStacks(args.positional());
+        // The tessellation's size, before any of it is made: nu x nv vertices, 2 (nu - 1) nv triangles per tow.
+        const auto stations = [&](const TowStack& s) {
+            return std::make_pair(samples.u ? samples.u : 3 * (s.sectionCount() - 1) + 1, samples.v ? samples.v : 3 * s.pointsPerSection());
+        };
+        if (outDir) {
+            double triangles = 0.0;
+            for (const TowStack& s : stacks) {
+                const auto [nu, nv] = stations(s);
+                triangles += 2.0 * static_cast<double>(nu - 1) * static_cast<double>(nv);
+            }
+            if (triangles > static_cast<double>(maxTriangles)) {
+                std::ostringstream message;
+                message << "the tessellations for --out would have " << static_cast<unsigned long long>(triangles)
+                        << " triangles (2 (U - 1) V per tow, " << stacks.size() << " tows), over the limit of " << maxTriangles
+                        << "; --max-triangles N raises it, a smaller --samples U,V makes fewer";
+                throw Error(ErrorCode::TooLarge, message.str());
+            }
+        }
         const std::vector<TowSurface> surfaces = fitSurfaces(stacks, options, "fit", quiet);
 
         // Every figure first: an error here must leave neither files nor half a report.
@@ -142,14 +166,11 @@ int runFit(int argc, char** argv, int first)
         json.endArray().endObject();
 
         if (outDir) {
-            std::error_code ec;
-            std::filesystem::create_directories(*outDir, ec);
-            if (ec || !std::filesystem::is_directory(*outDir))
-                throw Error(ErrorCode::WriteFailed, "cannot create output directory", *outDir);
             detail::OutputFiles files;
-            for (const TowSurface& s : surfaces) {
-                const std::size_t nu = samples.u ? samples.u : 3 * (s.sectionCount() - 1) + 1;
-                const std::size_t nv = samples.v ? samples.v : 3 * s.pointsPerSection();
+            files.makeDirectory(*outDir);
+            for (std::size_t k = 0; k < surfaces.size(); ++k) {
+                const TowSurface& s = surfaces[k];
+                const auto [nu, nv] = stations(stacks[k]);
                 const std::string path = (std::filesystem::path(*outDir) / (s.name() + ".vtk")).string();
                 detail::writeVtkPolyData(files.open(path), s.tessellate(nu, nv), "towgeom surface of tow " + s.name());
             }

@@ -1,7 +1,6 @@
 #include "cli/loop_json.hpp"
 
 #include <algorithm>
-#include <iostream>
 
 #include "core/parallel.hpp"
 
@@ -42,35 +41,15 @@ void writeLoopsJson(detail::JsonWriter& json, const IntersectionReport& report, 
     json.endArray();
 }
 
-void writeFindingsJson(detail::JsonWriter& json, const IntersectionReport& report, const std::vector<TowSurface>& tows,
-                       const char* command, bool quiet)
+void writeFindingsJson(detail::JsonWriter& json, const IntersectionReport& report, const std::vector<TowSurface>& tows)
 {
     json.key("findings").beginArray();
     for (const PairFinding& f : report.findings) {
         const char* kind = f.kind == PairFinding::Kind::Nested ? "nested" : "touching";
         json.beginObject().key("tow_a").value(tows[f.towA].name()).key("tow_b").value(tows[f.towB].name());
         json.key("kind").value(kind).key("message").value(f.message).endObject();
-        if (!quiet)
-            std::cerr << "towgeom " << command << ": note: tows '" << tows[f.towA].name() << "' and '" << tows[f.towB].name()
-                      << "': " << f.message << "\n";
     }
     json.endArray();
-}
-
-std::size_t reportOpenCurves(const char* command, const IntersectionReport& report, const std::vector<TowSurface>& tows)
-{
-    std::size_t pairs = 0;
-    std::string lastPair;
-    for (const IntersectionLoop& l : report.loops) {
-        if (l.closed()) continue;
-        const std::string pair = tows[l.towA()].name() + "' and '" + tows[l.towB()].name();
-        if (pair == lastPair) continue;
-        lastPair = pair;
-        ++pairs;
-        std::cerr << "towgeom " << command << ": open intersection curve between tows '" << pair << "': " << l.openReason()
-                  << " [open_curve]\n";
-    }
-    return pairs;
 }
 
 }  // namespace towgeom::cli

@@ -1,4 +1,4 @@
-// The "loops" array of detect's and resolve's JSON reports, and the open-curve messages.
+// The "loops" and "findings" arrays of detect's and resolve's JSON reports.
 #pragma once
 
 #include <cstddef>
@@ -16,12 +16,8 @@ namespace towgeom::cli {
 void writeLoopsJson(detail::JsonWriter& json, const IntersectionReport& report, const std::vector<TowSurface>& tows,
                     double spacing, std::size_t threads);
 
-/// Writes key "findings" and the array: per finding tow_a, tow_b, kind (touching, nested), message;
-/// and, unless @p quiet, one stderr line per finding.
-void writeFindingsJson(detail::JsonWriter& json, const IntersectionReport& report, const std::vector<TowSurface>& tows,
-                       const char* command, bool quiet);
-
-/// One stderr line per tow pair with an open curve; returns how many pairs.
-std::size_t reportOpenCurves(const char* command, const IntersectionReport& report, const std::vector<TowSurface>& tows);
+/// Writes key "findings" and the array: per finding tow_a, tow_b, kind (touching, nested), message.
+/// (The stderr lines for them: reportUnresolved() in unresolved_pairs.hpp.)
+void writeFindingsJson(detail::JsonWriter& json, const IntersectionReport& report, const std::vector<TowSurface>& tows);
 
 }  // namespace towgeom::cli

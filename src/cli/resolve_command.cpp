@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/loop_json.hpp"
 #include "cli/tow_input.hpp"
+#include "cli/unresolved_pairs.hpp"
 #include "core/json_writer.hpp"
 #include "core/parallel.hpp"
 #include "export/model_formats.hpp"
@@ -37,14 +38,22 @@ contact). Writes, all or nothing:
   DIR/textile.inp  with --formats inp: Abaqus, *NODE, *ELEMENT TYPE=S3 with ELSET=TOW_NAME,
                    *ELSET/*NSET REGION_k
   DIR/report.json  {"tows":[{"name","role","volume_before","volume_after","area","triangles",
-                   "boundary_loops"}], "loops":[...as detect...], "regions":[{"primary",
-                   "secondary","triangles","nodes","area","volume_removed"}], "skipped":[...],
-                   "node_count",
+                   "boundary_loops"}], "loops":[...as detect...], "findings":[...as detect...],
+                   "unresolved":[{"tow_a","tow_b","reason","message"}], "regions":[{"primary",
+                   "secondary","triangles","nodes","area","volume_removed"}],
+                   "skipped":[{"tow_a","tow_b","reason"}], "node_count",
                    "mesh_quality":{"min_angle_deg","angle_histogram","fraction_at_least_20",
                    "triangles","faces_over_bounds"},
                    "mesh_rounds", "timings_ms":{...}}
 
   role            primary (keeps its surface), secondary (gave volume), both, or none
+  unresolved      tow pairs that meet but were not resolved (their meshes still overlap), once
+                  per pair and reason: open_curve (a curve runs into a tow's end), winds_around
+                  (a loop goes around a tow: one passes through the other), nested (one tow
+                  inside the other), identical_or_touching (surfaces coincide or touch, no curve),
+                  mesh_failed (a tow could not be meshed with the pair's loops, e.g. loops of
+                  three tows crossing at one point: those pairs are left out, the rest resolved)
+  skipped         every loop not resolved (open or around a tow), with the reason as a sentence
   volume_removed  the volume of the overlap the secondary tow lost in that region
   angle_histogram triangles per 5-degree bin of their smallest 3D angle (0-5, 5-10, ...)
   faces_over_bounds triangles left longer than H or below the angle bound because fixing them
@@ -63,14 +72,21 @@ Options:
   --loop-spacing S   node spacing along intersection loops (default: the mesh size)
   --formats LIST     comma-separated from stl,vtk,msh,inp (default stl,vtk)
   --tolerance T      intersection point tolerance (default: 1e-7 x the tow size)
-  --allow-open       exit 0 even when an intersection curve is open (it is never resolved)
+  --max-triangles N  refuse (exit 2, before meshing) meshes estimated at more than N triangles,
+                     all tows together (default 20000000, about 5 GB; the estimate: about 3 x
+                     the tows' area / (sqrt(3)/4 H^2), plus the refinement along loops)
+  --allow-open       exit 0 even when an intersection curve is open (it is never resolved,
+                     and still named on stderr); other unresolved pairs still exit 3
   --threads N        worker threads (default: all hardware threads)
-  --quiet            no progress lines on stderr
+  --quiet            no progress lines on stderr (warnings are always printed: unresolved
+                     pairs, the mesh quality note)
   -h, --help         this help
 
-Exit status: 0 success; 3 an intersection curve is open (its tow pair is named on stderr and
-skipped; the files are written all the same) unless --allow-open; 2 invalid input or usage
-(one line on stderr naming file and line; nothing written); 1 a file could not be written.
+Exit status: 0 success; 3 a tow pair is unresolved (see "unresolved": one stderr line each,
+also with --quiet; the files are written all the same), unless every such pair is an open curve
+and --allow-open is given; 2 invalid input or usage (one line on stderr naming file and line;
+nothing written); 1 a file could not be written or an internal failure (e.g. the meshes fail
+their own check); a failed run leaves DIR exactly as it was.
 
 Example:
   towgeom resolve examples/data/twill/*.stw --out resolved --formats stl,vtk,msh,inp
@@ -111,7 +127,7 @@ int runResolve(int argc, char** argv, int first)
         const Args args(argc, argv, first,
                         {{"help"}, {"quiet"}, {"allow-open"}, {"out", true}, {"primary", true}, {"mesh-size", true},
                          {"min-angle", true}, {"loop-spacing", true}, {"formats", true}, {"tolerance", true},
-                         {"threads", true}});
+                         {"threads", true}, {"max-triangles", true}});
         if (args.has("help")) {
             std::cout << kResolveHelp;
             return kExitOk;
@@ -127,6 +143,7 @@ int runResolve(int argc, char** argv, int first)
             if (!(*a > 0.0 && *a <= 30.0)) throw UsageError("--min-angle must lie in (0, 30] degrees");
             options.mesh.minAngle = *a;
         }
+        options.mesh.maxTriangles = args.maxTriangles(options.mesh.maxTriangles);
         options.intersection.tolerance = args.positive("tolerance");
         options.threads = args.threads();
         const std::set<std::string> formats = parseFormats(args.value("formats"));
@@ -139,7 +156,15 @@ int runResolve(int argc, char** argv, int first)
         auto t0 = std::chrono::steady_clock::now();
         const std::vector<TowSurface> tows = fitSurfaces(stacks, {}, "resolve", quiet, options.threads);
         const double fitMs = msSince(t0);
-        const ResolveResult result = resolveTextile(tows, options);
+        const ResolveResult result = [&] {
+            try {
+                return resolveTextile(tows, options);
+            } catch (const Error& e) {
+                if (e.code() != ErrorCode::TooLarge) throw;
+                throw Error(e.code(), e.message() + "; --max-triangles N raises the limit, a larger --mesh-size or "
+                                                    "--loop-spacing makes fewer", e.file(), e.line());
+            }
+        }();
         const TextileMesh& mesh = result.mesh;
 
         // Everything is computed before anything is written.
@@ -161,12 +186,9 @@ int runResolve(int argc, char** argv, int first)
         }
         json.endArray();
         writeLoopsJson(json, result.intersections, tows, 0.0, options.threads);
-        writeFindingsJson(json, result.intersections, tows, "resolve", quiet);
-        if (!quiet && (result.quality.fractionAtLeast(20.0) < 0.99 || result.quality.minAngle < 10.0))
-            std::cerr << "towgeom resolve: note: mesh quality below the usual target (smallest angle "
-                      << result.quality.minAngle << " deg, " << 100.0 * result.quality.fractionAtLeast(20.0)
-                      << " % of triangles at least 20 deg): the mesh size may be too coarse for the tows' curvature; "
-                         "try a smaller --mesh-size\n";
+        writeFindingsJson(json, result.intersections, tows);
+        const std::vector<UnresolvedEntry> unresolved = unresolvedPairs(result);
+        writeUnresolvedJson(json, unresolved, tows);
         json.key("regions").beginArray();
         for (const ConnectedRegion& g : mesh.regions) {
             json.beginObject();
@@ -198,12 +220,9 @@ int runResolve(int argc, char** argv, int first)
         json.endObject();
         json.key("mesh_rounds").value(result.meshRounds);
 
-        std::error_code ec;
-        std::filesystem::create_directories(*outDir, ec);
-        if (ec || !std::filesystem::is_directory(*outDir))
-            throw Error(ErrorCode::WriteFailed, "cannot create output directory", *outDir);
         const auto path = [&](const std::string& file) { return (std::filesystem::path(*outDir) / file).string(); };
         detail::OutputFiles files;
+        files.makeDirectory(*outDir);
         // Open every file first (OutputFiles is not thread-safe), then fill them on all threads.
         std::vector<std::ostream*> stl(tows.size(), nullptr), vtk(tows.size(), nullptr);
         for (std::size_t t = 0; t < tows.size(); ++t) {
@@ -237,9 +256,14 @@ int runResolve(int argc, char** argv, int first)
             std::cerr << "towgeom resolve: " << mesh.regions.size() << " connected regions, " << mesh.nodes.size() << " nodes, "
                       << result.quality.triangles << " triangles (smallest angle " << result.quality.minAngle
                       << " deg); files in " << *outDir << "\n";
-        if (result.intersections.openCount() == 0 || args.has("allow-open")) return kExitOk;
-        reportOpenCurves("resolve", result.intersections, tows);
-        return kExitOpenCurve;
+        // Warnings, not progress: printed whatever --quiet says.
+        if (result.quality.fractionAtLeast(20.0) < 0.99 || result.quality.minAngle < 10.0)
+            std::cerr << "towgeom resolve: note: mesh quality below the usual target (smallest angle "
+                      << result.quality.minAngle << " deg, " << 100.0 * result.quality.fractionAtLeast(20.0)
+                      << " % of triangles at least 20 deg): the mesh size may be too coarse for the tows' curvature; "
+                         "try a smaller --mesh-size\n";
+        reportUnresolved("resolve", unresolved, tows);
+        return exitsUnresolved(unresolved, args.has("allow-open")) ? kExitUnresolved : kExitOk;
     } catch (const std::exception& e) {
         return reportError("resolve", e);
     }

@@ -48,6 +48,7 @@ const char* errorCodeName(ErrorCode code) noexcept
     case ErrorCode::FitFailed: return "fit_failed";
     case ErrorCode::WriteFailed: return "write_failed";
     case ErrorCode::Internal: return "internal";
+    case ErrorCode::TooLarge: return "too_large";
     }
     return "unknown";
 }

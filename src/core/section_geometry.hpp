@@ -42,8 +42,14 @@ inline double extent(const std::vector<Point3>& poly)
     return b.diagonal();
 }
 
+/// The largest coordinate magnitude a stack may hold, and the smallest extent of a section:
+/// within these a tow's volume (about size^3) and area stay finite and normal in double
+/// precision, whatever the units.
+constexpr double kMaxCoordinate = 1e100;
+constexpr double kMinSectionExtent = 1e-100;
+
 /// A unit vector along @p v (zero for a zero vector), scaled first so that components near
-/// 1e150 cannot overflow.
+/// 1e100 cannot overflow.
 inline Vector3 unitVector(const Vector3& v)
 {
     const double big = std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z)));

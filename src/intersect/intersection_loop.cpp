@@ -57,6 +57,24 @@ IntersectionLoop makeLoop(std::size_t towA, std::size_t towB, const TowSurface& 
     return IntersectionLoop(std::move(d));
 }
 
+IntersectionLoop loopToUser(const IntersectionLoop& loop, const TowSurface& a, const TowSurface& b, const Frame& frame)
+{
+    const IntersectionLoop::Data& f = loop.data();
+    auto d = std::make_shared<IntersectionLoop::Data>(a, b);
+    d->towA = f.towA;
+    d->towB = f.towB;
+    d->closed = f.closed;
+    d->openReason = f.openReason;
+    d->tolerance = frame.lengthToUser(f.tolerance);
+    d->maxDistanceA = frame.lengthToUser(f.maxDistanceA);
+    d->maxDistanceB = frame.lengthToUser(f.maxDistanceB);
+    d->points = f.points;
+    for (LoopPoint& p : d->points) p.point = frame.toUser(p.point);
+    d->cumulative = f.cumulative;
+    for (double& c : d->cumulative) c = frame.lengthToUser(c);
+    return IntersectionLoop(std::move(d));
+}
+
 }  // namespace detail
 
 namespace {
@@ -305,13 +323,20 @@ Curve3 IntersectionLoop::curve() const
         // Periodic interpolation takes one parameter more: the period's end.
         const int np = d.closed ? n + 1 : n;
         Handle(TColStd_HArray1OfReal) par = new TColStd_HArray1OfReal(1, np);
-        for (int k = 0; k < n; ++k) pts->SetValue(k + 1, detail::toOcct(d.points[k].point));
-        for (int k = 0; k < np; ++k) par->SetValue(k + 1, d.cumulative[k]);
+        // Interpolated in a frame where the loop is about unit size (OCCT's confusion distance
+        // is absolute), then moved back; the parameter stays the arc length in the frame.
+        BoundingBox box;
+        for (const LoopPoint& p : d.points) box.add(p.point);
+        const detail::Frame frame = detail::Frame::around(box, box.diagonal());
+        for (int k = 0; k < n; ++k) pts->SetValue(k + 1, detail::toOcct(frame.toFrame(d.points[k].point)));
+        for (int k = 0; k < np; ++k) par->SetValue(k + 1, frame.lengthToFrame(d.cumulative[k]));
         GeomAPI_Interpolate interp(pts, par, d.closed ? Standard_True : Standard_False, Precision::Confusion());
         interp.Perform();
         if (!interp.IsDone()) throw Error(ErrorCode::Internal, "IntersectionLoop::curve: interpolation failed");
+        Handle(Geom_BSplineCurve) c = interp.Curve();
+        c->Transform(frame.trsf().Inverted());
         auto impl = std::make_shared<Curve3::Impl>();
-        impl->curve = interp.Curve();
+        impl->curve = c;
         return Curve3(impl);
     });
 }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "intersect/intersection_point.hpp"
+#include "surface/frame.hpp"
 #include "towgeom/intersection_loop.hpp"
 
 namespace towgeom {
@@ -31,6 +32,10 @@ SurfacePair surfacePairOf(const TowSurface& a, const TowSurface& b);
 IntersectionLoop makeLoop(std::size_t towA, std::size_t towB, const TowSurface& a, const TowSurface& b,
                           const std::vector<PointOn2>& points, bool closed, const std::string& openReason,
                           double tolerance);
+
+/// @p loop, computed on tows moved into @p frame, as a loop of the user's tows @p a and @p b
+/// (the same parameters; points, lengths and tolerances back in the user's units).
+IntersectionLoop loopToUser(const IntersectionLoop& loop, const TowSurface& a, const TowSurface& b, const Frame& frame);
 
 }  // namespace detail
 

@@ -14,6 +14,8 @@
 #include "intersect/loop_tracing.hpp"
 #include "intersect/seed_search.hpp"
 #include "intersect/surface_walk.hpp"
+#include "intersect/textile_frame.hpp"
+#include "surface/tow_surface_impl.hpp"
 #include "towgeom/error.hpp"
 
 namespace towgeom {
@@ -112,9 +114,10 @@ std::size_t IntersectionReport::openCount() const
     return static_cast<std::size_t>(std::count_if(loops.begin(), loops.end(), [](const IntersectionLoop& l) { return !l.closed(); }));
 }
 
-IntersectionReport intersectTows(const std::vector<TowSurface>& tows, const IntersectionOptions& options)
+namespace detail {
+
+IntersectionReport intersectInFrame(const std::vector<TowSurface>& tows, const IntersectionOptions& options)
 {
-    checkOptions(options);
     IntersectionReport report;
     report.towPairs = tows.size() * (tows.size() - (tows.empty() ? 0 : 1)) / 2;
     const std::size_t threads = detail::workerCount(options.threads);
@@ -166,6 +169,53 @@ IntersectionReport intersectTows(const std::vector<TowSurface>& tows, const Inte
         for (PairFinding& f : r.findings) report.findings.push_back(std::move(f));
     }
     report.timings.exact = msSince(t1);
+    return report;
+}
+
+Frame textileFrame(const std::vector<TowSurface>& tows)
+{
+    BoundingBox box;
+    double smallest = 0.0;
+    for (const TowSurface& t : tows) {
+        const BoundingBox b = t.boundingBox();
+        box.add(b.min);
+        box.add(b.max);
+        smallest = smallest > 0.0 ? std::min(smallest, t.towSize()) : t.towSize();
+    }
+    return Frame::around(box, smallest);
+}
+
+std::vector<TowSurface> towsInFrame(const std::vector<TowSurface>& tows, const Frame& frame)
+{
+    std::vector<TowSurface> moved;
+    moved.reserve(tows.size());
+    for (const TowSurface& t : tows) moved.push_back(inFrame(t, frame));
+    return moved;
+}
+
+void reportToUser(IntersectionReport& report, const std::vector<TowSurface>& tows, const Frame& frame)
+{
+    for (IntersectionLoop& l : report.loops) l = loopToUser(l, tows[l.towA()], tows[l.towB()], frame);
+}
+
+IntersectionOptions optionsInFrame(const IntersectionOptions& options, const Frame& frame)
+{
+    IntersectionOptions o = options;
+    o.tolerance = frame.lengthToFrame(options.tolerance);
+    o.chordalTolerance = frame.lengthToFrame(options.chordalTolerance);
+    return o;
+}
+
+}  // namespace detail
+
+IntersectionReport intersectTows(const std::vector<TowSurface>& tows, const IntersectionOptions& options)
+{
+    checkOptions(options);
+    // Computed in a frame where the tows are about unit size, so that the kernel's absolute
+    // tolerances mean the same at every scale; loops go back to the user's tows and units.
+    const detail::Frame frame = detail::textileFrame(tows);
+    IntersectionReport report = detail::intersectInFrame(detail::towsInFrame(tows, frame), detail::optionsInFrame(options, frame));
+    detail::reportToUser(report, tows, frame);
     return report;
 }
 

@@ -9,13 +9,13 @@
 #include <limits>
 #include <system_error>
 
+#include "core/section_geometry.hpp"
 #include "towgeom/error.hpp"
 
 namespace towgeom {
 
 namespace {
 
-constexpr double kMaxCoordinate = 1e150;
 constexpr std::size_t kMaxNameLength = 200;    // names become file names
 constexpr std::size_t kMaxLineLength = 65536;  // longer is not a stack file; bounds memory
 
@@ -168,14 +168,14 @@ private:
             // whose nearest value is 0 (or a denormal), which is what the file means.
             const double nearest = std::strtod(std::string(digits).c_str(), nullptr);
             if (std::fabs(nearest) >= 1.0)
-                fail(ErrorCode::OutOfRange, "coordinate " + quoted(token) + " is beyond +-1e150", number);
+                fail(ErrorCode::OutOfRange, "coordinate " + quoted(token) + " is beyond +-1e100", number);
             return nearest;
         }
         if (ec != std::errc() || end != digits.data() + digits.size() || digits.empty())
             fail(ErrorCode::NonNumeric, quoted(token) + " is not a number", number);
         if (!std::isfinite(value)) fail(ErrorCode::NonFinite, "coordinate " + quoted(token) + " is not finite", number);
-        if (std::fabs(value) > kMaxCoordinate)
-            fail(ErrorCode::OutOfRange, "coordinate " + quoted(token) + " is beyond +-1e150", number);
+        if (std::fabs(value) > detail::kMaxCoordinate)
+            fail(ErrorCode::OutOfRange, "coordinate " + quoted(token) + " is beyond +-1e100", number);
         return value;
     }
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "core/section_geometry.hpp"
@@ -33,7 +34,7 @@ std::string sectionLabel(std::size_t i) { return "section " + std::to_string(i +
 /// Returns false when the points are collinear (no plane).
 bool projectOnBestPlane(const std::vector<Point3>& poly, double size, std::vector<Kernel::Point_2>& out)
 {
-    // In units of the section's size, so that coordinates up to 1e150 cannot overflow.
+    // In units of the section's size, so that coordinates up to 1e100 cannot overflow.
     const Point3 c = detail::vertexCentroid(poly);
     const double unit = 1.0 / size;
     Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
@@ -61,10 +62,17 @@ void checkSection(const TowStack& s, std::size_t i)
         const Point3& p = poly[j];
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
             fail(s, ErrorCode::NonFinite, "coordinate is not finite", i, j);
-        if (std::fabs(p.x) > 1e150 || std::fabs(p.y) > 1e150 || std::fabs(p.z) > 1e150)
-            fail(s, ErrorCode::OutOfRange, "coordinate is beyond +-1e150", i, j);
+        if (std::fabs(p.x) > detail::kMaxCoordinate || std::fabs(p.y) > detail::kMaxCoordinate ||
+            std::fabs(p.z) > detail::kMaxCoordinate)
+            fail(s, ErrorCode::OutOfRange, "coordinate is beyond +-1e100", i, j);
     }
     const double size = detail::extent(poly);
+    if (size < detail::kMinSectionExtent) {
+        std::ostringstream what;
+        what << sectionLabel(i) << " is only " << size
+             << " across, below 1e-100: its tow's area and volume could not be represented (give the input in larger units)";
+        fail(s, ErrorCode::OutOfRange, what.str(), i);
+    }
     for (std::size_t j = 0; j < poly.size(); ++j) {
         const std::size_t next = (j + 1) % poly.size();
         if (distance(poly[j], poly[next]) <= kDuplicateTolerance * size)
@@ -146,7 +154,7 @@ void checkAlongTow(const TowStack& s)
         double chord = 0.0;
         for (std::size_t j = 0; j < s.sections[i].size(); ++j) chord += distance(s.sections[i][j], s.sections[i + 1][j]);
         if (chord / s.sections[i].size() <= kDuplicateTolerance * size)
-            fail(s, ErrorCode::DegenerateTow, sectionLabel(i + 2) + " coincides with " + sectionLabel(i + 1), i + 1);
+            fail(s, ErrorCode::DegenerateTow, sectionLabel(i + 1) + " coincides with " + sectionLabel(i), i + 1);
     }
     for (std::size_t i = 0; i + 1 < m; ++i) checkStartPoints(s, i);
     int orientation = 0;

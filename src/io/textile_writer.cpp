@@ -17,12 +17,10 @@ namespace towgeom {
 void writeTextile(const Textile& textile, const std::string& directory, const TextileOutput& output)
 {
     namespace fs = std::filesystem;
-    std::error_code ec;
-    fs::create_directories(directory, ec);
-    if (ec || !fs::is_directory(directory)) throw Error(ErrorCode::WriteFailed, "cannot create output directory", directory);
     const auto path = [&](const std::string& file) { return (fs::path(directory) / file).string(); };
 
     detail::OutputFiles files;
+    files.makeDirectory(directory);
     const std::vector<TowStack> stacks = textile.stacks();
     for (const TowStack& s : stacks) {
         writeStack(files.open(path(s.name + ".stw")), s);

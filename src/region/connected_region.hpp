@@ -14,4 +14,8 @@ namespace towgeom::detail {
 /// constraint of the mesh, so no triangle straddles it.
 std::vector<std::size_t> trianglesInside(const ParametricMesh& mesh, const std::vector<UV>& polygon, double period);
 
+/// True when @p p (or its copy shifted by whole periods in v) lies strictly inside @p polygon
+/// (a loop on a tow, v unwrapped): CGAL's exact point-in-polygon test.
+bool insideLoop(const std::vector<UV>& polygon, UV p, double period);
+
 }  // namespace towgeom::detail

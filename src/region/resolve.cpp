@@ -6,11 +6,15 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <set>
+#include <sstream>
 
 #include "core/parallel.hpp"
+#include "intersect/textile_frame.hpp"
 #include "mesh/loop_nodes.hpp"
 #include "mesh/mesh_measures.hpp"
 #include "mesh/parametric_mesher.hpp"
@@ -60,6 +64,39 @@ void checkOptions(const ResolveOptions& o)
     if (!(m.minAngle > 0.0 && m.minAngle <= 30.0))
         throw Error(ErrorCode::InvalidArgument, "minimum angle must lie in (0, 30] degrees");
     if (!nonNegative(m.loopSpacing)) throw Error(ErrorCode::InvalidArgument, "loop spacing must be >= 0 and finite");
+    if (m.maxTriangles == 0) throw Error(ErrorCode::InvalidArgument, "the triangle limit must be at least 1");
+}
+
+/// Triangles the mesher makes per equilateral triangle of side h in the same area: it keeps
+/// every edge below h in 3D, so its triangles are smaller (2.55 on the bundled twill, 2.97 on a
+/// straight tube, for h from 0.02 to 0.1 of their size).
+constexpr double kTrianglesPerEquilateral = 3.0;
+/// Extra triangles per unit of loop length / loop spacing when the loop spacing s is below h
+/// (both tows, both sides of the loop, graded from s to h): 17 to 19 on the bundled twill at
+/// h = 0.1, s = 0.01 to 0.003.
+constexpr double kTrianglesPerLoopNode = 20.0;
+
+/// Refuses (ErrorCode::TooLarge) meshes whose estimated triangle count is over the limit: the
+/// tows' area in triangles of side h, plus the refinement along loops of length
+/// @p loopLength at a spacing below h.
+void checkMeshSize(const MeshOptions& m, double area, double h, double loopLength, double spacing)
+{
+    const double equilateral = std::sqrt(3.0) / 4.0 * h * h;
+    double estimate = kTrianglesPerEquilateral * area / equilateral;
+    std::ostringstream how;
+    how.precision(3);
+    how << kTrianglesPerEquilateral << " x the tows' area " << area << " / (sqrt(3)/4 h^2) at mesh size h = " << h;
+    if (spacing < h && loopLength > 0.0) {
+        estimate += kTrianglesPerLoopNode * loopLength * (1.0 / spacing - 1.0 / h);
+        how << ", plus " << kTrianglesPerLoopNode << " x the loops' length " << loopLength << " x (1/s - 1/h) at loop spacing s = "
+            << spacing;
+    }
+    if (!(estimate > static_cast<double>(m.maxTriangles))) return;
+    std::ostringstream message;
+    message.precision(3);
+    message << "the meshes would have about " << estimate << " triangles (" << how.str() << "), over the limit of "
+            << m.maxTriangles << " (MeshOptions::maxTriangles); refused before meshing";
+    throw Error(ErrorCode::TooLarge, message.str());
 }
 
 }  // namespace
@@ -73,40 +110,69 @@ double MeshQuality::fractionAtLeast(double degrees) const
     return 1.0 - static_cast<double>(below) / static_cast<double>(triangles);
 }
 
-ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveOptions& options)
+namespace {
+
+using TowPair = std::pair<std::size_t, std::size_t>;
+
+/// The meshes of tow @p tow could not be made with the loops of @p pairs on it.
+struct TowMeshFailure {
+    std::size_t tow = 0;
+    std::string message;
+    std::set<TowPair> pairs;  ///< the tow pairs with resolved loops on that tow
+};
+
+/// The failures of the tows meshed in parallel, kept per tow so that the one reported (the
+/// lowest tow index) does not depend on the threads' timing.
+class TowFailures {
+public:
+    TowFailures(const std::vector<IntersectionLoop>& loops, const std::vector<detail::SharedLoop>& shared, std::size_t tows)
+        : loops_(loops), shared_(shared), failures_(tows)
+    {
+    }
+    /// Runs @p body for tow @p tow; a failure is kept as a TowMeshFailure naming the tow's pairs.
+    template <class Body>
+    void run(std::size_t tow, Body&& body)
+    {
+        try {
+            body();
+        } catch (const std::exception& e) {
+            auto f = std::make_unique<TowMeshFailure>(TowMeshFailure{tow, e.what(), {}});
+            for (const detail::SharedLoop& s : shared_) {
+                const IntersectionLoop& l = loops_[s.loop];
+                if (l.towA() == tow || l.towB() == tow) f->pairs.emplace(l.towA(), l.towB());
+            }
+            failures_[tow] = std::move(f);
+        }
+    }
+    /// Throws the failure of the lowest tow index, if any.
+    void throwFirst() const
+    {
+        for (const auto& f : failures_)
+            if (f) throw *f;
+    }
+
+private:
+    const std::vector<IntersectionLoop>& loops_;
+    const std::vector<detail::SharedLoop>& shared_;
+    std::vector<std::unique_ptr<TowMeshFailure>> failures_;
+};
+
+/// Stages 2 and 3 of resolveTextile() on tows already in a normalised frame, with options in the
+/// frame's units (the mesh size set): @p result holds the intersections; loops of the tow pairs
+/// in @p excluded are left out.
+/// @throws TowMeshFailure when a tow's mesh cannot be made or is not a tube.
+void meshAndConnect(const std::vector<TowSurface>& tows, const ResolveOptions& options, const std::set<TowPair>& excluded,
+                    ResolveResult& result)
 {
-    checkOptions(options);
     const auto say = [&](const std::string& what) {
         if (options.progress) options.progress(what);
     };
-    ResolveResult result;
     const std::size_t threads = detail::workerCount(options.threads);
-    double size = 1e300;
-    std::string smallest;
-    for (const TowSurface& t : tows)
-        if (t.towSize() < size) {
-            size = t.towSize();
-            smallest = t.name();
-        }
-    const double h = options.mesh.edgeLength > 0.0 ? options.mesh.edgeLength : options.mesh.relativeEdgeLength * size;
-    // At least 4 edges around every tow: a coarser mesh cannot be a tube.
-    const double around = 3.14159265358979323846 * size;
-    if (!tows.empty() && h > around / 4.0)
-        throw Error(ErrorCode::InvalidArgument,
-                    "mesh size " + std::to_string(h) + " is too coarse: tow '" + smallest + "' is " + std::to_string(around) +
-                        " around, and needs at least 4 edges around (mesh size at most " + std::to_string(around / 4.0) + ")");
-
-    // 1. Intersection loops.
-    Clock::time_point t0 = Clock::now();
-    IntersectionOptions io = options.intersection;
-    io.threads = options.threads;
-    say("intersecting " + std::to_string(tows.size()) + " tows");
-    result.intersections = intersectTows(tows, io);
-    result.timings.intersect = msSince(t0);
+    const double h = options.mesh.edgeLength;  // set by resolveTextile()
     const std::vector<IntersectionLoop>& loops = result.intersections.loops;
 
     // 2. Shared loop nodes and each tow's constraints.
-    t0 = Clock::now();
+    Clock::time_point t0 = Clock::now();
     const double spacing = options.mesh.loopSpacing > 0.0 ? options.mesh.loopSpacing : h;
     std::vector<Point3> nodes;
     std::vector<detail::SharedLoop> shared;
@@ -118,7 +184,7 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
             result.skipped.emplace_back(i, "the loop goes around tow '" +
                                                (l.windsAround(LoopSide::A) ? l.surfaceA() : l.surfaceB()).name() +
                                                "' (one tow passes through the other)");
-        else
+        else if (!excluded.count({l.towA(), l.towB()}))
             shared.push_back(detail::shareLoopNodes(l, i, spacing, nodes));
     }
     say("meshing " + std::to_string(tows.size()) + " tows at h = " + std::to_string(h));
@@ -148,10 +214,14 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
         return c;
     };
     std::vector<std::vector<double>> seamU(tows.size());
+    TowFailures failures(loops, shared, tows.size());
     detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
-        meshers[t] = std::make_unique<detail::ParametricMesher>(tows[t], sizes);
-        meshers[t]->mesh(constraintsOf(t), {}, requests[t]);
+        failures.run(t, [&] {
+            meshers[t] = std::make_unique<detail::ParametricMesher>(tows[t], sizes);
+            meshers[t]->mesh(constraintsOf(t), {}, requests[t]);
+        });
     });
+    failures.throwFirst();
     int round = 1;
     for (; round < kMaxRounds; ++round) {
         // Every split asked for (by either tow) becomes an exact loop node; seam stations are
@@ -183,11 +253,14 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
         for (std::size_t t : busy) requests[t] = {};
         detail::parallelFor(busy.size(), threads, [&](std::size_t k) {
             const std::size_t t = busy[k];
-            if (!meshers[t]->split(splits[t], newSeamU[t], requests[t])) {
-                requests[t] = {};
-                meshers[t]->mesh(constraintsOf(t), seamU[t], requests[t]);
-            }
+            failures.run(t, [&] {
+                if (!meshers[t]->split(splits[t], newSeamU[t], requests[t])) {
+                    requests[t] = {};
+                    meshers[t]->mesh(constraintsOf(t), seamU[t], requests[t]);
+                }
+            });
         });
+        failures.throwFirst();
     }
     result.meshRounds = static_cast<std::size_t>(round);
     // The final meshes, and the tows' own nodes evaluated on their surfaces.
@@ -222,20 +295,51 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
         region[t].assign(meshes[t].triangles.size(), -1);
     }
     std::vector<std::vector<std::pair<Triangle, long>>> inserted(tows.size());
-    for (const detail::SharedLoop& s : shared) {
+    // Loops of one tow pair nested in each other: the tows overlap inside an odd number of them.
+    // A loop inside an even number of its pair's loops bounds a region; the loops directly inside
+    // it bound islands where the surfaces separate again: holes of that region.
+    const auto period = [&](std::size_t t) { return tows[t].parameterRange().vPeriod(); };
+    std::vector<std::size_t> depth(shared.size(), 0);
+    std::vector<std::vector<std::size_t>> inside(shared.size());  // the pair's loops inside each loop
+    for (std::size_t a = 0; a < shared.size(); ++a)
+        for (std::size_t b = 0; b < shared.size(); ++b) {
+            const IntersectionLoop& la = loops[shared[a].loop];
+            const IntersectionLoop& lb = loops[shared[b].loop];
+            if (a == b || la.towA() != lb.towA() || la.towB() != lb.towB()) continue;
+            if (detail::insideLoop(detail::loopPolygon(shared[a], LoopSide::A), shared[b].points.front().onA, period(la.towA()))) {
+                ++depth[b];
+                inside[a].push_back(b);
+            }
+        }
+    for (std::size_t k = 0; k < shared.size(); ++k) {
+        const detail::SharedLoop& s = shared[k];
+        if (depth[k] % 2 == 1) continue;  // a hole of the region around it
+        std::vector<std::size_t> holes;
+        for (std::size_t b : inside[k])
+            if (depth[b] == depth[k] + 1) holes.push_back(b);
         const IntersectionLoop& l = loops[s.loop];
         const bool aMatches = matchesAny(tows[l.towA()].name(), options.primaryPatterns);
         const bool bMatches = matchesAny(tows[l.towB()].name(), options.primaryPatterns);
         const bool aPrimary = aMatches == bMatches ? l.towA() < l.towB() : aMatches;
         const LoopSide ps = aPrimary ? LoopSide::A : LoopSide::B, ss = aPrimary ? LoopSide::B : LoopSide::A;
         const std::size_t p = aPrimary ? l.towA() : l.towB(), q = aPrimary ? l.towB() : l.towA();
-        const auto period = [&](std::size_t t) { return tows[t].parameterRange().vPeriod(); };
-        const std::vector<std::size_t> inP = detail::trianglesInside(meshes[p], detail::loopPolygon(s, ps), period(p));
-        const std::vector<std::size_t> inQ = detail::trianglesInside(meshes[q], detail::loopPolygon(s, ss), period(q));
+        const auto within = [&](std::size_t t, LoopSide side) {
+            std::vector<std::size_t> in = detail::trianglesInside(meshes[t], detail::loopPolygon(s, side), period(t));
+            for (std::size_t b : holes) {
+                const std::vector<std::size_t> hole = detail::trianglesInside(meshes[t], detail::loopPolygon(shared[b], side), period(t));
+                std::vector<std::size_t> rest;
+                std::set_difference(in.begin(), in.end(), hole.begin(), hole.end(), std::back_inserter(rest));
+                in = std::move(rest);
+            }
+            return in;
+        };
+        const std::vector<std::size_t> inP = within(p, ps);
+        const std::vector<std::size_t> inQ = within(q, ss);
         ConnectedRegion r;
         r.primary = p;
         r.secondary = q;
         r.loop = s.loop;
+        for (std::size_t b : holes) r.holes.push_back(shared[b].loop);
         r.triangles = inP;
         r.loopNodes = s.nodes;
         const long id = static_cast<long>(result.mesh.regions.size());
@@ -288,11 +392,14 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
     });
     for (std::size_t t = 0; t < tows.size(); ++t)
         if (badEdges[t] != 0 || result.tows[t].boundaryLoops != 2)
-            throw Error(ErrorCode::Internal,
-                        "the mesh is not a tube open at its two ends (" + std::to_string(badEdges[t]) +
-                            " edges not shared by exactly two triangles the opposite way round, " +
-                            std::to_string(result.tows[t].boundaryLoops) + " boundary loops)",
-                        "tow '" + tows[t].name() + "'");
+            failures.run(t, [&] {
+                throw Error(ErrorCode::Internal,
+                            "the mesh is not a tube open at its two ends (" + std::to_string(badEdges[t]) +
+                                " edges not shared by exactly two triangles the opposite way round, " +
+                                std::to_string(result.tows[t].boundaryLoops) + " boundary loops)",
+                            "tow '" + tows[t].name() + "'");
+            });
+    failures.throwFirst();
     // Quality over distinct triangles: a secondary's copies of a region's triangles are skipped.
     result.quality.histogram.assign(12, 0);
     result.quality.minAngle = 180.0;
@@ -328,6 +435,112 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
         result.mesh.nodes = std::move(kept);
     }
     result.timings.regions = msSince(t0);
+}
+
+/// resolveTextile() on tows already in a normalised frame, with options in the frame's units
+/// (the mesh size set); @p checkLoopRefinement is given the loops' length (frame units) before
+/// meshing. A tow whose mesh fails costs only the tow pairs with loops on it: they
+/// are left unresolved (named in the result) and the rest is meshed again without them.
+ResolveResult resolveInFrame(const std::vector<TowSurface>& tows, const ResolveOptions& options,
+                             const std::function<void(double)>& checkLoopRefinement)
+{
+    ResolveResult result;
+    const Clock::time_point t0 = Clock::now();
+    IntersectionOptions io = options.intersection;
+    io.threads = options.threads;
+    if (options.progress) options.progress("intersecting " + std::to_string(tows.size()) + " tows");
+    result.intersections = detail::intersectInFrame(tows, io);
+    result.timings.intersect = msSince(t0);
+    double loopLength = 0.0;  // of the loops that will be meshed
+    for (const IntersectionLoop& l : result.intersections.loops)
+        if (l.closed() && !l.windsAround(LoopSide::A) && !l.windsAround(LoopSide::B)) loopLength += l.length();
+    checkLoopRefinement(loopLength);
+    std::set<TowPair> excluded;
+    std::vector<UnresolvedPair> unresolved;
+    for (;;) {
+        ResolveResult attempt;
+        attempt.intersections = result.intersections;
+        attempt.timings.intersect = result.timings.intersect;
+        try {
+            meshAndConnect(tows, options, excluded, attempt);
+        } catch (const TowMeshFailure& f) {
+            if (f.pairs.empty()) throw Error(ErrorCode::Internal, f.message, "tow '" + tows[f.tow].name() + "'");
+            for (const TowPair& p : f.pairs) {
+                excluded.insert(p);
+                unresolved.push_back({p.first, p.second, UnresolvedPair::Reason::MeshFailed,
+                                      "tow '" + tows[f.tow].name() + "' could not be meshed with the loops of tows '" +
+                                          tows[p.first].name() + "' and '" + tows[p.second].name() + "': " + f.message});
+            }
+            if (options.progress)
+                options.progress("meshing again without the " + std::to_string(f.pairs.size()) + " tow pair(s) on tow '" +
+                                 tows[f.tow].name() + "'");
+            continue;
+        }
+        attempt.unresolved = std::move(unresolved);
+        return attempt;
+    }
+}
+
+/// The mesh size h in the user's units, checked against the smallest tow.
+double meshSize(const std::vector<TowSurface>& tows, const MeshOptions& mesh)
+{
+    double size = 1e300;
+    std::string smallest;
+    for (const TowSurface& t : tows)
+        if (t.towSize() < size) {
+            size = t.towSize();
+            smallest = t.name();
+        }
+    const double h = mesh.edgeLength > 0.0 ? mesh.edgeLength : mesh.relativeEdgeLength * size;
+    // At least 4 edges around every tow: a coarser mesh cannot be a tube.
+    const double around = 3.14159265358979323846 * size;
+    if (!tows.empty() && h > around / 4.0)
+        throw Error(ErrorCode::InvalidArgument,
+                    "mesh size " + std::to_string(h) + " is too coarse: tow '" + smallest + "' is " + std::to_string(around) +
+                        " around, and needs at least 4 edges around (mesh size at most " + std::to_string(around / 4.0) + ")");
+    return h;
+}
+
+/// @p result, computed on tows moved into @p frame, in the user's units and tows.
+void resultToUser(ResolveResult& result, const std::vector<TowSurface>& tows, const detail::Frame& frame)
+{
+    detail::reportToUser(result.intersections, tows, frame);
+    for (Point3& p : result.mesh.nodes) p = frame.toUser(p);
+    const double s = frame.scale;
+    for (TowResolution& t : result.tows) {
+        t.volumeBefore /= s * s * s;
+        t.volumeAfter /= s * s * s;
+        t.area /= s * s;
+    }
+    for (ConnectedRegion& r : result.mesh.regions) {
+        r.area /= s * s;
+        r.volumeRemoved /= s * s * s;
+    }
+}
+
+}  // namespace
+
+ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveOptions& options)
+{
+    checkOptions(options);
+    const double h = meshSize(tows, options.mesh);
+    // Refuse a mesh too large for memory now, before intersecting; the loops' part once their
+    // lengths are known. In the user's units, for the message.
+    double area = 0.0;
+    for (const TowSurface& t : tows) area += t.area();
+    const double spacing = options.mesh.loopSpacing > 0.0 ? options.mesh.loopSpacing : h;
+    checkMeshSize(options.mesh, area, h, 0.0, spacing);
+    // Computed in the textile's normalised frame (as intersectTows()), so that the meshes do not
+    // depend on the user's units; the results go back to the user's units.
+    const detail::Frame frame = detail::textileFrame(tows);
+    ResolveOptions o = options;
+    o.mesh.edgeLength = frame.lengthToFrame(h);
+    o.mesh.loopSpacing = frame.lengthToFrame(options.mesh.loopSpacing);
+    o.intersection = detail::optionsInFrame(options.intersection, frame);
+    ResolveResult result = resolveInFrame(detail::towsInFrame(tows, frame), o, [&](double loopLength) {
+        checkMeshSize(options.mesh, area, h, frame.lengthToUser(loopLength), spacing);
+    });
+    resultToUser(result, tows, frame);
     return result;
 }
 

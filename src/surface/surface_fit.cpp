@@ -220,6 +220,7 @@ std::shared_ptr<const TowSurface::Impl> fitSurface(const TowStack& stack, const 
     } catch (const Standard_Failure& e) {
         fitFailed(t->name, std::string("OpenCASCADE: ") + e.GetMessageString());
     }
+    setUnitFrame(*t);
     return t;
 }
 

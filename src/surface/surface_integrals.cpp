@@ -98,18 +98,25 @@ double TowSurface::sectionArea(double u) const
     return detail::guarded(impl_->name, "sectionArea", [&]() -> double {
         const ParameterRange r = parameterRange();
         point(u, 0.0);  // range check
-        GeomAdaptor_Surface adaptor(impl_->surface);
-        return sectionIntegral(adaptor, knots(*impl_->surface, false), std::clamp(u, r.uMin, r.uMax)).vectorArea.Modulus();
+        // In the unit frame (see TowSurface::Impl::unit), scaled back exactly (a power of two).
+        GeomAdaptor_Surface adaptor(impl_->unit);
+        const double s = impl_->unitFrame.scale;
+        return sectionIntegral(adaptor, knots(*impl_->unit, false), std::clamp(u, r.uMin, r.uMax)).vectorArea.Modulus() / (s * s);
     });
 }
 
 double TowSurface::volume() const
 {
     return detail::guarded(impl_->name, "volume", [&]() -> double {
-        const Geom_BSplineSurface& s = *impl_->surface;
-        GeomAdaptor_Surface adaptor(impl_->surface);
+        // In the unit frame (see TowSurface::Impl::unit), scaled back exactly (a power of two).
+        const Geom_BSplineSurface& s = *impl_->unit;
+        GeomAdaptor_Surface adaptor(impl_->unit);
+        const double scale = impl_->unitFrame.scale;
         // Divergence theorem with F = (x - ref) / 3; ref near the tow keeps the sum well conditioned.
-        const BoundingBox box = boundingBox();
+        BoundingBox box;
+        const TColgp_Array2OfPnt& poles = s.Poles();
+        for (int i = poles.LowerRow(); i <= poles.UpperRow(); ++i)
+            for (int j = poles.LowerCol(); j <= poles.UpperCol(); ++j) box.add(fromOcct(poles(i, j)));
         const gp_XYZ ref = 0.5 * (detail::toOcct(box.min).XYZ() + detail::toOcct(box.max).XYZ());
         double lateral = 0.0;
         integrate(s, [&](double u, double v, double w) {
@@ -126,22 +133,23 @@ double TowSurface::volume() const
         const SectionIntegral first = sectionIntegral(adaptor, kv, r.uMin);
         const SectionIntegral last = sectionIntegral(adaptor, kv, r.uMax);
         const double caps = (first.centroid - ref).Dot(first.vectorArea) - (last.centroid - ref).Dot(last.vectorArea);
-        return (lateral + caps) / 3.0;
+        return (lateral + caps) / 3.0 / (scale * scale * scale);
     });
 }
 
 double TowSurface::area() const
 {
     return detail::guarded(impl_->name, "area", [&]() -> double {
-        GeomAdaptor_Surface adaptor(impl_->surface);
+        GeomAdaptor_Surface adaptor(impl_->unit);
+        const double scale = impl_->unitFrame.scale;
         double total = 0.0;
-        integrate(*impl_->surface, [&](double u, double v, double w) {
+        integrate(*impl_->unit, [&](double u, double v, double w) {
             gp_Pnt p;
             gp_Vec du, dv;
             adaptor.D1(u, v, p, du, dv);
             total += w * du.Crossed(dv).Magnitude();
         });
-        return total;
+        return total / (scale * scale);
     });
 }
 

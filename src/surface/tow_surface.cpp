@@ -22,6 +22,40 @@ using detail::toOcct;
 
 TowSurface::TowSurface(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
 
+namespace detail {
+
+Handle(Geom_BSplineSurface) surfaceInFrame(const Handle(Geom_BSplineSurface)& surface, const Frame& frame)
+{
+    Handle(Geom_BSplineSurface) copy = Handle(Geom_BSplineSurface)::DownCast(surface->Copy());
+    copy->Transform(frame.trsf());
+    return copy;
+}
+
+void setUnitFrame(TowSurface::Impl& tow)
+{
+    BoundingBox box;
+    for (const auto& section : tow.sections)
+        for (const Point3& p : section) box.add(p);
+    tow.unitFrame = Frame::around(box, tow.towSize);
+    tow.unit = surfaceInFrame(tow.surface, tow.unitFrame);
+}
+
+TowSurface inFrame(const TowSurface& tow, const Frame& frame)
+{
+    const TowSurface::Impl& t = tow.impl();
+    auto moved = std::make_shared<TowSurface::Impl>(t);
+    for (auto& section : moved->sections)
+        for (Point3& p : section) p = frame.toFrame(p);
+    moved->towSize = frame.lengthToFrame(t.towSize);
+    moved->surface = surfaceInFrame(t.surface, frame);
+    // The unit surface stays as it is; only the map to it changes (scales are powers of two).
+    moved->unitFrame.origin = frame.toFrame(t.unitFrame.origin);
+    moved->unitFrame.scale = t.unitFrame.scale / frame.scale;
+    return TowSurfaceAccess::make(std::move(moved));
+}
+
+}  // namespace detail
+
 TowSurface TowSurface::fit(const TowStack& stack, const FitOptions& options)
 {
     if (options.mode == FitMode::Approximate &&
@@ -108,7 +142,7 @@ Vector3 TowSurface::normal(double u, double v) const
 UV TowSurface::closestParameters(const Point3& p) const
 {
     try {
-        GeomAPI_ProjectPointOnSurf projector(toOcct(p), impl_->surface);
+        GeomAPI_ProjectPointOnSurf projector(toOcct(impl_->unitFrame.toFrame(p)), impl_->unit);
         if (projector.NbPoints() > 0) {
             UV uv;
             projector.LowerDistanceParameters(uv.u, uv.v);
@@ -139,10 +173,10 @@ UV TowSurface::closestParameters(const Point3& p, UV start) const
     start.u = std::clamp(start.u, r.uMin, r.uMax);
     // OCCT's local search does not wrap a start outside the period; unwrapped v is common.
     start.v -= r.vPeriod() * std::floor((start.v - r.vMin) / r.vPeriod());
-    GeomAdaptor_Surface adaptor(impl_->surface);
+    GeomAdaptor_Surface adaptor(impl_->unit);
     Extrema_GenLocateExtPS locate(adaptor);
     try {
-        locate.Perform(toOcct(p), start.u, start.v, Standard_False);
+        locate.Perform(toOcct(impl_->unitFrame.toFrame(p)), start.u, start.v, Standard_False);
     } catch (const Standard_Failure&) {
         return start;
     }

@@ -44,4 +44,11 @@ TowStack tubeAlongX(double r, double length, double dx, double dy, double dz, co
 /// tubeAlongX(R, 4, 0, 0, 0) it makes a crossing whose loop is known in closed form.
 TowStack tubeAlongY(double r, double d, const Sampling& s = {}, const std::string& name = "y");
 
+/// tubeAlongY(r, d) with a dent in its underside at y = 0: points below the axis are lifted by
+/// dent * exp(-(x'^2 + y^2) / width^2) * sin^2(angle) (x' the offset from the axis). Over
+/// tubeAlongX(R, 4, 0, 0, 0) with d - r < R < d - r + dent the overlap is a ring: an outer loop
+/// and an island loop inside it where the surfaces separate again.
+TowStack dentedTubeAlongY(double r, double d, double dent, double width, const Sampling& s = {},
+                          const std::string& name = "dented");
+
 }  // namespace towgeom::testing

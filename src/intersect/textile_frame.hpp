@@ -1,0 +1,29 @@
+// The normalised frame of a whole textile (see surface/frame.hpp), and the intersection stage run
+// on tows already moved into it: the stages after intersection compute in the same frame.
+#pragma once
+
+#include <vector>
+
+#include "surface/frame.hpp"
+#include "towgeom/tow_intersection.hpp"
+
+namespace towgeom::detail {
+
+/// The frame a textile is computed in: the box of all tows centred at the origin, the smallest
+/// tow's size between 1 and 2.
+Frame textileFrame(const std::vector<TowSurface>& tows);
+
+/// @p tows moved into @p frame (detail::inFrame for each).
+std::vector<TowSurface> towsInFrame(const std::vector<TowSurface>& tows, const Frame& frame);
+
+/// intersectTows() on tows already in a normalised frame, with options in the frame's units;
+/// the loops refer to those tows.
+IntersectionReport intersectInFrame(const std::vector<TowSurface>& tows, const IntersectionOptions& options);
+
+/// @p report, computed on tows moved into @p frame, for the user's @p tows (loops mapped back).
+void reportToUser(IntersectionReport& report, const std::vector<TowSurface>& tows, const Frame& frame);
+
+/// @p options with its absolute lengths moved into @p frame.
+IntersectionOptions optionsInFrame(const IntersectionOptions& options, const Frame& frame);
+
+}  // namespace towgeom::detail
