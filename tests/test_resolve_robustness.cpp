@@ -18,6 +18,7 @@
 #include <regex>
 #include <string>
 
+#include "cgal_reference.hpp"
 #include "cli_runner.hpp"
 #include "mesh_checks.hpp"
 #include "synthetic_tows.hpp"
@@ -62,8 +63,19 @@ std::pair<std::size_t, std::size_t> degenerate(const ResolveResult& r)
     return {repeated, nonManifold};
 }
 
+/// Pairs of crossing triangles between any two tows (CGAL, exact predicates:
+/// testing::crossingTrianglePairs).
+std::size_t crossingPairs(const ResolveResult& r)
+{
+    std::size_t crossing = 0;
+    for (std::size_t i = 0; i < r.mesh.tows.size(); ++i)
+        for (std::size_t j = i + 1; j < r.mesh.tows.size(); ++j)
+            crossing += testing::crossingTrianglePairs(r.mesh.nodes, r.mesh.tows[i].triangles, r.mesh.tows[j].triangles).crossing;
+    return crossing;
+}
+
 /// Every tow a tube open at both ends, counted from its triangles' edges (testing::boundaryOf),
-/// and the implementation's own count agreeing.
+/// the implementation's own count agreeing.
 void checkTubes(const ResolveResult& r)
 {
     REQUIRE(r.tows.size() == r.mesh.tows.size());
@@ -78,6 +90,18 @@ void checkTubes(const ResolveResult& r)
     }
 }
 
+/// generate --weave twill --tows 4x4 --overlap 0.1, resolved with --loop-spacing 1.0 (loops
+/// ~1.7 long: 3 nodes each, the least a closed loop gets).
+const ResolveResult& coarseLoopTwill()
+{
+    static const ResolveResult r = [] {
+        ResolveOptions o;
+        o.mesh.loopSpacing = 1.0;
+        return resolveTextile(fitted(weave(WeaveKind::Twill, 0.1, 4)), o);
+    }();
+    return r;
+}
+
 }  // namespace
 
 // A circumcentre behind a constraint (outside the conflict zone of the face it refines) is not
@@ -85,10 +109,7 @@ void checkTubes(const ResolveResult& r)
 // differently each time (clusters of coincident nodes and zero-area triangles).
 TEST_CASE("a loop spacing well over h gives no coincident nodes", "[resolve][robustness]")
 {
-    const std::vector<TowSurface> tows = fitted(weave(WeaveKind::Twill, 0.1, 4));  // generate --weave twill --tows 4x4 --overlap 0.1
-    ResolveOptions o;
-    o.mesh.loopSpacing = 1.0;
-    const ResolveResult r = resolveTextile(tows, o);
+    const ResolveResult& r = coarseLoopTwill();
     CHECK(r.mesh.regions.size() == 16);
     CHECK(r.skipped.empty());
     checkTubes(r);
@@ -100,6 +121,20 @@ TEST_CASE("a loop spacing well over h gives no coincident nodes", "[resolve][rob
         for (std::size_t j = i + 1; j < sorted.size() && sorted[j].x - sorted[i].x < 1e-7; ++j)
             close += distance(sorted[i], sorted[j]) < 1e-7;
     CHECK(close == 0);
+}
+
+// KNOWN BUG, found by this test (issue 11, "tests that can fail"); it fails today, do not weaken
+// it. With a loop spacing of 0.7 or more on these loops (3 nodes per loop), resolve exits 0 (CLI:
+// exit 0 and a note blaming the mesh size) with 13 pairs of triangles of different tows crossing:
+// the shared region is the 3-node polygon, far inside the curve, and the secondary's triangles
+// between it and the curve still pass through the primary. At 0.5 and below: none. Expected to
+// pass once resolve refines such loops (or refuses the spacing with a typed error, which this
+// test should then assert instead).
+TEST_CASE("a loop spacing well over h leaves no crossing triangles between tows", "[resolve][robustness][known-bug]")
+{
+    const ResolveResult& r = coarseLoopTwill();
+    REQUIRE(r.mesh.regions.size() == 16);
+    CHECK(crossingPairs(r) == 0);
 }
 
 // A loop that dips across the seam between two of its nodes (no seam node there): a split there
@@ -115,6 +150,7 @@ TEST_CASE("a loop that dips across the seam between two nodes keeps both sides o
         const ResolveResult r = resolveTextile(fitted(satin, {"warp_1", "weft_0"}), o);
         CHECK(r.mesh.regions.size() == 1);
         checkTubes(r);
+        CHECK(crossingPairs(r) == 0);
     }
     SECTION("all tows: the seams match; no triangle flat in 3D")
     {
@@ -134,6 +170,7 @@ TEST_CASE("a loop that dips across the seam between two nodes keeps both sides o
         CHECK(r.mesh.regions.size() == 25);
         CHECK(r.skipped.empty());
         checkTubes(r);
+        CHECK(crossingPairs(r) == 0);
     }
 }
 
@@ -173,6 +210,7 @@ TEST_CASE("a mesh size near or over the tow circumference is capped per tow and 
     CHECK(repeated == 0);
     CHECK(nonManifold == 0);
     checkTubes(r);
+    CHECK(crossingPairs(r) == 0);
 }
 
 // Two loop nodes at the same (u,v) (loops of different pairs meeting on a tow) once crashed in
