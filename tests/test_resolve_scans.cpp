@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <towgeom/error.hpp>
+#include <towgeom/stack_reader.hpp>
 #include <towgeom/intersection_loop.hpp>
 #include <towgeom/resolve.hpp>
 #include <towgeom/textile_mesh.hpp>
@@ -14,11 +15,16 @@
 #include <towgeom/tow_surface.hpp>
 #include <towgeom/triangle_mesh.hpp>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <set>
 #include <vector>
 
 #include "cgal_reference.hpp"
+#include "cli_runner.hpp"
 #include "synthetic_tows.hpp"
 
 using namespace towgeom;
@@ -138,17 +144,26 @@ TEST_CASE("nested loops resolve at 6 mesh sizes from the largest accepted to a t
     CHECK(crossings(capped, 0, 1) == 0);
 }
 
-TEST_CASE("a tow pair that cannot be meshed is left unresolved and named, the rest is resolved", "[resolve][scan][unresolved]")
+namespace {
+
+/// x: a round tube along x; y crosses it at x = 2; w, thinner, runs diagonally through y where
+/// y meets x, so the loops of (x, y) and (x, w) cross each other on x (three tows at one point,
+/// not resolved yet) and w's loops with y go around w.
+std::vector<TowStack> threeTows()
 {
-    // x: a round tube along x; y crosses it at x = 2; w, thinner, runs diagonally through y where
-    // y meets x, so the loops of (x, y) and (x, w) cross each other on x (three tows at one point,
-    // not resolved yet) and w's loops with y go around w.
     TowStack w = testing::tubeAlongX(0.3, 3.0, -1.5, 0.0, 0.0, sampling(41, 48), "w");
     const double c = std::sqrt(0.5);
     for (auto& section : w.sections)
         for (Point3& p : section) p = {2.0 + c * p.x - c * p.y, c * p.x + c * p.y, p.z + 0.77};
-    const std::vector<TowSurface> tows = fit({testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, sampling(41, 48), "x"),
-                                              testing::tubeAlongY(0.4, 0.82, sampling(41, 48), "y"), w});
+    return {testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, sampling(41, 48), "x"), testing::tubeAlongY(0.4, 0.82, sampling(41, 48), "y"),
+            w};
+}
+
+}  // namespace
+
+TEST_CASE("a tow pair that cannot be meshed is left unresolved and named, the rest is resolved", "[resolve][scan][unresolved]")
+{
+    const std::vector<TowSurface> tows = fit(threeTows());
     const ResolveResult res = resolveTextile(tows);
     REQUIRE(res.unresolved.size() == 1);
     CHECK(res.unresolved[0].towA == 0);
@@ -161,4 +176,31 @@ TEST_CASE("a tow pair that cannot be meshed is left unresolved and named, the re
     CHECK(res.mesh.regions[0].secondary == 2);
     CHECK(crossings(res, 0, 2) == 0);
     checkTubes(res);
+}
+
+TEST_CASE("towgeom resolve names a pair it could not mesh, writes the rest and exits 3", "[resolve][scan][unresolved][cli]")
+{
+    const auto dir = std::filesystem::temp_directory_path() / ("towgeom_three_tows_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::string files;
+    for (const TowStack& t : threeTows()) {
+        const auto path = dir / (t.name + ".stw");
+        std::ofstream out(path);
+        writeStack(out, t);
+        files += " '" + path.string() + "'";
+    }
+    const testing::Run r = testing::cli("resolve" + files + " --quiet --out '" + (dir / "out").string() + "'");
+    INFO(r.err);
+    CHECK(r.status == 3);
+    CHECK(r.err.find("towgeom resolve: unresolved tow pair 'x' and 'y': tow 'y' could not be meshed with the loops of tows 'x' "
+                     "and 'y': ") != std::string::npos);
+    CHECK(r.err.find("[mesh_failed]\n") != std::string::npos);
+    CHECK(r.err.find("towgeom resolve: unresolved tow pair 'y' and 'w': the loop goes around tow 'w'") != std::string::npos);
+    const std::string report = testing::slurp(dir / "out" / "report.json");
+    CHECK(testing::count(report, "\"reason\":\"mesh_failed\"") == 1);
+    CHECK(testing::count(report, "\"volume_removed\"") == 1);
+    CHECK(testing::count(report, "\"boundary_loops\":2") == 3);
+    for (const char* tow : {"x", "y", "w"}) CHECK(std::filesystem::exists(dir / "out" / (std::string(tow) + ".vtk")));
+    std::filesystem::remove_all(dir);
 }

@@ -47,12 +47,45 @@ LoopPoint seamPoint(const SurfacePair& sp, const LoopPoint& p, const LoopPoint& 
     return r;
 }
 
+/// The largest distance of the curve's mid-arc point from its chord, relative to the chord's
+/// length, that a loop chord may have: about 16 chords per turn of the curve. A coarser chord
+/// leaves the region polygon so far inside the curve that the secondary's triangles between
+/// them still pass through the primary.
+constexpr double kMaxChordBend = 0.05;
+
+/// The loop at @p spacing, each chord halved (in arc length) until the curve's mid-arc point lies
+/// within kMaxChordBend of the chord: loop nodes follow the curve's turns at any spacing.
+std::vector<LoopPoint> nodesAlong(const IntersectionLoop& loop, double spacing)
+{
+    const std::vector<LoopPoint> even = loop.resample(spacing);
+    const std::size_t n = loop.closed() ? even.size() : even.size() - 1;  // chords
+    std::vector<LoopPoint> out;
+    constexpr int kMaxDepth = 8;
+    const auto refine = [&](auto&& self, const LoopPoint& p, const LoopPoint& q, double s0, double s1, int depth) -> void {
+        const LoopPoint mid = loop.at(0.5 * (s0 + s1));
+        const Point3 chordMid = 0.5 * (p.point + q.point);
+        if (depth < kMaxDepth && distance(mid.point, chordMid) > kMaxChordBend * distance(p.point, q.point)) {
+            self(self, p, mid, s0, 0.5 * (s0 + s1), depth + 1);
+            out.push_back(mid);
+            self(self, mid, q, 0.5 * (s0 + s1), s1, depth + 1);
+        }
+    };
+    for (std::size_t k = 0; k < n; ++k) {
+        out.push_back(even[k]);
+        const double s0 = static_cast<double>(k) / static_cast<double>(n), s1 = static_cast<double>(k + 1) / static_cast<double>(n);
+        // The closing chord's end is the first point one turn on (loop.at(1)).
+        refine(refine, even[k], k + 1 < even.size() ? even[k + 1] : loop.at(1.0), s0, s1, 0);
+    }
+    if (!loop.closed()) out.push_back(even.back());
+    return out;
+}
+
 }  // namespace
 
 SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, double spacing,
                           std::vector<Point3>& globalNodes)
 {
-    const std::vector<LoopPoint> base = loop.resample(spacing);
+    const std::vector<LoopPoint> base = nodesAlong(loop, spacing);
     const SurfacePair sp = surfacePairOf(loop.surfaceA(), loop.surfaceB());
     SharedLoop shared;
     shared.loop = loopIndex;
