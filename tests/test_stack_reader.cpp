@@ -5,7 +5,10 @@
 #include <towgeom/towgeom.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <functional>
+#include <optional>
 #include <sstream>
 
 #include "synthetic_tows.hpp"
@@ -235,5 +238,138 @@ TEST_CASE("coinciding sections are named by their own numbers", "[reader][malfor
                 CHECK(e.file() == "tow 'mem_tow'");
             }
         }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Start points: a first point anywhere around the tow is accepted (fit renumbers the section);
+// only sections that no renumbering makes correspond are refused.
+
+namespace {
+
+/// A flat elliptical tow along x (clockwise about +x, so no reversal) whose section i starts
+/// i points further round (its point j is point j + i of the undrifted section), after @p edit.
+TowStack driftingFlatTow(const std::function<void(TowStack&)>& edit = {})
+{
+    testing::Sampling sampling{12, 24, 0.0, false};
+    TowStack s = testing::ellipticalTube(0.5, 0.08, 2.0, sampling, "drifting");
+    for (std::size_t i = 0; i < s.sections.size(); ++i)
+        std::rotate(s.sections[i].begin(), s.sections[i].begin() + static_cast<long>(i % 24), s.sections[i].end());
+    if (edit) edit(s);
+    return s;
+}
+
+/// Reads @p s written as text (readStack validates it): the error it raises, if any.
+std::optional<Error> readBack(const TowStack& s)
+{
+    std::stringstream io;
+    writeStack(io, s);
+    try {
+        readStack(io, "drifting.stw", "drifting");
+    } catch (const Error& e) {
+        return e;
+    }
+    return std::nullopt;
+}
+
+/// The line of the first point of section @p i in the text of the drifting tow.
+std::size_t lineOfSection(std::size_t i)
+{
+    std::stringstream io;
+    writeStack(io, driftingFlatTow());
+    return readStack(io, "drifting.stw", "drifting").lineOf(i, 0);
+}
+
+}  // namespace
+
+TEST_CASE("a section's first point may sit anywhere around the tow; the stack keeps it", "[reader][start]")
+{
+    const TowStack s = driftingFlatTow();
+    REQUIRE_NOTHROW(validateStack(s));
+    // The stack the user gave stays as it is: written and read back, the same points in order.
+    std::stringstream io;
+    writeStack(io, s);
+    const TowStack back = readStack(io, "mem", "other");
+    REQUIRE(back.sectionCount() == s.sectionCount());
+    for (std::size_t i = 0; i < s.sectionCount(); ++i)
+        for (std::size_t j = 0; j < s.pointsPerSection(); ++j) {
+            CHECK(back.sections[i][j].y == s.sections[i][j].y);
+            CHECK(back.sections[i][j].z == s.sections[i][j].z);
+        }
+    // The fit renumbers section i back by i places (clockwise input, so not reversed): its
+    // point j on the surface is its input point (j - i) mod 24.
+    const TowSurface surface = TowSurface::fit(back);
+    CHECK_FALSE(surface.inputReversed());
+    for (std::size_t i = 0; i < s.sectionCount(); ++i) CHECK(surface.startShifts()[i] == (24 - i) % 24);
+    CHECK(surface.volume() == Approx(3.14159265358979323846 * 0.5 * 0.08 * 2.0).epsilon(2e-3));
+
+    // The old malformed case "twisted_start" (5 x 8 circles, the third starting half way round)
+    // is now a valid tow.
+    std::string text = "tow twisted\n";
+    for (int i = 0; i < 5; ++i) {
+        for (int j = 0; j < 8; ++j) {
+            const int k = i == 2 ? (j + 4) % 8 : j;
+            text += std::to_string(i) + " " + std::to_string(std::cos(2 * 3.14159265358979323846 * k / 8)) + " " +
+                    std::to_string(std::sin(2 * 3.14159265358979323846 * k / 8)) + "\n";
+        }
+        text += "\n";
+    }
+    const TowSurface twisted = TowSurface::fit(parse(text));
+    CHECK(twisted.startShifts() == std::vector<std::size_t>{0, 0, 4, 0, 0});
+
+    // A tow that tapers to a tenth of its size at its end still corresponds point by point.
+    TowStack taper = testing::ellipticalTube(0.5, 0.2, 2.0, {8, 16, 0.0, false}, "taper");
+    for (std::size_t i = 5; i < 8; ++i)
+        for (Point3& p : taper.sections[i]) p = {p.x, p.y * std::pow(0.46, i - 4.0), p.z * std::pow(0.46, i - 4.0)};
+    CHECK(TowSurface::fit(taper).startShifts() == std::vector<std::size_t>(8, 0));
+}
+
+TEST_CASE("a section that no renumbering matches is still refused, naming section and line", "[reader][start]")
+{
+    SECTION("a section from another place: turned across the flat tow")
+    {
+        const TowStack s = driftingFlatTow([](TowStack& t) {
+            for (Point3& p : t.sections[6]) p = {p.x, -1.2 * p.z, 1.2 * p.y};  // 90 degrees, a bit larger
+        });
+        CHECK_THROWS_AS(validateStack(s), Error);
+        CHECK_THROWS_AS(TowSurface::fit(s), Error);
+        const std::optional<Error> e = readBack(s);
+        REQUIRE(e);
+        INFO(e->what());
+        CHECK(e->code() == ErrorCode::InconsistentStart);
+        CHECK(e->line() == lineOfSection(6));
+        CHECK(std::string(e->what()).find("section 7 does not correspond point by point to section 6") != std::string::npos);
+    }
+    SECTION("a section going round the other way: no shift hides it")
+    {
+        const TowStack s = driftingFlatTow([](TowStack& t) { std::reverse(t.sections[8].begin() + 1, t.sections[8].end()); });
+        const std::optional<Error> e = readBack(s);
+        REQUIRE(e);
+        INFO(e->what());
+        CHECK(e->code() == ErrorCode::InconsistentOrientation);
+        CHECK(e->line() == lineOfSection(8));
+    }
+    SECTION("a section whose points are scrambled")
+    {
+        // Scrambling a convex section makes it cross itself; that is what is reported.
+        const TowStack s = driftingFlatTow([](TowStack& t) { std::swap(t.sections[4][3], t.sections[4][15]); });
+        const std::optional<Error> e = readBack(s);
+        REQUIRE(e);
+        INFO(e->what());
+        CHECK(e->code() == ErrorCode::SelfIntersectingSection);
+        CHECK(e->line() == lineOfSection(4));
+    }
+    SECTION("two sections that coincide once renumbered")
+    {
+        const TowStack s = driftingFlatTow([](TowStack& t) {
+            t.sections[5] = t.sections[4];
+            std::rotate(t.sections[5].begin(), t.sections[5].begin() + 7, t.sections[5].end());
+        });
+        const std::optional<Error> e = readBack(s);
+        REQUIRE(e);
+        INFO(e->what());
+        CHECK(e->code() == ErrorCode::DegenerateTow);
+        CHECK(e->line() == lineOfSection(5));
+        CHECK(std::string(e->what()).find("section 6 coincides with section 5") != std::string::npos);
     }
 }

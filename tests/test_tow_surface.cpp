@@ -98,6 +98,7 @@ TEST_CASE("elliptical tube with its start rotated by 90 degrees, both orientatio
             Sampling s{21, 24, kPi / 2, ccw};
             const TowSurface surface = TowSurface::fit(testing::ellipticalTube(a, b, length, s));
             CHECK(surface.inputReversed() == ccw);
+            CHECK(surface.startShifts() == std::vector<std::size_t>(21, 0));  // consistent starts stay
             // Observed 9.23e-5 (24 points around a 3:1 ellipse, started at its flat side).
             CHECK(relative(surface.volume(), exact) < 2e-4);
             CHECK(surface.volume() > 0.0);
@@ -171,6 +172,7 @@ TEST_CASE("a tow bent through 350 degrees, growing along it, keeps outward norma
         const double exact = kPi * bend * sweep * (r0 * r0 + r0 * r1 + r1 * r1) / 3;
         INFO((ccw ? "counter-clockwise" : "clockwise") << " input, volume " << s.volume() << ", exact " << exact);
         CHECK(s.inputReversed() == ccw);
+        CHECK(s.startShifts() == std::vector<std::size_t>(121, 0));
         CHECK(relative(s.volume(), exact) < 1e-5);  // observed 4.2e-6
         for (const double u : {0.0, 0.25, 0.5, 0.75, 1.0})
             for (const double v : {0.0, 0.3, 0.6}) {
@@ -272,4 +274,269 @@ TEST_CASE("invalid queries and options are refused with a typed error", "[surfac
     CHECK(box.min.z == Approx(-interpolatingControlRadius(24, 0.5)).epsilon(1e-12));
     CHECK(box.min.x == Approx(0.0).margin(1e-9));
     CHECK(box.max.x == Approx(4.0).margin(1e-9));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Start points: sections whose first point drifts around the tow are renumbered by fit().
+
+namespace {
+
+bool same(const Point3& a, const Point3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+bool sameSections(const std::vector<std::vector<Point3>>& a, const std::vector<std::vector<Point3>>& b)
+{
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (a[i].size() != b[i].size()) return false;
+        for (std::size_t j = 0; j < a[i].size(); ++j)
+            if (!same(a[i][j], b[i][j])) return false;
+    }
+    return true;
+}
+
+/// Normals point away from the centroid of their own section curve, at a grid of (u,v).
+void checkOutwardFromSectionCentres(const TowSurface& s)
+{
+    for (int a = 0; a <= 10; ++a) {
+        const double u = a / 10.0;
+        Point3 c;
+        for (int b = 0; b < 64; ++b) c = c + (1.0 / 64) * s.point(u, b / 64.0);
+        for (int b = 0; b < 64; ++b) {
+            const Point3 p = s.point(u, b / 64.0);
+            REQUIRE(dot(s.normal(u, b / 64.0), p - c) > 0.0);
+        }
+    }
+}
+
+/// @p stack with the first point of section i moved drift[i] places back: its point j becomes
+/// the undrifted point (j - drift[i]) mod N. Renumbering it by a shift of drift[i] (in the
+/// input's own direction) gives the undrifted section back.
+TowStack drifted(const TowStack& stack, const std::vector<long>& drift)
+{
+    TowStack out = stack;
+    for (std::size_t i = 0; i < stack.sections.size(); ++i) {
+        const long n = static_cast<long>(stack.sections[i].size());
+        for (long j = 0; j < n; ++j)
+            out.sections[i][static_cast<std::size_t>(j)] = stack.sections[i][static_cast<std::size_t>(((j - drift[i]) % n + n) % n)];
+    }
+    return out;
+}
+
+/// The shifts fit() must report for a drift: in the surface's order, i.e. negated when the input
+/// is reversed.
+std::vector<std::size_t> expectedShifts(const std::vector<long>& drift, long n, bool reversed)
+{
+    std::vector<std::size_t> out;
+    for (const long d : drift) out.push_back(static_cast<std::size_t>((((reversed ? -d : d) % n) + n) % n));
+    return out;
+}
+
+/// Drift +1 point per section, and a seeded random walk of +-1..3 points per section.
+std::vector<long> steadyDrift(std::size_t m)
+{
+    std::vector<long> d(m);
+    for (std::size_t i = 0; i < m; ++i) d[i] = static_cast<long>(i);
+    return d;
+}
+std::vector<long> randomDrift(std::size_t m, unsigned seed)
+{
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<int> size(1, 3), sign(0, 1);
+    std::vector<long> d(m, 0);
+    for (std::size_t i = 1; i < m; ++i) d[i] = d[i - 1] + (sign(rng) ? 1 : -1) * size(rng);
+    return d;
+}
+
+/// Fits @p stack and its drifted copy; checks the shifts, and that the two surfaces are the
+/// same to 1e-12 of the tow size (they are fitted to the same points in the same order).
+void checkDriftUndone(const TowStack& stack, const std::vector<long>& drift, FitMode mode = FitMode::Interpolate)
+{
+    const TowSurface reference = TowSurface::fit(stack, {mode});
+    const TowStack input = drifted(stack, drift);
+    const TowSurface s = TowSurface::fit(input, {mode});
+    const std::size_t m = stack.sectionCount(), n = stack.pointsPerSection();
+    REQUIRE(reference.startShifts() == std::vector<std::size_t>(m, 0));
+    CHECK(s.inputReversed() == reference.inputReversed());
+    CHECK(s.startShifts() == expectedShifts(drift, static_cast<long>(n), s.inputReversed()));
+    // sections() holds the renumbered points: exactly the undrifted ones.
+    CHECK(sameSections(s.sections(), reference.sections()));
+    // inputPointIndex maps every surface point back to the drifted input.
+    for (std::size_t i = 0; i < m; ++i)
+        for (std::size_t j = 0; j < n; ++j) REQUIRE(same(input.sections[i][s.inputPointIndex(i, j)], s.sections()[i][j]));
+    // The seam runs through the first input point of section 0 (which keeps its start).
+    CHECK(same(s.point(0.0, 0.0), reference.point(0.0, 0.0)));
+    if (mode == FitMode::Interpolate) CHECK(distance(s.point(0.0, 0.0), input.sections[0][0]) <= 1e-12 * s.towSize());
+    double worst = 0.0;
+    for (int a = 0; a <= 20; ++a)
+        for (int b = 0; b < 40; ++b) {
+            const double u = a / 20.0, v = b / 40.0;
+            worst = std::max(worst, distance(s.point(u, v), reference.point(u, v)));
+        }
+    CHECK(worst <= 1e-12 * s.towSize());
+    CHECK(s.volume() == Approx(reference.volume()).epsilon(1e-12));
+    CHECK(s.facetedVolume() == Approx(reference.facetedVolume()).epsilon(1e-12));
+    const Deviation dr = reference.deviation(), ds = s.deviation();
+    CHECK(ds.max == Approx(dr.max).margin(1e-15 * s.towSize()));
+    // The worst point is reported in the drifted input's numbering.
+    CHECK(ds.worstSection == dr.worstSection);
+    const long nn = static_cast<long>(n);
+    CHECK(ds.worstPoint == static_cast<std::size_t>(((static_cast<long>(dr.worstPoint) + drift[dr.worstSection]) % nn + nn) % nn));
+    CHECK(same(input.sections[ds.worstSection][ds.worstPoint], stack.sections[dr.worstSection][dr.worstPoint]));
+}
+
+/// A point of a racetrack of width w and height h (semicircular ends of radius h/2), centred at
+/// the origin, at arc length s from (w/2, 0) counter-clockwise; s is taken modulo the perimeter.
+Point2 racetrackPoint(double w, double h, double s)
+{
+    const double rho = h / 2, half = (w - h) / 2;
+    const double arc = kPi * rho, perimeter = 4 * half + 2 * arc;
+    s = std::fmod(std::fmod(s, perimeter) + perimeter, perimeter);
+    const auto onArc = [&](double cx, double phi) { return Point2{cx + rho * std::cos(phi), rho * std::sin(phi)}; };
+    if (s < arc / 2) return onArc(half, s / rho);
+    s -= arc / 2;
+    if (s < 2 * half) return {half - s, rho};
+    s -= 2 * half;
+    if (s < arc) return onArc(-half, kPi / 2 + s / rho);
+    s -= arc;
+    if (s < 2 * half) return {-half + s, -rho};
+    s -= 2 * half;
+    return onArc(half, 3 * kPi / 2 + s / rho);
+}
+
+/// A flat racetrack tow as traced by hand on micro-CT slices: M sections in the planes x = 2 i g
+/// (g = 1/50 of the width, the pixel), N points each, uniform in arc length, the first point of
+/// section i at arc length offset[i] point spacings from the tip at +y; the section wanders
+/// sideways and up and down and its width varies along the tow; y and z are rounded to the
+/// pixel grid. Goes counter-clockwise about +x unless @p clockwise.
+struct TracedTow {
+    TowStack stack;
+    double spacing = 0.0;  // mean point spacing around (perimeter / N)
+    double volume = 0.0;   // of the unquantised tow, closed form per section (trapezoid rule along)
+};
+
+TracedTow tracedRacetrack(std::size_t m, std::size_t n, const std::vector<double>& offset, bool clockwise)
+{
+    const double g = 1.0 / 50.0, h = 0.25;
+    TracedTow t;
+    t.stack.name = "traced";
+    double previousArea = 0.0;
+    for (std::size_t i = 0; i < m; ++i) {
+        const double x = 2 * g * static_cast<double>(i);
+        const double w = 1.0 + 0.1 * std::sin(x);
+        const double yc = 0.05 * std::sin(2 * x), zc = 0.03 * std::cos(3 * x);
+        const double perimeter = 2 * (w - h) + kPi * h;
+        const double area = (w - h) * h + kPi * h * h / 4;
+        if (i) t.volume += 0.5 * (area + previousArea) * 2 * g;
+        previousArea = area;
+        t.spacing += perimeter / static_cast<double>(n) / static_cast<double>(m);
+        std::vector<Point3> section;
+        for (std::size_t j = 0; j < n; ++j) {
+            const double s = (offset[i] + static_cast<double>(j)) * perimeter / static_cast<double>(n);
+            const Point2 p = racetrackPoint(w, h, clockwise ? -s : s);
+            section.push_back({x, g * std::round((yc + p.x) / g), g * std::round((zc + p.y) / g)});
+        }
+        t.stack.sections.push_back(section);
+    }
+    return t;
+}
+
+/// The largest distance between matched points of consecutive sections of @p s (centroids
+/// made to coincide): how far the surface's point columns shear around the tow.
+double largestColumnShear(const TowSurface& s)
+{
+    const auto centroid = [](const std::vector<Point3>& p) {
+        Point3 c;
+        for (const Point3& q : p) c = c + q;
+        return (1.0 / static_cast<double>(p.size())) * c;
+    };
+    double worst = 0.0;
+    for (std::size_t i = 1; i < s.sectionCount(); ++i) {
+        const auto &a = s.sections()[i - 1], &b = s.sections()[i];
+        const Point3 ca = centroid(a), cb = centroid(b);
+        for (std::size_t j = 0; j < a.size(); ++j) worst = std::max(worst, norm((b[j] - cb) - (a[j] - ca)));
+    }
+    return worst;
+}
+
+}  // namespace
+
+TEST_CASE("drifting start points: round and elliptical tubes, crimped tow, both orientations", "[surface][start]")
+{
+    for (const bool ccw : {true, false}) {
+        const Sampling sampling{21, 24, 0.3, ccw};
+        const std::vector<std::pair<std::string, TowStack>> tows{
+            {"round", testing::tubeAlongX(0.5, 4.0, 0.0, 0.2, -0.1, sampling)},
+            {"elliptical", testing::ellipticalTube(0.6, 0.2, 3.0, sampling)},
+            {"crimped", testing::crimpedTow(0.5, 0.12, 4.0, 0.1, 2.0, sampling)}};
+        for (const auto& [name, stack] : tows) {
+            DYNAMIC_SECTION(name << (ccw ? ", counter-clockwise" : ", clockwise") << ", +1 per section")
+            {
+                checkDriftUndone(stack, steadyDrift(stack.sectionCount()));
+            }
+            DYNAMIC_SECTION(name << (ccw ? ", counter-clockwise" : ", clockwise") << ", random +-1..3 per section")
+            {
+                checkDriftUndone(stack, randomDrift(stack.sectionCount(), 11));
+            }
+        }
+    }
+    SECTION("every fit mode sees the renumbered sections")
+    {
+        const TowStack stack = testing::ellipticalTube(0.6, 0.2, 3.0, {21, 24, 0.0, false});
+        checkDriftUndone(stack, randomDrift(21, 5), FitMode::ControlNet);
+        checkDriftUndone(stack, randomDrift(21, 6), FitMode::Approximate);
+    }
+}
+
+TEST_CASE("hand-traced flat racetrack on pixel rows: drifting starts are renumbered", "[surface][start]")
+{
+    const std::size_t m = 40, n = 32;
+    for (const bool clockwise : {false, true}) {
+        DYNAMIC_SECTION((clockwise ? "clockwise" : "counter-clockwise") << ", whole-point drift")
+        {
+            const TracedTow tow = tracedRacetrack(m, n, std::vector<double>(m, 0.0), clockwise);
+            checkDriftUndone(tow.stack, steadyDrift(m));
+            checkDriftUndone(tow.stack, randomDrift(m, 3));
+        }
+        DYNAMIC_SECTION((clockwise ? "clockwise" : "counter-clockwise") << ", fractional drift")
+        {
+            // The tracer starts 1.37 point spacings further round on every slice, or a random
+            // +-(1..3 +- 0.3) spacings: no renumbering matches exactly; each section is matched to
+            // the nearest whole shift, so the point columns shear by at most ~0.4 spacing.
+            std::mt19937 rng(17);
+            std::uniform_int_distribution<int> whole(1, 3), sign(0, 1);
+            std::uniform_real_distribution<double> fraction(-0.3, 0.3);
+            std::vector<double> steady(m), walk(m, 0.0);
+            for (std::size_t i = 0; i < m; ++i) steady[i] = 1.37 * static_cast<double>(i);
+            for (std::size_t i = 1; i < m; ++i) walk[i] = walk[i - 1] + (sign(rng) ? 1 : -1) * whole(rng) + fraction(rng);
+            const TracedTow still = tracedRacetrack(m, n, std::vector<double>(m, 0.0), clockwise);
+            const TowSurface reference = TowSurface::fit(still.stack);
+            for (const std::vector<double>* offset : {&steady, &walk}) {
+                const TracedTow tow = tracedRacetrack(m, n, *offset, clockwise);
+                const TowSurface s = TowSurface::fit(tow.stack);
+                // Section i matches section i - 1 by the whole shift nearest to the offset
+                // difference: cumulative shifts, in the surface's order.
+                long k = 0;
+                std::vector<long> cumulative{0};
+                for (std::size_t i = 1; i < m; ++i) {
+                    k += std::lround((*offset)[i] - (*offset)[i - 1]);
+                    cumulative.push_back(k);
+                }
+                // Point j of section i (offset o) is the undrifted point at o + j: a drift of -o.
+                for (long& c : cumulative) c = -c;
+                CHECK(s.startShifts() == expectedShifts(cumulative, static_cast<long>(n), s.inputReversed()));
+                CHECK(s.inputReversed() == !clockwise);
+                const double shear = largestColumnShear(s), stillShear = largestColumnShear(reference);
+                WARN((offset == &steady ? "steady 1.37" : "random walk")
+                     << ": column shear " << shear / tow.spacing << " spacings (undrifted "
+                     << stillShear / tow.spacing << "), volume " << s.volume() << " vs exact " << tow.volume
+                     << " (" << 100 * (s.volume() / tow.volume - 1) << " %), undrifted fit "
+                     << 100 * (reference.volume() / tow.volume - 1) << " %");
+                CHECK(shear <= stillShear + 0.45 * tow.spacing);
+                CHECK(s.deviation().max <= 1e-9);
+                CHECK(std::fabs(s.volume() / tow.volume - 1) < 0.01);
+                CHECK(std::fabs(s.volume() / reference.volume() - 1) < 0.005);
+                checkOutwardFromSectionCentres(s);
+            }
+        }
+    }
 }

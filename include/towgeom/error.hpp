@@ -26,7 +26,7 @@ enum class ErrorCode {
     ZeroAreaSection,          ///< A section encloses (almost) no area: its points are collinear.
     SelfIntersectingSection,  ///< A section's polygon crosses itself.
     InconsistentOrientation,  ///< Sections do not all go around the tow in the same direction.
-    InconsistentStart,        ///< Consecutive sections do not start at the same angular position.
+    InconsistentStart,        ///< Consecutive sections correspond point by point under no cyclic renumbering.
     LineTooLong,              ///< A line is longer than 65536 characters: not a stack file.
     DegenerateTow,            ///< Consecutive sections coincide, so the tow has no length there.
     InvalidArgument,          ///< A caller-supplied option or argument is out of its domain.

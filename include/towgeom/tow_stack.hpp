@@ -15,8 +15,12 @@ namespace towgeom {
 ///
 /// Conventions (the same as the `.stw` file format, see stack_reader.hpp):
 /// - sections are in order along the tow; every section has the same number of points;
-/// - the first point of every section sits at a consistent angular position and the points go
-///   around in a consistent direction (either direction; TowSurface detects it);
+/// - the points go around in a consistent direction (either direction; TowSurface detects it);
+/// - the first point of a section may sit anywhere around the tow: sections traced by hand
+///   often start a point or more further round than the previous one. A TowStack keeps the
+///   points as given; TowSurface::fit renumbers every section cyclically to match the previous
+///   one (see TowSurface::startShifts()). Sections must correspond point by point under some
+///   such renumbering (validateStack());
 /// - the closing point is not repeated.
 struct TowStack {
     /// Minimum number of sections accepted by validateStack().
@@ -46,9 +50,20 @@ struct TowStack {
 /// at least TowStack::kMinSections sections and TowStack::kMinPointsPerSection points each, equal
 /// point counts, finite coordinates of magnitude at most 1e100, sections at least 1e-100 across, no consecutive duplicate points,
 /// no zero-area or self-intersecting section (checked exactly, in the section's best-fit plane),
-/// one orientation for all sections, no two consecutive sections that coincide, and consistent
-/// first points (a section whose points, rotated by k places, match the previous section much
-/// better than unrotated is refused: its first point is elsewhere around the tow).
+/// one orientation for all sections, no two consecutive sections that coincide (under the
+/// renumbering below), and consecutive sections that correspond point by point.
+///
+/// Correspondence: section i + 1 is renumbered by the cyclic shift k that matches it best to
+/// section i, the k minimising sum_j |(b_{(j+k) mod N} - cb) - (a_j - ca)|^2 (a, b the two
+/// sections, ca, cb their vertex centroids: a section that moves sideways still matches). Its
+/// first point may therefore drift around the tow by any number of points. The stack is refused
+/// (ErrorCode::InconsistentStart, naming section i + 1 and its first line) only when no shift
+/// makes the sections consistent: when under the best one the cosine between the two point
+/// configurations, sum_j (a_j - ca).(b_{j+k} - cb) / sqrt(sum |a_j - ca|^2 sum |b_j - cb|^2),
+/// is below 1/2. It is 1 for a section that is the previous one moved and scaled, cos(theta)
+/// for a flat section turned by theta about the tow, and about 0 when matched points are no
+/// closer than unrelated ones (a section from another tow or turned across, points scrambled).
+/// A section going round the other way is refused as InconsistentOrientation.
 ///
 /// A point counts as a duplicate of its neighbour when they are closer than 1e-9 times the
 /// section's size (its bounding-box diagonal); a section has zero area when its area is below

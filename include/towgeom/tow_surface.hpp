@@ -51,7 +51,8 @@ struct Deviation {
     double max = 0.0;             ///< largest distance
     double rms = 0.0;             ///< root mean square distance
     std::size_t worstSection = 0;  ///< section index of the farthest point
-    std::size_t worstPoint = 0;    ///< point index (in input order) of the farthest point
+    std::size_t worstPoint = 0;    ///< point index of the farthest point in the input's own numbering
+                                   ///< (before the start shift and reversal; see TowSurface::inputPointIndex())
 };
 
 /// The jumps of position and derivatives across the v seam at one u, each relative to the size
@@ -73,14 +74,25 @@ struct SeamJump {
 /// length around the section averaged over the M sections. The same v is used for every section
 /// (a tensor product), so iso-v curves follow the input's point columns.
 ///
+/// **Start points.** Tensor-product fitting puts point j of every section at the same v, so the
+/// sections must correspond point by point. The first input point of a section may sit anywhere
+/// around the tow (hand-traced sections drift by a point or more from one to the next): fit()
+/// renumbers every section cyclically, section i by the shift that best matches it to section
+/// i - 1 as already renumbered (the shift minimising the sum of squared distances between
+/// matched points once the centroids are made to coincide; see validateStack()). Section 0
+/// keeps its first point. startShifts() reports the shifts; sections() holds the renumbered
+/// points. A stack that already starts consistently has all shifts 0.
+///
 /// **Seam.** v = 0 (equivalently v = 1) is the iso-curve through the first point of every
-/// section. The surface is periodic in v with simple knots, so for Interpolate and Approximate
+/// section as renumbered: the first input point of section 0, and of every section whose shift
+/// is 0. The surface is periodic in v with simple knots, so for Interpolate and Approximate
 /// fits it is C2 across the seam (see seamJump()); queries accept any v and wrap it.
 ///
 /// **Orientation.** The surface is always built so that dS/du x dS/dv points out of the tow.
 /// If the input sections go counter-clockwise about the tow's direction (the right-hand rule),
-/// the point order within every section is reversed on input (the first point stays first) and
-/// inputReversed() is true; pointParameters() are given in the surface's order.
+/// the point order within every section is reversed on input (the first point, after the
+/// renumbering, stays first) and inputReversed() is true; pointParameters(), sections() and
+/// startShifts() are given in the surface's order.
 ///
 /// **Ends.** The surface is open in u; volume() closes the tube with its two end sections.
 ///
@@ -106,9 +118,21 @@ public:
     std::size_t pointsPerSection() const;
     /// True when the input's point order was reversed to make normals point outwards.
     bool inputReversed() const;
-    /// The input points in the surface's order: sections()[i][j] sits at
-    /// (sectionParameters()[i], pointParameters()[j]).
+    /// The input points in the surface's order, each section renumbered from its start shift
+    /// and reversed when inputReversed(): sections()[i][j] sits at
+    /// (sectionParameters()[i], pointParameters()[j]) and is input point inputPointIndex(i, j)
+    /// of section i.
     const std::vector<std::vector<Point3>>& sections() const;
+    /// The start shift of every section (M values in [0, N), the first 0): point j of section i
+    /// in the surface's order is point (j + startShifts()[i]) mod N of the input section taken
+    /// in the surface's direction, i.e. after the reversal when inputReversed() (there, point m
+    /// of the reversed section is input point (N - m) mod N). Section i's shift is the one that
+    /// best matches it to section i - 1 as already shifted; see the class notes.
+    const std::vector<std::size_t>& startShifts() const;
+    /// The input index of point @p j of section @p i in the surface's order (sections()[i][j]):
+    /// (j + startShifts()[i]) mod N, or N minus that (mod N) when inputReversed().
+    /// @throws towgeom::Error (InvalidArgument) for i >= M or j >= N.
+    std::size_t inputPointIndex(std::size_t i, std::size_t j) const;
     /// u of each input section.
     const std::vector<double>& sectionParameters() const;
     /// v of each input point index (in the surface's order).

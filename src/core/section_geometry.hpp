@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 #include "towgeom/point.hpp"
@@ -66,6 +67,74 @@ inline double localOrientation(const std::vector<std::vector<Point3>>& sections,
     const std::size_t m = sections.size();
     const Vector3 along = vertexCentroid(sections[i + 1 < m ? i + 1 : m - 1]) - vertexCentroid(sections[i == 0 ? 0 : i - 1]);
     return dot(unitVector(vectorArea(sections[i])), unitVector(along));
+}
+
+/// How section @p b corresponds to section @p a point by point under its best cyclic renumbering.
+struct StartMatch {
+    /// k: point j of @p a is matched with point (j + k) mod N of @p b.
+    std::size_t shift = 0;
+    /// The cosine between the two sections' point configurations (centroids removed) under that
+    /// matching: sum_j (a_j - ca).(b_{j+k} - cb) / sqrt(sum |a_j - ca|^2 * sum |b_j - cb|^2),
+    /// in [-1, 1]. 1 when @p b is @p a scaled and moved; about 0 when the matched points are no
+    /// closer than unrelated ones (a mirrored or scrambled section, one rotated by 90 degrees
+    /// with a flat shape).
+    double similarity = 0.0;
+};
+
+/// The cyclic shift k that minimises sum_j |(b_{(j+k) mod N} - cb) - (a_j - ca)|^2, the sum of
+/// squared distances between matched points after removing the difference of the centroids
+/// (so a section that moves sideways still matches); ties go to the smallest k. @p a and @p b
+/// have the same N >= 1 points. Each section is taken in units of its own extent, so that any
+/// coordinates up to 1e100 are safe; this does not change k (the squared lengths of each
+/// section do not depend on k, so k maximises sum_j (a_j - ca).(b_{j+k} - cb)). O(N^2).
+inline StartMatch bestStartShift(const std::vector<Point3>& a, const std::vector<Point3>& b)
+{
+    const std::size_t n = a.size();
+    const Point3 ca = vertexCentroid(a), cb = vertexCentroid(b);
+    const double ua = 1.0 / std::fmax(extent(a), 1e-300), ub = 1.0 / std::fmax(extent(b), 1e-300);
+    std::vector<Vector3> da(n), db(n);
+    double sa = 0.0, sb = 0.0;
+    for (std::size_t j = 0; j < n; ++j) {
+        da[j] = ua * (a[j] - ca);
+        db[j] = ub * (b[j] - cb);
+        sa += dot(da[j], da[j]);
+        sb += dot(db[j], db[j]);
+    }
+    StartMatch best;
+    double bestDot = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+        double sum = 0.0;
+        for (std::size_t j = 0; j < n; ++j) sum += dot(da[j], db[(j + k) % n]);
+        if (k == 0 || sum > bestDot) {
+            bestDot = sum;
+            best.shift = k;
+        }
+    }
+    const double norms = std::sqrt(sa) * std::sqrt(sb);
+    best.similarity = norms > 0.0 ? bestDot / norms : 0.0;
+    return best;
+}
+
+/// The cumulative start shifts of a stack's sections, in their own (input) order: shifts[0] = 0
+/// and section i, renumbered so that its point j is its input point (j + shifts[i]) mod N,
+/// matches section i - 1 (renumbered the same way) best: shifts[i] = (shifts[i-1] +
+/// bestStartShift(sections[i-1], sections[i]).shift) mod N. The sections must all have N >= 1
+/// points.
+inline std::vector<std::size_t> cumulativeStartShifts(const std::vector<std::vector<Point3>>& sections)
+{
+    std::vector<std::size_t> shifts(sections.size(), 0);
+    for (std::size_t i = 1; i < sections.size(); ++i)
+        shifts[i] = (shifts[i - 1] + bestStartShift(sections[i - 1], sections[i]).shift) % sections[i].size();
+    return shifts;
+}
+
+/// @p section renumbered cyclically: point j of the result is point (j + shift) mod N of it.
+inline std::vector<Point3> cyclicallyShifted(const std::vector<Point3>& section, std::size_t shift)
+{
+    const std::size_t n = section.size();
+    std::vector<Point3> out(n);
+    for (std::size_t j = 0; j < n; ++j) out[j] = section[(j + shift) % n];
+    return out;
 }
 
 }  // namespace towgeom::detail

@@ -21,6 +21,10 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 constexpr double kDuplicateTolerance = 1e-9;  // relative to the section's extent
 constexpr double kAreaTolerance = 1e-9;       // relative to the section's extent squared
+// Consecutive sections whose best-matched point configurations are less similar than this are
+// refused (detail::StartMatch::similarity; 1 for a section that is the previous one moved and
+// scaled, cos(theta) for a flat section turned by theta, about 0 for unrelated points).
+constexpr double kMinStartSimilarity = 0.5;
 
 std::string sectionLabel(std::size_t i) { return "section " + std::to_string(i + 1); }
 
@@ -112,51 +116,40 @@ void checkCounts(const TowStack& s)
              s.sections.size() - 1);
 }
 
-/// Consecutive sections must start at the same angular position: rotating the next section's
-/// points by k places must not fit it better to this one (then the input's first points are
-/// not consistent, and the surface would twist through the tow).
-void checkStartPoints(const TowStack& s, std::size_t i)
+/// Section i + 1 must correspond to section i point by point under some cyclic renumbering of
+/// its points (its first point may sit anywhere around the tow; TowSurface::fit renumbers it):
+/// under the best one (detail::bestStartShift), the similarity of the two point configurations
+/// must be at least kMinStartSimilarity.
+void checkStartPoints(const TowStack& s, std::size_t i, const detail::StartMatch& match)
 {
-    const auto& a = s.sections[i];
-    const auto& b = s.sections[i + 1];
-    const std::size_t n = a.size();
-    const Point3 ca = detail::vertexCentroid(a), cb = detail::vertexCentroid(b);
-    const double unitScale = 1.0 / std::max(detail::extent(a), 1e-300);
-    const auto mismatch = [&](std::size_t k) {
-        double sum = 0.0;
-        for (std::size_t j = 0; j < n; ++j) {
-            const Vector3 d = unitScale * ((b[(j + k) % n] - cb) - (a[j] - ca));
-            sum += dot(d, d);
-        }
-        return sum;
-    };
-    const double aligned = mismatch(0);
-    std::size_t best = 0;
-    double bestValue = aligned;
-    for (std::size_t k = 1; k < n; ++k)
-        if (const double value = mismatch(k); value < bestValue) {
-            bestValue = value;
-            best = k;
-        }
-    if (best != 0 && bestValue < 0.5 * aligned)
-        fail(s, ErrorCode::InconsistentStart,
-             sectionLabel(i + 1) + " starts " + std::to_string(best) + " point(s) around from " + sectionLabel(i) +
-                 ": the first point of every section must sit at the same angular position",
-             i + 1);
+    if (match.similarity >= kMinStartSimilarity) return;
+    std::ostringstream what;
+    what.precision(2);
+    what << sectionLabel(i + 1) << " does not correspond point by point to " << sectionLabel(i)
+         << " under any renumbering of its points from another first point (the best, " << match.shift
+         << " point(s) on, leaves a similarity of " << match.similarity << "; at least " << kMinStartSimilarity
+         << " is needed): it is not the next cross-section of this tow";
+    fail(s, ErrorCode::InconsistentStart, what.str(), i + 1);
 }
 
 void checkAlongTow(const TowStack& s)
 {
     const std::size_t m = s.sections.size();
+    // How each section best matches the previous one; the checks below compare matched points.
+    std::vector<detail::StartMatch> matches(m - 1);
+    for (std::size_t i = 0; i + 1 < m; ++i) matches[i] = detail::bestStartShift(s.sections[i], s.sections[i + 1]);
     double size = 0.0;
     for (std::size_t i = 0; i < m; ++i) size += detail::perimeter(s.sections[i]) / m;
     for (std::size_t i = 0; i + 1 < m; ++i) {
+        const auto& a = s.sections[i];
+        const auto& b = s.sections[i + 1];
         double chord = 0.0;
-        for (std::size_t j = 0; j < s.sections[i].size(); ++j) chord += distance(s.sections[i][j], s.sections[i + 1][j]);
-        if (chord / s.sections[i].size() <= kDuplicateTolerance * size)
+        for (std::size_t j = 0; j < a.size(); ++j) chord += distance(a[j], b[(j + matches[i].shift) % b.size()]);
+        if (chord / a.size() <= kDuplicateTolerance * size)
             fail(s, ErrorCode::DegenerateTow, sectionLabel(i + 1) + " coincides with " + sectionLabel(i), i + 1);
     }
-    for (std::size_t i = 0; i + 1 < m; ++i) checkStartPoints(s, i);
+    // Orientation before start points: a section going the other way round matches no
+    // renumbering either, and its own message says why.
     int orientation = 0;
     for (std::size_t i = 0; i < m; ++i) {
         const double d = detail::localOrientation(s.sections, i);
@@ -169,6 +162,7 @@ void checkAlongTow(const TowStack& s)
             fail(s, ErrorCode::InconsistentOrientation,
                  sectionLabel(i) + " goes around the tow in the opposite direction to section 1", i);
     }
+    for (std::size_t i = 0; i + 1 < m; ++i) checkStartPoints(s, i, matches[i]);
 }
 
 }  // namespace

@@ -31,12 +31,25 @@ using Sparse = Eigen::SparseMatrix<double>;
 /// (local, so that a tow bent beyond 180 degrees cannot mislead it).
 bool counterClockwise(const TowStack& stack) { return localOrientation(stack.sections, 0) > 0.0; }
 
-/// The input in the surface's order: reversed around (first point kept first) when needed.
-std::vector<std::vector<Point3>> orderedSections(const TowStack& stack, bool reverse)
+/// The input in the surface's order: every section renumbered cyclically to match the previous
+/// one best (cumulativeStartShifts, in the input's own direction, so that the choice is the one
+/// validateStack judged), then reversed around (first point kept first) when needed. Sets
+/// @p shifts to the shifts in the surface's order: point j of section i of the result is point
+/// (j + shifts[i]) mod N of the input section taken in the surface's direction (input point
+/// (N - (j + shifts[i]) mod N) mod N when reversed).
+std::vector<std::vector<Point3>> orderedSections(const TowStack& stack, bool reverse, std::vector<std::size_t>& shifts)
 {
-    std::vector<std::vector<Point3>> out = stack.sections;
-    if (reverse)
-        for (auto& section : out) std::reverse(section.begin() + 1, section.end());
+    shifts = cumulativeStartShifts(stack.sections);
+    std::vector<std::vector<Point3>> out(stack.sections.size());
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        out[i] = cyclicallyShifted(stack.sections[i], shifts[i]);
+        if (reverse) {
+            // Aligned point j is input point j + k; reversed, surface point j is aligned point
+            // -j, i.e. input point -(j - k): a shift of -k in the reversed numbering.
+            std::reverse(out[i].begin() + 1, out[i].end());
+            shifts[i] = (out[i].size() - shifts[i]) % out[i].size();
+        }
+    }
     return out;
 }
 
@@ -199,7 +212,7 @@ std::shared_ptr<const TowSurface::Impl> fitSurface(const TowStack& stack, const 
     t->name = stack.name;
     t->mode = options.mode;
     t->reversed = counterClockwise(stack);
-    t->sections = orderedSections(stack, t->reversed);
+    t->sections = orderedSections(stack, t->reversed, t->startShifts);
     t->uParams = sectionParameters(t->sections);
     t->vParams = pointParameters(t->sections);
     for (const auto& section : t->sections) t->towSize += perimeter(section) / M_PI / t->sections.size();

@@ -71,6 +71,18 @@ std::size_t TowSurface::sectionCount() const { return impl_->sections.size(); }
 std::size_t TowSurface::pointsPerSection() const { return impl_->sections.front().size(); }
 bool TowSurface::inputReversed() const { return impl_->reversed; }
 const std::vector<std::vector<Point3>>& TowSurface::sections() const { return impl_->sections; }
+const std::vector<std::size_t>& TowSurface::startShifts() const { return impl_->startShifts; }
+std::size_t TowSurface::inputPointIndex(std::size_t i, std::size_t j) const
+{
+    const std::size_t m = impl_->sections.size(), n = impl_->sections.front().size();
+    if (i >= m || j >= n)
+        throw Error(ErrorCode::InvalidArgument,
+                    "no point " + std::to_string(j) + " of section " + std::to_string(i) + " in a tow of " +
+                        std::to_string(m) + " x " + std::to_string(n) + " points",
+                    "tow '" + impl_->name + "'");
+    const std::size_t k = (j + impl_->startShifts[i]) % n;
+    return impl_->reversed ? (n - k) % n : k;
+}
 const std::vector<double>& TowSurface::sectionParameters() const { return impl_->uParams; }
 const std::vector<double>& TowSurface::pointParameters() const { return impl_->vParams; }
 double TowSurface::towSize() const { return impl_->towSize; }
@@ -258,7 +270,7 @@ Deviation TowSurface::deviation() const
                 if (d > dev.max) {
                     dev.max = d;
                     dev.worstSection = i;
-                    dev.worstPoint = t.reversed && j > 0 ? t.sections[i].size() - j : j;
+                    dev.worstPoint = inputPointIndex(i, j);
                 }
             }
         dev.rms = std::sqrt(sum / static_cast<double>(count));

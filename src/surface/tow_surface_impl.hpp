@@ -15,7 +15,8 @@ struct TowSurface::Impl {
     std::string name;
     FitMode mode = FitMode::Interpolate;
     bool reversed = false;
-    std::vector<std::vector<Point3>> sections;  // input points in the surface's order
+    std::vector<std::vector<Point3>> sections;  // input points in the surface's order (aligned, reversed)
+    std::vector<std::size_t> startShifts;       // see TowSurface::startShifts()
     std::vector<double> uParams;                // u of each section
     std::vector<double> vParams;                // v of each point index
     double towSize = 0.0;

@@ -103,9 +103,17 @@ def name_late(lines, where):
 
 
 case("name_after_points.stw", "bad_name", edit=name_late)
-twisted = tube()
-twisted[2] = twisted[2][N // 2:] + twisted[2][:N // 2]  # starts half way round
-case("twisted_start.stw", "inconsistent_start", sections=twisted)
+# A section's first point may sit anywhere around the tow (fit renumbers it), but a flat tow
+# whose third section is turned across (a section from another place) matches the second under
+# no renumbering.
+def flat_tube(m=M, n=N, a=1.0, b=0.15):
+    return [[(float(i), a * math.cos(2 * math.pi * j / n), b * math.sin(2 * math.pi * j / n)) for j in range(n)]
+            for i in range(m)]
+
+
+foreign = flat_tube()
+foreign[2] = [(x, -z, y) for (x, y, z) in foreign[2]]  # turned by 90 degrees about x
+case("foreign_section.stw", "inconsistent_start", sections=foreign)
 case("plus_minus.stw", "non_numeric", edit=set_line(1, 1, "1.0 +-0.5 0.2"))
 case("long_name.stw", "bad_name", edit=lambda lines, where: (lines.__setitem__(1, "tow " + "n" * 201), 2)[1])
 case("long_line.stw", "line_too_long", edit=set_line(3, 2, "3.0 0.5 " + "0" * 70000))
@@ -121,7 +129,7 @@ fix = {
     "figure_eight.stw": render(eight)[1][3][0],
     "flipped_section.stw": render(flipped)[1][2][0],
     "repeated_section.stw": render(rep)[1][2][0],
-    "twisted_start.stw": render(twisted)[1][2][0],
+    "foreign_section.stw": render(foreign)[1][2][0],
     "one_section.stw": render(tube(m=1))[1][0][0],
     "three_sections.stw": render(tube(m=3))[1][2][0],
     "five_points.stw": render(tube(n=5))[1][0][0],
