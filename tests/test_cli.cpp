@@ -3,6 +3,7 @@
 
 #include "analytic_reference.hpp"
 #include "cli_runner.hpp"
+#include "synthetic_tows.hpp"
 
 #include <towgeom/towgeom.hpp>
 
@@ -59,6 +60,32 @@ TEST_CASE("towgeom fit prints the accuracy report and writes VTK", "[cli]")
     fs::remove_all(out);
 }
 
+TEST_CASE("towgeom fit renumbers sections whose first point drifts and prints the shifts", "[cli][start]")
+{
+    const fs::path dir = fs::temp_directory_path() / ("towgeom_fit_drift_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    // A round tube, clockwise about +x (not reversed): section i starts i points further round.
+    const towgeom::TowStack still = towgeom::testing::tubeAlongX(0.5, 2.0, 0.0, 0.0, 0.0, {9, 12, 0.0, false}, "still");
+    towgeom::TowStack drifting = still;
+    drifting.name = "drifting";
+    for (std::size_t i = 0; i < drifting.sections.size(); ++i)
+        std::rotate(drifting.sections[i].begin(), drifting.sections[i].end() - static_cast<long>(i),
+                    drifting.sections[i].end());
+    for (const towgeom::TowStack* s : {&still, static_cast<const towgeom::TowStack*>(&drifting)}) {
+        std::ofstream f(dir / (s->name + ".stw"));
+        towgeom::writeStack(f, *s);
+    }
+    const Run r = cli("fit '" + (dir / "still.stw").string() + "' '" + (dir / "drifting.stw").string() + "' --quiet");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.out.find("\"shifted_sections\":0,\"start_shifts\":[0,0,0,0,0,0,0,0,0]") != std::string::npos);
+    CHECK(r.out.find("\"shifted_sections\":8,\"start_shifts\":[0,1,2,3,4,5,6,7,8]") != std::string::npos);
+    CHECK(jsonNumber(r.out, "volume", 1) == jsonNumber(r.out, "volume", 0));
+    CHECK(jsonNumber(r.out, "max_deviation", 1) <= 1e-9);
+    fs::remove_all(dir);
+}
+
 TEST_CASE("towgeom fit --mode controlnet and approximate report their deviations", "[cli]")
 {
     const Run net = cli("fit '" + kTube + "' --mode controlnet --quiet");
@@ -91,7 +118,7 @@ TEST_CASE("towgeom help texts teach every subcommand", "[cli]")
     CHECK(top.out.find("fit") != std::string::npos);
     const Run fit = cli("fit --help");
     CHECK(fit.status == 0);
-    for (const char* word : {"--mode", "--tolerance", "--out", "Exit status", "Example"})
+    for (const char* word : {"--mode", "--tolerance", "--out", "start_shifts", "Exit status", "Example"})
         CHECK(fit.out.find(word) != std::string::npos);
     CHECK(cli("--version").out.find(TOWGEOM_VERSION_STRING) != std::string::npos);
 }

@@ -22,13 +22,22 @@ Fits a bicubic B-spline surface to every tow stack (open along the tow, periodic
 it, normals pointing out of the tow) and prints one JSON object on stdout:
 
   {"tows":[{"name", "mode", "sections", "points", "control_points", "max_deviation",
-            "rms_deviation", "volume", "faceted_volume", "area", "reversed"}]}
+            "rms_deviation", "volume", "faceted_volume", "area", "reversed",
+            "shifted_sections", "start_shifts"}]}
 
   max_deviation, rms_deviation  closest-point distances of the input points from the surface
   volume          the surface's volume, closed at its ends by the end sections (exact quadrature)
   faceted_volume  the volume of the input polygons joined by flat facets, for comparison
   control_points  the surface's control points along and around the tow
   reversed        true when the input went counter-clockwise and was reversed for the fit
+  start_shifts    per section, how many places its points were renumbered cyclically so that
+                  it matches the previous section point by point (hand-traced sections whose
+                  first point drifts around the tow): point j of section i on the surface is
+                  its input point (j + shift) mod N, counted backwards from the first point
+                  when reversed. The seam runs through the first input point of section 1 and
+                  of every section with shift 0. Input that no shift makes consistent is
+                  refused [inconsistent_start].
+  shifted_sections  how many sections have a shift other than 0
 
 Options:
   --mode M        interpolate (default): the surface passes through every input point;
@@ -161,6 +170,12 @@ int runFit(int argc, char** argv, int first)
             json.key("faceted_volume").value(figures[k].faceted);
             json.key("area").value(figures[k].area);
             json.key("reversed").value(s.inputReversed());
+            std::size_t shifted = 0;
+            for (const std::size_t k : s.startShifts()) shifted += k != 0;
+            json.key("shifted_sections").value(shifted);
+            json.key("start_shifts").beginArray();
+            for (const std::size_t k : s.startShifts()) json.value(k);
+            json.endArray();
             json.endObject();
         }
         json.endArray().endObject();
