@@ -9,8 +9,10 @@
 #include <fstream>
 #include <functional>
 #include <optional>
+#include <random>
 #include <sstream>
 
+#include "core/section_geometry.hpp"
 #include "synthetic_tows.hpp"
 
 using namespace towgeom;
@@ -371,5 +373,55 @@ TEST_CASE("a section that no renumbering matches is still refused, naming sectio
         CHECK(e->code() == ErrorCode::DegenerateTow);
         CHECK(e->line() == lineOfSection(5));
         CHECK(std::string(e->what()).find("section 6 coincides with section 5") != std::string::npos);
+    }
+}
+
+TEST_CASE("the start match: shift and similarity of two sections", "[reader][start]")
+{
+    const double pi = 3.14159265358979323846;
+    const std::size_t n = 24;
+    // A flat ellipse (10:1) in the plane x = 0, clockwise about +x.
+    std::vector<Point3> a;
+    for (std::size_t j = 0; j < n; ++j) {
+        const double t = -2 * pi * static_cast<double>(j) / n;
+        a.push_back({0.0, std::cos(t), 0.1 * std::sin(t)});
+    }
+    const auto transformed = [&](double scale, double tilt, double turn, Point3 offset, std::size_t drift) {
+        std::vector<Point3> b(n);
+        for (std::size_t j = 0; j < n; ++j) {
+            const Point3 p = a[(j + n - drift) % n];
+            // Turned by `turn` in its plane, then tilted by `tilt` about the y axis, scaled, moved.
+            const double y = std::cos(turn) * p.y - std::sin(turn) * p.z, z = std::sin(turn) * p.y + std::cos(turn) * p.z;
+            const Point3 q{std::sin(tilt) * z, y, std::cos(tilt) * z};
+            b[j] = offset + scale * q;
+        }
+        return b;
+    };
+    SECTION("moved, scaled, tilted by 70 degrees and drifting: found exactly, similarity 1")
+    {
+        const detail::StartMatch m = detail::bestStartShift(a, transformed(3.0, 70 * pi / 180, 0.0, {5, -2, 1}, 5));
+        CHECK(m.shift == 5);
+        CHECK(m.similarity == Approx(1.0).margin(1e-12));
+    }
+    SECTION("turned within its plane by theta: similarity cos(theta) at the material match, or more")
+    {
+        // Small turns keep the material match; from about 50 degrees a shift that follows the
+        // turn matches better (by absolute position, as the objective says).
+        for (const double deg : {10.0, 30.0}) {
+            const detail::StartMatch m = detail::bestStartShift(a, transformed(1.0, 0.0, deg * pi / 180, {}, 0));
+            CHECK(m.shift == 0);
+            CHECK(m.similarity == Approx(std::cos(deg * pi / 180)).margin(1e-12));
+        }
+        const detail::StartMatch m = detail::bestStartShift(a, transformed(1.0, 0.0, 50 * pi / 180, {}, 0));
+        CHECK(m.shift == 1);
+        CHECK(m.similarity >= std::cos(50 * pi / 180));
+        // Turned across (90 degrees): no renumbering matches; validateStack refuses below 1/2.
+        CHECK(detail::bestStartShift(a, transformed(1.0, 0.0, pi / 2, {}, 0)).similarity < 0.25);
+    }
+    SECTION("scrambled: below 1/2")
+    {
+        std::vector<Point3> b = a;
+        std::shuffle(b.begin(), b.end(), std::mt19937(4));
+        CHECK(detail::bestStartShift(a, b).similarity < 0.5);
     }
 }

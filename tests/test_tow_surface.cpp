@@ -479,6 +479,34 @@ TEST_CASE("drifting start points: round and elliptical tubes, crimped tow, both 
             }
         }
     }
+    SECTION("tows that bend sharply: sections tilt by up to 90 degrees from one to the next")
+    {
+        // Matching removes the tilt between the sections' planes, so the drift is found as
+        // well as between parallel slices. The orthogonal binders of the generator turn by
+        // 90 degrees between their first sections at 6 sections (racetrack: without the tilt
+        // removed, those sections would match with a similarity of 0.48 and be refused).
+        for (const bool ccw : {true, false}) {
+            INFO((ccw ? "counter-clockwise" : "clockwise"));
+            checkDriftUndone(testing::bentTube(0.3, 1.0, 1.5 * kPi, {7, 16, 0.2, ccw}), randomDrift(7, 8));
+            checkDriftUndone(testing::crimpedTow(0.5, 0.1, 2.0, 0.4, 2.0, {9, 16, 0.0, ccw}), steadyDrift(9));
+        }
+        WeaveOptions weave;
+        weave.kind = WeaveKind::Orthogonal;
+        weave.shape = SectionShape::Racetrack;
+        weave.warps = 2;  // as towgeom generate --weave orthogonal --section racetrack --sections 6 --points 8
+        weave.wefts = 2;
+        weave.sectionsPerYarn = 6;
+        weave.pointsPerSection = 8;
+        const Textile textile = generateWeave(weave);
+        const std::vector<TowStack> stacks = textile.stacks();
+        std::size_t binders = 0;
+        for (std::size_t k = 0; k < stacks.size(); ++k)
+            if (textile.yarns[k].role == YarnRole::Binder) {
+                ++binders;
+                checkDriftUndone(stacks[k], randomDrift(6, 9));
+            }
+        CHECK(binders > 0);
+    }
     SECTION("every fit mode sees the renumbered sections")
     {
         const TowStack stack = testing::ellipticalTube(0.6, 0.2, 3.0, {21, 24, 0.0, false});

@@ -54,16 +54,19 @@ struct TowStack {
 /// renumbering below), and consecutive sections that correspond point by point.
 ///
 /// Correspondence: section i + 1 is renumbered by the cyclic shift k that matches it best to
-/// section i, the k minimising sum_j |(b_{(j+k) mod N} - cb) - (a_j - ca)|^2 (a, b the two
-/// sections, ca, cb their vertex centroids: a section that moves sideways still matches). Its
-/// first point may therefore drift around the tow by any number of points. The stack is refused
+/// section i, the k minimising sum_j |T(b_{(j+k) mod N} - cb) - (a_j - ca)|^2 (a, b the two
+/// sections, ca, cb their vertex centroids: a section that moves sideways still matches; T the
+/// smallest rotation that turns b's plane onto a's, the identity for parallel sections such as
+/// the slices of a scan: the sections of a bending tow tilt as it turns). Its first point may
+/// therefore drift around the tow by any number of points. The stack is refused
 /// (ErrorCode::InconsistentStart, naming section i + 1 and its first line) only when no shift
 /// makes the sections consistent: when under the best one the cosine between the two point
-/// configurations, sum_j (a_j - ca).(b_{j+k} - cb) / sqrt(sum |a_j - ca|^2 sum |b_j - cb|^2),
-/// is below 1/2. It is 1 for a section that is the previous one moved and scaled, cos(theta)
-/// for a flat section turned by theta about the tow, and about 0 when matched points are no
-/// closer than unrelated ones (a section from another tow or turned across, points scrambled).
-/// A section going round the other way is refused as InconsistentOrientation.
+/// configurations, sum_j (a_j - ca).T(b_{j+k} - cb) / sqrt(sum |a_j - ca|^2 sum |b_j - cb|^2),
+/// is below 1/2. It is 1 for a section that is the previous one moved, tilted and scaled, at
+/// least cos(theta) for one turned by theta within its plane, and about 0 when matched points
+/// are no closer than unrelated ones (a flat section turned across the tow, e.g. one from
+/// another place, or scrambled points). Orientation is checked first: a section going round the
+/// other way is refused as InconsistentOrientation.
 ///
 /// A point counts as a duplicate of its neighbour when they are closer than 1e-9 times the
 /// section's size (its bounding-box diagonal); a section has zero area when its area is below

@@ -79,7 +79,8 @@ struct SeamJump {
 /// around the tow (hand-traced sections drift by a point or more from one to the next): fit()
 /// renumbers every section cyclically, section i by the shift that best matches it to section
 /// i - 1 as already renumbered (the shift minimising the sum of squared distances between
-/// matched points once the centroids are made to coincide; see validateStack()). Section 0
+/// matched points once the centroids are made to coincide and the sections' planes to agree;
+/// see validateStack()). Section 0
 /// keeps its first point. startShifts() reports the shifts; sections() holds the renumbered
 /// points. A stack that already starts consistently has all shifts 0.
 ///

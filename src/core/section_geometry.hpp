@@ -73,30 +73,45 @@ inline double localOrientation(const std::vector<std::vector<Point3>>& sections,
 struct StartMatch {
     /// k: point j of @p a is matched with point (j + k) mod N of @p b.
     std::size_t shift = 0;
-    /// The cosine between the two sections' point configurations (centroids removed) under that
-    /// matching: sum_j (a_j - ca).(b_{j+k} - cb) / sqrt(sum |a_j - ca|^2 * sum |b_j - cb|^2),
-    /// in [-1, 1]. 1 when @p b is @p a scaled and moved; about 0 when the matched points are no
-    /// closer than unrelated ones (a mirrored or scrambled section, one rotated by 90 degrees
-    /// with a flat shape).
+    /// The cosine between the two sections' point configurations under that matching (centroids
+    /// removed, @p b's plane tilted onto @p a's, see bestStartShift()), in [-1, 1]: 1 when @p b
+    /// is @p a moved, tilted and scaled; at least cos(theta) for @p a turned by theta within its
+    /// plane; about 0 when the matched points are no closer than unrelated ones (scrambled
+    /// points, a flat section turned across). A section going round the other way is not
+    /// judged here (validateStack checks orientation first).
     double similarity = 0.0;
 };
 
-/// The cyclic shift k that minimises sum_j |(b_{(j+k) mod N} - cb) - (a_j - ca)|^2, the sum of
+/// The smallest rotation that turns unit vector @p from onto unit vector @p to, applied to @p x
+/// (Rodrigues); @p x unchanged when the two are (nearly) opposite, where no rotation is smallest.
+inline Vector3 tiltOnto(const Vector3& from, const Vector3& to, const Vector3& x)
+{
+    const double c = dot(from, to);
+    if (!(c > -0.999) || dot(from, from) == 0.0 || dot(to, to) == 0.0) return x;
+    const Vector3 v = cross(from, to);
+    return c * x + cross(v, x) + (dot(v, x) / (1.0 + c)) * v;
+}
+
+/// The cyclic shift k that minimises sum_j |T(b_{(j+k) mod N} - cb) - (a_j - ca)|^2, the sum of
 /// squared distances between matched points after removing the difference of the centroids
-/// (so a section that moves sideways still matches); ties go to the smallest k. @p a and @p b
-/// have the same N >= 1 points. Each section is taken in units of its own extent, so that any
-/// coordinates up to 1e100 are safe; this does not change k (the squared lengths of each
-/// section do not depend on k, so k maximises sum_j (a_j - ca).(b_{j+k} - cb)). O(N^2).
+/// (so a section that moves sideways still matches) and the tilt between the sections' planes
+/// (T: the smallest rotation turning @p b's unit vector area onto @p a's; the identity for
+/// parallel sections, e.g. slices of a scan; for a tow that bends, its sections tilt as it
+/// turns); ties go to the smallest k. @p a and @p b have the same N >= 1 points. Each section is
+/// taken in units of its own extent, so that any coordinates up to 1e100 are safe; this does
+/// not change k (the squared lengths of each section do not depend on k, so k maximises
+/// sum_j (a_j - ca).T(b_{j+k} - cb)). O(N^2).
 inline StartMatch bestStartShift(const std::vector<Point3>& a, const std::vector<Point3>& b)
 {
     const std::size_t n = a.size();
     const Point3 ca = vertexCentroid(a), cb = vertexCentroid(b);
     const double ua = 1.0 / std::fmax(extent(a), 1e-300), ub = 1.0 / std::fmax(extent(b), 1e-300);
+    const Vector3 na = unitVector(vectorArea(a)), nb = unitVector(vectorArea(b));
     std::vector<Vector3> da(n), db(n);
     double sa = 0.0, sb = 0.0;
     for (std::size_t j = 0; j < n; ++j) {
         da[j] = ua * (a[j] - ca);
-        db[j] = ub * (b[j] - cb);
+        db[j] = tiltOnto(nb, na, ub * (b[j] - cb));
         sa += dot(da[j], da[j]);
         sb += dot(db[j], db[j]);
     }

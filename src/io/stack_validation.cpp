@@ -22,8 +22,9 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 constexpr double kDuplicateTolerance = 1e-9;  // relative to the section's extent
 constexpr double kAreaTolerance = 1e-9;       // relative to the section's extent squared
 // Consecutive sections whose best-matched point configurations are less similar than this are
-// refused (detail::StartMatch::similarity; 1 for a section that is the previous one moved and
-// scaled, cos(theta) for a flat section turned by theta, about 0 for unrelated points).
+// refused (detail::StartMatch::similarity: 1 for a section that is the previous one moved,
+// tilted and scaled, at least cos(theta) for one turned by theta in its plane, about 0 for
+// unrelated points).
 constexpr double kMinStartSimilarity = 0.5;
 
 std::string sectionLabel(std::size_t i) { return "section " + std::to_string(i + 1); }
