@@ -80,9 +80,9 @@ struct SeamJump {
 /// renumbers every section cyclically, section i by the shift that best matches it to section
 /// i - 1 as already renumbered (the shift minimising the sum of squared distances between
 /// matched points once the centroids are made to coincide and the sections' planes to agree;
-/// see validateStack()). Section 0
-/// keeps its first point. startShifts() reports the shifts; sections() holds the renumbered
-/// points. A stack that already starts consistently has all shifts 0.
+/// see validateStack()). Section 0 keeps its first point. startShifts() reports the shifts;
+/// sections() holds the renumbered points. A stack that already starts consistently has all
+/// shifts 0.
 ///
 /// **Seam.** v = 0 (equivalently v = 1) is the iso-curve through the first point of every
 /// section as renumbered: the first input point of section 0, and of every section whose shift
