@@ -284,7 +284,7 @@ std::size_t lineOfSection(std::size_t i)
 
 }  // namespace
 
-TEST_CASE("a section's first point may sit anywhere around the tow; the stack keeps it", "[reader][start]")
+TEST_CASE("a section's first point may sit anywhere around the tow, the stack keeps it", "[reader][start]")
 {
     const TowStack s = driftingFlatTow();
     REQUIRE_NOTHROW(validateStack(s));
