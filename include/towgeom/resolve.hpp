@@ -69,7 +69,11 @@ struct UnresolvedPair {
         /// The mesh of one of the tows could not be made with this pair's loops as constraints
         /// (or was not a tube): every pair with loops on that tow was left out and the textile
         /// meshed again without them.
-        MeshFailed
+        MeshFailed,
+        /// A loop of this pair meets (crosses, touches or encloses) a loop of another pair on a
+        /// tow of both: three tows overlap there, which is not resolved yet. Of two such pairs
+        /// the later one (by tow indices) is left out.
+        LoopsMeet
     };
     std::size_t towA = 0;  ///< lower tow index
     std::size_t towB = 0;  ///< higher tow index

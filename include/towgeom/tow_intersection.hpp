@@ -23,7 +23,10 @@ struct PairFinding {
     /// What was found.
     enum class Kind {
         Touching,  ///< facets cross but the surfaces do not cross along a curve (tangent, coincident)
-        Nested     ///< one tow lies inside the other (no surface crossing, full overlap)
+        Nested,    ///< one tow lies inside the other (no surface crossing, full overlap)
+        /// closed curves that enclose no area (thinner than 1e-4 of the tow size): the surfaces
+        /// touch along a line (pressed tows); no interpenetration to resolve, so no loop
+        Contact
     };
     std::size_t towA = 0;  ///< lower tow index
     std::size_t towB = 0;  ///< higher tow index

@@ -133,6 +133,7 @@ int runDetect(int argc, char** argv, int first)
                       << " open) among " << report.pairsTested << " candidate tow pairs\n";
         // Warnings, not progress: printed whatever --quiet says.
         const std::vector<UnresolvedEntry> unresolved = unresolvedPairs(report);
+        reportContacts("detect", report, surfaces);
         reportUnresolved("detect", unresolved, surfaces);
         return exitsUnresolved(unresolved, args.has("allow-open")) ? kExitUnresolved : kExitOk;
     } catch (const std::exception& e) {

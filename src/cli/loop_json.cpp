@@ -45,7 +45,7 @@ void writeFindingsJson(detail::JsonWriter& json, const IntersectionReport& repor
 {
     json.key("findings").beginArray();
     for (const PairFinding& f : report.findings) {
-        const char* kind = f.kind == PairFinding::Kind::Nested ? "nested" : "touching";
+        const char* kind = f.kind == PairFinding::Kind::Nested ? "nested" : f.kind == PairFinding::Kind::Contact ? "contact" : "touching";
         json.beginObject().key("tow_a").value(tows[f.towA].name()).key("tow_b").value(tows[f.towB].name());
         json.key("kind").value(kind).key("message").value(f.message).endObject();
     }

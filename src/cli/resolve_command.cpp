@@ -51,8 +51,9 @@ contact). Writes, all or nothing:
                   per pair and reason: open_curve (a curve runs into a tow's end), winds_around
                   (a loop goes around a tow: one passes through the other), nested (one tow
                   inside the other), identical_or_touching (surfaces coincide or touch, no curve),
-                  mesh_failed (a tow could not be meshed with the pair's loops, e.g. loops of
-                  three tows crossing at one point: those pairs are left out, the rest resolved)
+                  loops_meet (a loop of the pair meets another pair's loop on a tow: three tows
+                  overlap there; the later pair is left out), mesh_failed (a tow could not be
+                  meshed with the pair's loops: its pairs are left out, the rest resolved)
   skipped         every loop not resolved (open or around a tow), with the reason as a sentence
   volume_removed  the volume of the overlap the secondary tow lost in that region
   angle_histogram triangles per 5-degree bin of their smallest 3D angle (0-5, 5-10, ...)
@@ -271,6 +272,7 @@ int runResolve(int argc, char** argv, int first)
                       << result.quality.minAngle << " deg, " << 100.0 * result.quality.fractionAtLeast(20.0)
                       << " % of triangles at least 20 deg): the mesh size may be too coarse for the tows' curvature; "
                          "try a smaller --mesh-size\n";
+        reportContacts("resolve", result.intersections, tows);
         reportUnresolved("resolve", unresolved, tows);
         return exitsUnresolved(unresolved, args.has("allow-open")) ? kExitUnresolved : kExitOk;
     } catch (const std::exception& e) {

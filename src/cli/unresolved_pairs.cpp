@@ -12,6 +12,7 @@ namespace {
 void addFindings(const IntersectionReport& report, std::vector<UnresolvedEntry>& pairs)
 {
     for (const PairFinding& f : report.findings) {
+        if (f.kind == PairFinding::Kind::Contact) continue;  // nothing to resolve: a note (reportContacts)
         const bool nested = f.kind == PairFinding::Kind::Nested;
         pairs.push_back({f.towA, f.towB, nested ? reason::kNested : reason::kIdenticalOrTouching,
                          nested ? f.message + " (a complete overlap: no intersection curve)" : f.message});
@@ -57,7 +58,8 @@ std::vector<UnresolvedEntry> unresolvedPairs(const ResolveResult& result)
             addOnce(pairs, {l.towA(), l.towB(), reason::kOpenCurve, "open intersection curve: " + l.openReason()});
     }
     for (const towgeom::UnresolvedPair& u : result.unresolved)
-        if (u.reason == towgeom::UnresolvedPair::Reason::MeshFailed) addOnce(pairs, {u.towA, u.towB, reason::kMeshFailed, u.message});
+        addOnce(pairs, {u.towA, u.towB, u.reason == towgeom::UnresolvedPair::Reason::LoopsMeet ? reason::kLoopsMeet : reason::kMeshFailed,
+                        u.message});
     addFindings(result.intersections, pairs);
     sortByPair(pairs);
     return pairs;
@@ -71,6 +73,14 @@ void writeUnresolvedJson(detail::JsonWriter& json, const std::vector<UnresolvedE
         json.key("reason").value(p.reason).key("message").value(p.message).endObject();
     }
     json.endArray();
+}
+
+void reportContacts(const char* command, const IntersectionReport& report, const std::vector<TowSurface>& tows)
+{
+    for (const PairFinding& f : report.findings)
+        if (f.kind == PairFinding::Kind::Contact)
+            std::cerr << "towgeom " << command << ": note: tows '" << tows[f.towA].name() << "' and '" << tows[f.towB].name()
+                      << "': " << f.message << " [contact]\n";
 }
 
 void reportUnresolved(const char* command, const std::vector<UnresolvedEntry>& pairs, const std::vector<TowSurface>& tows)

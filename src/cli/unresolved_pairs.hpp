@@ -21,6 +21,7 @@ constexpr const char* kWindsAround = "winds_around";       ///< a loop goes arou
 constexpr const char* kNested = "nested";                  ///< one tow lies inside the other
 constexpr const char* kIdenticalOrTouching = "identical_or_touching";  ///< surfaces coincide or touch, no curve
 constexpr const char* kMeshFailed = "mesh_failed";  ///< a tow could not be meshed with the pair's loops (resolve only)
+constexpr const char* kLoopsMeet = "loops_meet";    ///< the pair's loop meets another pair's on a tow (resolve only)
 }  // namespace reason
 
 /// One tow pair that meets without a resolvable intersection loop: an entry of report.json's
@@ -42,6 +43,10 @@ std::vector<UnresolvedEntry> unresolvedPairs(const ResolveResult& result);
 /// Writes key "unresolved" and the array: per pair tow_a, tow_b, reason, message.
 void writeUnresolvedJson(detail::JsonWriter& json, const std::vector<UnresolvedEntry>& pairs,
                          const std::vector<TowSurface>& tows);
+
+/// One stderr note per pair whose surfaces only touch along a line (PairFinding::Kind::Contact):
+/// not unresolved (nothing interpenetrates), but never silent.
+void reportContacts(const char* command, const IntersectionReport& report, const std::vector<TowSurface>& tows);
 
 /// One stderr line per pair, `towgeom COMMAND: unresolved tow pair 'a' and 'b': message [reason]`.
 void reportUnresolved(const char* command, const std::vector<UnresolvedEntry>& pairs, const std::vector<TowSurface>& tows);

@@ -48,6 +48,9 @@ struct PairResult {
     std::size_t walks = 0;
 };
 
+/// The mean width, relative to the tow size, below which a closed curve is a line contact.
+constexpr double kContactWidth = 1e-4;
+
 PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::vector<detail::SurfaceGrid>& grids,
                               const detail::CandidatePair& c, const IntersectionOptions& o)
 {
@@ -90,9 +93,26 @@ PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::ve
     }
     detail::joinOpenCurves(surfaces, curves, tol);
     for (detail::TracedCurve& t : curves) detail::consolidateCurve(surfaces, t, tol);
-    for (const detail::TracedCurve& t : curves)
-        result.loops.push_back(detail::makeLoop(c.a, c.b, a, b, t.points, t.closed, t.openReason, tol.point));
-    if (result.loops.empty()) {
+    std::size_t slivers = 0;
+    for (const detail::TracedCurve& t : curves) {
+        IntersectionLoop loop = detail::makeLoop(c.a, c.b, a, b, t.points, t.closed, t.openReason, tol.point);
+        // A closed curve that encloses (almost) nothing: it runs out along a line where the
+        // surfaces touch and back. Thinner on average than 1e-4 of the tow size, it is a contact,
+        // not an interpenetration.
+        if (loop.closed() && !loop.windsAround(LoopSide::A) && !loop.windsAround(LoopSide::B)) {
+            const double thin = 0.5 * loop.length() * kContactWidth * size;
+            if (!(loop.enclosedArea(LoopSide::A) > thin) || !(loop.enclosedArea(LoopSide::B) > thin)) {
+                ++slivers;
+                continue;
+            }
+        }
+        result.loops.push_back(std::move(loop));
+    }
+    if (slivers > 0)
+        result.findings.push_back({c.a, c.b, PairFinding::Kind::Contact,
+                                   std::to_string(slivers) + " closed intersection curve(s) enclose no area (thinner than 1e-4 "
+                                   "of the tow size): the surfaces touch along a line there"});
+    if (result.loops.empty() && slivers == 0) {
         // No curve: say why, if the tows meet at all (their surfaces touch or coincide: facets
         // cross, yet no transversal curve; or one tow lies inside the other).
         if (result.seeds > 0)

@@ -44,6 +44,31 @@ struct LoopPolygon {
 
 bool insideLoop(const std::vector<UV>& polygon, UV p, double period) { return LoopPolygon(polygon).contains(p, period); }
 
+bool loopsMeet(const std::vector<UV>& a, const std::vector<UV>& b, double period)
+{
+    if (a.size() < 3 || b.size() < 3) return false;
+    const LoopPolygon pa(a);
+    const double shift0 = std::round((0.5 * (pa.vLo + pa.vHi) - 0.5 * (LoopPolygon(b).vLo + LoopPolygon(b).vHi)) / period);
+    for (double k = shift0 - 1.0; k <= shift0 + 1.0; k += 1.0) {
+        std::vector<UV> moved = b;
+        for (UV& p : moved) p.v += k * period;
+        const LoopPolygon pb(moved);
+        if (pb.uHi < pa.uLo || pa.uHi < pb.uLo || pb.vHi < pa.vLo || pa.vHi < pb.vLo) continue;
+        for (std::size_t i = 0; i < pa.poly.size(); ++i) {
+            const K::Segment_2 s(pa.poly[i], pa.poly[(i + 1) % pa.poly.size()]);
+            const CGAL::Bbox_2 bs = s.bbox();
+            for (std::size_t j = 0; j < pb.poly.size(); ++j) {
+                const K::Segment_2 t(pb.poly[j], pb.poly[(j + 1) % pb.poly.size()]);
+                if (CGAL::do_overlap(bs, t.bbox()) && CGAL::do_intersect(s, t)) return true;
+            }
+        }
+        // No crossing: one inside the other, or apart.
+        if (CGAL::bounded_side_2(pa.poly.begin(), pa.poly.end(), pb.poly.front(), K()) != CGAL::ON_UNBOUNDED_SIDE) return true;
+        if (CGAL::bounded_side_2(pb.poly.begin(), pb.poly.end(), pa.poly.front(), K()) != CGAL::ON_UNBOUNDED_SIDE) return true;
+    }
+    return false;
+}
+
 std::vector<std::size_t> trianglesInside(const ParametricMesh& mesh, const std::vector<UV>& polygon, double period)
 {
     const LoopPolygon loop(polygon);

@@ -18,4 +18,8 @@ std::vector<std::size_t> trianglesInside(const ParametricMesh& mesh, const std::
 /// (a loop on a tow, v unwrapped): CGAL's exact point-in-polygon test.
 bool insideLoop(const std::vector<UV>& polygon, UV p, double period);
 
+/// True when two loops on one tow (v unwrapped, either copy a whole number of periods apart)
+/// cross, touch or lie one inside the other: their regions overlap or meet (exact predicates).
+bool loopsMeet(const std::vector<UV>& a, const std::vector<UV>& b, double period);
+
 }  // namespace towgeom::detail

@@ -121,8 +121,13 @@ struct TowMeshFailure {
     std::set<TowPair> pairs;  ///< the tow pairs with resolved loops on that tow
 };
 
-/// The failures of the tows meshed in parallel, kept per tow so that the one reported (the
-/// lowest tow index) does not depend on the threads' timing.
+/// Every tow that failed in one meshing stage, in tow order.
+struct TowMeshFailures {
+    std::vector<TowMeshFailure> tows;
+};
+
+/// The failures of the tows meshed in parallel, kept per tow so that what is reported does not
+/// depend on the threads' timing.
 class TowFailures {
 public:
     TowFailures(const std::vector<IntersectionLoop>& loops, const std::vector<detail::SharedLoop>& shared, std::size_t tows)
@@ -144,11 +149,13 @@ public:
             failures_[tow] = std::move(f);
         }
     }
-    /// Throws the failure of the lowest tow index, if any.
-    void throwFirst() const
+    /// Throws every failure so far (TowMeshFailures), if any.
+    void throwAll() const
     {
+        TowMeshFailures all;
         for (const auto& f : failures_)
-            if (f) throw *f;
+            if (f) all.tows.push_back(*f);
+        if (!all.tows.empty()) throw all;
     }
 
 private:
@@ -156,6 +163,42 @@ private:
     const std::vector<detail::SharedLoop>& shared_;
     std::vector<std::unique_ptr<TowMeshFailure>> failures_;
 };
+
+/// Loops of different tow pairs that meet on a tow (three tows overlapping there) cannot both be
+/// resolved by the swap: of two such pairs the later one is left out (LoopsMeet), its loops
+/// removed from @p shared.
+void dropMeetingLoops(const std::vector<TowSurface>& tows, const std::vector<IntersectionLoop>& loops,
+                      std::vector<detail::SharedLoop>& shared, std::vector<UnresolvedPair>& unresolved)
+{
+    std::set<TowPair> dropped;
+    const auto pairOf = [&](const detail::SharedLoop& s) { return TowPair{loops[s.loop].towA(), loops[s.loop].towB()}; };
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        std::vector<std::pair<std::size_t, LoopSide>> on;  // the loops on tow t
+        for (std::size_t k = 0; k < shared.size(); ++k) {
+            const IntersectionLoop& l = loops[shared[k].loop];
+            if (l.towA() == t) on.emplace_back(k, LoopSide::A);
+            if (l.towB() == t) on.emplace_back(k, LoopSide::B);
+        }
+        const double period = tows[t].parameterRange().vPeriod();
+        for (std::size_t i = 0; i < on.size(); ++i)
+            for (std::size_t j = i + 1; j < on.size(); ++j) {
+                const TowPair p = pairOf(shared[on[i].first]), q = pairOf(shared[on[j].first]);
+                if (p == q || dropped.count(p) || dropped.count(q)) continue;
+                if (!detail::loopsMeet(detail::loopPolygon(shared[on[i].first], on[i].second),
+                                       detail::loopPolygon(shared[on[j].first], on[j].second), period))
+                    continue;
+                const TowPair later = std::max(p, q), kept = std::min(p, q);
+                dropped.insert(later);
+                unresolved.push_back({later.first, later.second, UnresolvedPair::Reason::LoopsMeet,
+                                      "a loop of tows '" + tows[later.first].name() + "' and '" + tows[later.second].name() +
+                                          "' meets a loop of tows '" + tows[kept.first].name() + "' and '" +
+                                          tows[kept.second].name() + "' on tow '" + tows[t].name() +
+                                          "': three tows overlap there, which resolve does not handle yet"});
+            }
+    }
+    shared.erase(std::remove_if(shared.begin(), shared.end(), [&](const detail::SharedLoop& s) { return dropped.count(pairOf(s)) > 0; }),
+                 shared.end());
+}
 
 /// Stages 2 and 3 of resolveTextile() on tows already in a normalised frame, with options in the
 /// frame's units (the mesh size set): @p result holds the intersections; loops of the tow pairs
@@ -189,6 +232,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
         else if (!excluded.count({l.towA(), l.towB()}))
             shared.push_back(detail::shareLoopNodes(l, i, spacingOf(l), nodes));
     }
+    dropMeetingLoops(tows, loops, shared, result.unresolved);
     if (!tows.empty()) {
         const auto [lo, hi] = std::minmax_element(towH.begin(), towH.end());
         say("meshing " + std::to_string(tows.size()) + " tows at h = " + std::to_string(*lo) +
@@ -226,7 +270,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
             meshers[t]->mesh(constraintsOf(t), {}, requests[t]);
         });
     });
-    failures.throwFirst();
+    failures.throwAll();
     int round = 1;
     for (; round < kMaxRounds; ++round) {
         // Every split asked for (by either tow) becomes an exact loop node; seam stations are
@@ -265,7 +309,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
                 }
             });
         });
-        failures.throwFirst();
+        failures.throwAll();
     }
     result.meshRounds = static_cast<std::size_t>(round);
     // The final meshes, and the tows' own nodes evaluated on their surfaces.
@@ -404,7 +448,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
                                 std::to_string(result.tows[t].boundaryLoops) + " boundary loops)",
                             "tow '" + tows[t].name() + "'");
             });
-    failures.throwFirst();
+    failures.throwAll();
     // Quality over distinct triangles: a secondary's copies of a region's triangles are skipped.
     result.quality.histogram.assign(12, 0);
     result.quality.minAngle = 180.0;
@@ -468,20 +512,25 @@ ResolveResult resolveInFrame(const std::vector<TowSurface>& tows, const std::vec
         attempt.timings.intersect = result.timings.intersect;
         try {
             meshAndConnect(tows, towH, options, excluded, attempt);
-        } catch (const TowMeshFailure& f) {
-            if (f.pairs.empty()) throw Error(ErrorCode::Internal, f.message, "tow '" + tows[f.tow].name() + "'");
-            for (const TowPair& p : f.pairs) {
-                excluded.insert(p);
-                unresolved.push_back({p.first, p.second, UnresolvedPair::Reason::MeshFailed,
-                                      "tow '" + tows[f.tow].name() + "' could not be meshed with the loops of tows '" +
-                                          tows[p.first].name() + "' and '" + tows[p.second].name() + "': " + f.message});
+        } catch (const TowMeshFailures& failed) {
+            // Every pair with loops on a failed tow is left out; the rest is meshed again.
+            std::size_t left = 0;
+            for (const TowMeshFailure& f : failed.tows) {
+                if (f.pairs.empty()) throw Error(ErrorCode::Internal, f.message, "tow '" + tows[f.tow].name() + "'");
+                for (const TowPair& p : f.pairs) {
+                    if (!excluded.insert(p).second) continue;
+                    ++left;
+                    unresolved.push_back({p.first, p.second, UnresolvedPair::Reason::MeshFailed,
+                                          "tow '" + tows[f.tow].name() + "' could not be meshed with the loops of tows '" +
+                                              tows[p.first].name() + "' and '" + tows[p.second].name() + "': " + f.message});
+                }
             }
             if (options.progress)
-                options.progress("meshing again without the " + std::to_string(f.pairs.size()) + " tow pair(s) on tow '" +
-                                 tows[f.tow].name() + "'");
+                options.progress("meshing again without the " + std::to_string(left) + " tow pair(s) on " +
+                                 std::to_string(failed.tows.size()) + " tow(s) whose mesh failed");
             continue;
         }
-        attempt.unresolved = std::move(unresolved);
+        attempt.unresolved.insert(attempt.unresolved.end(), unresolved.begin(), unresolved.end());
         return attempt;
     }
 }
