@@ -1,6 +1,7 @@
 #include "towgeom/intersection_loop.hpp"
 
 #include <GeomAPI_Interpolate.hxx>
+#include <GeomAdaptor_Surface.hxx>
 #include <TColgp_HArray1OfPnt.hxx>
 #include <TColStd_HArray1OfReal.hxx>
 
@@ -25,6 +26,8 @@ SurfacePair surfacePairOf(const TowSurface& a, const TowSurface& b)
     SurfacePair s;
     s.a = a.impl().surface;
     s.b = b.impl().surface;
+    s.evalA = new GeomAdaptor_Surface(s.a);
+    s.evalB = new GeomAdaptor_Surface(s.b);
     const ParameterRange ra = a.parameterRange(), rb = b.parameterRange();
     s.uMinA = ra.uMin;
     s.uMaxA = ra.uMax;
@@ -187,13 +190,16 @@ double IntersectionLoop::enclosedArea(LoopSide side) const
                                  0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
     static const double gw[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
                                  0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+    GeomAdaptor_Surface surface(s.impl().surface);  // cached per span: fast for nearby points
     const auto F = [&](double u, double v) {
         double sum = 0.0;
         const double h = 0.5 * (u - u0);
         if (h == 0.0) return 0.0;
         for (int k = 0; k < 8; ++k) {
-            const SurfaceDerivatives d = s.derivatives(u0 + h * (1.0 + gx[k]), v);
-            sum += gw[k] * norm(cross(d.du, d.dv));
+            gp_Pnt p;
+            gp_Vec du, dv;
+            surface.D1(u0 + h * (1.0 + gx[k]), v, p, du, dv);
+            sum += gw[k] * du.Crossed(dv).Magnitude();
         }
         return h * sum;
     };

@@ -21,8 +21,13 @@ struct Eval {
 Eval evaluate(const SurfacePair& s, const PointOn2& x)
 {
     Eval e;
-    s.a->D1(x.ua, x.va, e.pa, e.dua, e.dva);
-    s.b->D1(x.ub, x.vb, e.pb, e.dub, e.dvb);
+    if (!s.evalA.IsNull() && !s.evalB.IsNull()) {
+        s.evalA->D1(x.ua, x.va, e.pa, e.dua, e.dva);
+        s.evalB->D1(x.ub, x.vb, e.pb, e.dub, e.dvb);
+    } else {
+        s.a->D1(x.ua, x.va, e.pa, e.dua, e.dva);
+        s.b->D1(x.ub, x.vb, e.pb, e.dub, e.dvb);
+    }
     return e;
 }
 

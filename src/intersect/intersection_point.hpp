@@ -2,6 +2,7 @@
 // corrector that puts a guess exactly on the intersection curve.
 #pragma once
 
+#include <GeomAdaptor_Surface.hxx>
 #include <Geom_BSplineSurface.hxx>
 
 #include "towgeom/point.hpp"
@@ -30,10 +31,14 @@ struct PointCondition {
     double value = 0.0;  ///< Fix* only
 };
 
-/// The two surfaces and their u domains (points beyond a tow's end are refused).
+/// The two surfaces and their u domains (points beyond a tow's end are refused). The adaptors
+/// evaluate through OCCT's per-span polynomial cache (much faster than the B-spline's own D1 for
+/// points close together); they make a SurfacePair for one thread at a time.
 struct SurfacePair {
     Handle(Geom_BSplineSurface) a;
     Handle(Geom_BSplineSurface) b;
+    Handle(GeomAdaptor_Surface) evalA;
+    Handle(GeomAdaptor_Surface) evalB;
     double uMinA = 0.0, uMaxA = 1.0, uMinB = 0.0, uMaxB = 1.0;
 };
 
