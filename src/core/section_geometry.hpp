@@ -115,17 +115,30 @@ inline StartMatch bestStartShift(const std::vector<Point3>& a, const std::vector
         sa += dot(da[j], da[j]);
         sb += dot(db[j], db[j]);
     }
+    // A shift stops as soon as it cannot beat the best so far: what its remaining terms can add
+    // is at most |rest of a| |b| (Cauchy-Schwarz). Shift 0, usually the best, goes first, so most
+    // others stop after a few points: O(N) per section for consistent input instead of O(N^2).
+    std::vector<double> rest(n + 1, 0.0);  // sqrt of sum_{i >= j} |da_i|^2
+    for (std::size_t j = n; j-- > 0;) rest[j] = dot(da[j], da[j]) + rest[j + 1];
+    for (double& r : rest) r = std::sqrt(r);
+    const double norms = std::sqrt(sa) * std::sqrt(sb), slack = 1e-9 * norms;
     StartMatch best;
     double bestDot = 0.0;
     for (std::size_t k = 0; k < n; ++k) {
         double sum = 0.0;
-        for (std::size_t j = 0; j < n; ++j) sum += dot(da[j], db[(j + k) % n]);
-        if (k == 0 || sum > bestDot) {
+        bool beaten = false;
+        for (std::size_t j = 0; j < n; ++j) {
+            sum += dot(da[j], db[(j + k) % n]);
+            if (k > 0 && (j & 7) == 7 && sum + rest[j + 1] * std::sqrt(sb) < bestDot - slack) {
+                beaten = true;
+                break;
+            }
+        }
+        if (!beaten && (k == 0 || sum > bestDot)) {
             bestDot = sum;
             best.shift = k;
         }
     }
-    const double norms = std::sqrt(sa) * std::sqrt(sb);
     best.similarity = norms > 0.0 ? bestDot / norms : 0.0;
     return best;
 }

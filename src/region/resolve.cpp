@@ -535,6 +535,22 @@ ResolveResult resolveInFrame(const std::vector<TowSurface>& tows, const std::vec
     }
 }
 
+/// The lateral area of @p tow's input polygons joined by flat quads (two triangles each): within
+/// a few percent of the surface's area at a cost of M x N, for the size estimate (the exact
+/// area() integrates every knot span: 0.06 s for a tow of 400 x 64).
+double facetedArea(const TowSurface& tow)
+{
+    const auto& s = tow.sections();
+    double area = 0.0;
+    for (std::size_t i = 0; i + 1 < s.size(); ++i)
+        for (std::size_t j = 0; j < s[i].size(); ++j) {
+            const std::size_t k = (j + 1) % s[i].size();
+            area += 0.5 * norm(cross(s[i + 1][j] - s[i][j], s[i + 1][k] - s[i][j])) +
+                    0.5 * norm(cross(s[i + 1][k] - s[i][j], s[i][k] - s[i][j]));
+        }
+    return area;
+}
+
 /// The mesh size of each tow in the user's units: relativeEdgeLength x its own size, or the
 /// edge length given, at most a quarter of the tow's circumference (at least 4 edges around).
 std::vector<double> meshSizes(const std::vector<TowSurface>& tows, const MeshOptions& mesh)
@@ -583,7 +599,7 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
     // averaged as the triangle count sees them (area-weighted in 1/h^2).
     double area = 0.0, perH2 = 0.0;
     for (std::size_t t = 0; t < tows.size(); ++t) {
-        const double a = tows[t].area();
+        const double a = facetedArea(tows[t]);
         area += a;
         perH2 += a / (towH[t] * towH[t]);
     }
