@@ -111,10 +111,12 @@ int main(int argc, char** argv)
                 number(report, "mesh") / 1e3, number(report, "regions") / 1e3, number(report, "write") / 1e3);
     const std::size_t loops = count(report, "\"closed\":");
     const std::size_t regions = count(report, "\"volume_removed\":");
+    const auto from = report.find("\"unresolved\":[");
+    const std::string unresolved = from == std::string::npos ? "" : report.substr(from, report.find("}]", from) + 2 - from);
     std::printf("  %zu loops, %zu regions, %zu unresolved pairs (%zu winds_around, %zu loops_meet, %zu mesh_failed), "
                 "%zu contact findings; %.0f triangles, smallest angle %.1f deg\n",
-                loops, regions, count(report, "\"reason\":\""), count(report, "\"reason\":\"winds_around\""),
-                count(report, "\"reason\":\"loops_meet\""), count(report, "\"reason\":\"mesh_failed\""),
+                loops, regions, count(unresolved, "\"reason\":\""), count(unresolved, "\"reason\":\"winds_around\""),
+                count(unresolved, "\"reason\":\"loops_meet\""), count(unresolved, "\"reason\":\"mesh_failed\""),
                 count(report, "\"kind\":\"contact\""), number(report, "triangles"), number(report, "min_angle_deg"));
     goals.require("resolve wrote its report (exit 0 or 3)",
                   !report.empty() && (WEXITSTATUS(resolveStatus) == 0 || WEXITSTATUS(resolveStatus) == 3));

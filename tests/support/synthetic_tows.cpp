@@ -94,15 +94,17 @@ TowStack tubeAlongY(double r, double d, const Sampling& s, const std::string& na
     return t;
 }
 
-TowStack dentedTubeAlongY(double r, double d, double dent, double width, const Sampling& s, const std::string& name)
+TowStack dentedTubeAlongY(double r, double d, double dent, double width, const Sampling& s, const std::string& name,
+                          double widthX)
 {
+    if (widthX == 0.0) widthX = width;
     TowStack t = tubeAlongY(r, d, s, name);
     for (auto& section : t.sections)
         for (Point3& p : section) {
             const double below = (d - p.z) / r;  // sin of the angle below the axis
             if (below <= 0.0) continue;
             const double dx = p.x - 2.0;
-            p.z += dent * std::exp(-(dx * dx + p.y * p.y) / (width * width)) * below * below;
+            p.z += dent * std::exp(-dx * dx / (widthX * widthX) - p.y * p.y / (width * width)) * below * below;
         }
     return t;
 }

@@ -45,10 +45,13 @@ TowStack tubeAlongX(double r, double length, double dx, double dy, double dz, co
 TowStack tubeAlongY(double r, double d, const Sampling& s = {}, const std::string& name = "y");
 
 /// tubeAlongY(r, d) with a dent in its underside at y = 0: points below the axis are lifted by
-/// dent * exp(-(x'^2 + y^2) / width^2) * sin^2(angle) (x' the offset from the axis). Over
+/// dent * exp(-x'^2 / widthX^2 - y^2 / width^2) * sin^2(angle) (x' the offset from the axis;
+/// widthX = width unless given, infinite for a groove across the whole underside). Over
 /// tubeAlongX(R, 4, 0, 0, 0) with d - r < R < d - r + dent the overlap is a ring: an outer loop
-/// and an island loop inside it where the surfaces separate again.
+/// and an island loop inside it where the surfaces separate again. A groove with
+/// dent = R - (d - r) touches the x-tube's top at (2, 0, R), tangent there: a saddle, where
+/// the intersection curve crosses itself (a figure-8).
 TowStack dentedTubeAlongY(double r, double d, double dent, double width, const Sampling& s = {},
-                          const std::string& name = "dented");
+                          const std::string& name = "dented", double widthX = 0.0);
 
 }  // namespace towgeom::testing
