@@ -112,7 +112,8 @@ int main(int argc, char** argv)
     const std::size_t loops = count(report, "\"closed\":");
     const std::size_t regions = count(report, "\"volume_removed\":");
     const auto from = report.find("\"unresolved\":[");
-    const std::string unresolved = from == std::string::npos ? "" : report.substr(from, report.find("}]", from) + 2 - from);
+    const bool none = from == std::string::npos || report.compare(from, 15, "\"unresolved\":[]") == 0;
+    const std::string unresolved = none ? "" : report.substr(from, report.find("}]", from) + 2 - from);
     std::printf("  %zu loops, %zu regions, %zu unresolved pairs (%zu winds_around, %zu loops_meet, %zu mesh_failed), "
                 "%zu contact findings; %.0f triangles, smallest angle %.1f deg\n",
                 loops, regions, count(unresolved, "\"reason\":\""), count(unresolved, "\"reason\":\"winds_around\""),
