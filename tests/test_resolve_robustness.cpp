@@ -63,16 +63,8 @@ std::pair<std::size_t, std::size_t> degenerate(const ResolveResult& r)
     return {repeated, nonManifold};
 }
 
-/// Pairs of crossing triangles between any two tows (CGAL, exact predicates:
-/// testing::crossingTrianglePairs).
-std::size_t crossingPairs(const ResolveResult& r)
-{
-    std::size_t crossing = 0;
-    for (std::size_t i = 0; i < r.mesh.tows.size(); ++i)
-        for (std::size_t j = i + 1; j < r.mesh.tows.size(); ++j)
-            crossing += testing::crossingTrianglePairs(r.mesh.nodes, r.mesh.tows[i].triangles, r.mesh.tows[j].triangles).crossing;
-    return crossing;
-}
+/// Pairs of crossing triangles between any two tows (CGAL, exact predicates).
+std::size_t crossingPairs(const ResolveResult& r) { return testing::crossingPairsBetweenTows(r.mesh); }
 
 /// Every tow a tube open at both ends, counted from its triangles' edges (testing::boundaryOf),
 /// the implementation's own count agreeing.

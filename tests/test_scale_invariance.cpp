@@ -102,14 +102,7 @@ void checkIntersectionScales(const std::vector<TowStack>& stacks, std::size_t ex
 }
 
 /// Crossing triangle pairs between every two tows of @p res (CGAL, exact predicates).
-std::size_t crossings(const ResolveResult& res)
-{
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < res.mesh.tows.size(); ++i)
-        for (std::size_t j = i + 1; j < res.mesh.tows.size(); ++j)
-            n += testing::crossingTrianglePairs(res.mesh.nodes, res.mesh.tows[i].triangles, res.mesh.tows[j].triangles).crossing;
-    return n;
-}
+std::size_t crossings(const ResolveResult& res) { return testing::crossingPairsBetweenTows(res.mesh); }
 
 }  // namespace
 

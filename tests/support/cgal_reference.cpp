@@ -122,4 +122,13 @@ double intersectionVolume(const TriangleMesh& a, const TriangleMesh& b)
     return PMP::volume(out);
 }
 
+std::size_t crossingPairsBetweenTows(const TextileMesh& mesh)
+{
+    std::size_t crossing = 0;
+    for (std::size_t i = 0; i < mesh.tows.size(); ++i)
+        for (std::size_t j = i + 1; j < mesh.tows.size(); ++j)
+            crossing += crossingTrianglePairs(mesh.nodes, mesh.tows[i].triangles, mesh.tows[j].triangles).crossing;
+    return crossing;
+}
+
 }  // namespace towgeom::testing

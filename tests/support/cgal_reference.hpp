@@ -4,6 +4,7 @@
 #pragma once
 
 #include <towgeom/point.hpp>
+#include <towgeom/textile_mesh.hpp>
 #include <towgeom/triangle_mesh.hpp>
 
 #include <array>
@@ -42,6 +43,9 @@ struct TriangleCrossings {
 TriangleCrossings crossingTrianglePairs(const std::vector<Point3>& nodes,
                                         const std::vector<std::array<std::size_t, 3>>& a,
                                         const std::vector<std::array<std::size_t, 3>>& b);
+
+/// crossingTrianglePairs() summed over every two tows of @p mesh: the crossing pairs.
+std::size_t crossingPairsBetweenTows(const TextileMesh& mesh);
 
 /// CGAL::Polygon_mesh_processing::volume of a closed triangle mesh (oriented outwards first).
 double closedMeshVolume(const TriangleMesh& m);
