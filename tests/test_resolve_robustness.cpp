@@ -257,7 +257,10 @@ TEST_CASE("a mesh over the triangle limit is refused before meshing, with the es
     // The lateral areas of the two tubes (2 pi r L each, L = 4), in triangles of side h, times 3.
     const double area = 2.0 * (2.0 * 3.14159265358979323846 * 0.5 * 4.0);
     CHECK(tows[0].area() + tows[1].area() == Approx(area).epsilon(1e-3));  // 32-gon sampling
-    const double byArea = 3.0 * (tows[0].area() + tows[1].area()) / (std::sqrt(3.0) / 4.0 * h * h);
+    // The estimate uses the input polygons' area (rectangles between identical 32-gons):
+    // 32 x 2 r sin(pi / 32) x L per tube, 0.16 % below the surfaces' area.
+    const double faceted = 2.0 * (32.0 * 2.0 * 0.5 * std::sin(3.14159265358979323846 / 32.0) * 4.0);
+    const double byArea = 3.0 * faceted / (std::sqrt(3.0) / 4.0 * h * h);
     ResolveOptions o;
     o.mesh.edgeLength = h;
     o.threads = 2;

@@ -184,6 +184,57 @@ bool splitChord(const IntersectionLoop& loop, SharedLoop& shared, std::size_t a,
     return true;
 }
 
+bool joinTouchingLoops(SharedLoop& a, const IntersectionLoop& la, SharedLoop& b, const IntersectionLoop& lb, double within,
+                       std::vector<Point3>& globalNodes)
+{
+    // The closest pair of exact points of the two curves.
+    const std::vector<LoopPoint>& pa = la.points();
+    const std::vector<LoopPoint>& pb = lb.points();
+    double best = within;
+    std::size_t ia = pa.size();
+    for (std::size_t i = 0; i < pa.size(); ++i)
+        for (const LoopPoint& q : pb) {
+            const double d = distance(pa[i].point, q.point);
+            if (d < best) {
+                best = d;
+                ia = i;
+            }
+        }
+    if (ia == pa.size()) return false;
+    const LoopPoint touch = pa[ia];
+    // Each loop's node nearest to the touching point; not a seam node (those are the seam's too).
+    const auto nearest = [&](const SharedLoop& s, const IntersectionLoop& l) {
+        std::size_t k = s.points.size();
+        double d = 1e300;
+        for (std::size_t i = 0; i < s.points.size(); ++i) {
+            const double di = distance(s.points[i].point, touch.point);
+            if (di < d) {
+                d = di;
+                k = i;
+            }
+        }
+        for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+            const double r = (sideOf(s.points[k], side).v - vMinOf(l, side)) / periodOf(l, side);
+            if (std::abs(r - std::round(r)) < kSeamSnap) return s.points.size();
+        }
+        return k;
+    };
+    const std::size_t ka = nearest(a, la), kb = nearest(b, lb);
+    if (ka == a.points.size() || kb == b.points.size()) return false;
+    // The same point in each loop's own unwrapping of v.
+    const auto placed = [&](const LoopPoint& old, const IntersectionLoop& l) {
+        LoopPoint p = touch;
+        p.onA.v += periodOf(l, LoopSide::A) * std::round((old.onA.v - p.onA.v) / periodOf(l, LoopSide::A));
+        p.onB.v += periodOf(l, LoopSide::B) * std::round((old.onB.v - p.onB.v) / periodOf(l, LoopSide::B));
+        return p;
+    };
+    a.points[ka] = placed(a.points[ka], la);
+    b.points[kb] = placed(b.points[kb], lb);
+    globalNodes[a.nodes[ka]] = touch.point;
+    b.nodes[kb] = a.nodes[ka];
+    return true;
+}
+
 std::vector<UV> loopPolygon(const SharedLoop& shared, LoopSide side)
 {
     std::vector<UV> uv;

@@ -35,6 +35,14 @@ SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, d
 bool splitChord(const IntersectionLoop& loop, SharedLoop& shared, std::size_t a, std::size_t b, double t,
                 std::vector<Point3>& globalNodes);
 
+/// Two loops of one tow pair that touch (lobes of a figure-8 meeting where the surfaces are
+/// tangent): when their exact points come within @p within of each other, the touching point (an
+/// exact point of @p la there) becomes one node of both: each loop's node nearest to it is
+/// replaced by it, so the two loop polygons meet in that node instead of passing a hair's breadth
+/// apart. Seam nodes are never replaced. True when the loops were joined.
+bool joinTouchingLoops(SharedLoop& a, const IntersectionLoop& la, SharedLoop& b, const IntersectionLoop& lb, double within,
+                       std::vector<Point3>& globalNodes);
+
 /// The pieces of @p shared on tow @p side, cut at that tow's seam and shifted into its rectangle.
 std::vector<LoopConstraint> constraintsOn(const SharedLoop& shared, const IntersectionLoop& loop, LoopSide side);
 

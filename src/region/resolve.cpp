@@ -164,6 +164,9 @@ private:
     std::vector<std::unique_ptr<TowMeshFailure>> failures_;
 };
 
+/// Two loops of one tow pair closer than this (relative to the tow size) touch: a figure-8.
+constexpr double kTouchingLoops = 1e-3;
+
 /// Loops of different tow pairs that meet on a tow (three tows overlapping there) cannot both be
 /// resolved by the swap: of two such pairs the later one is left out (LoopsMeet), its loops
 /// removed from @p shared.
@@ -232,6 +235,16 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
         else if (!excluded.count({l.towA(), l.towB()}))
             shared.push_back(detail::shareLoopNodes(l, i, spacingOf(l), nodes));
     }
+    // Lobes of a figure-8 (one pair's loops touching where the surfaces are tangent) meet in one
+    // node; then loops of different pairs that still meet leave the later pair out.
+    for (std::size_t i = 0; i < shared.size(); ++i)
+        for (std::size_t j = i + 1; j < shared.size(); ++j) {
+            const IntersectionLoop& li = loops[shared[i].loop];
+            const IntersectionLoop& lj = loops[shared[j].loop];
+            if (li.towA() != lj.towA() || li.towB() != lj.towB()) continue;
+            const double within = kTouchingLoops * std::min(tows[li.towA()].towSize(), tows[li.towB()].towSize());
+            detail::joinTouchingLoops(shared[i], li, shared[j], lj, within, nodes);
+        }
     dropMeetingLoops(tows, loops, shared, result.unresolved);
     if (!tows.empty()) {
         const auto [lo, hi] = std::minmax_element(towH.begin(), towH.end());
