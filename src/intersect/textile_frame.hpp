@@ -23,6 +23,9 @@ IntersectionReport intersectInFrame(const std::vector<TowSurface>& tows, const I
 /// @p report, computed on tows moved into @p frame, for the user's @p tows (loops mapped back).
 void reportToUser(IntersectionReport& report, const std::vector<TowSurface>& tows, const Frame& frame);
 
+/// Refuses (InvalidArgument) negative, zero or non-finite tolerances.
+void checkIntersectionOptions(const IntersectionOptions& options);
+
 /// @p options with its absolute lengths moved into @p frame.
 IntersectionOptions optionsInFrame(const IntersectionOptions& options, const Frame& frame);
 

@@ -29,17 +29,6 @@ double msSince(Clock::time_point t0)
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-void checkOptions(const IntersectionOptions& o)
-{
-    const auto positive = [](double x) { return x > 0.0 && std::isfinite(x); };
-    const auto nonNegative = [](double x) { return x >= 0.0 && std::isfinite(x); };
-    if (!nonNegative(o.tolerance)) throw Error(ErrorCode::InvalidArgument, "intersection tolerance must be >= 0 and finite");
-    if (!positive(o.relativeTolerance))
-        throw Error(ErrorCode::InvalidArgument, "relative intersection tolerance must be > 0 and finite");
-    if (!nonNegative(o.chordalTolerance)) throw Error(ErrorCode::InvalidArgument, "chordal tolerance must be >= 0 and finite");
-    if (!positive(o.relativeChordalTolerance))
-        throw Error(ErrorCode::InvalidArgument, "relative chordal tolerance must be > 0 and finite");
-}
 
 struct PairResult {
     std::vector<IntersectionLoop> loops;
@@ -136,6 +125,18 @@ std::size_t IntersectionReport::openCount() const
 
 namespace detail {
 
+void checkIntersectionOptions(const IntersectionOptions& o)
+{
+    const auto positive = [](double x) { return x > 0.0 && std::isfinite(x); };
+    const auto nonNegative = [](double x) { return x >= 0.0 && std::isfinite(x); };
+    if (!nonNegative(o.tolerance)) throw Error(ErrorCode::InvalidArgument, "intersection tolerance must be >= 0 and finite");
+    if (!positive(o.relativeTolerance))
+        throw Error(ErrorCode::InvalidArgument, "relative intersection tolerance must be > 0 and finite");
+    if (!nonNegative(o.chordalTolerance)) throw Error(ErrorCode::InvalidArgument, "chordal tolerance must be >= 0 and finite");
+    if (!positive(o.relativeChordalTolerance))
+        throw Error(ErrorCode::InvalidArgument, "relative chordal tolerance must be > 0 and finite");
+}
+
 IntersectionReport intersectInFrame(const std::vector<TowSurface>& tows, const IntersectionOptions& options)
 {
     IntersectionReport report;
@@ -230,7 +231,7 @@ IntersectionOptions optionsInFrame(const IntersectionOptions& options, const Fra
 
 IntersectionReport intersectTows(const std::vector<TowSurface>& tows, const IntersectionOptions& options)
 {
-    checkOptions(options);
+    detail::checkIntersectionOptions(options);
     // Computed in a frame where the tows are about unit size, so that the kernel's absolute
     // tolerances mean the same at every scale; loops go back to the user's tows and units.
     const detail::Frame frame = detail::textileFrame(tows);

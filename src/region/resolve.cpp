@@ -138,10 +138,19 @@ public:
     template <class Body>
     void run(std::size_t tow, Body&& body)
     {
+        std::string message;
         try {
             body();
+            return;
+        } catch (const std::bad_alloc&) {
+            throw;  // out of memory is not this tow's geometry
+        } catch (const Error& e) {
+            message = e.message();  // without the "tow 'NAME'" context, which the caller adds
         } catch (const std::exception& e) {
-            auto f = std::make_unique<TowMeshFailure>(TowMeshFailure{tow, e.what(), {}});
+            message = e.what();
+        }
+        {
+            auto f = std::make_unique<TowMeshFailure>(TowMeshFailure{tow, message, {}});
             for (const detail::SharedLoop& s : shared_) {
                 const IntersectionLoop& l = loops_[s.loop];
                 if (l.towA() == tow || l.towB() == tow) f->pairs.emplace(l.towA(), l.towB());
@@ -258,9 +267,10 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
     // concerned and refines around it. The last round's requests are not taken: its meshes are
     // consistent, a few triangles stay over the bounds (reported).
     constexpr int kMaxRounds = 6;
-    std::map<std::size_t, std::size_t> sharedOf;  // loop node -> its shared loop
+    // loop node -> its shared loop(s): a figure-8's touching node belongs to both lobes
+    std::multimap<std::size_t, std::size_t> sharedOf;
     for (std::size_t k = 0; k < shared.size(); ++k)
-        for (std::size_t n : shared[k].nodes) sharedOf[n] = k;
+        for (std::size_t n : shared[k].nodes) sharedOf.emplace(n, k);
     std::vector<std::unique_ptr<detail::ParametricMesher>> meshers(tows.size());
     std::vector<detail::MeshRequests> requests(tows.size());
     const auto constraintsOf = [&](std::size_t t) {
@@ -298,11 +308,15 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
                 chords.emplace(std::min(q.a, q.b), std::max(q.a, q.b));
         }
         for (const auto& [a, b] : chords) {
-            const std::size_t k = sharedOf.at(a);
+            // The loop this chord belongs to: of the loops through node a, the one where b follows.
+            std::size_t k = shared.size();
+            const auto range = sharedOf.equal_range(a);
+            for (auto it = range.first; it != range.second && k == shared.size(); ++it)
+                if (detail::splitChord(loops[shared[it->second].loop], shared[it->second], a, b, 0.5, nodes)) k = it->second;
+            if (k == shared.size()) continue;
             detail::SharedLoop& s = shared[k];
-            if (!detail::splitChord(loops[s.loop], s, a, b, 0.5, nodes)) continue;
             const std::size_t node = nodes.size() - 1;
-            sharedOf[node] = k;
+            sharedOf.emplace(node, k);
             const LoopPoint& p = s.points[static_cast<std::size_t>(std::find(s.nodes.begin(), s.nodes.end(), node) - s.nodes.begin())];
             const IntersectionLoop& l = loops[s.loop];
             splits[l.towA()].push_back({a, b, node, p.onA});
@@ -606,6 +620,7 @@ void resultToUser(ResolveResult& result, const std::vector<TowSurface>& tows, co
 ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveOptions& options)
 {
     checkOptions(options);
+    detail::checkIntersectionOptions(options.intersection);
     const std::vector<double> towH = meshSizes(tows, options.mesh);
     // Refuse a mesh too large for memory now, before intersecting; the loops' part once their
     // lengths are known. In the user's units, for the message; h is the tows' mesh sizes
