@@ -258,7 +258,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
     if (!tows.empty()) {
         const auto [lo, hi] = std::minmax_element(towH.begin(), towH.end());
         say("meshing " + std::to_string(tows.size()) + " tows at h = " + std::to_string(*lo) +
-            (*hi > *lo ? " to " + std::to_string(*hi) : std::string()));
+            (*hi > *lo * (1.0 + 1e-6) ? " to " + std::to_string(*hi) : std::string()));
     }
     constexpr std::size_t kLocal = std::size_t(1) << 60;  // marks a tow's own new nodes
     // Round 1 meshes every tow. Refinement never splits a constraint; where a triangle needs a
