@@ -20,9 +20,11 @@ namespace towgeom {
 struct ResolveOptions {
     MeshOptions mesh;                  ///< mesh size and quality
     IntersectionOptions intersection;  ///< tolerances of the intersection loops (threads below)
-    /// Which tow of a pair keeps its surface: a tow whose name matches one of these shell
-    /// patterns (`*`, `?`, `[...]`) is primary over one that does not. When both or neither
-    /// match, the tow given first (lower index) is primary. Empty (default): the first one.
+    /// The tows' rank: a tow whose name matches one of these shell patterns (`*`, `?`, `[...]`)
+    /// ranks above one that does not; among those that both or neither match, the tow given
+    /// first (lower index) ranks higher. Every tow becomes itself minus the tows ranked above
+    /// it; of a pair, the higher-ranked tow is the primary (keeps its surface). Empty
+    /// (default): input order.
     std::vector<std::string> primaryPatterns;
     /// Worker threads (intersection and meshing); 0: one per hardware thread.
     std::size_t threads = 0;
@@ -70,9 +72,10 @@ struct UnresolvedPair {
         /// (or was not a tube): every pair with loops on that tow was left out and the textile
         /// meshed again without them.
         MeshFailed,
-        /// A loop of this pair meets (crosses, touches or encloses) a loop of another pair on a
-        /// tow of both: three tows overlap there, which is not resolved yet. Of two such pairs
-        /// the later one (by tow indices) is left out.
+        /// A loop of this pair crosses a loop of another pair on a tow of both (three tows
+        /// overlap there) where no triple point joins them (the third pair's loop through it is
+        /// open, winds around a tow, or the point was not found), or meets it while the third
+        /// pair has no resolved loop. Of two such pairs the later one (by tow indices) is left out.
         LoopsMeet
     };
     std::size_t towA = 0;  ///< lower tow index
@@ -103,15 +106,28 @@ struct ResolveResult {
 /// Meshes every tow in its (u,v) rectangle with the closed intersection loops as constraints
 /// (ParametricMesher: CGAL constrained Delaunay mesher in a parameter space scaled by the
 /// surface's lengths, loop nodes shared by both tows, seam nodes shared by both sides of the
-/// seam), then for each closed loop removes the secondary tow's triangles inside the loop
-/// (exact point-in-polygon on the (u,v) loop, CGAL) and puts the primary's inside triangles in
-/// their place (ConnectedRegion), so the two tows share nodes and triangles there.
+/// seam), then makes every tow itself minus the tows ranked above it (ResolveOptions::
+/// primaryPatterns): a triangle of tow t inside a higher-ranked tow is removed; one inside
+/// lower-ranked tows only is also a triangle of the highest-ranked of them (ConnectedRegion),
+/// so the two tows share nodes and triangles there. With two tows: inside each loop the
+/// secondary's triangles are replaced by the primary's.
 ///
-/// Loops of one tow pair nested in each other: the region is inside an odd number of them (an
-/// island loop is a hole, ConnectedRegion::holes). Open loops and loops winding around a tow are
-/// not resolved (see ResolveResult::skipped). A tow whose mesh cannot be made (e.g. loops of
-/// three tows crossing at one point) costs only the tow pairs with loops on it: they are listed
-/// in ResolveResult::unresolved and the rest of the textile is resolved.
+/// A triangle lies inside tow o when its (u,v) centroid lies inside an odd number of the loops
+/// of its pair with o (exact point-in-polygon, CGAL): a loop nested in one of the same pair bounds
+/// an island (ConnectedRegion::holes). Where loops of two pairs sharing a tow cross, the three
+/// tows' surfaces meet: the triple point is solved on the three surfaces and made one node of
+/// the three pairs' loops (TextileMesh::triplePoints). Open loops and loops winding around a tow
+/// are not resolved (see ResolveResult::skipped). A tow whose mesh cannot be made costs only the
+/// tow pairs with loops on it: they are listed in ResolveResult::unresolved and the rest of the
+/// textile is resolved.
+///
+/// @code
+/// towgeom::ResolveOptions options;
+/// options.primaryPatterns = {"binder*"};  // binders first, then the rest in input order
+/// const towgeom::ResolveResult r = towgeom::resolveTextile(tows, options);
+/// for (const towgeom::TriplePoint& p : r.mesh.triplePoints)
+///     std::cout << "tows " << p.tows[0] << ", " << p.tows[1] << ", " << p.tows[2] << " meet at node " << p.node << "\n";
+/// @endcode
 /// @throws towgeom::Error (InvalidArgument) for bad options, including a relative mesh size
 /// over pi / 4; (TooLarge) when the estimated triangle count is
 /// over MeshOptions::maxTriangles (checked before intersecting, and with the loops' refinement

@@ -23,9 +23,11 @@ struct TowMesh {
     std::vector<long> region;
 };
 
-/// Where a secondary tow's surface was replaced by the primary's: the primary's triangles inside
-/// one closed intersection loop, now shared by both tows (same nodes, same triangles, opposite
-/// orientation in the secondary).
+/// Where two tows overlapped, the surface between them: the primary's (the higher-ranked tow's)
+/// triangles inside one closed intersection loop of the pair that lie inside the secondary and
+/// inside no other tow ranked above the secondary, now shared by both tows (same nodes, same
+/// triangles, opposite orientation in the secondary). With two tows: the primary's surface inside
+/// the loop.
 struct ConnectedRegion {
     std::size_t primary = 0;             ///< tow index of the primary tow
     std::size_t secondary = 0;           ///< tow index of the secondary tow
@@ -37,7 +39,16 @@ struct ConnectedRegion {
     std::vector<std::size_t> nodes;      ///< global nodes of those triangles (sorted)
     std::vector<std::size_t> loopNodes;  ///< global nodes on the loop, in loop order
     double area = 0.0;                   ///< area of the shared surface
-    double volumeRemoved = 0.0;          ///< volume the secondary tow lost
+    /// The volume of the two tows' overlap inside the loop: what the secondary lost there (less
+    /// where a third tow ranked above it covers part of the overlap too).
+    double volumeRemoved = 0.0;
+};
+
+/// A point where three tows' surfaces meet: the intersection loops of their three pairs cross
+/// there. Solved on the three surfaces and one node of the three tows' meshes.
+struct TriplePoint {
+    std::size_t node = 0;             ///< the global node
+    std::array<std::size_t, 3> tows{};  ///< the three tows, ascending
 };
 
 /// The meshes of all tows of a textile on one node numbering: a node on an intersection loop
@@ -46,6 +57,7 @@ struct TextileMesh {
     std::vector<Point3> nodes;             ///< global node positions
     std::vector<TowMesh> tows;             ///< one per input tow, in input order
     std::vector<ConnectedRegion> regions;  ///< one per resolved loop that is not a hole of another
+    std::vector<TriplePoint> triplePoints;  ///< where three tows' resolved loops cross
 
     /// Tow @p tow's mesh as a standalone TriangleMesh (only the nodes it uses, renumbered in
     /// the order the triangles first use them).

@@ -27,9 +27,11 @@ const char* kResolveHelp = R"(Usage: towgeom resolve FILE.stw... --out DIR [opti
 
 Fits every tow, finds where tows interpenetrate (as 'towgeom detect'), meshes every tow's
 surface with the closed intersection loops as constraints, and makes the meshes compatible:
-inside each loop the secondary tow's triangles are removed and the primary's put in their place,
-so both tows share nodes and triangles there (a connected region, ready for tie or cohesive
-contact). Writes, all or nothing:
+tows are ranked (--primary patterns first, then command-line order) and every tow becomes
+itself minus the tows ranked above it. Inside each loop the lower tow's triangles are removed
+and the higher one's put in their place, so both tows share nodes and triangles there (a
+connected region). Where three tows overlap, their loops cross at triple points, solved on the
+three surfaces and shared by the three meshes. Writes, all or nothing:
 
   DIR/NAME.stl     binary STL of each tow's final surface mesh
   DIR/NAME.vtk     legacy VTK polydata (ParaView): cell data tow_id, region_id (-1 outside
@@ -41,6 +43,7 @@ contact). Writes, all or nothing:
                    "boundary_loops","mesh_size"}], "loops":[...as detect...], "findings":[...as detect...],
                    "unresolved":[{"tow_a","tow_b","reason","message"}], "regions":[{"primary",
                    "secondary","triangles","nodes","area","volume_removed"}],
+                   "triple_points":[{"tows":[3 names],"node","point":[x,y,z]}],
                    "skipped":[{"tow_a","tow_b","reason"}], "node_count",
                    "mesh_quality":{"min_angle_deg","angle_histogram","fraction_at_least_20",
                    "triangles","faces_over_bounds"},
@@ -51,11 +54,14 @@ contact). Writes, all or nothing:
                   per pair and reason: open_curve (a curve runs into a tow's end), winds_around
                   (a loop goes around a tow: one passes through the other), nested (one tow
                   inside the other), identical_or_touching (surfaces coincide or touch, no curve),
-                  loops_meet (a loop of the pair meets another pair's loop on a tow: three tows
-                  overlap there; the later pair is left out), mesh_failed (a tow could not be
+                  loops_meet (a loop of the pair crosses another pair's loop on a tow where no
+                  triple point joins them, e.g. the third pair's loop is open or goes around a
+                  tow; the later pair is left out), mesh_failed (a tow could not be
                   meshed with the pair's loops: its pairs are left out, the rest resolved)
   skipped         every loop not resolved (open or around a tow), with the reason as a sentence
-  volume_removed  the volume of the overlap the secondary tow lost in that region
+  volume_removed  the volume of the two tows' overlap inside the region's loop: what the
+                  secondary lost there (less where a third tow ranked above it covers part)
+  triple_points   points where three tows' surfaces meet (node: the global node number)
   angle_histogram triangles per 5-degree bin of their smallest 3D angle (0-5, 5-10, ...)
   faces_over_bounds triangles left longer than H or below the angle bound because fixing them
                   would split a loop or seam edge once more (after the last of 6 rounds)
@@ -64,9 +70,9 @@ contact). Writes, all or nothing:
 
 Options:
   --out DIR          output directory (created if needed)
-  --primary GLOB     tows whose names match are primary over tows that do not (repeatable;
-                     shell patterns, e.g. --primary 'warp_*'); default: of two tows, the one
-                     given first on the command line
+  --primary GLOB     tows whose names match rank above tows that do not (repeatable; shell
+                     patterns, e.g. --primary 'warp_*'); otherwise command-line order ranks
+                     them: a tow gives way to every tow ranked above it
   --mesh-size H      target 3D edge length (default: 0.1 x each tow's own size); a tow is meshed
                      at most at a quarter of its circumference (noted on stderr, and each
                      tow's "mesh_size" in report.json)
@@ -203,6 +209,15 @@ int runResolve(int argc, char** argv, int first)
             json.key("area").value(g.area);
             json.key("volume_removed").value(g.volumeRemoved);
             json.endObject();
+        }
+        json.endArray();
+        json.key("triple_points").beginArray();
+        for (const TriplePoint& p : mesh.triplePoints) {
+            json.beginObject().key("tows").beginArray();
+            for (const std::size_t t : p.tows) json.value(tows[t].name());
+            json.endArray().key("node").value(p.node);
+            const Point3& x = mesh.nodes[p.node];
+            json.key("point").beginArray().value(x.x).value(x.y).value(x.z).endArray().endObject();
         }
         json.endArray();
         json.key("skipped").beginArray();

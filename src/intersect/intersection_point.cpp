@@ -5,6 +5,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 
 #include "surface/occt_convert.hpp"
@@ -101,6 +102,71 @@ bool refineOnIntersection(const SurfacePair& s, PointOn2& x, const PointConditio
     if (!(y.gap <= tolerance)) return false;
     y.point = fromOcct(gp_Pnt(0.5 * (e.pa.XYZ() + e.pb.XYZ())));
     x = y;
+    return true;
+}
+
+bool refineTriplePoint(const SurfacePair& ab, const SurfacePair& ac, PointOn3& x, double tolerance)
+{
+    std::array<double, 6> y = x.uv;
+    const auto inRange = [](double u, double lo, double hi) { return u >= lo - 1e-9 * (hi - lo) && u <= hi + 1e-9 * (hi - lo); };
+    const auto insideAll = [&] {
+        return inRange(y[0], ab.uMinA, ab.uMaxA) && inRange(y[2], ab.uMinB, ab.uMaxB) && inRange(y[4], ac.uMinB, ac.uMaxB);
+    };
+    struct Three {
+        gp_Pnt p[3];
+        gp_Vec du[3], dv[3];
+    };
+    const auto evaluate3 = [&] {
+        Three e;
+        const auto eval = [](const SurfacePair& s, bool a, double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv) {
+            const Handle(GeomAdaptor_Surface)& cached = a ? s.evalA : s.evalB;
+            if (!cached.IsNull())
+                cached->D1(u, v, p, du, dv);
+            else
+                (a ? s.a : s.b)->D1(u, v, p, du, dv);
+        };
+        eval(ab, true, y[0], y[1], e.p[0], e.du[0], e.dv[0]);
+        eval(ab, false, y[2], y[3], e.p[1], e.du[1], e.dv[1]);
+        eval(ac, false, y[4], y[5], e.p[2], e.du[2], e.dv[2]);
+        return e;
+    };
+    constexpr int kMaxIterations = 16;
+    bool polish = false;
+    for (int it = 0; it < kMaxIterations; ++it) {
+        if (!insideAll()) return false;
+        const Three e = evaluate3();
+        const gp_Vec fb(e.p[1], e.p[0]), fc(e.p[2], e.p[0]);  // S_A - S_B, S_A - S_C
+        Eigen::Matrix<double, 6, 6> J = Eigen::Matrix<double, 6, 6>::Zero();
+        Eigen::Matrix<double, 6, 1> F;
+        for (int r = 0; r < 3; ++r) {
+            J(r, 0) = J(r + 3, 0) = e.du[0].Coord(r + 1);
+            J(r, 1) = J(r + 3, 1) = e.dv[0].Coord(r + 1);
+            J(r, 2) = -e.du[1].Coord(r + 1);
+            J(r, 3) = -e.dv[1].Coord(r + 1);
+            J(r + 3, 4) = -e.du[2].Coord(r + 1);
+            J(r + 3, 5) = -e.dv[2].Coord(r + 1);
+            F(r) = fb.Coord(r + 1);
+            F(r + 3) = fc.Coord(r + 1);
+        }
+        if (fb.Magnitude() <= 1e-3 * tolerance && fc.Magnitude() <= 1e-3 * tolerance) {
+            if (polish) break;
+            polish = true;
+        }
+        const Eigen::FullPivLU<Eigen::Matrix<double, 6, 6>> lu(J);
+        if (lu.rank() < 6) return false;
+        const Eigen::Matrix<double, 6, 1> dx = lu.solve(-F);
+        if (!dx.allFinite()) return false;
+        const double size = dx.cwiseAbs().maxCoeff();
+        const double scale = size > 0.05 ? 0.05 / size : 1.0;
+        for (int k = 0; k < 6; ++k) y[static_cast<std::size_t>(k)] += scale * dx(k);
+    }
+    if (!insideAll()) return false;
+    const Three e = evaluate3();
+    const double gap = std::max({e.p[0].Distance(e.p[1]), e.p[0].Distance(e.p[2]), e.p[1].Distance(e.p[2])});
+    if (!(gap <= tolerance)) return false;
+    x.uv = y;
+    x.gap = gap;
+    x.point = fromOcct(gp_Pnt((e.p[0].XYZ() + e.p[1].XYZ() + e.p[2].XYZ()) / 3.0));
     return true;
 }
 

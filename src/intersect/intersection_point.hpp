@@ -5,6 +5,8 @@
 #include <GeomAdaptor_Surface.hxx>
 #include <Geom_BSplineSurface.hxx>
 
+#include <array>
+
 #include "towgeom/point.hpp"
 
 namespace towgeom::detail {
@@ -50,6 +52,21 @@ Vector3 intersectionTangent(const SurfacePair& s, const PointOn2& x);
 /// the refined point (gap <= @p tolerance) and true is returned; false when the iteration does
 /// not converge within a few steps, becomes singular (tangent surfaces) or leaves a tow's ends.
 bool refineOnIntersection(const SurfacePair& s, PointOn2& x, const PointCondition& condition, double tolerance);
+
+/// A point on three surfaces A, B and C: its (u,v) on each (v may be unwrapped).
+struct PointOn3 {
+    std::array<double, 6> uv{};  ///< ua, va, ub, vb, uc, vc
+    Point3 point;                ///< the mean of S_A, S_B and S_C after refinement
+    double gap = 0.0;            ///< the largest distance between two of the three surface points
+};
+
+/// Newton's method on S_A(ua,va) = S_B(ub,vb) = S_C(uc,vc) (six equations, six unknowns) from
+/// @p x: the triple point where three tows' surfaces meet, where the intersection curves of the
+/// three pairs cross. @p ab and @p ac are the pairs (A, B) and (A, C) (the same A). On success
+/// @p x is the refined point (gap <= @p tolerance) and true is returned; false when the
+/// iteration does not converge, becomes singular (two of the curves tangent there) or leaves a
+/// tow's ends.
+bool refineTriplePoint(const SurfacePair& ab, const SurfacePair& ac, PointOn3& x, double tolerance);
 
 /// refineOnIntersection() with the plane through x.point normal to the curve's tangent: the
 /// intersection point nearest a good guess.

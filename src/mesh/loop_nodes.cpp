@@ -82,6 +82,34 @@ std::vector<LoopPoint> nodesAlong(const IntersectionLoop& loop, double spacing)
 
 }  // namespace
 
+std::pair<LoopPoint, LoopPoint> chordEnds(const IntersectionLoop& loop, const SharedLoop& shared, std::size_t chord)
+{
+    const std::size_t n = shared.points.size();
+    const LoopPoint& p = shared.points[chord];
+    LoopPoint q = shared.points[(chord + 1) % n];
+    if (chord + 1 == n) {  // the closing chord
+        q.onA.v += periodOf(loop, LoopSide::A) * std::round((p.onA.v - q.onA.v) / periodOf(loop, LoopSide::A));
+        q.onB.v += periodOf(loop, LoopSide::B) * std::round((p.onB.v - q.onB.v) / periodOf(loop, LoopSide::B));
+    }
+    return {p, q};
+}
+
+LoopPoint chordPoint(const IntersectionLoop& loop, const SharedLoop& shared, std::size_t chord, double t)
+{
+    const auto [p, q] = chordEnds(loop, shared, chord);
+    const PointOn2 x = onChord(p, q, t);
+    return {x.point, {x.ua, x.va}, {x.ub, x.vb}};
+}
+
+bool onSeam(const IntersectionLoop& loop, const LoopPoint& p, double within)
+{
+    for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+        const double r = (sideOf(p, side).v - vMinOf(loop, side)) / periodOf(loop, side);
+        if (std::abs(r - std::round(r)) < within) return true;
+    }
+    return false;
+}
+
 SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, double spacing,
                           std::vector<Point3>& globalNodes)
 {
@@ -157,12 +185,7 @@ bool splitChord(const IntersectionLoop& loop, SharedLoop& shared, std::size_t a,
         }
     }
     if (i == n) return false;
-    const LoopPoint& p = shared.points[i];
-    LoopPoint q = shared.points[(i + 1) % n];
-    if (i + 1 == n) {  // the closing chord
-        q.onA.v += periodOf(loop, LoopSide::A) * std::round((p.onA.v - q.onA.v) / periodOf(loop, LoopSide::A));
-        q.onB.v += periodOf(loop, LoopSide::B) * std::round((p.onB.v - q.onB.v) / periodOf(loop, LoopSide::B));
-    }
+    const auto [p, q] = chordEnds(loop, shared, i);
     PointOn2 x = onChord(p, q, t);
     PointCondition c;
     c.kind = PointCondition::Kind::Plane;
@@ -213,11 +236,7 @@ bool joinTouchingLoops(SharedLoop& a, const IntersectionLoop& la, SharedLoop& b,
                 k = i;
             }
         }
-        for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
-            const double r = (sideOf(s.points[k], side).v - vMinOf(l, side)) / periodOf(l, side);
-            if (std::abs(r - std::round(r)) < kSeamSnap) return s.points.size();
-        }
-        return k;
+        return onSeam(l, s.points[k], kSeamSnap) ? s.points.size() : k;
     };
     const std::size_t ka = nearest(a, la), kb = nearest(b, lb);
     if (ka == a.points.size() || kb == b.points.size()) return false;

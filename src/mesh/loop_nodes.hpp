@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "towgeom/intersection_loop.hpp"
@@ -27,6 +28,17 @@ struct LoopConstraint {
 /// points to @p globalNodes.
 SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, double spacing,
                           std::vector<Point3>& globalNodes);
+
+/// The two ends of chord @p chord of @p shared (from point chord to the next, the last back to
+/// the first), the closing chord's end one turn on if the loop winds around a tow.
+std::pair<LoopPoint, LoopPoint> chordEnds(const IntersectionLoop& loop, const SharedLoop& shared, std::size_t chord);
+
+/// The point at fraction @p t of chord @p chord of @p shared, interpolated in 3D and in (u,v)
+/// on both tows (not on the curve: a start for Newton's method).
+LoopPoint chordPoint(const IntersectionLoop& loop, const SharedLoop& shared, std::size_t chord, double t);
+
+/// True when @p p lies within @p within periods of either tow's seam.
+bool onSeam(const IntersectionLoop& loop, const LoopPoint& p, double within);
 
 /// Adds a node on the chord between loop nodes @p a and @p b (consecutive in @p shared) at
 /// fraction @p t: the exact loop point where the curve crosses the plane normal to the chord

@@ -148,6 +148,11 @@ struct ParametricMesher::Impl {
     UV toUV(const K::Point_2& p) const { return {range.uMin + p.x() / su, range.vMin + p.y() / sv}; }
     CDT::Vertex_handle insertLoopNode(const K::Point_2& p, std::size_t node)
     {
+        // A node of two loops (a triple point, a figure-8's touching point) is one vertex, though
+        // its two loops may give its (u,v) a rounding apart. A seam node has one on each side.
+        if (p.y() != 0.0 && p.y() != scale.aroundV)
+            for (auto [it, end] = loopVertex.equal_range(node); it != end; ++it)
+                if (it->second->point().y() != 0.0 && it->second->point().y() != scale.aroundV) return it->second;
         const CDT::Vertex_handle v = cdt.insert(p);
         if (v->info().node >= 0 && static_cast<std::size_t>(v->info().node) != node)
             throw Error(ErrorCode::Internal,

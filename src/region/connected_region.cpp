@@ -3,6 +3,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2_algorithms.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace towgeom::detail {
@@ -67,6 +68,42 @@ bool loopsMeet(const std::vector<UV>& a, const std::vector<UV>& b, double period
         if (CGAL::bounded_side_2(pb.poly.begin(), pb.poly.end(), pa.poly.front(), K()) != CGAL::ON_UNBOUNDED_SIDE) return true;
     }
     return false;
+}
+
+std::vector<LoopCrossing> loopCrossings(const std::vector<UV>& a, const std::vector<std::size_t>& nodesA,
+                                        const std::vector<UV>& b, const std::vector<std::size_t>& nodesB, double period)
+{
+    std::vector<LoopCrossing> out;
+    if (a.size() < 3 || b.size() < 3) return out;
+    const LoopPolygon pa(a), pb0(b);
+    const double shift0 = std::round((0.5 * (pa.vLo + pa.vHi) - 0.5 * (pb0.vLo + pb0.vHi)) / period);
+    const std::size_t na = a.size(), nb = b.size();
+    for (double k = shift0 - 1.0; k <= shift0 + 1.0; k += 1.0) {
+        std::vector<UV> moved = b;
+        for (UV& p : moved) p.v += k * period;
+        const LoopPolygon pb(moved);
+        if (pb.uHi < pa.uLo || pa.uHi < pb.uLo || pb.vHi < pa.vLo || pa.vHi < pb.vLo) continue;
+        for (std::size_t i = 0; i < na; ++i) {
+            const K::Segment_2 s(pa.poly[i], pa.poly[(i + 1) % na]);
+            const CGAL::Bbox_2 bs = s.bbox();
+            for (std::size_t j = 0; j < nb; ++j) {
+                const K::Segment_2 t(pb.poly[j], pb.poly[(j + 1) % nb]);
+                if (!CGAL::do_overlap(bs, t.bbox()) || !CGAL::do_intersect(s, t)) continue;
+                const std::size_t a0 = nodesA[i], a1 = nodesA[(i + 1) % na], b0 = nodesB[j], b1 = nodesB[(j + 1) % nb];
+                if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;
+                // The fractions along both chords (the middle of an overlap if they are parallel).
+                const K::Vector_2 d = s.to_vector(), e = t.to_vector(), w = t.source() - s.source();
+                const double den = d.x() * e.y() - d.y() * e.x();
+                LoopCrossing c{i, j, 0.5, 0.5};
+                if (den != 0.0) {
+                    c.ta = std::clamp((w.x() * e.y() - w.y() * e.x()) / den, 0.0, 1.0);
+                    c.tb = std::clamp((w.x() * d.y() - w.y() * d.x()) / den, 0.0, 1.0);
+                }
+                out.push_back(c);
+            }
+        }
+    }
+    return out;
 }
 
 std::vector<std::size_t> trianglesInside(const ParametricMesh& mesh, const std::vector<UV>& polygon, double period)

@@ -22,4 +22,17 @@ bool insideLoop(const std::vector<UV>& polygon, UV p, double period);
 /// cross, touch or lie one inside the other: their regions overlap or meet (exact predicates).
 bool loopsMeet(const std::vector<UV>& a, const std::vector<UV>& b, double period);
 
+/// Where two loops on one tow cross: chord k runs from polygon point k to point k + 1 (the
+/// last back to the first), t is the fraction along it.
+struct LoopCrossing {
+    std::size_t chordA = 0, chordB = 0;
+    double ta = 0.0, tb = 0.0;
+};
+
+/// The crossings of loops @p a and @p b on one tow (v unwrapped, b's copies a whole number of
+/// periods apart), by CGAL's exact segment test; chords that end in a node of both (@p nodesA,
+/// @p nodesB: the global node of each point) are left out, the loops meet there already.
+std::vector<LoopCrossing> loopCrossings(const std::vector<UV>& a, const std::vector<std::size_t>& nodesA,
+                                        const std::vector<UV>& b, const std::vector<std::size_t>& nodesB, double period);
+
 }  // namespace towgeom::detail

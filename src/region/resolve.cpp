@@ -19,6 +19,7 @@
 #include "mesh/mesh_measures.hpp"
 #include "mesh/parametric_mesher.hpp"
 #include "region/connected_region.hpp"
+#include "region/triple_points.hpp"
 #include "towgeom/error.hpp"
 
 namespace towgeom {
@@ -176,39 +177,74 @@ private:
 /// Two loops of one tow pair closer than this (relative to the tow size) touch: a figure-8.
 constexpr double kTouchingLoops = 1e-3;
 
-/// Loops of different tow pairs that meet on a tow (three tows overlapping there) cannot both be
-/// resolved by the swap: of two such pairs the later one is left out (LoopsMeet), its loops
-/// removed from @p shared.
+/// Each tow's rank (0 first): tows whose name matches a primary pattern, then the others, each
+/// in input order. A tow gives way to every tow ranked above it.
+std::vector<std::size_t> towRanks(const std::vector<TowSurface>& tows, const std::vector<std::string>& primaryPatterns)
+{
+    std::vector<std::size_t> order(tows.size());
+    for (std::size_t t = 0; t < tows.size(); ++t) order[t] = t;
+    std::stable_partition(order.begin(), order.end(), [&](std::size_t t) { return matchesAny(tows[t].name(), primaryPatterns); });
+    std::vector<std::size_t> rank(tows.size());
+    for (std::size_t r = 0; r < order.size(); ++r) rank[order[r]] = r;
+    return rank;
+}
+
+/// Loops of different tow pairs that meet on a tow: three tows overlap there. The rank rule
+/// resolves them when they meet only in triple points (nodes of the three loops) or lie one inside
+/// the other, and the third pair has loops resolved too. Otherwise the later pair (by tow indices)
+/// is left out (LoopsMeet), its loops removed from @p shared; pairs that relied on it follow.
 void dropMeetingLoops(const std::vector<TowSurface>& tows, const std::vector<IntersectionLoop>& loops,
-                      std::vector<detail::SharedLoop>& shared, std::vector<UnresolvedPair>& unresolved)
+                      std::vector<detail::SharedLoop>& shared, const std::vector<detail::CrossingLoops>& crossing,
+                      std::vector<UnresolvedPair>& unresolved)
 {
     std::set<TowPair> dropped;
-    const auto pairOf = [&](const detail::SharedLoop& s) { return TowPair{loops[s.loop].towA(), loops[s.loop].towB()}; };
-    for (std::size_t t = 0; t < tows.size(); ++t) {
-        std::vector<std::pair<std::size_t, LoopSide>> on;  // the loops on tow t
-        for (std::size_t k = 0; k < shared.size(); ++k) {
-            const IntersectionLoop& l = loops[shared[k].loop];
-            if (l.towA() == t) on.emplace_back(k, LoopSide::A);
-            if (l.towB() == t) on.emplace_back(k, LoopSide::B);
-        }
-        const double period = tows[t].parameterRange().vPeriod();
-        for (std::size_t i = 0; i < on.size(); ++i)
-            for (std::size_t j = i + 1; j < on.size(); ++j) {
-                const TowPair p = pairOf(shared[on[i].first]), q = pairOf(shared[on[j].first]);
-                if (p == q || dropped.count(p) || dropped.count(q)) continue;
-                if (!detail::loopsMeet(detail::loopPolygon(shared[on[i].first], on[i].second),
-                                       detail::loopPolygon(shared[on[j].first], on[j].second), period))
-                    continue;
-                const TowPair later = std::max(p, q), kept = std::min(p, q);
-                dropped.insert(later);
-                unresolved.push_back({later.first, later.second, UnresolvedPair::Reason::LoopsMeet,
-                                      "a loop of tows '" + tows[later.first].name() + "' and '" + tows[later.second].name() +
-                                          "' meets a loop of tows '" + tows[kept.first].name() + "' and '" +
-                                          tows[kept.second].name() + "' on tow '" + tows[t].name() +
-                                          "': three tows overlap there, which resolve does not handle yet"});
-            }
+    const auto pairOf = [&](std::size_t k) { return TowPair{loops[shared[k].loop].towA(), loops[shared[k].loop].towB()}; };
+    const auto names = [&](TowPair p) { return "tows '" + tows[p.first].name() + "' and '" + tows[p.second].name() + "'"; };
+    const auto drop = [&](TowPair p, TowPair q, std::size_t t, const std::string& how, const std::string& why) {
+        const TowPair later = std::max(p, q), kept = std::min(p, q);
+        dropped.insert(later);
+        unresolved.push_back({later.first, later.second, UnresolvedPair::Reason::LoopsMeet,
+                              "a loop of " + names(later) + " " + how + " a loop of " + names(kept) + " on tow '" + tows[t].name() +
+                                  "': three tows overlap there, and " + why});
+    };
+    for (const detail::CrossingLoops& c : crossing) {
+        const TowPair p = pairOf(c.first), q = pairOf(c.second);
+        if (!dropped.count(p) && !dropped.count(q))
+            drop(p, q, c.tow, "crosses",
+                 "the loops do not meet in a point of the three tows' surfaces there (the third pair has no resolved loop "
+                 "through it, or the point was not found)");
     }
-    shared.erase(std::remove_if(shared.begin(), shared.end(), [&](const detail::SharedLoop& s) { return dropped.count(pairOf(s)) > 0; }),
+    for (bool changed = true; changed;) {
+        changed = false;
+        std::set<TowPair> resolved;
+        for (std::size_t k = 0; k < shared.size(); ++k)
+            if (!dropped.count(pairOf(k))) resolved.insert(pairOf(k));
+        for (std::size_t t = 0; t < tows.size(); ++t) {
+            std::vector<std::pair<std::size_t, LoopSide>> on;  // the loops on tow t
+            for (std::size_t k = 0; k < shared.size(); ++k) {
+                const IntersectionLoop& l = loops[shared[k].loop];
+                if (l.towA() == t) on.emplace_back(k, LoopSide::A);
+                if (l.towB() == t) on.emplace_back(k, LoopSide::B);
+            }
+            for (std::size_t i = 0; i < on.size(); ++i)
+                for (std::size_t j = i + 1; j < on.size(); ++j) {
+                    const TowPair p = pairOf(on[i].first), q = pairOf(on[j].first);
+                    if (p == q || dropped.count(p) || dropped.count(q)) continue;
+                    const std::size_t s1 = p.first == t ? p.second : p.first, s2 = q.first == t ? q.second : q.first;
+                    const TowPair third = std::minmax(s1, s2);
+                    if (resolved.count(third)) continue;
+                    if (!detail::loopsMeet(detail::loopPolygon(shared[on[i].first], on[i].second),
+                                           detail::loopPolygon(shared[on[j].first], on[j].second), tows[t].parameterRange().vPeriod()))
+                        continue;
+                    drop(p, q, t, "meets", names(third) + " have no loop resolved there");
+                    changed = true;
+                }
+        }
+    }
+    shared.erase(std::remove_if(shared.begin(), shared.end(),
+                                [&](const detail::SharedLoop& s) {
+                                    return dropped.count({loops[s.loop].towA(), loops[s.loop].towB()}) > 0;
+                                }),
                  shared.end());
 }
 
@@ -245,7 +281,8 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
             shared.push_back(detail::shareLoopNodes(l, i, spacingOf(l), nodes));
     }
     // Lobes of a figure-8 (one pair's loops touching where the surfaces are tangent) meet in one
-    // node; then loops of different pairs that still meet leave the later pair out.
+    // node; loops of different pairs that cross meet in triple points, or the later pair is left
+    // out.
     for (std::size_t i = 0; i < shared.size(); ++i)
         for (std::size_t j = i + 1; j < shared.size(); ++j) {
             const IntersectionLoop& li = loops[shared[i].loop];
@@ -254,7 +291,8 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
             const double within = kTouchingLoops * std::min(tows[li.towA()].towSize(), tows[li.towB()].towSize());
             detail::joinTouchingLoops(shared[i], li, shared[j], lj, within, nodes);
         }
-    dropMeetingLoops(tows, loops, shared, result.unresolved);
+    const detail::TripleJoin triples = detail::joinAtTriplePoints(tows, loops, shared, nodes);
+    dropMeetingLoops(tows, loops, shared, triples.crossing, result.unresolved);
     if (!tows.empty()) {
         const auto [lo, hi] = std::minmax_element(towH.begin(), towH.end());
         say("meshing " + std::to_string(tows.size()) + " tows at h = " + std::to_string(*lo) +
@@ -358,90 +396,130 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
     }
     result.timings.mesh = msSince(t0);
 
-    // 3. Connected regions: the primary's triangles inside each loop replace the secondary's.
+    // 3. Connected regions, by rank: every tow minus the tows ranked above it. A triangle of tow
+    // t lies inside tow o when it is inside an odd number of the loops of (t, o) on t (a loop
+    // nested in one of the same pair bounds an island). It is removed when it lies inside a tow
+    // ranked above t; otherwise, inside lower-ranked tows, it is also a triangle of the highest
+    // ranked of them (the surface between t and that tow): a region of its pair's loop around it.
     t0 = Clock::now();
     say("connecting " + std::to_string(shared.size()) + " regions");
     result.mesh.nodes = std::move(nodes);
     const std::vector<Point3>& N = result.mesh.nodes;
     result.tows.resize(tows.size());
-    std::vector<std::vector<char>> removed(tows.size());
-    std::vector<std::vector<long>> region(tows.size());
-    for (std::size_t t = 0; t < tows.size(); ++t) {
-        removed[t].assign(meshes[t].triangles.size(), 0);
-        region[t].assign(meshes[t].triangles.size(), -1);
-    }
-    std::vector<std::vector<std::pair<Triangle, long>>> inserted(tows.size());
-    // Loops of one tow pair nested in each other: the tows overlap inside an odd number of them.
-    // A loop inside an even number of its pair's loops bounds a region; the loops directly inside
-    // it bound islands where the surfaces separate again: holes of that region.
+    const std::vector<std::size_t> rank = towRanks(tows, options.primaryPatterns);
     const auto period = [&](std::size_t t) { return tows[t].parameterRange().vPeriod(); };
+    const auto pairOf = [&](std::size_t k) { return TowPair{loops[shared[k].loop].towA(), loops[shared[k].loop].towB()}; };
+    // The nesting depth of each loop among its pair's loops; the loops directly inside one of
+    // even depth are the holes of its region.
     std::vector<std::size_t> depth(shared.size(), 0);
     std::vector<std::vector<std::size_t>> inside(shared.size());  // the pair's loops inside each loop
     for (std::size_t a = 0; a < shared.size(); ++a)
         for (std::size_t b = 0; b < shared.size(); ++b) {
-            const IntersectionLoop& la = loops[shared[a].loop];
-            const IntersectionLoop& lb = loops[shared[b].loop];
-            if (a == b || la.towA() != lb.towA() || la.towB() != lb.towB()) continue;
-            if (detail::insideLoop(detail::loopPolygon(shared[a], LoopSide::A), shared[b].points.front().onA, period(la.towA()))) {
+            if (a == b || pairOf(a) != pairOf(b)) continue;
+            if (detail::insideLoop(detail::loopPolygon(shared[a], LoopSide::A), shared[b].points.front().onA,
+                                   period(pairOf(a).first))) {
                 ++depth[b];
                 inside[a].push_back(b);
             }
         }
-    for (std::size_t k = 0; k < shared.size(); ++k) {
-        const detail::SharedLoop& s = shared[k];
-        if (depth[k] % 2 == 1) continue;  // a hole of the region around it
-        std::vector<std::size_t> holes;
-        for (std::size_t b : inside[k])
-            if (depth[b] == depth[k] + 1) holes.push_back(b);
-        const IntersectionLoop& l = loops[s.loop];
-        const bool aMatches = matchesAny(tows[l.towA()].name(), options.primaryPatterns);
-        const bool bMatches = matchesAny(tows[l.towB()].name(), options.primaryPatterns);
-        const bool aPrimary = aMatches == bMatches ? l.towA() < l.towB() : aMatches;
-        const LoopSide ps = aPrimary ? LoopSide::A : LoopSide::B, ss = aPrimary ? LoopSide::B : LoopSide::A;
-        const std::size_t p = aPrimary ? l.towA() : l.towB(), q = aPrimary ? l.towB() : l.towA();
-        const auto within = [&](std::size_t t, LoopSide side) {
-            std::vector<std::size_t> in = detail::trianglesInside(meshes[t], detail::loopPolygon(s, side), period(t));
-            for (std::size_t b : holes) {
-                const std::vector<std::size_t> hole = detail::trianglesInside(meshes[t], detail::loopPolygon(shared[b], side), period(t));
-                std::vector<std::size_t> rest;
-                std::set_difference(in.begin(), in.end(), hole.begin(), hole.end(), std::back_inserter(rest));
-                in = std::move(rest);
+    // Per tow, (triangle, loop) for every loop whose inside holds the triangle, by triangle.
+    std::vector<std::vector<std::pair<std::size_t, std::size_t>>> hits(tows.size());
+    detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
+        for (std::size_t k = 0; k < shared.size(); ++k)
+            for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+                const IntersectionLoop& l = loops[shared[k].loop];
+                if ((side == LoopSide::A ? l.towA() : l.towB()) != t) continue;
+                for (std::size_t tri : detail::trianglesInside(meshes[t], detail::loopPolygon(shared[k], side), period(t)))
+                    hits[t].emplace_back(tri, k);
             }
-            return in;
-        };
-        const std::vector<std::size_t> inP = within(p, ps);
-        const std::vector<std::size_t> inQ = within(q, ss);
+        std::sort(hits[t].begin(), hits[t].end());
+    });
+    // One region per loop of even depth, primary the higher-ranked tow of its pair.
+    std::vector<long> regionOf(shared.size(), -1);
+    std::vector<ConnectedRegion> regions;
+    std::vector<std::vector<Triangle>> lens;  // per region: both tows' surfaces inside the loop
+    for (std::size_t k = 0; k < shared.size(); ++k) {
+        if (depth[k] % 2 == 1) continue;  // a hole of the region around it
+        const auto [a, b] = pairOf(k);
         ConnectedRegion r;
-        r.primary = p;
-        r.secondary = q;
-        r.loop = s.loop;
-        for (std::size_t b : holes) r.holes.push_back(shared[b].loop);
-        r.triangles = inP;
-        r.loopNodes = s.nodes;
-        const long id = static_cast<long>(result.mesh.regions.size());
-        std::vector<Triangle> lens;  // the boundary of the overlap: both patches, as they face
-        std::set<std::size_t> regionNodes;
-        for (std::size_t k : inP) {
-            const Triangle& tri = meshes[p].triangles[k];
-            region[p][k] = id;
-            r.area += triangleArea(N, tri);
-            regionNodes.insert(tri.begin(), tri.end());
-            inserted[q].emplace_back(reversed(tri), id);
-            lens.push_back(tri);
+        r.primary = rank[a] < rank[b] ? a : b;
+        r.secondary = rank[a] < rank[b] ? b : a;
+        r.loop = shared[k].loop;
+        for (std::size_t h : inside[k])
+            if (depth[h] == depth[k] + 1) r.holes.push_back(shared[h].loop);
+        r.loopNodes = shared[k].nodes;
+        regionOf[k] = static_cast<long>(regions.size());
+        regions.push_back(std::move(r));
+        lens.emplace_back();
+    }
+    std::vector<std::vector<char>> removed(tows.size());
+    std::vector<std::vector<long>> region(tows.size());
+    std::vector<std::vector<std::pair<Triangle, long>>> inserted(tows.size());
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        removed[t].assign(meshes[t].triangles.size(), 0);
+        region[t].assign(meshes[t].triangles.size(), -1);
+        const auto& h = hits[t];
+        for (std::size_t first = 0; first < h.size();) {
+            const std::size_t tri = h[first].first;
+            std::size_t last = first;
+            while (last < h.size() && h[last].first == tri) ++last;
+            // The tows it lies inside, each with its pair's deepest loop around it.
+            std::map<std::size_t, std::pair<std::size_t, std::size_t>> in;  // tow -> (loops around it, deepest)
+            for (std::size_t q = first; q < last; ++q) {
+                const std::size_t k = h[q].second;
+                const auto [a, b] = pairOf(k);
+                auto& [count, deepest] = in.try_emplace(a == t ? b : a, 0, k).first->second;
+                ++count;
+                if (depth[k] > depth[deepest]) deepest = k;
+            }
+            std::size_t top = tows.size();  // the highest-ranked tow it lies inside
+            for (const auto& [o, c] : in)
+                if (c.first % 2 == 1 && (top == tows.size() || rank[o] < rank[top])) top = o;
+            for (const auto& [o, c] : in)
+                if (c.first % 2 == 1 && regionOf[c.second] >= 0) lens[static_cast<std::size_t>(regionOf[c.second])].push_back(meshes[t].triangles[tri]);
+            if (top == tows.size()) {
+                first = last;
+                continue;
+            }
+            if (rank[top] < rank[t]) {
+                removed[t][tri] = 1;
+            } else {
+                const long id = regionOf[in[top].second];
+                const Triangle& triangle = meshes[t].triangles[tri];
+                region[t][tri] = id;
+                ConnectedRegion& r = regions[static_cast<std::size_t>(id)];
+                r.triangles.push_back(tri);
+                r.area += triangleArea(N, triangle);
+                inserted[top].emplace_back(reversed(triangle), id);
+            }
+            first = last;
         }
-        for (std::size_t k : inQ) {
-            removed[q][k] = 1;
-            lens.push_back(meshes[q].triangles[k]);
+    }
+    // Regions that kept triangles (a loop's surface may lie wholly inside a higher-ranked tow),
+    // renumbered in loop order.
+    std::vector<long> renumbered(regions.size(), -1);
+    for (std::size_t g = 0; g < regions.size(); ++g) {
+        ConnectedRegion& r = regions[g];
+        if (r.triangles.empty()) continue;
+        std::set<std::size_t> regionNodes;
+        for (std::size_t k : r.triangles) {
+            const Triangle& tri = meshes[r.primary].triangles[k];
+            regionNodes.insert(tri.begin(), tri.end());
         }
         r.nodes.assign(regionNodes.begin(), regionNodes.end());
-        // The removed patch (the secondary's surface inside the primary) and the primary's
-        // patch (its surface inside the secondary) share the loop: together they bound the
-        // overlap of the two tows, facing out of it, and its volume is what the secondary loses.
-        r.volumeRemoved = std::abs(detail::signedVolume(N, lens));
-        result.tows[p].primaryAnywhere = true;
-        result.tows[q].secondaryAnywhere = true;
+        // Both tows' surfaces inside the loop bound the two tows' overlap there, facing out of
+        // it: its volume.
+        r.volumeRemoved = std::abs(detail::signedVolume(N, lens[g]));
+        result.tows[r.primary].primaryAnywhere = true;
+        result.tows[r.secondary].secondaryAnywhere = true;
+        renumbered[g] = static_cast<long>(result.mesh.regions.size());
         result.mesh.regions.push_back(std::move(r));
     }
+    for (auto& ids : region)
+        for (long& id : ids)
+            if (id >= 0) id = renumbered[static_cast<std::size_t>(id)];
+    for (auto& list : inserted)
+        for (auto& entry : list) entry.second = renumbered[static_cast<std::size_t>(entry.second)];
     result.mesh.tows.resize(tows.size());
     for (std::size_t t = 0; t < tows.size(); ++t) {
         TowMesh& m = result.mesh.tows[t];
@@ -507,6 +585,18 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
         for (ConnectedRegion& g : result.mesh.regions) {
             for (std::size_t& n : g.nodes) use(n);
             for (std::size_t& n : g.loopNodes) use(n);
+        }
+        // Triple points whose three pairs were resolved: a node of all three tows' meshes.
+        for (TriplePoint p : triples.points) {
+            if (renumber[p.node] == SIZE_MAX) continue;
+            const auto uses = [&](std::size_t t) {
+                for (const Triangle& tri : result.mesh.tows[t].triangles)
+                    if (std::find(tri.begin(), tri.end(), renumber[p.node]) != tri.end()) return true;
+                return false;
+            };
+            if (!uses(p.tows[0]) || !uses(p.tows[1]) || !uses(p.tows[2])) continue;
+            p.node = renumber[p.node];
+            result.mesh.triplePoints.push_back(p);
         }
         result.mesh.nodes = std::move(kept);
     }

@@ -122,6 +122,17 @@ double intersectionVolume(const TriangleMesh& a, const TriangleMesh& b)
     return PMP::volume(out);
 }
 
+double differenceVolume(const TriangleMesh& a, const std::vector<TriangleMesh>& minus)
+{
+    Mesh rest = closedCgal(a, "first mesh");
+    for (const TriangleMesh& m : minus) {
+        Mesh cut = closedCgal(m, "subtracted mesh"), out;
+        if (!PMP::corefine_and_compute_difference(rest, cut, out)) throw std::runtime_error("corefine_and_compute_difference failed");
+        rest = std::move(out);
+    }
+    return PMP::volume(rest);
+}
+
 std::size_t crossingPairsBetweenTows(const TextileMesh& mesh)
 {
     std::size_t crossing = 0;

@@ -56,4 +56,10 @@ double closedMeshVolume(const TriangleMesh& m);
 /// @throws std::runtime_error if an input does not bound a volume or the corefinement fails.
 double intersectionVolume(const TriangleMesh& a, const TriangleMesh& b);
 
+/// The volume of @p a minus every mesh of @p minus (closed triangle meshes):
+/// CGAL::Polygon_mesh_processing::corefine_and_compute_difference one after the other, then
+/// PMP::volume. Inputs are oriented to bound a volume first.
+/// @throws std::runtime_error if an input does not bound a volume or a corefinement fails.
+double differenceVolume(const TriangleMesh& a, const std::vector<TriangleMesh>& minus);
+
 }  // namespace towgeom::testing
