@@ -140,14 +140,17 @@ std::size_t checkResolved(const ResolveResult& res, std::size_t expectedRegions)
     }
     WARN("shared triangles: " << sharedTotal << " in " << mesh.regions.size() << " regions");
 
-    // c. Two boundary loops per tow, also counted without TextileMesh.
+    // c. Every tow closed by its two caps: no boundary, also counted without TextileMesh.
     for (std::size_t t = 0; t < n; ++t) {
         INFO("tow " << mesh.tows[t].name);
         const testing::Boundary b = testing::boundaryOf(mesh.tows[t].triangles);
-        CHECK(mesh.boundaryLoopCount(t) == 2);
-        CHECK(res.tows[t].boundaryLoops == 2);
-        CHECK(b.loops == 2);
-        CHECK(b.edges > 0);
+        CHECK(mesh.boundaryLoopCount(t) == 0);
+        CHECK(res.tows[t].boundaryLoops == 0);
+        CHECK(b.loops == 0);
+        CHECK(b.edges == 0);
+        REQUIRE(mesh.tows[t].face.size() == mesh.tows[t].triangles.size());
+        CHECK(std::count(mesh.tows[t].face.begin(), mesh.tows[t].face.end(), TowFace::Start) > 0);
+        CHECK(std::count(mesh.tows[t].face.begin(), mesh.tows[t].face.end(), TowFace::End) > 0);
         CHECK(b.nodesNotTwo == 0);
         CHECK(b.nonManifoldEdges == 0);
         CHECK(b.misorientedEdges == 0);

@@ -110,14 +110,14 @@ std::vector<std::array<std::size_t, 3>> vtkTriangles(const fs::path& path)
     return triangles;
 }
 
-/// Each named tow's VTK mesh is a tube open at both ends, counted from its triangles' edges.
-void checkTubes(const fs::path& dir, const std::vector<std::string>& names)
+/// Each named tow's VTK mesh is a closed surface (tube and caps), counted from its triangles' edges.
+void checkClosed(const fs::path& dir, const std::vector<std::string>& names)
 {
     for (const std::string& name : names) {
         INFO("tow " << name);
         const testing::Boundary b = testing::boundaryOf(vtkTriangles(dir / (name + ".vtk")));
-        CHECK(b.loops == 2);
-        CHECK(b.edges > 0);
+        CHECK(b.loops == 0);
+        CHECK(b.edges == 0);
         CHECK(b.nodesNotTwo == 0);
         CHECK(b.nonManifoldEdges == 0);
         CHECK(b.misorientedEdges == 0);
@@ -145,8 +145,8 @@ TEST_CASE("towgeom resolve writes compatible meshes, a consistent report and mod
     const std::string report = testing::slurp(out / "report.json");
     CHECK(count(report, "\"role\":\"primary\"") == 2);
     CHECK(count(report, "\"role\":\"secondary\"") == 2);
-    CHECK(count(report, "\"boundary_loops\":2") == 4);
-    checkTubes(out, {"warp_0", "warp_1", "weft_0", "weft_1"});  // counted by the test from the VTK files
+    CHECK(count(report, "\"boundary_loops\":0") == 4);
+    checkClosed(out, {"warp_0", "warp_1", "weft_0", "weft_1"});  // counted by the test from the VTK files
     CHECK(count(report, "\"volume_removed\":") == 4);
     // Observed: 0.99997 of the triangles >= 20 deg, the smallest 17.6 deg, 2 rounds, nothing
     // over the bounds (was >= 0.99 and >= 10 deg).
@@ -170,6 +170,8 @@ TEST_CASE("towgeom resolve writes compatible meshes, a consistent report and mod
     for (std::size_t k = 0; k < 4; ++k) triangles += static_cast<std::size_t>(jsonNumber(report, "triangles", k));
     CHECK(inpEntries(inp, "*ELEMENT") == triangles);
     CHECK(count(inp, "*ELEMENT, TYPE=S3, ELSET=TOW_") == 4);
+    CHECK(count(inp, "*ELSET, ELSET=CAPS_") == 4);  // each tow's two end caps
+    CHECK(count(testing::slurp(out / "textile.msh"), "\"CAPS_") == 4);
     for (std::size_t k = 0; k < 4; ++k) {
         // Region k+1: both tows' copies of the region's triangles, and its nodes.
         const std::string region = "REGION_" + std::to_string(k + 1);
@@ -187,6 +189,28 @@ TEST_CASE("towgeom resolve writes compatible meshes, a consistent report and mod
     CHECK(g.out.find("Warning") == std::string::npos);
     CHECK(g.out.find("Info    : " + std::to_string(static_cast<std::size_t>(jsonNumber(report, "node_count"))) + " nodes") !=
           std::string::npos);
+    fs::remove_all(out);
+}
+
+TEST_CASE("towgeom resolve closes every tow by its end caps, --no-caps leaves tubes", "[cli][resolve][caps]")
+{
+    const fs::path out = scratch("caps");
+    for (const bool caps : {true, false}) {
+        INFO((caps ? "caps" : "--no-caps"));
+        fs::remove_all(out);
+        const Run r = cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + out.string() + "' --quiet" + (caps ? "" : " --no-caps"));
+        REQUIRE(r.status == 0);
+        const std::string report = testing::slurp(out / "report.json");
+        CHECK(count(report, caps ? "\"boundary_loops\":0" : "\"boundary_loops\":2") == 2);
+        for (const char* name : {"warp_0", "weft_0"}) {
+            const testing::Boundary b = testing::boundaryOf(vtkTriangles(out / (std::string(name) + ".vtk")));
+            CHECK(b.loops == (caps ? 0u : 2u));
+            CHECK(b.nonManifoldEdges == 0);
+            CHECK(b.misorientedEdges == 0);
+            const std::string vtk = testing::slurp(out / (std::string(name) + ".vtk"));
+            CHECK(vtk.find("SCALARS face int 1") != std::string::npos);
+        }
+    }
     fs::remove_all(out);
 }
 
@@ -219,8 +243,8 @@ TEST_CASE("towgeom resolve skips and names an open curve (exit 3), refuses bad u
     CHECK(r.err.find("'short' and 'crossing'") != std::string::npos);
     const std::string report = testing::slurp(dir / "out" / "report.json");
     CHECK(report.find("\"skipped\":[{\"tow_a\":\"short\",\"tow_b\":\"crossing\",\"reason\":\"open curve:") != std::string::npos);
-    CHECK(count(report, "\"boundary_loops\":2") == 2);
-    checkTubes(dir / "out", {"short", "crossing"});
+    CHECK(count(report, "\"boundary_loops\":0") == 2);
+    checkClosed(dir / "out", {"short", "crossing"});
     const Run allowed = cli("resolve" + files + " --out '" + (dir / "out2").string() + "' --quiet --allow-open");
     CHECK(allowed.status == 0);
     CHECK(allowed.err == r.err);  // still named: a warning, not progress
@@ -326,7 +350,7 @@ TEST_CASE("towgeom resolve: nested, identical and through-going tows are unresol
                 CHECK(report.find("\"unresolved\":[{\"tow_a\":\"" + c.a + "\",\"tow_b\":\"" + c.b + "\",\"reason\":\"" + c.reason +
                                   "\",\"message\":\"" + c.message + "\"}]") != std::string::npos);
                 CHECK(report.find("\"regions\":[]") != std::string::npos);
-                CHECK(count(report, "\"boundary_loops\":2") == 2);
+                CHECK(count(report, "\"boundary_loops\":0") == 2);
                 std::set<std::string> written;
                 for (const auto& entry : testing::snapshot(out)) written.insert(entry.first);
                 CHECK(written == std::set<std::string>{c.a + ".stl", c.a + ".vtk", c.b + ".stl", c.b + ".vtk", "report.json"});
@@ -362,7 +386,10 @@ TEST_CASE("towgeom resolve refuses a mesh over --max-triangles at once, with the
     // ended in std::bad_alloc after 30 s, exit 1).
     const std::vector<std::string> names{"warp_0", "warp_1", "warp_2", "warp_3", "weft_0", "weft_1", "weft_2", "weft_3"};
     double area = 0.0;
-    for (const std::string& n : names) area += TowSurface::fit(readStackFile(std::string(TOWGEOM_EXAMPLE_DATA) + "/twill/" + n + ".stw")).area();
+    for (const std::string& n : names) {
+        const TowSurface t = TowSurface::fit(readStackFile(std::string(TOWGEOM_EXAMPLE_DATA) + "/twill/" + n + ".stw"));
+        area += t.area() + t.sectionArea(t.parameterRange().uMin) + t.sectionArea(t.parameterRange().uMax);  // tube and caps
+    }
     const double expected = 3.0 * area / (std::sqrt(3.0) / 4.0 * 1e-10);
     const fs::path out = scratch("budget");
     const auto t0 = std::chrono::steady_clock::now();
@@ -380,19 +407,19 @@ TEST_CASE("towgeom resolve refuses a mesh over --max-triangles at once, with the
     CHECK(r.err.find("[too_large]\n") != std::string::npos);
     CHECK_FALSE(fs::exists(out));
 
-    // A small case either side of its estimate: the straight tube at h = 0.1, 3 x 12.566 /
-    // (sqrt(3)/4 0.01) = 8706 triangles.
+    // A small case either side of its estimate: the straight tube (r = 0.5, L = 4, 24-gons) at
+    // h = 0.1: 3 x (12.53 + 2 x 0.776) / (sqrt(3)/4 0.01) = 9757 triangles, tube and caps.
     const std::string tube = " '" + std::string(TOWGEOM_EXAMPLE_DATA) + "/straight_tube.stw' --mesh-size 0.1 --quiet --out '" + out.string() + "'";
-    const Run low = cli("resolve" + tube + " --max-triangles 8000");
+    const Run low = cli("resolve" + tube + " --max-triangles 9000");
     CHECK(low.status == 2);
-    CHECK(low.err.find("over the limit of 8000 (MeshOptions::maxTriangles)") != std::string::npos);
+    CHECK(low.err.find("over the limit of 9000 (MeshOptions::maxTriangles)") != std::string::npos);
     CHECK_FALSE(fs::exists(out));
-    const Run raised = cli("resolve" + tube + " --max-triangles 9000");
+    const Run raised = cli("resolve" + tube + " --max-triangles 10500");
     INFO(raised.err);
     REQUIRE(raised.status == 0);
     const double triangles = jsonNumber(testing::slurp(out / "report.json"), "triangles");
-    CHECK(triangles <= 9000);
-    CHECK(triangles >= 0.9 * 8706);
+    CHECK(triangles <= 10500);
+    CHECK(triangles >= 0.9 * 9757);
     for (const char* bad : {"0", "1.5", "-3", "many"}) {
         DYNAMIC_SECTION("--max-triangles " << bad)
         {

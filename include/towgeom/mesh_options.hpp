@@ -25,10 +25,14 @@ struct MeshOptions {
     double loopSpacing = 0.0;
     /// The most triangles the meshes may have, all tows together (about 250 bytes of memory
     /// each while meshing). resolveTextile() estimates the count before meshing (about 3 x the
-    /// tows' area / (sqrt(3)/4 h^2), the mesher keeping every edge below h, plus about 20 x the
+    /// tows' area (end caps included) / (sqrt(3)/4 h^2), the mesher keeping every edge below h, plus about 20 x the
     /// loops' length x (1/loopSpacing - 1/h) for a loop spacing below h) and refuses a mesh over
     /// this with ErrorCode::TooLarge. Default 20 million (about 5 GB); must be at least 1.
     std::size_t maxTriangles = 20000000;
+    /// Close every tow by its two end caps (default): the planar polygon of each end, meshed in
+    /// its plane with the tube's end nodes (TowFace::Start, TowFace::End), so every tow's mesh
+    /// is a closed surface. False: tubes open at their two ends.
+    bool caps = true;
 };
 
 }  // namespace towgeom

@@ -36,10 +36,10 @@ struct ResolveOptions {
 struct TowResolution {
     bool primaryAnywhere = false;  ///< primary in at least one resolved pair
     bool secondaryAnywhere = false;  ///< secondary in at least one resolved pair
-    double volumeBefore = 0.0;     ///< volume of its own mesh, ends closed by fans
+    double volumeBefore = 0.0;     ///< volume of its own mesh with its caps (ends closed by fans without caps)
     double volumeAfter = 0.0;      ///< the same after the regions were swapped in
     double area = 0.0;             ///< surface area of the final mesh
-    std::size_t boundaryLoops = 0;  ///< 2 for a tube open at both ends
+    std::size_t boundaryLoops = 0;  ///< 0 for a tow closed by its caps, 2 for a tube open at both ends
     /// The mesh size h this tow was meshed at: MeshOptions::relativeEdgeLength x its own size,
     /// or MeshOptions::edgeLength, at most a quarter of its circumference.
     double meshSize = 0.0;

@@ -13,6 +13,13 @@
 
 namespace towgeom {
 
+/// Which part of a tow's closed surface a triangle lies on.
+enum class TowFace : unsigned char {
+    Side,   ///< the tube (the fitted surface, or a region taken from another tow)
+    Start,  ///< the cap closing the tow's first section
+    End     ///< the cap closing its last section
+};
+
 /// One tow's surface mesh: triangles over the global nodes, counter-clockwise seen from outside
 /// the tow (normals point out of the tow, also on a shared region, where they point out of the
 /// tow the triangles belong to).
@@ -21,6 +28,8 @@ struct TowMesh {
     std::vector<std::array<std::size_t, 3>> triangles;  ///< global node indices
     /// For each triangle: the index of the connected region it belongs to, or -1.
     std::vector<long> region;
+    /// For each triangle: the tube or one of the two end caps (MeshOptions::caps).
+    std::vector<TowFace> face;
 };
 
 /// Where two tows overlapped, the surface between them: the primary's (the higher-ranked tow's)
@@ -64,11 +73,11 @@ struct TextileMesh {
     TriangleMesh towSurface(std::size_t tow) const;
     /// The global node of each vertex of towSurface(@p tow).
     std::vector<std::size_t> towNodes(std::size_t tow) const;
-    /// The same, with the two open ends closed by a fan from the centroid of each end loop (for
-    /// volumes); meaningful only for a tube with exactly two boundary loops.
+    /// The same, with any open end closed by a fan from the centroid of its boundary loop (for
+    /// volumes of tubes meshed without caps); a closed mesh as it is.
     TriangleMesh closedTowSurface(std::size_t tow) const;
     /// The number of boundary loops (closed chains of edges used by one triangle only) of tow
-    /// @p tow's mesh: 2 for a tube open at both ends.
+    /// @p tow's mesh: 0 for a tow closed by its caps, 2 for a tube open at both ends.
     std::size_t boundaryLoopCount(std::size_t tow) const;
 };
 

@@ -35,10 +35,12 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
 
   DIR/NAME.stl     binary STL of each tow's final surface mesh
   DIR/NAME.vtk     legacy VTK polydata (ParaView): cell data tow_id, region_id (-1 outside
-                   regions), point data node_id (the global node number)
-  DIR/textile.msh  with --formats msh: Gmsh 4.1, physical groups TOW_NAME and REGION_k
+                   regions), face (0 tube, 1 start cap, 2 end cap), point data node_id (the
+                   global node number)
+  DIR/textile.msh  with --formats msh: Gmsh 4.1, physical groups TOW_NAME, REGION_k and
+                   CAPS_NAME (a tow's two end caps)
   DIR/textile.inp  with --formats inp: Abaqus, *NODE, *ELEMENT TYPE=S3 with ELSET=TOW_NAME,
-                   *ELSET/*NSET REGION_k
+                   *ELSET/*NSET REGION_k, *ELSET CAPS_NAME
   DIR/report.json  {"tows":[{"name","role","volume_before","volume_after","area","triangles",
                    "boundary_loops","mesh_size"}], "loops":[...as detect...], "findings":[...as detect...],
                    "unresolved":[{"tow_a","tow_b","reason","message"}], "regions":[{"primary",
@@ -83,7 +85,10 @@ Options:
   --tolerance T      intersection point tolerance (default: 1e-7 x the tow size)
   --max-triangles N  refuse (exit 2, before meshing) meshes estimated at more than N triangles,
                      all tows together (default 20000000, about 5 GB; the estimate: about 3 x
-                     the tows' area / (sqrt(3)/4 H^2), plus the refinement along loops)
+                     the tows' area (end caps included) / (sqrt(3)/4 H^2), plus the
+                     refinement along loops)
+  --no-caps          leave every tow a tube open at its two ends (default: each tow closed by
+                     its two end caps, planar meshes of its end sections: a closed surface)
   --allow-open       exit 0 even when an intersection curve is open (it is never resolved,
                      and still named on stderr); other unresolved pairs still exit 3
   --threads N        worker threads (default: all hardware threads)
@@ -136,7 +141,7 @@ int runResolve(int argc, char** argv, int first)
         const Args args(argc, argv, first,
                         {{"help"}, {"quiet"}, {"allow-open"}, {"out", true}, {"primary", true}, {"mesh-size", true},
                          {"min-angle", true}, {"loop-spacing", true}, {"formats", true}, {"tolerance", true},
-                         {"threads", true}, {"max-triangles", true}});
+                         {"threads", true}, {"max-triangles", true}, {"no-caps"}});
         if (args.has("help")) {
             std::cout << kResolveHelp;
             return kExitOk;
@@ -155,6 +160,7 @@ int runResolve(int argc, char** argv, int first)
         options.mesh.maxTriangles = args.maxTriangles(options.mesh.maxTriangles);
         options.intersection.tolerance = args.positive("tolerance");
         options.threads = args.threads();
+        options.mesh.caps = !args.has("no-caps");
         const std::set<std::string> formats = parseFormats(args.value("formats"));
         const bool quiet = args.has("quiet");
         if (!quiet) options.progress = [](const std::string& stage) { std::cerr << "towgeom resolve: " << stage << "\n"; };
@@ -253,10 +259,11 @@ int runResolve(int argc, char** argv, int first)
             if (stl[t] && !detail::writeStlBinary(*stl[t], surface))
                 throw Error(ErrorCode::WriteFailed, "CGAL could not write the STL", path(tows[t].name() + ".stl"));
             if (vtk[t]) {
-                std::vector<long> towId(surface.triangles.size(), static_cast<long>(t)), nodeId;
+                std::vector<long> towId(surface.triangles.size(), static_cast<long>(t)), nodeId, face;
                 for (std::size_t n : mesh.towNodes(t)) nodeId.push_back(static_cast<long>(n));
+                for (const TowFace f : mesh.tows[t].face) face.push_back(static_cast<long>(f));
                 detail::writeVtkPolyData(*vtk[t], surface, "towgeom resolved tow " + tows[t].name(),
-                                         {{"tow_id", towId}, {"region_id", mesh.tows[t].region}}, {{"node_id", nodeId}});
+                                         {{"tow_id", towId}, {"region_id", mesh.tows[t].region}, {"face", face}}, {{"node_id", nodeId}});
             }
         });
         if (formats.count("msh")) detail::writeGmshMsh41(files.open(path("textile.msh")), mesh);

@@ -27,14 +27,17 @@ std::string label(const std::string& prefix, const std::string& name)
     return s;
 }
 
+/// True when triangle @p k of @p m lies on one of its end caps.
+bool isCap(const TowMesh& m, std::size_t k) { return k < m.face.size() && m.face[k] != TowFace::Side; }
+
 }  // namespace
 
 void writeGmshMsh41(std::ostream& out, const TextileMesh& mesh)
 {
     out << std::setprecision(std::numeric_limits<double>::max_digits10);
-    // Surface entities: each tow's triangles outside regions, then each region's triangles once
-    // (the primary's copy), in both tows' physical groups. Physical groups: tows 1..T, regions
-    // T+1..T+R. Gmsh reads a triangle given twice as a duplicate element, so the secondary's
+    // Surface entities: each tow's tube triangles outside regions, then each region's triangles
+    // once (the primary's copy), in both tows' physical groups, then each tow's end caps.
+    // Physical groups: tows 1..T, regions T+1..T+R, then CAPS_NAME per tow with caps. Gmsh reads a triangle given twice as a duplicate element, so the secondary's
     // reversed copy is not repeated here (the .inp keeps both copies for tie constraints).
     struct Entity {
         std::vector<std::array<std::size_t, 3>> triangles;
@@ -46,7 +49,7 @@ void writeGmshMsh41(std::ostream& out, const TextileMesh& mesh)
         Entity e;
         e.physical = {t + 1};
         for (std::size_t k = 0; k < mesh.tows[t].triangles.size(); ++k)
-            if (mesh.tows[t].region[k] < 0) e.triangles.push_back(mesh.tows[t].triangles[k]);
+            if (mesh.tows[t].region[k] < 0 && !isCap(mesh.tows[t], k)) e.triangles.push_back(mesh.tows[t].triangles[k]);
         if (!e.triangles.empty()) entities.push_back(std::move(e));
     }
     for (std::size_t r = 0; r < mesh.regions.size(); ++r) {
@@ -56,10 +59,21 @@ void writeGmshMsh41(std::ostream& out, const TextileMesh& mesh)
         for (std::size_t k : g.triangles) e.triangles.push_back(mesh.tows[g.primary].triangles[k]);
         if (!e.triangles.empty()) entities.push_back(std::move(e));
     }
+    std::vector<std::pair<std::size_t, std::string>> capGroups;  // (group, name)
+    for (std::size_t t = 0; t < towCount; ++t) {
+        Entity e;
+        for (std::size_t k = 0; k < mesh.tows[t].triangles.size(); ++k)
+            if (isCap(mesh.tows[t], k)) e.triangles.push_back(mesh.tows[t].triangles[k]);
+        if (e.triangles.empty()) continue;
+        capGroups.emplace_back(towCount + mesh.regions.size() + capGroups.size() + 1, label("CAPS_", mesh.tows[t].name));
+        e.physical = {t + 1, capGroups.back().first};
+        entities.push_back(std::move(e));
+    }
     out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
-    out << "$PhysicalNames\n" << towCount + mesh.regions.size() << '\n';
+    out << "$PhysicalNames\n" << towCount + mesh.regions.size() + capGroups.size() << '\n';
     for (std::size_t t = 0; t < towCount; ++t) out << "2 " << t + 1 << " \"" << label("TOW_", mesh.tows[t].name) << "\"\n";
     for (std::size_t r = 0; r < mesh.regions.size(); ++r) out << "2 " << towCount + r + 1 << " \"REGION_" << r + 1 << "\"\n";
+    for (const auto& [group, name] : capGroups) out << "2 " << group << " \"" << name << "\"\n";
     out << "$EndPhysicalNames\n";
     // Each node is classified on the first entity that uses it.
     std::vector<std::size_t> owner(mesh.nodes.size(), 0);
@@ -119,19 +133,21 @@ void writeAbaqusInp(std::ostream& out, const TextileMesh& mesh)
     out << std::setprecision(std::numeric_limits<double>::max_digits10);
     out << "*HEADING\ntowgeom: compatible tow surface meshes (" << mesh.tows.size() << " tows, " << mesh.regions.size()
         << " connected regions)\n";
-    std::vector<std::vector<std::size_t>> regionElements(mesh.regions.size());
+    std::vector<std::vector<std::size_t>> regionElements(mesh.regions.size()), capElements(mesh.tows.size());
     {
         NumberWriter w(out);
         w.text("*NODE").end();
         for (std::size_t k = 0; k < mesh.nodes.size(); ++k)
             w.number(k + 1).text(", ").number(mesh.nodes[k].x).text(", ").number(mesh.nodes[k].y).text(", ").number(mesh.nodes[k].z).end();
         std::size_t id = 0;
-        for (const TowMesh& m : mesh.tows) {
+        for (std::size_t tow = 0; tow < mesh.tows.size(); ++tow) {
+            const TowMesh& m = mesh.tows[tow];
             w.text("*ELEMENT, TYPE=S3, ELSET=").text(label("TOW_", m.name).c_str()).end();
             for (std::size_t k = 0; k < m.triangles.size(); ++k) {
                 const auto& t = m.triangles[k];
                 w.number(++id).text(", ").number(t[0] + 1).text(", ").number(t[1] + 1).text(", ").number(t[2] + 1).end();
                 if (m.region[k] >= 0) regionElements[static_cast<std::size_t>(m.region[k])].push_back(id);
+                if (isCap(m, k)) capElements[tow].push_back(id);
             }
         }
     }
@@ -143,6 +159,11 @@ void writeAbaqusInp(std::ostream& out, const TextileMesh& mesh)
         list(regionElements[r], 0);
         out << "*NSET, NSET=REGION_" << r + 1 << '\n';
         list(mesh.regions[r].nodes, 1);
+    }
+    for (std::size_t t = 0; t < mesh.tows.size(); ++t) {
+        if (capElements[t].empty()) continue;
+        out << "*ELSET, ELSET=" << label("CAPS_", mesh.tows[t].name) << '\n';
+        list(capElements[t], 0);
     }
 }
 

@@ -48,10 +48,11 @@ public:
     }
 };
 
-/// Refines the faces of @p cdt in its domain (faces not separated from the infinite face by
-/// constraints) until @p criteria are met, except where that would split a constraint.
+/// Refines the faces of @p cdt in its domain until @p criteria are met, except where that would
+/// split a constraint. The domain is the convex hull when @p wholeHull, else the faces the
+/// caller marked (Delaunay_mesh_face_base_2::set_in_domain).
 template <class CDT, class Criteria>
-void refineKeepingConstraints(CDT& cdt, Criteria criteria)
+void refineKeepingConstraints(CDT& cdt, Criteria criteria, bool wholeHull = true)
 {
     using EdgesBase = KeepConstrainedEdges<CDT>;
     using EdgesLevel = CGAL::Mesh_2::Refine_edges<CDT, CGAL::Mesh_2::Is_locally_conforming_Gabriel<CDT>, EdgesBase>;
@@ -60,7 +61,7 @@ void refineKeepingConstraints(CDT& cdt, Criteria criteria)
     CGAL::Null_mesh_visitor nullVisitor;
     EdgesLevel edges(cdt, nullLevel);
     FacesLevel faces(cdt, criteria, edges);
-    CGAL::Delaunay_mesher_no_edge_refinement_2<CDT, Criteria>::mark_convex_hull(cdt);
+    if (wholeHull) CGAL::Delaunay_mesher_no_edge_refinement_2<CDT, Criteria>::mark_convex_hull(cdt);
     edges.scan_triangulation();
     faces.scan_triangulation();
     faces.refine(nullVisitor);

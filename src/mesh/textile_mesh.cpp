@@ -53,7 +53,10 @@ EdgeUse edgeUse(const std::vector<std::array<std::size_t, 3>>& triangles)
     return out;
 }
 
-/// The boundary edges chained into loops of nodes (each loop in edge order).
+}  // namespace
+
+namespace detail {
+
 std::vector<std::vector<std::size_t>> boundaryLoops(const std::vector<std::array<std::size_t, 3>>& triangles)
 {
     std::multimap<std::size_t, std::size_t> next;
@@ -76,6 +79,12 @@ std::vector<std::vector<std::size_t>> boundaryLoops(const std::vector<std::array
     }
     return loops;
 }
+
+}  // namespace detail
+
+namespace {
+
+using detail::boundaryLoops;
 
 /// The triangles over their own nodes, renumbered in order of first use; @p used gets the
 /// global node of each local one.

@@ -15,6 +15,7 @@
 
 #include "core/parallel.hpp"
 #include "intersect/textile_frame.hpp"
+#include "mesh/end_caps.hpp"
 #include "mesh/loop_nodes.hpp"
 #include "mesh/mesh_measures.hpp"
 #include "mesh/parametric_mesher.hpp"
@@ -246,6 +247,44 @@ void dropMeetingLoops(const std::vector<TowSurface>& tows, const std::vector<Int
                                     return dropped.count({loops[s.loop].towA(), loops[s.loop].towB()}) > 0;
                                 }),
                  shared.end());
+}
+
+/// Closes every tow of @p mesh (tubes open at their two ends) by its two end caps (meshCap(),
+/// at the tow's mesh size), tagged TowFace::Start or End by the nearer of the tow's first and
+/// last sections; the caps' nodes are appended to the mesh's.
+void closeEnds(const std::vector<TowSurface>& tows, const std::vector<double>& towH, double minAngle, std::size_t threads,
+               TextileMesh& mesh)
+{
+    constexpr std::size_t kLocal = std::size_t(1) << 60;  // marks a cap's own new nodes
+    std::vector<std::vector<std::pair<detail::CapMesh, TowFace>>> caps(tows.size());
+    detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
+        const auto centroid = [](const std::vector<Point3>& points) {
+            Point3 c;
+            for (const Point3& p : points) c = c + p;
+            return (1.0 / static_cast<double>(points.size())) * c;
+        };
+        const Point3 first = centroid(tows[t].sections().front()), last = centroid(tows[t].sections().back());
+        for (const std::vector<std::size_t>& loop : detail::boundaryLoops(mesh.tows[t].triangles)) {
+            std::vector<Point3> points;
+            for (std::size_t n : loop) points.push_back(mesh.nodes[n]);
+            const Point3 c = centroid(points);
+            const TowFace face = distance(c, first) <= distance(c, last) ? TowFace::Start : TowFace::End;
+            caps[t].emplace_back(detail::meshCap(mesh.nodes, loop, towH[t], minAngle, kLocal, "tow '" + tows[t].name() + "'"), face);
+        }
+    });
+    for (std::size_t t = 0; t < tows.size(); ++t)
+        for (auto& [cap, face] : caps[t]) {
+            const std::size_t base = mesh.nodes.size();
+            mesh.nodes.insert(mesh.nodes.end(), cap.newNodes.begin(), cap.newNodes.end());
+            TowMesh& m = mesh.tows[t];
+            for (Triangle tri : cap.triangles) {
+                for (std::size_t& n : tri)
+                    if (n >= kLocal) n = base + (n - kLocal);
+                m.triangles.push_back(tri);
+                m.region.push_back(-1);
+                m.face.push_back(face);
+            }
+        }
 }
 
 /// Stages 2 and 3 of resolveTextile() on tows already in a normalised frame, with options in the
@@ -533,27 +572,38 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
             m.triangles.push_back(tri);
             m.region.push_back(id);
         }
+        m.face.assign(m.triangles.size(), TowFace::Side);
     }
-    // Per-tow figures, in parallel. Every tow must still be a tube: a closed oriented surface
-    // but for its two ends; anything else is a defect, never written out.
-    std::vector<std::size_t> badEdges(tows.size(), 0);
+    // Every tow must still be a tube: a closed oriented surface but for its two ends; anything
+    // else is a defect, never written out.
+    std::vector<std::size_t> badEdges(tows.size(), 0), tubeEnds(tows.size(), 0);
     detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
-        TowResolution& r = result.tows[t];
-        r.volumeBefore = detail::closedVolume(N, meshes[t].triangles);
-        r.volumeAfter = detail::closedVolume(N, result.mesh.tows[t].triangles, &r.boundaryLoops);
         badEdges[t] = detail::nonManifoldEdges(result.mesh.tows[t].triangles);
-        for (const Triangle& tri : result.mesh.tows[t].triangles) r.area += triangleArea(N, tri);
+        tubeEnds[t] = detail::boundaryLoops(result.mesh.tows[t].triangles).size();
     });
     for (std::size_t t = 0; t < tows.size(); ++t)
-        if (badEdges[t] != 0 || result.tows[t].boundaryLoops != 2)
+        if (badEdges[t] != 0 || tubeEnds[t] != 2)
             failures.run(t, [&] {
                 throw Error(ErrorCode::Internal,
                             "the mesh is not a tube open at its two ends (" + std::to_string(badEdges[t]) +
-                                " edges not shared by exactly two triangles the opposite way round, " +
-                                std::to_string(result.tows[t].boundaryLoops) + " boundary loops)",
+                                " edges not shared by exactly two triangles the opposite way round, " + std::to_string(tubeEnds[t]) +
+                                " boundary loops)",
                             "tow '" + tows[t].name() + "'");
             });
     failures.throwAll();
+    if (options.mesh.caps) closeEnds(tows, towH, options.mesh.minAngle, threads, result.mesh);
+    // Per-tow figures, in parallel.
+    detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
+        TowResolution& r = result.tows[t];
+        // Before: the tow's own mesh with the same caps (the same sum for a tow that lost nothing).
+        std::vector<Triangle> own = meshes[t].triangles;
+        const TowMesh& m = result.mesh.tows[t];
+        for (std::size_t k = 0; k < m.triangles.size(); ++k)
+            if (m.face[k] != TowFace::Side) own.push_back(m.triangles[k]);
+        r.volumeBefore = detail::closedVolume(N, own);
+        r.volumeAfter = detail::closedVolume(N, result.mesh.tows[t].triangles, &r.boundaryLoops);
+        for (const Triangle& tri : result.mesh.tows[t].triangles) r.area += triangleArea(N, tri);
+    });
     // Quality over distinct triangles: a secondary's copies of a region's triangles are skipped.
     result.quality.histogram.assign(12, 0);
     result.quality.minAngle = 180.0;
@@ -652,13 +702,22 @@ ResolveResult resolveInFrame(const std::vector<TowSurface>& tows, const std::vec
     }
 }
 
-/// The lateral area of @p tow's input polygons joined by flat quads (two triangles each): within
-/// a few percent of the surface's area at a cost of M x N, for the size estimate (the exact
-/// area() integrates every knot span: 0.06 s for a tow of 400 x 64).
-double facetedArea(const TowSurface& tow)
+/// The area of a (planar) polygon: half the norm of Newell's normal.
+double polygonArea(const std::vector<Point3>& polygon)
+{
+    Vector3 n;
+    for (std::size_t k = 1; k + 1 < polygon.size(); ++k) n = n + cross(polygon[k] - polygon[0], polygon[k + 1] - polygon[0]);
+    return 0.5 * norm(n);
+}
+
+/// The lateral area of @p tow's input polygons joined by flat quads (two triangles each), plus
+/// its end polygons with @p caps: within a few percent of the surface's area at a cost of M x N,
+/// for the size estimate (the exact area() integrates every knot span: 0.06 s for a tow of
+/// 400 x 64).
+double facetedArea(const TowSurface& tow, bool caps)
 {
     const auto& s = tow.sections();
-    double area = 0.0;
+    double area = caps ? polygonArea(s.front()) + polygonArea(s.back()) : 0.0;
     for (std::size_t i = 0; i + 1 < s.size(); ++i)
         for (std::size_t j = 0; j < s[i].size(); ++j) {
             const std::size_t k = (j + 1) % s[i].size();
@@ -717,7 +776,7 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
     // averaged as the triangle count sees them (area-weighted in 1/h^2).
     double area = 0.0, perH2 = 0.0;
     for (std::size_t t = 0; t < tows.size(); ++t) {
-        const double a = facetedArea(tows[t]);
+        const double a = facetedArea(tows[t], options.mesh.caps);
         area += a;
         perH2 += a / (towH[t] * towH[t]);
     }

@@ -1,0 +1,101 @@
+#include "mesh/end_caps.hpp"
+
+#include <CGAL/Delaunay_mesh_size_criteria_2.h>
+#include <CGAL/Polygon_2_algorithms.h>
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+
+#include "mesh/constraint_keeping_mesher.hpp"
+#include "mesh/mesh_cdt.hpp"
+#include "towgeom/error.hpp"
+
+namespace towgeom::detail {
+
+using mesh2::CDT;
+using mesh2::K;
+
+namespace {
+
+/// Marks the faces inside the constraints as the domain: every face reachable from the
+/// infinite face without crossing a constraint is outside.
+void markInside(CDT& cdt)
+{
+    for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->set_in_domain(true);
+    std::queue<CDT::Face_handle> queue;
+    const CDT::Face_handle infinite = cdt.infinite_face();
+    infinite->set_in_domain(false);
+    queue.push(infinite);
+    // Every face around the infinite vertex is outside too (they are not separated from it).
+    CDT::Face_circulator fc = cdt.incident_faces(cdt.infinite_vertex()), done = fc;
+    do {
+        if (fc->is_in_domain()) {
+            fc->set_in_domain(false);
+            queue.push(fc);
+        }
+    } while (++fc != done);
+    while (!queue.empty()) {
+        const CDT::Face_handle f = queue.front();
+        queue.pop();
+        for (int k = 0; k < 3; ++k) {
+            const CDT::Face_handle n = f->neighbor(k);
+            if (!n->is_in_domain() || f->is_constrained(k)) continue;
+            n->set_in_domain(false);
+            queue.push(n);
+        }
+    }
+}
+
+}  // namespace
+
+CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>& loop, double h, double minAngle,
+                std::size_t firstNewNode, const std::string& where)
+{
+    // The plane: Newell's normal (along the loop's right-hand turn) through the centroid.
+    Point3 c;
+    Vector3 n;
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+        const Point3& p = nodes[loop[k]];
+        const Point3& q = nodes[loop[(k + 1) % loop.size()]];
+        c = c + p;
+        n = n + Vector3{(p.y - q.y) * (p.z + q.z), (p.z - q.z) * (p.x + q.x), (p.x - q.x) * (p.y + q.y)};
+    }
+    c = (1.0 / static_cast<double>(loop.size())) * c;
+    n = (1.0 / norm(n)) * n;
+    const Vector3 helper = std::abs(n.x) < 0.6 ? Vector3{1.0, 0.0, 0.0} : Vector3{0.0, 1.0, 0.0};
+    const Vector3 e1 = (1.0 / norm(cross(helper, n))) * cross(helper, n);
+    const Vector3 e2 = cross(n, e1);
+    std::vector<K::Point_2> polygon;
+    for (std::size_t node : loop) polygon.emplace_back(dot(nodes[node] - c, e1), dot(nodes[node] - c, e2));
+    if (loop.size() < 3 || !CGAL::is_simple_2(polygon.begin(), polygon.end(), K()))
+        throw Error(ErrorCode::SelfIntersectingSection, "the end of the tow's mesh is not a simple polygon in its plane: the cap cannot be meshed",
+                    where);
+
+    CDT cdt;
+    std::vector<CDT::Vertex_handle> vs;
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+        vs.push_back(cdt.insert(polygon[k]));
+        vs.back()->info().node = static_cast<long>(loop[k]);
+    }
+    for (std::size_t k = 0; k < vs.size(); ++k) cdt.insert_constraint(vs[k], vs[(k + 1) % vs.size()]);
+    if (cdt.number_of_vertices() != loop.size())
+        throw Error(ErrorCode::SelfIntersectingSection, "two nodes of the end of the tow's mesh coincide in its plane", where);
+    markInside(cdt);
+    const double a = std::clamp(minAngle, 1.0, 30.0) * 3.14159265358979323846 / 180.0;
+    refineKeepingConstraints(cdt, CGAL::Delaunay_mesh_size_criteria_2<CDT>(std::sin(a) * std::sin(a), h), false);
+
+    CapMesh out;
+    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+        if (v->info().node >= 0) continue;
+        v->info().own = firstNewNode + out.newNodes.size();
+        out.newNodes.push_back(c + v->point().x() * e1 + v->point().y() * e2);
+    }
+    const auto nodeOf = [](CDT::Vertex_handle v) { return v->info().node >= 0 ? static_cast<std::size_t>(v->info().node) : v->info().own; };
+    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+        if (f->is_in_domain())  // counter-clockwise in the plane, the loop's turn: reversed
+            out.triangles.push_back({nodeOf(f->vertex(0)), nodeOf(f->vertex(2)), nodeOf(f->vertex(1))});
+    return out;
+}
+
+}  // namespace towgeom::detail
