@@ -46,10 +46,12 @@ struct ConnectedRegion {
     std::vector<std::size_t> holes;
     std::vector<std::size_t> triangles;  ///< indices into the primary's TowMesh::triangles
     std::vector<std::size_t> nodes;      ///< global nodes of those triangles (sorted)
-    std::vector<std::size_t> loopNodes;  ///< global nodes on the loop, in loop order
+    /// Global nodes on the loop that bound the region's triangles, in loop order (where a
+    /// higher-ranked third tow covers part of the loop, its nodes there are left out).
+    std::vector<std::size_t> loopNodes;
     double area = 0.0;                   ///< area of the shared surface
-    /// The volume of the two tows' overlap inside the loop: what the secondary lost there (less
-    /// where a third tow ranked above it covers part of the overlap too).
+    /// The volume of the two tows' overlap inside the loop: what the secondary lost there when no
+    /// third tow overlaps them there (then the secondary's loss is volumeBefore - volumeAfter).
     double volumeRemoved = 0.0;
 };
 
@@ -65,7 +67,9 @@ struct TriplePoint {
 struct TextileMesh {
     std::vector<Point3> nodes;             ///< global node positions
     std::vector<TowMesh> tows;             ///< one per input tow, in input order
-    std::vector<ConnectedRegion> regions;  ///< one per resolved loop that is not a hole of another
+    /// One per resolved loop that is not a hole of another and keeps triangles (a loop whose
+    /// surface lies wholly inside a third, higher-ranked tow has none).
+    std::vector<ConnectedRegion> regions;
     std::vector<TriplePoint> triplePoints;  ///< where three tows' resolved loops cross
 
     /// Tow @p tow's mesh as a standalone TriangleMesh (only the nodes it uses, renumbered in

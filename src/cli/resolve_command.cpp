@@ -57,12 +57,13 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                   (a loop goes around a tow: one passes through the other), nested (one tow
                   inside the other), identical_or_touching (surfaces coincide or touch, no curve),
                   loops_meet (a loop of the pair crosses another pair's loop on a tow where no
-                  triple point joins them, e.g. the third pair's loop is open or goes around a
-                  tow; the later pair is left out), mesh_failed (a tow could not be
+                  triple point joins them, e.g. the third pair's loop is open, goes around a
+                  tow, or the point lies at a seam; or meets it while the third pair has no
+                  resolved loop there; the later pair is left out), mesh_failed (a tow could not be
                   meshed with the pair's loops: its pairs are left out, the rest resolved)
   skipped         every loop not resolved (open or around a tow), with the reason as a sentence
   volume_removed  the volume of the two tows' overlap inside the region's loop: what the
-                  secondary lost there (less where a third tow ranked above it covers part)
+                  secondary lost there when no third tow overlaps them there
   triple_points   points where three tows' surfaces meet (node: the global node number)
   angle_histogram triangles per 5-degree bin of their smallest 3D angle (0-5, 5-10, ...)
   faces_over_bounds triangles left longer than H or below the angle bound because fixing them

@@ -215,11 +215,20 @@ void dropMeetingLoops(const std::vector<TowSurface>& tows, const std::vector<Int
                  "the loops do not meet in a point of the three tows' surfaces there (the third pair has no resolved loop "
                  "through it, or the point was not found)");
     }
+    const auto sideOn = [&](std::size_t k, std::size_t tow) { return loops[shared[k].loop].towA() == tow ? LoopSide::A : LoopSide::B; };
+    const auto meetOn = [&](std::size_t a, std::size_t b, std::size_t tow) {
+        return detail::loopsMeet(detail::loopPolygon(shared[a], sideOn(a, tow)), detail::loopPolygon(shared[b], sideOn(b, tow)),
+                                 tows[tow].parameterRange().vPeriod());
+    };
+    // A resolved loop of the third pair (s1, s2) there: one that meets loop @p i of (t, s1) on s1
+    // or loop @p j of (t, s2) on s2.
+    const auto thirdThere = [&](TowPair third, std::size_t i, std::size_t s1, std::size_t j, std::size_t s2) {
+        for (std::size_t m = 0; m < shared.size(); ++m)
+            if (pairOf(m) == third && (meetOn(m, i, s1) || meetOn(m, j, s2))) return true;
+        return false;
+    };
     for (bool changed = true; changed;) {
         changed = false;
-        std::set<TowPair> resolved;
-        for (std::size_t k = 0; k < shared.size(); ++k)
-            if (!dropped.count(pairOf(k))) resolved.insert(pairOf(k));
         for (std::size_t t = 0; t < tows.size(); ++t) {
             std::vector<std::pair<std::size_t, LoopSide>> on;  // the loops on tow t
             for (std::size_t k = 0; k < shared.size(); ++k) {
@@ -233,10 +242,8 @@ void dropMeetingLoops(const std::vector<TowSurface>& tows, const std::vector<Int
                     if (p == q || dropped.count(p) || dropped.count(q)) continue;
                     const std::size_t s1 = p.first == t ? p.second : p.first, s2 = q.first == t ? q.second : q.first;
                     const TowPair third = std::minmax(s1, s2);
-                    if (resolved.count(third)) continue;
-                    if (!detail::loopsMeet(detail::loopPolygon(shared[on[i].first], on[i].second),
-                                           detail::loopPolygon(shared[on[j].first], on[j].second), tows[t].parameterRange().vPeriod()))
-                        continue;
+                    if (dropped.count(third) == 0 && thirdThere(third, on[i].first, s1, on[j].first, s2)) continue;
+                    if (!meetOn(on[i].first, on[j].first, t)) continue;
                     drop(p, q, t, "meets", names(third) + " have no loop resolved there");
                     changed = true;
                 }
@@ -524,6 +531,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
                 removed[t][tri] = 1;
             } else {
                 const long id = regionOf[in[top].second];
+                if (id < 0) throw Error(ErrorCode::Internal, "a triangle inside an odd number of loops has no region", "tow '" + tows[t].name() + "'");
                 const Triangle& triangle = meshes[t].triangles[tri];
                 region[t][tri] = id;
                 ConnectedRegion& r = regions[static_cast<std::size_t>(id)];
@@ -546,6 +554,12 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
             regionNodes.insert(tri.begin(), tri.end());
         }
         r.nodes.assign(regionNodes.begin(), regionNodes.end());
+        // The loop's nodes around this region: where a higher-ranked tow covers part of the
+        // loop, its nodes there belong to no triangle of the region.
+        std::vector<std::size_t> around;
+        for (std::size_t n : r.loopNodes)
+            if (regionNodes.count(n)) around.push_back(n);
+        r.loopNodes = std::move(around);
         // Both tows' surfaces inside the loop bound the two tows' overlap there, facing out of
         // it: its volume.
         r.volumeRemoved = std::abs(detail::signedVolume(N, lens[g]));
@@ -560,11 +574,14 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
     for (auto& list : inserted)
         for (auto& entry : list) entry.second = renumbered[static_cast<std::size_t>(entry.second)];
     result.mesh.tows.resize(tows.size());
+    std::vector<std::vector<std::size_t>> placeOf(tows.size());  // mesher's triangle -> its place in the tow's mesh
     for (std::size_t t = 0; t < tows.size(); ++t) {
         TowMesh& m = result.mesh.tows[t];
         m.name = tows[t].name();
+        placeOf[t].assign(meshes[t].triangles.size(), SIZE_MAX);
         for (std::size_t k = 0; k < meshes[t].triangles.size(); ++k) {
             if (removed[t][k]) continue;
+            placeOf[t][k] = m.triangles.size();
             m.triangles.push_back(meshes[t].triangles[k]);
             m.region.push_back(region[t][k]);
         }
@@ -574,6 +591,9 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
         }
         m.face.assign(m.triangles.size(), TowFace::Side);
     }
+    // A region's triangles by their place in the primary's final mesh (it keeps them all).
+    for (ConnectedRegion& r : result.mesh.regions)
+        for (std::size_t& k : r.triangles) k = placeOf[r.primary][k];
     // Every tow must still be a tube: a closed oriented surface but for its two ends; anything
     // else is a defect, never written out.
     std::vector<std::size_t> badEdges(tows.size(), 0), tubeEnds(tows.size(), 0);
@@ -635,16 +655,20 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
         for (ConnectedRegion& g : result.mesh.regions) {
             for (std::size_t& n : g.nodes) use(n);
             for (std::size_t& n : g.loopNodes) use(n);
+            std::sort(g.nodes.begin(), g.nodes.end());  // sorted by the new numbers
         }
         // Triple points whose three pairs were resolved: a node of all three tows' meshes.
+        std::map<std::size_t, std::set<std::size_t>> towsAt;  // triple node -> the tows using it
+        for (const TriplePoint& p : triples.points)
+            if (renumber[p.node] != SIZE_MAX) towsAt[renumber[p.node]];
+        for (std::size_t t = 0; t < tows.size() && !towsAt.empty(); ++t)
+            for (const Triangle& tri : result.mesh.tows[t].triangles)
+                for (std::size_t n : tri)
+                    if (const auto it = towsAt.find(n); it != towsAt.end()) it->second.insert(t);
         for (TriplePoint p : triples.points) {
             if (renumber[p.node] == SIZE_MAX) continue;
-            const auto uses = [&](std::size_t t) {
-                for (const Triangle& tri : result.mesh.tows[t].triangles)
-                    if (std::find(tri.begin(), tri.end(), renumber[p.node]) != tri.end()) return true;
-                return false;
-            };
-            if (!uses(p.tows[0]) || !uses(p.tows[1]) || !uses(p.tows[2])) continue;
+            const std::set<std::size_t>& at = towsAt[renumber[p.node]];
+            if (!at.count(p.tows[0]) || !at.count(p.tows[1]) || !at.count(p.tows[2])) continue;
             p.node = renumber[p.node];
             result.mesh.triplePoints.push_back(p);
         }

@@ -14,9 +14,14 @@ namespace towgeom::detail {
 
 namespace {
 
-/// A triple point this close to a seam (in periods) is not made a node: a seam node has a vertex
-/// on each side of the seam in the mesher.
-constexpr double kSeamClearance = 1e-6;
+/// A triple point closer than this fraction of its chord to a node it cannot replace (a seam
+/// node, a node of several loops) or to a tow's seam is not made a node: the tiny edge would
+/// leave slivers (0.5 degrees at 1e-4 of a period from a seam, 4 degrees at 1e-3). Its loops
+/// are left crossing.
+constexpr double kClearance = 0.01;
+/// How far a triple point may lie from the chord it is put on, relative to the chord: the loop's
+/// own chords stay within kMaxChordBend (5 %) of the curve.
+constexpr double kOnChord = 0.1;
 /// A loop node closer to a new triple node than this fraction of its chord is removed.
 constexpr double kMergeFraction = 0.25;
 
@@ -83,7 +88,7 @@ public:
         for (std::size_t k = 0; k < ni.size(); ++k) ni[k] = k;
         for (std::size_t k = 0; k < nj.size(); ++k) nj[k] = pi.size() + k;
         const double tolerance = std::min(li.tolerance(), lj.tolerance());
-        const double same = 1e-8 * std::min({tows_[t].towSize(), tows_[s1].towSize(), tows_[s2].towSize()});
+        const double same = 100.0 * tolerance;  // Newton's points for one triple point agree to rounding
         for (const LoopCrossing& c : loopCrossings(exactPolygon(li, sideOf(li, t)), ni, exactPolygon(lj, sideOf(lj, t)), nj,
                                                    tows_[t].parameterRange().vPeriod())) {
             const LoopPoint& a0 = pi[c.chordA];
@@ -125,7 +130,7 @@ public:
                 for (std::size_t q = 0; q < shared_[m].points.size(); ++q) {
                     const auto [a, b] = chordEnds(lm, shared_[m], q);
                     const double d = segmentDistance(x.at.point, a.point, b.point);
-                    if (d < best && d <= 0.5 * distance(a.point, b.point) + 10.0 * x.tolerance) {
+                    if (d < best && d <= kOnChord * distance(a.point, b.point) + 10.0 * x.tolerance) {
                         best = d;
                         k = m;
                         chord = q;
@@ -134,7 +139,32 @@ public:
             }
             if (k == shared_.size()) return false;
             const IntersectionLoop& l = loop(k);
-            if (onSeam(l, LoopPoint{x.at.point, uvOn(l.towA()), uvOn(l.towB())}, kSeamClearance)) return false;
+            const auto [a, b] = chordEnds(l, shared_[k], chord);
+            const double length = distance(a.point, b.point);
+            // Along the chord, in the chord's period cell on both tows (as splitChord()), and clear
+            // of chord ends that must stay.
+            const Vector3 ab = b.point - a.point;
+            const double along = dot(x.at.point - a.point, ab) / dot(ab, ab);
+            if (!(along > -0.25 && along < 1.25)) return false;  // a near end is removed by insertNode()
+            const LoopPoint here{x.at.point, uvOn(l.towA()), uvOn(l.towB())};
+            for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+                const double period = periodOn(l, side);
+                const double vMin = (side == LoopSide::A ? l.surfaceA() : l.surfaceB()).parameterRange().vMin;
+                const double v0 = onSide(a, side).v, v1 = onSide(b, side).v;
+                const double cell = vMin + period * std::floor((0.5 * (v0 + v1) - vMin) / period);
+                double v = onSide(here, side).v;
+                v += period * std::round((0.5 * (v0 + v1) - v) / period);
+                if (v <= cell || v >= cell + period) return false;
+            }
+            for (const LoopPoint* end : {&a, &b}) {
+                const std::size_t n = end == &a ? shared_[k].nodes[chord] : shared_[k].nodes[(chord + 1) % shared_[k].nodes.size()];
+                if ((pinned_.count(n) || onSeam(l, *end, 1e-9)) && distance(end->point, x.at.point) < kClearance * length) return false;
+            }
+            // Clear of each of the three tows' seams.
+            for (const std::size_t tow : x.tows) {
+                const UV uv = uvOn(tow);
+                if (distance(tows_[tow].point(uv.u, tows_[tow].parameterRange().vMin), x.at.point) < kClearance * length) return false;
+            }
             where[p] = {k, chord};
         }
         const std::size_t node = nodes_.size();
