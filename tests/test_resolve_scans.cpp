@@ -443,6 +443,34 @@ TEST_CASE("pressed tows touching along a line are a contact finding, not a loop"
           "1 closed intersection curve(s) enclose no area (thinner than 1e-4 of the tow size): the surfaces touch along a line there");
 }
 
+TEST_CASE("a figure-8 comes back as two closed lobes at every sampling", "[resolve][scan][singular][sweep]")
+{
+    // The figure-8 of the next test with the y-tube sampled by 101 to 397 sections: OCCT's march
+    // passed its start at the singular point and went round again on 23 of 76 samplings (a lobe
+    // 2 to 12 times its length, or a runaway open "curve" 350 times as long).
+    const double R = 0.5, r = 0.4, d = 0.82;
+    const TowSurface x = TowSurface::fit(testing::tubeAlongX(R, 4.0, 0.0, 0.0, 0.0, sampling(81, 64), "x"));
+    std::size_t resolved = 0;
+    for (std::size_t n = 101; n <= 397; n += 8) {
+        INFO(n << " sections");
+        const std::vector<TowSurface> tows{
+            x, TowSurface::fit(testing::dentedTubeAlongY(r, d, R - (d - r), 0.15, sampling(n, 64), "y", std::numeric_limits<double>::infinity()))};
+        const IntersectionReport loops = intersectTows(tows);
+        REQUIRE(loops.loops.size() == 2);
+        for (const IntersectionLoop& l : loops.loops) {
+            CHECK(l.closed());
+            CHECK(l.length() == Approx(0.9057).epsilon(1e-3));  // one lobe, once
+        }
+        if ((n - 101) % 32 != 0) continue;
+        const ResolveResult res = resolveTextile(tows);
+        CHECK(res.unresolved.empty());
+        CHECK(res.mesh.regions.size() == 2);
+        CHECK(crossings(res, 0, 1) == 0);
+        ++resolved;
+    }
+    CHECK(resolved == 10);
+}
+
 TEST_CASE("surfaces tangent at a saddle inside the overlap: a figure-8 as two closed loops, resolved", "[resolve][scan][singular]")
 {
     // The y-tube's underside has a groove across it at y = 0 whose bottom just touches the x-tube's

@@ -103,6 +103,39 @@ bool stepPast(const SurfacePair& s, const PointOn2& end, const PointOn2& before,
     return true;
 }
 
+double segmentDistance(const Point3& p, const Point3& a, const Point3& b);
+double bridgeDistance(const std::vector<PointOn2>& pts, const TraceTolerances& tol);
+
+/// The first index from @p from on where @p chain comes back to its first point (within a few
+/// of its steps) running the same way as it left it and then retraces its start; chain.size() if
+/// it does not.
+std::size_t returnToStart(const std::vector<PointOn2>& chain, std::size_t from, double bridge)
+{
+    if (chain.size() < 4) return chain.size();
+    const Point3& p0 = chain.front().point;
+    // The chain's first steps, over a few bridge lengths.
+    std::size_t lead = 1;
+    for (double arc = 0.0; lead + 1 < chain.size() && arc < 3.0 * bridge; ++lead) arc += distance(chain[lead].point, chain[lead - 1].point);
+    const Vector3 t0 = chain[lead].point - p0;
+    for (std::size_t i = std::max<std::size_t>(from, lead + 1); i + 1 < chain.size(); ++i) {
+        if (distance(chain[i].point, p0) > bridge) continue;
+        if (distance(chain[i + 1].point, p0) < distance(chain[i].point, p0) && distance(chain[i + 1].point, p0) <= bridge) continue;
+        // The nearest point of a pass by the start: it must leave the way the chain did.
+        std::size_t j = i + 1;
+        for (double arc = 0.0; j + 1 < chain.size() && arc < 3.0 * bridge; ++j) arc += distance(chain[j].point, chain[j - 1].point);
+        if (dot(chain[j].point - chain[i].point, t0) <= 0.0) continue;
+        bool retraces = true;
+        for (std::size_t k = i + 1; k <= j && retraces; ++k) {
+            double nearest = 1e300;
+            for (std::size_t m = 0; m + 1 <= lead + 1 && m + 1 < chain.size(); ++m)
+                nearest = std::min(nearest, segmentDistance(chain[k].point, chain[m].point, chain[m + 1].point));
+            retraces = nearest <= bridge;
+        }
+        if (retraces) return i;
+    }
+    return chain.size();
+}
+
 struct Tracer {
     const SurfacePair& s;
     const SurfaceWalker& walker;
@@ -177,6 +210,13 @@ struct Tracer {
             const std::size_t before = chain.size();
             chain.insert(chain.end(), next.begin() + 1, next.end());
             if (chain.size() > 2 && distance(chain.back().point, chain.front().point) <= tol.closing) return true;
+            // A piece that runs on through the chain's first point (a walk restarted past a
+            // singular point, where the closure check at piece ends is skipped) closes it there.
+            if (const std::size_t at = returnToStart(chain, before > 0 ? before - 1 : 0, bridgeDistance(chain, tol));
+                at < chain.size()) {
+                chain.resize(at);
+                return true;
+            }
             if (chain.size() == before) break;
         }
         reason = "the curve does not close after many pieces";
@@ -363,7 +403,14 @@ TracedCurve traceCurve(const SurfacePair& surfaces, const SurfaceWalker& walker,
     if (chain.size() < 2) return curve;
     alignTo(chain, seed, tr.d);
     unwrap(chain, tr.d);
-    bool closed = distance(chain.back().point, chain.front().point) <= tolerances.closing && chain.size() > 2;
+    // OCCT's march may pass its start where the surfaces are tangent (a figure-8's singular
+    // point) and go round again: the curve closes at its first return.
+    bool closed = false;
+    if (const std::size_t at = returnToStart(chain, 1, bridgeDistance(chain, tolerances)); at < chain.size()) {
+        chain.resize(at);
+        closed = true;
+    }
+    closed = closed || (distance(chain.back().point, chain.front().point) <= tolerances.closing && chain.size() > 2);
     std::string reason;
     if (!closed) closed = tr.extend(chain, reason);
     if (!closed) {
