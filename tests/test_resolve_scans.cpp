@@ -443,6 +443,36 @@ TEST_CASE("pressed tows touching along a line are a contact finding, not a loop"
           "1 closed intersection curve(s) enclose no area (thinner than 1e-4 of the tow size): the surfaces touch along a line there");
 }
 
+TEST_CASE("pressed layers resolve at 6 mesh sizes from the largest accepted to a tenth of it", "[resolve][scan][pressed][sweep]")
+{
+    // A pressed 3D orthogonal weave, 3 x 3 tows in 2 layers with binders (17 tows, 44 loops):
+    // racetrack sections pressed 15 % into each other (shallow, wide contacts), binders a tenth
+    // of the warps' size.
+    WeaveOptions w;
+    w.kind = WeaveKind::Orthogonal;
+    w.warps = w.wefts = 3;
+    w.layers = 2;
+    w.shape = SectionShape::Racetrack;
+    w.overlap = 0.15;
+    w.width = 0.9;
+    w.sectionsPerYarn = 30;
+    w.pointsPerSection = 32;
+    const std::vector<TowSurface> tows = fit(generateWeave(w).stacks());
+    REQUIRE(tows.size() == 17);
+    for (const double h : {0.785, 0.4, 0.2, 0.15, 0.1, 0.0785}) {
+        INFO("relative mesh size " << h);
+        ResolveOptions o;
+        o.mesh.relativeEdgeLength = h;
+        const ResolveResult res = resolveTextile(tows, o);
+        CHECK(res.intersections.loops.size() == 44);
+        CHECK(res.unresolved.empty());
+        CHECK(res.skipped.empty());
+        CHECK(res.mesh.regions.size() == 44);
+        CHECK(testing::crossingPairsBetweenTows(res.mesh) == 0);
+        checkClosed(res);
+    }
+}
+
 TEST_CASE("a figure-8 comes back as two closed lobes at every sampling", "[resolve][scan][singular][sweep]")
 {
     // The figure-8 of the next test with the y-tube sampled by 101 to 397 sections: OCCT's march
