@@ -1,14 +1,16 @@
 // Resolve benchmark on a textile of the kind real scans give (issue 12): a pressed 3D orthogonal
-// weave, 8 x 8 tows in 3 warp layers, 4 weft layers and binders (63 tows), flat racetrack
-// sections of 0.9 x 0.2 overlapping by 15 % of their height, 30 sections x 32 points per tow as
-// a scan's hand-traced slices, so ~540 loops, many shallow and wide.
+// weave, 7 x 7 tows in 3 warp layers, 4 weft layers and binders (55 tows), flat racetrack
+// sections of 0.9 x 0.2 whose flat faces touch with no gap (--overlap 0), 30 sections x 32
+// points per tow as a scan's hand-traced slices: the fitted surfaces cross each other a little
+// over every contact, about 6 shallow, wide, partly nested loops per crossing, ~1600 loops.
+// (--tows 8 --overlap 0.15: 63 tows pressed 15 % into each other, ~540 loops, one per crossing.)
 //
 // Times `towgeom resolve` end to end (stage times from its report, peak memory of the process)
 // and `towgeom detect`, and in the same run CGAL's Polygon_mesh_processing::surface_intersection
 // on the faceted tubes of every tow pair whose boxes overlap (the discrete peer). Goals: resolve
 // <= 60 s and <= 2 GiB on 2 cores; detect >= 2x faster than CGAL. Exits 1 when one is missed
 // (bench_goal.hpp; --smoke: measured, not held).
-//   bench_resolve_scan [--tows N] [--layers L] [--sections M] [--points P] [--threads T] [--smoke]
+//   bench_resolve_scan [--tows N] [--layers L] [--overlap F] [--sections M] [--points P] [--threads T] [--smoke]
 #include <towgeom/towgeom.hpp>
 
 #include "bench_goal.hpp"
@@ -74,8 +76,11 @@ int main(int argc, char** argv)
     o.kind = towgeom::WeaveKind::Orthogonal;
     o.layers = static_cast<std::size_t>(args.number("--layers", 3));
     o.shape = towgeom::SectionShape::Racetrack;
-    o.overlap = 0.15;
+    o.overlap = args.number("--overlap", 0.0);
     o.width = 0.9;
+    bool towsGiven = false;
+    for (int k = 1; k < argc; ++k) towsGiven = towsGiven || std::string(argv[k]) == "--tows";
+    if (!towsGiven) o.warps = o.wefts = 7;
     if (!args.other.count("--sections") && o.sectionsPerYarn == 400) o.sectionsPerYarn = 30;
     if (!args.other.count("--points") && o.pointsPerSection == 64) o.pointsPerSection = 32;
     const std::size_t threads = static_cast<std::size_t>(args.number("--threads", 2));
@@ -93,8 +98,8 @@ int main(int argc, char** argv)
         files += " '" + f.string() + "'";
     }
     std::printf("towgeom bench_resolve_scan: pressed 3D orthogonal weave, %zu tows (%zu x %zu, %zu layers) of %zu sections x %zu "
-                "points, racetrack 0.9 x 0.2, overlap 0.15, %zu threads\n",
-                stacks.size(), o.warps, o.wefts, o.layers, o.sectionsPerYarn, o.pointsPerSection, threads);
+                "points, racetrack 0.9 x 0.2, overlap %g, %zu threads\n",
+                stacks.size(), o.warps, o.wefts, o.layers, o.sectionsPerYarn, o.pointsPerSection, o.overlap, threads);
 
     // 1. towgeom resolve, end to end, as a user runs it.
     const std::string resolve = std::string("'") + TOWGEOM_CLI + "' resolve" + files + " --out '" + (dir / "out").string() +
