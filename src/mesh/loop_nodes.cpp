@@ -144,6 +144,11 @@ SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, d
         std::sort(crossings.begin(), crossings.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
         constexpr double kSnap = 0.25;
         for (const auto& [t, c] : crossings) {
+            // Both tows' seams crossed at one point (a loop through where the seams meet): the
+            // node already put there serves both (constraintsOn() snaps it onto each seam).
+            if ((snapped[k] && distance(c.point, points[k].point) <= 10.0 * loop.tolerance()) ||
+                (snapped[(k + 1) % n] && distance(c.point, points[(k + 1) % n].point) <= 10.0 * loop.tolerance()))
+                continue;
             if (t < kSnap && !snapped[k]) {
                 points[k] = c;
                 snapped[k] = 1;

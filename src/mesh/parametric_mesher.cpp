@@ -157,7 +157,8 @@ struct ParametricMesher::Impl {
         if (v->info().node >= 0 && static_cast<std::size_t>(v->info().node) != node)
             throw Error(ErrorCode::Internal,
                         "two intersection-loop nodes (" + std::to_string(v->info().node) + ", " + std::to_string(node) +
-                            ") fall on the same point of the surface: intersection loops meet there (three tows "
+                            ") fall on the same point (u, v) = (" + std::to_string(toUV(p).u) + ", " + std::to_string(toUV(p).v) +
+                            ") of the surface: intersection loops meet there (three tows "
                             "interpenetrate at one point, or a loop touches itself), which resolve does not handle",
                         "tow '" + surface.name() + "'");
         v->info().node = static_cast<long>(node);

@@ -10,6 +10,7 @@
 #include <iterator>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -21,6 +22,7 @@
 #include "mesh/parametric_mesher.hpp"
 #include "region/connected_region.hpp"
 #include "region/triple_points.hpp"
+#include "region/winding_loops.hpp"
 #include "towgeom/error.hpp"
 
 namespace towgeom {
@@ -256,11 +258,11 @@ void dropMeetingLoops(const std::vector<TowSurface>& tows, const std::vector<Int
                  shared.end());
 }
 
-/// Closes every tow of @p mesh (tubes open at their two ends) by its two end caps (meshCap(),
-/// at the tow's mesh size), tagged TowFace::Start or End by the nearer of the tow's first and
-/// last sections; the caps' nodes are appended to the mesh's.
+/// Closes every tow's tube mesh (@p meshes, open at their two ends) by its two end caps
+/// (meshCap(), at the tow's mesh size); @p face gets each triangle's part (TowFace::Start or End
+/// by the nearer of the tow's first and last sections). The caps' nodes are appended to @p nodes.
 void closeEnds(const std::vector<TowSurface>& tows, const std::vector<double>& towH, double minAngle, std::size_t threads,
-               TextileMesh& mesh)
+               std::vector<detail::ParametricMesh>& meshes, std::vector<std::vector<TowFace>>& face, std::vector<Point3>& nodes)
 {
     constexpr std::size_t kLocal = std::size_t(1) << 60;  // marks a cap's own new nodes
     std::vector<std::vector<std::pair<detail::CapMesh, TowFace>>> caps(tows.size());
@@ -271,25 +273,25 @@ void closeEnds(const std::vector<TowSurface>& tows, const std::vector<double>& t
             return (1.0 / static_cast<double>(points.size())) * c;
         };
         const Point3 first = centroid(tows[t].sections().front()), last = centroid(tows[t].sections().back());
-        for (const std::vector<std::size_t>& loop : detail::boundaryLoops(mesh.tows[t].triangles)) {
+        const std::vector<std::vector<std::size_t>> ends = detail::boundaryLoops(meshes[t].triangles);
+        if (ends.size() != 2) return;  // not a tube: reported by the check of the final mesh
+        for (const std::vector<std::size_t>& loop : ends) {
             std::vector<Point3> points;
-            for (std::size_t n : loop) points.push_back(mesh.nodes[n]);
+            for (std::size_t n : loop) points.push_back(nodes[n]);
             const Point3 c = centroid(points);
-            const TowFace face = distance(c, first) <= distance(c, last) ? TowFace::Start : TowFace::End;
-            caps[t].emplace_back(detail::meshCap(mesh.nodes, loop, towH[t], minAngle, kLocal, "tow '" + tows[t].name() + "'"), face);
+            const TowFace f = distance(c, first) <= distance(c, last) ? TowFace::Start : TowFace::End;
+            caps[t].emplace_back(detail::meshCap(nodes, loop, towH[t], minAngle, kLocal, "tow '" + tows[t].name() + "'"), f);
         }
     });
     for (std::size_t t = 0; t < tows.size(); ++t)
-        for (auto& [cap, face] : caps[t]) {
-            const std::size_t base = mesh.nodes.size();
-            mesh.nodes.insert(mesh.nodes.end(), cap.newNodes.begin(), cap.newNodes.end());
-            TowMesh& m = mesh.tows[t];
+        for (auto& [cap, f] : caps[t]) {
+            const std::size_t base = nodes.size();
+            nodes.insert(nodes.end(), cap.newNodes.begin(), cap.newNodes.end());
             for (Triangle tri : cap.triangles) {
                 for (std::size_t& n : tri)
                     if (n >= kLocal) n = base + (n - kLocal);
-                m.triangles.push_back(tri);
-                m.region.push_back(-1);
-                m.face.push_back(face);
+                meshes[t].triangles.push_back(tri);
+                face[t].push_back(f);
             }
         }
 }
@@ -319,10 +321,12 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
         const IntersectionLoop& l = loops[i];
         if (!l.closed())
             result.skipped.emplace_back(i, "open curve: " + l.openReason());
-        else if (l.windsAround(LoopSide::A) || l.windsAround(LoopSide::B))
+        else if (l.windsAround(LoopSide::A) && l.windsAround(LoopSide::B))
+            result.skipped.emplace_back(i, "the loop goes around both tows '" + l.surfaceA().name() + "' and '" + l.surfaceB().name() + "'");
+        else if ((l.windsAround(LoopSide::A) || l.windsAround(LoopSide::B)) && !options.mesh.caps)
             result.skipped.emplace_back(i, "the loop goes around tow '" +
                                                (l.windsAround(LoopSide::A) ? l.surfaceA() : l.surfaceB()).name() +
-                                               "' (one tow passes through the other)");
+                                               "' (one tow passes through the other; resolved only with end caps)");
         else if (!excluded.count({l.towA(), l.towB()}))
             shared.push_back(detail::shareLoopNodes(l, i, spacingOf(l), nodes));
     }
@@ -339,6 +343,40 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
         }
     const detail::TripleJoin triples = detail::joinAtTriplePoints(tows, loops, shared, nodes);
     dropMeetingLoops(tows, loops, shared, triples.crossing, result.unresolved);
+    // Loops that wind around a tow (it passes through the other tow, or ends inside it) cut it
+    // into bands alternately inside and outside the other; a pair whose loops disagree on which
+    // side is inside is left out.
+    std::map<TowPair, detail::WindingBands> bands;  // (t, o) -> the bands of t
+    {
+        std::map<TowPair, std::vector<std::size_t>> winding;  // (t, o) -> the loops winding around t
+        for (const detail::SharedLoop& w : shared) {
+            const IntersectionLoop& l = loops[w.loop];
+            if (l.windsAround(LoopSide::A)) winding[{l.towA(), l.towB()}].push_back(w.loop);
+            if (l.windsAround(LoopSide::B)) winding[{l.towB(), l.towA()}].push_back(w.loop);
+        }
+        std::set<TowPair> disagree;
+        for (const auto& [to, list] : winding) {
+            std::optional<detail::WindingBands> b = detail::windingBands(tows, to.first, to.second, loops, list);
+            if (b)
+                bands.emplace(to, std::move(*b));
+            else
+                disagree.insert(std::minmax(to.first, to.second));
+        }
+        for (const TowPair& p : disagree) {
+            bands.erase(p);
+            bands.erase({p.second, p.first});
+        }
+        for (const detail::SharedLoop& w : shared) {
+            const IntersectionLoop& l = loops[w.loop];
+            if (disagree.count({l.towA(), l.towB()}))
+                result.skipped.emplace_back(w.loop, "the loops of tows '" + l.surfaceA().name() + "' and '" + l.surfaceB().name() +
+                                                        "' go around one of them, but do not cut it into bands alternately inside "
+                                                        "and outside the other");
+        }
+        shared.erase(std::remove_if(shared.begin(), shared.end(),
+                                    [&](const detail::SharedLoop& w) { return disagree.count({loops[w.loop].towA(), loops[w.loop].towB()}) > 0; }),
+                     shared.end());
+    }
     if (!tows.empty()) {
         const auto [lo, hi] = std::minmax_element(towH.begin(), towH.end());
         say("meshing " + std::to_string(tows.size()) + " tows at h = " + std::to_string(*lo) +
@@ -440,6 +478,11 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
                 if (n >= kLocal) n = base + (n - kLocal);
         result.quality.facesOverBounds += meshes[t].badFaces;
     }
+    // Every tow's own mesh is a tube (the mesher's rectangle closed across the seam); closed by
+    // its end caps before the regions are made, so that a cap inside another tow is shared too.
+    std::vector<std::vector<TowFace>> faceOf(tows.size());
+    for (std::size_t t = 0; t < tows.size(); ++t) faceOf[t].assign(meshes[t].triangles.size(), TowFace::Side);
+    if (options.mesh.caps) closeEnds(tows, towH, options.mesh.minAngle, threads, meshes, faceOf, nodes);
     result.timings.mesh = msSince(t0);
 
     // 3. Connected regions, by rank: every tow minus the tows ranked above it. A triangle of tow
@@ -462,8 +505,14 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
     for (std::size_t a = 0; a < shared.size(); ++a)
         for (std::size_t b = 0; b < shared.size(); ++b) {
             if (a == b || pairOf(a) != pairOf(b)) continue;
-            if (detail::insideLoop(detail::loopPolygon(shared[a], LoopSide::A), shared[b].points.front().onA,
-                                   period(pairOf(a).first))) {
+            // On a tow around which neither loop winds (a loop around a tow bounds no inside there).
+            const IntersectionLoop& la = loops[shared[a].loop];
+            const IntersectionLoop& lb = loops[shared[b].loop];
+            const bool onA = !la.windsAround(LoopSide::A) && !lb.windsAround(LoopSide::A);
+            if (!onA && (la.windsAround(LoopSide::B) || lb.windsAround(LoopSide::B))) continue;
+            const LoopSide side = onA ? LoopSide::A : LoopSide::B;
+            const UV first = onA ? shared[b].points.front().onA : shared[b].points.front().onB;
+            if (detail::insideLoop(detail::loopPolygon(shared[a], side), first, period(onA ? pairOf(a).first : pairOf(a).second))) {
                 ++depth[b];
                 inside[a].push_back(b);
             }
@@ -474,7 +523,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
         for (std::size_t k = 0; k < shared.size(); ++k)
             for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
                 const IntersectionLoop& l = loops[shared[k].loop];
-                if ((side == LoopSide::A ? l.towA() : l.towB()) != t) continue;
+                if ((side == LoopSide::A ? l.towA() : l.towB()) != t || l.windsAround(side)) continue;  // bands: below
                 for (std::size_t tri : detail::trianglesInside(meshes[t], detail::loopPolygon(shared[k], side), period(t)))
                     hits[t].emplace_back(tri, k);
             }
@@ -498,6 +547,28 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
         regions.push_back(std::move(r));
         lens.emplace_back();
     }
+    // The bands of each tow cut by loops winding around it: per tow, the other tow, its bands
+    // and their loops' node polygons on this tow, in band order.
+    struct TowBands {
+        std::size_t other = 0;
+        const detail::WindingBands* bands = nullptr;
+        std::vector<std::size_t> loops;               // shared indices, in band order
+        std::vector<std::vector<UV>> polygons;        // each loop's node polygon on the tow
+    };
+    std::vector<std::vector<TowBands>> bandsOn(tows.size());
+    {
+        std::map<std::size_t, std::size_t> sharedOfLoop;
+        for (std::size_t k = 0; k < shared.size(); ++k) sharedOfLoop[shared[k].loop] = k;
+        for (const auto& [to, b] : bands) {
+            TowBands tb{to.second, &b, {}, {}};
+            for (const std::size_t l : b.loops) {
+                const std::size_t k = sharedOfLoop.at(l);
+                tb.loops.push_back(k);
+                tb.polygons.push_back(detail::loopPolygon(shared[k], loops[l].towA() == to.first ? LoopSide::A : LoopSide::B));
+            }
+            bandsOn[to.first].push_back(std::move(tb));
+        }
+    }
     std::vector<std::vector<char>> removed(tows.size());
     std::vector<std::vector<long>> region(tows.size());
     std::vector<std::vector<std::pair<Triangle, long>>> inserted(tows.size());
@@ -505,28 +576,47 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
         removed[t].assign(meshes[t].triangles.size(), 0);
         region[t].assign(meshes[t].triangles.size(), -1);
         const auto& h = hits[t];
-        for (std::size_t first = 0; first < h.size();) {
-            const std::size_t tri = h[first].first;
-            std::size_t last = first;
-            while (last < h.size() && h[last].first == tri) ++last;
+        const double uMin = tows[t].parameterRange().uMin;
+        std::size_t next = 0;  // into hits, sorted by triangle
+        for (std::size_t tri = 0; tri < meshes[t].triangles.size(); ++tri) {
+            const std::size_t first = next;
+            while (next < h.size() && h[next].first == tri) ++next;
+            if (first == next && bandsOn[t].empty()) {  // inside no loop: skip ahead
+                tri = next < h.size() ? h[next].first - 1 : meshes[t].triangles.size();
+                continue;
+            }
             // The tows it lies inside, each with its pair's deepest loop around it.
             std::map<std::size_t, std::pair<std::size_t, std::size_t>> in;  // tow -> (loops around it, deepest)
-            for (std::size_t q = first; q < last; ++q) {
+            for (std::size_t q = first; q < next; ++q) {
                 const std::size_t k = h[q].second;
                 const auto [a, b] = pairOf(k);
                 auto& [count, deepest] = in.try_emplace(a == t ? b : a, 0, k).first->second;
                 ++count;
                 if (depth[k] > depth[deepest]) deepest = k;
             }
+            // Bands: inside the other tow when an odd number of its winding loops lie between the
+            // tow's start and the triangle, unless the start is inside; caps in the end bands.
+            for (const TowBands& b : bandsOn[t]) {
+                const std::size_t n = b.loops.size();
+                std::size_t passed = 0;
+                if (faceOf[t][tri] == TowFace::End)
+                    passed = n;
+                else if (faceOf[t][tri] == TowFace::Side)
+                    passed = detail::loopsBefore(b.polygons, meshes[t].centroids[tri], uMin, period(t));
+                if (b.bands->startInside == (passed % 2 == 1)) continue;  // outside o there
+                const std::size_t bounding = b.loops[passed > 0 ? std::min(passed, n) - 1 : 0];
+                auto [it, added] = in.try_emplace(b.other, 1, bounding);
+                if (!added) {
+                    ++it->second.first;
+                    if (it->second.first % 2 == 1 && regionOf[it->second.second] < 0) it->second.second = bounding;
+                }
+            }
             std::size_t top = tows.size();  // the highest-ranked tow it lies inside
             for (const auto& [o, c] : in)
                 if (c.first % 2 == 1 && (top == tows.size() || rank[o] < rank[top])) top = o;
             for (const auto& [o, c] : in)
                 if (c.first % 2 == 1 && regionOf[c.second] >= 0) lens[static_cast<std::size_t>(regionOf[c.second])].push_back(meshes[t].triangles[tri]);
-            if (top == tows.size()) {
-                first = last;
-                continue;
-            }
+            if (top == tows.size()) continue;
             if (rank[top] < rank[t]) {
                 removed[t][tri] = 1;
             } else {
@@ -539,8 +629,23 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
                 r.area += triangleArea(N, triangle);
                 inserted[top].emplace_back(reversed(triangle), id);
             }
-            first = last;
         }
+    }
+    // A tow through another (or ending inside it): its loops bound one overlap together, whose
+    // volume goes to the pair's first region that kept triangles.
+    for (const auto& [to, b] : bands) {
+        if (to.first > to.second && bands.count({to.second, to.first})) continue;  // once per pair
+        const TowPair pair = std::minmax(to.first, to.second);
+        std::vector<Triangle> all;
+        long keep = -1;
+        for (std::size_t k = 0; k < shared.size(); ++k) {
+            if (pairOf(k) != pair || regionOf[k] < 0) continue;
+            const std::size_t g = static_cast<std::size_t>(regionOf[k]);
+            all.insert(all.end(), lens[g].begin(), lens[g].end());
+            lens[g].clear();
+            if (keep < 0 && !regions[g].triangles.empty()) keep = regionOf[k];
+        }
+        if (keep >= 0) lens[static_cast<std::size_t>(keep)] = std::move(all);
     }
     // Regions that kept triangles (a loop's surface may lie wholly inside a higher-ranked tow),
     // renumbered in loop order.
@@ -584,46 +689,38 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
             placeOf[t][k] = m.triangles.size();
             m.triangles.push_back(meshes[t].triangles[k]);
             m.region.push_back(region[t][k]);
+            m.face.push_back(faceOf[t][k]);
         }
-        for (const auto& [tri, id] : inserted[t]) {
+        for (const auto& [tri, id] : inserted[t]) {  // another tow's surface (or cap): this tow's side
             m.triangles.push_back(tri);
             m.region.push_back(id);
+            m.face.push_back(TowFace::Side);
         }
-        m.face.assign(m.triangles.size(), TowFace::Side);
     }
     // A region's triangles by their place in the primary's final mesh (it keeps them all).
     for (ConnectedRegion& r : result.mesh.regions)
         for (std::size_t& k : r.triangles) k = placeOf[r.primary][k];
-    // Every tow must still be a tube: a closed oriented surface but for its two ends; anything
-    // else is a defect, never written out.
-    std::vector<std::size_t> badEdges(tows.size(), 0), tubeEnds(tows.size(), 0);
+    // Every tow must still be closed (a tube open at its two ends without caps), oriented and
+    // 2-manifold; anything else is a defect, never written out.
+    const std::size_t ends = options.mesh.caps ? 0 : 2;
+    std::vector<std::size_t> badEdges(tows.size(), 0);
     detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
+        TowResolution& r = result.tows[t];
+        r.volumeBefore = detail::closedVolume(N, meshes[t].triangles);
+        r.volumeAfter = detail::closedVolume(N, result.mesh.tows[t].triangles, &r.boundaryLoops);
         badEdges[t] = detail::nonManifoldEdges(result.mesh.tows[t].triangles);
-        tubeEnds[t] = detail::boundaryLoops(result.mesh.tows[t].triangles).size();
+        for (const Triangle& tri : result.mesh.tows[t].triangles) r.area += triangleArea(N, tri);
     });
     for (std::size_t t = 0; t < tows.size(); ++t)
-        if (badEdges[t] != 0 || tubeEnds[t] != 2)
+        if (badEdges[t] != 0 || result.tows[t].boundaryLoops != ends)
             failures.run(t, [&] {
                 throw Error(ErrorCode::Internal,
-                            "the mesh is not a tube open at its two ends (" + std::to_string(badEdges[t]) +
-                                " edges not shared by exactly two triangles the opposite way round, " + std::to_string(tubeEnds[t]) +
-                                " boundary loops)",
+                            std::string(options.mesh.caps ? "the mesh is not a closed surface (" : "the mesh is not a tube open at its two ends (") +
+                                std::to_string(badEdges[t]) + " edges not shared by exactly two triangles the opposite way round, " +
+                                std::to_string(result.tows[t].boundaryLoops) + " boundary loops)",
                             "tow '" + tows[t].name() + "'");
             });
     failures.throwAll();
-    if (options.mesh.caps) closeEnds(tows, towH, options.mesh.minAngle, threads, result.mesh);
-    // Per-tow figures, in parallel.
-    detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
-        TowResolution& r = result.tows[t];
-        // Before: the tow's own mesh with the same caps (the same sum for a tow that lost nothing).
-        std::vector<Triangle> own = meshes[t].triangles;
-        const TowMesh& m = result.mesh.tows[t];
-        for (std::size_t k = 0; k < m.triangles.size(); ++k)
-            if (m.face[k] != TowFace::Side) own.push_back(m.triangles[k]);
-        r.volumeBefore = detail::closedVolume(N, own);
-        r.volumeAfter = detail::closedVolume(N, result.mesh.tows[t].triangles, &r.boundaryLoops);
-        for (const Triangle& tri : result.mesh.tows[t].triangles) r.area += triangleArea(N, tri);
-    });
     // Quality over distinct triangles: a secondary's copies of a region's triangles are skipped.
     result.quality.histogram.assign(12, 0);
     result.quality.minAngle = 180.0;

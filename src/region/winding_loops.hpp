@@ -1,0 +1,34 @@
+// Loops that wind around a tow: where a tow passes through another, or ends inside it, their
+// intersection loops go around it. Along the tow they cut it into bands, alternately inside and
+// outside the other tow; its two end caps lie in the first and the last band.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "mesh/loop_nodes.hpp"
+#include "towgeom/intersection_loop.hpp"
+#include "towgeom/tow_surface.hpp"
+
+namespace towgeom::detail {
+
+/// The loops of one tow pair (t, o) that wind around t, and which bands of t lie inside o.
+struct WindingBands {
+    std::vector<std::size_t> loops;  ///< indices into the intersection report, by mean u on t (along it)
+    bool startInside = false;        ///< t's first band (from u = uMin) and its start cap lie inside o
+};
+
+/// The bands that @p winding (loops of the pair (t, o) that wind around tow @p t, by index in
+/// @p loops) cut t into. Which side of each loop lies inside o comes from the surfaces: along t
+/// (dS_t/du) a loop is crossed into o where that direction points against o's outward normal.
+/// nullopt when the loops disagree (a loop whose inside is not the side the alternation gives).
+std::optional<WindingBands> windingBands(const std::vector<TowSurface>& tows, std::size_t t, std::size_t o,
+                                         const std::vector<IntersectionLoop>& loops, std::vector<std::size_t> winding);
+
+/// How many loops of @p bands lie between tow @p t's start and the point @p p of t: of each loop's
+/// node polygon on t (@p polygons, in the order of bands.loops; v unwrapped), the parity of its
+/// crossings with the segment from (uMin, p.v) to p.
+std::size_t loopsBefore(const std::vector<std::vector<UV>>& polygons, UV p, double uMin, double period);
+
+}  // namespace towgeom::detail
