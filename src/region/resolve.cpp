@@ -553,7 +553,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
         std::size_t other = 0;
         const detail::WindingBands* bands = nullptr;
         std::vector<std::size_t> loops;               // shared indices, in band order
-        std::vector<std::vector<UV>> polygons;        // each loop's node polygon on the tow
+        std::vector<detail::WindingPolygon> polygons;  // each loop's node polygon on the tow
     };
     std::vector<std::vector<TowBands>> bandsOn(tows.size());
     {
@@ -564,7 +564,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
             for (const std::size_t l : b.loops) {
                 const std::size_t k = sharedOfLoop.at(l);
                 tb.loops.push_back(k);
-                tb.polygons.push_back(detail::loopPolygon(shared[k], loops[l].towA() == to.first ? LoopSide::A : LoopSide::B));
+                tb.polygons.emplace_back(detail::loopPolygon(shared[k], loops[l].towA() == to.first ? LoopSide::A : LoopSide::B));
             }
             bandsOn[to.first].push_back(std::move(tb));
         }

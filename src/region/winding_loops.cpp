@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace towgeom::detail {
 
@@ -59,10 +60,26 @@ std::optional<WindingBands> windingBands(const std::vector<TowSurface>& tows, st
     return bands;
 }
 
-std::size_t loopsBefore(const std::vector<std::vector<UV>>& polygons, UV p, double uMin, double period)
+WindingPolygon::WindingPolygon(std::vector<UV> polygon) : uv(std::move(polygon))
+{
+    uLo = 1e300;
+    uHi = -1e300;
+    for (const UV& p : uv) {
+        uLo = std::min(uLo, p.u);
+        uHi = std::max(uHi, p.u);
+    }
+}
+
+std::size_t loopsBefore(const std::vector<WindingPolygon>& polygons, UV p, double uMin, double period)
 {
     std::size_t before = 0;
-    for (const std::vector<UV>& poly : polygons) {
+    for (const WindingPolygon& w : polygons) {
+        if (p.u <= w.uLo) continue;  // every crossing at u >= uLo: none before p
+        if (p.u > w.uHi) {           // every crossing before p: once around, an odd number
+            ++before;
+            continue;
+        }
+        const std::vector<UV>& poly = w.uv;
         std::size_t crossings = 0;
         const std::size_t n = poly.size();
         // A winding loop's closing chord ends one period on from its first point.

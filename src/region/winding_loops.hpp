@@ -26,9 +26,16 @@ struct WindingBands {
 std::optional<WindingBands> windingBands(const std::vector<TowSurface>& tows, std::size_t t, std::size_t o,
                                          const std::vector<IntersectionLoop>& loops, std::vector<std::size_t> winding);
 
-/// How many loops of @p bands lie between tow @p t's start and the point @p p of t: of each loop's
-/// node polygon on t (@p polygons, in the order of bands.loops; v unwrapped), the parity of its
-/// crossings with the segment from (uMin, p.v) to p.
-std::size_t loopsBefore(const std::vector<std::vector<UV>>& polygons, UV p, double uMin, double period);
+/// A winding loop's node polygon on the tow it goes around (v unwrapped), with its u range.
+struct WindingPolygon {
+    explicit WindingPolygon(std::vector<UV> polygon);
+    std::vector<UV> uv;
+    double uLo = 0.0, uHi = 0.0;
+};
+
+/// How many of the winding loops @p polygons lie between their tow's start and its point @p p:
+/// of each, the parity of its crossings with the segment from (uMin, p.v) to p (a polygon wholly
+/// before p in u counts without a test, one wholly after it not).
+std::size_t loopsBefore(const std::vector<WindingPolygon>& polygons, UV p, double uMin, double period);
 
 }  // namespace towgeom::detail
