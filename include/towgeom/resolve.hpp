@@ -89,8 +89,9 @@ struct ResolveResult {
     IntersectionReport intersections;  ///< every loop found (open ones included)
     TextileMesh mesh;                  ///< the compatible meshes
     std::vector<TowResolution> tows;   ///< per input tow
-    /// Loops that were not resolved (open, or winding around a tow), by index in
-    /// intersections.loops, with the reason.
+    /// Loops that were not resolved (open; winding around a tow without caps, around both tows,
+    /// or cutting it into bands that do not alternate), by index in intersections.loops, with the
+    /// reason.
     std::vector<std::pair<std::size_t, std::string>> skipped;
     /// Tow pairs left unresolved so that the rest of the textile could be (their loops are in
     /// intersections.loops but bound no region).
@@ -116,10 +117,13 @@ struct ResolveResult {
 /// of its pair with o (exact point-in-polygon, CGAL): a loop nested in one of the same pair bounds
 /// an island (ConnectedRegion::holes). Where loops of two pairs sharing a tow cross, the three
 /// tows' surfaces meet: the triple point is solved on the three surfaces and made one node of
-/// the three pairs' loops (TextileMesh::triplePoints). Open loops and loops winding around a tow
-/// are not resolved (see ResolveResult::skipped). A tow whose mesh cannot be made costs only the
-/// tow pairs with loops on it: they are listed in ResolveResult::unresolved and the rest of the
-/// textile is resolved.
+/// the three pairs' loops (TextileMesh::triplePoints). Loops that wind around a tow (it passes
+/// through the other tow, or ends inside it) cut it into bands alternately inside and outside
+/// the other, its end caps in the first and last band (MeshOptions::caps; without caps they are
+/// not resolved): a tow given way to one it passes through is cut into pieces. Open loops are not
+/// resolved (see ResolveResult::skipped). A tow whose mesh cannot be made costs only the tow pairs
+/// with loops on it: they are listed in ResolveResult::unresolved and the rest of the textile is
+/// resolved.
 ///
 /// @code
 /// towgeom::ResolveOptions options;

@@ -54,7 +54,8 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
   role            primary (keeps its surface), secondary (gave volume), both, or none
   unresolved      tow pairs that meet but were not resolved (their meshes still overlap), once
                   per pair and reason: open_curve (a curve runs into a tow's end), winds_around
-                  (a loop goes around a tow: one passes through the other), nested (one tow
+                  (a loop goes around a tow, one passing through the other, with --no-caps;
+                  or around both tows), nested (one tow
                   inside the other), identical_or_touching (surfaces coincide or touch, no curve),
                   loops_meet (a loop of the pair crosses another pair's loop on a tow where no
                   triple point joins them, e.g. the third pair's loop is open, goes around a
