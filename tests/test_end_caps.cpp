@@ -4,12 +4,15 @@
 // closed 2-manifold whose CGAL volume is the reported one; without caps the tubes are open.
 #include <catch2/catch.hpp>
 
+#include <towgeom/error.hpp>
 #include <towgeom/resolve.hpp>
+#include <towgeom/tow_stack.hpp>
 #include <towgeom/textile_mesh.hpp>
 #include <towgeom/tow_surface.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "cgal_reference.hpp"
@@ -102,4 +105,80 @@ TEST_CASE("every tow is closed by its two end caps: planar, facing out, the sect
               static_cast<long>(open.mesh.tows[t].triangles.size()));
         CHECK(open.tows[t].volumeAfter == Approx(res.tows[t].volumeAfter).epsilon(1e-12));
     }
+}
+
+TEST_CASE("caps close bent tows and tows given clockwise, facing out", "[resolve][caps]")
+{
+    testing::Sampling cw;
+    cw.sections = 41;
+    cw.points = 32;
+    cw.counterClockwise = false;  // sections given clockwise: the fit reverses them
+    const std::vector<TowSurface> tows{TowSurface::fit(testing::growingBentTube(0.3, 0.5, 3.0, 1.5, cw, "bent")),
+                                       TowSurface::fit(testing::tubeAlongX(0.4, 3.0, 0.0, 5.0, 0.0, cw, "straight"))};
+    const ResolveResult res = resolveTextile(tows);
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        INFO("tow " << tows[t].name());
+        const TowMesh& m = res.mesh.tows[t];
+        const testing::Boundary b = testing::boundaryOf(m.triangles);
+        CHECK(b.edges == 0);
+        CHECK(b.misorientedEdges == 0);
+        // Outward: a positive volume, the exact one within the faceting (inscribed polygons).
+        const double exact = tows[t].volume();
+        CHECK(res.tows[t].volumeAfter > 0.97 * exact);
+        CHECK(res.tows[t].volumeAfter < exact);
+        // Each cap faces away from the tow: along -dS/du at its start, +dS/du at its end.
+        for (const TowFace face : {TowFace::Start, TowFace::End}) {
+            const double u = face == TowFace::Start ? tows[t].parameterRange().uMin : tows[t].parameterRange().uMax;
+            Vector3 along = tows[t].derivatives(u, 0.0).du;
+            if (face == TowFace::Start) along = -1.0 * along;
+            std::size_t facing = 0, total = 0;
+            for (std::size_t k = 0; k < m.triangles.size(); ++k) {
+                if (m.face[k] != face) continue;
+                ++total;
+                const Point3 &a = res.mesh.nodes[m.triangles[k][0]], &p = res.mesh.nodes[m.triangles[k][1]],
+                             &c = res.mesh.nodes[m.triangles[k][2]];
+                facing += dot(cross(p - a, c - a), along) > 0.0;
+            }
+            CHECK(total > 0);
+            CHECK(facing == total);
+        }
+    }
+}
+
+TEST_CASE("a mesh size too coarse for a concave end section is refused, naming the tow and end", "[resolve][caps]")
+{
+    // A C-shaped section (radius 1, 0.1 thick, from -150 to 150 degrees) along x: at h = 2 the
+    // tube's end nodes, about h apart, cut across the C (at 1.5 and below they do not).
+    TowStack c;
+    c.name = "crescent";
+    const double pi = 3.14159265358979323846;
+    for (std::size_t i = 0; i < 11; ++i) {
+        std::vector<Point3> section;
+        const double x = 0.4 * static_cast<double>(i);
+        for (std::size_t k = 0; k < 64; ++k) {
+            const double s = static_cast<double>(k) / 64.0;  // outer arc, then inner arc back
+            const double angle = s < 0.5 ? -150.0 + 600.0 * s : 150.0 - 600.0 * (s - 0.5);
+            const double r = s < 0.5 ? 1.0 : 0.9;
+            section.push_back({x, r * std::cos(angle * pi / 180.0), r * std::sin(angle * pi / 180.0)});
+        }
+        c.sections.push_back(section);
+    }
+    const std::vector<TowSurface> tows{TowSurface::fit(c)};
+    ResolveOptions o;
+    o.mesh.edgeLength = 0.1;
+    const ResolveResult fine = resolveTextile(tows, o);
+    CHECK(fine.tows[0].boundaryLoops == 0);
+    CHECK(testing::boundaryOf(fine.mesh.tows[0].triangles).misorientedEdges == 0);
+    o.mesh.edgeLength = 2.0;  // below the cap of a quarter of the circumference (pi x 3.18 / 4)
+    try {
+        resolveTextile(tows, o);
+        FAIL("a cap across the C was made");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::InvalidArgument);
+        CHECK(std::string(e.what()).find("tow 'crescent'") != std::string::npos);
+        CHECK(e.message().find("cap cannot be meshed") != std::string::npos);
+        CHECK(e.message().find("--no-caps") != std::string::npos);
+    }
+    o.mesh.caps = false;
+    CHECK(resolveTextile(tows, o).tows[0].boundaryLoops == 2);
 }

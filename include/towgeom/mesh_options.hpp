@@ -29,8 +29,9 @@ struct MeshOptions {
     /// loops' length x (1/loopSpacing - 1/h) for a loop spacing below h) and refuses a mesh over
     /// this with ErrorCode::TooLarge. Default 20 million (about 5 GB); must be at least 1.
     std::size_t maxTriangles = 20000000;
-    /// Close every tow by its two end caps (default): the planar polygon of each end, meshed in
-    /// its plane with the tube's end nodes (TowFace::Start, TowFace::End), so every tow's mesh
+    /// Close every tow by its two end caps (default): the polygon of the tube's end nodes at each
+    /// end, meshed in its best-fit plane (Newell's normal; the end section's plane for planar
+    /// input sections) (TowFace::Start, TowFace::End), so every tow's mesh
     /// is a closed surface. False: tubes open at their two ends.
     bool caps = true;
 };

@@ -50,8 +50,9 @@ struct MeshQuality {
     double minAngle = 0.0;                ///< degrees, over all triangles
     std::vector<std::size_t> histogram;  ///< triangles per 5-degree bin of their smallest angle (0-5, 5-10, ... 55-60)
     std::size_t triangles = 0;            ///< distinct triangles counted (shared ones once)
-    /// Triangles left over the size or shape bound (in the mesher's parameter space) because
-    /// meeting it would have split a loop or seam edge in the last meshing round.
+    /// Tube triangles left over the size or shape bound (in the mesher's parameter space) because
+    /// meeting it would have split a loop or seam edge in the last meshing round (caps are not
+    /// counted: they keep the tube's end nodes, and their angles are in minAngle and histogram).
     std::size_t facesOverBounds = 0;
     /// The fraction of triangles whose smallest angle is at least @p degrees.
     double fractionAtLeast(double degrees) const;
@@ -74,7 +75,8 @@ struct UnresolvedPair {
         MeshFailed,
         /// A loop of this pair crosses a loop of another pair on a tow of both (three tows
         /// overlap there) where no triple point joins them (the third pair's loop through it is
-        /// open, winds around a tow, or the point was not found), or meets it while the third
+        /// open or skipped, the point was not found, or it lies within 1 % of a chord of a seam
+        /// or of another loop's fixed node, where it would make slivers), or meets it while the third
         /// pair has no resolved loop. Of two such pairs the later one (by tow indices) is left out.
         LoopsMeet
     };
@@ -132,8 +134,11 @@ struct ResolveResult {
 /// for (const towgeom::TriplePoint& p : r.mesh.triplePoints)
 ///     std::cout << "tows " << p.tows[0] << ", " << p.tows[1] << ", " << p.tows[2] << " meet at node " << p.node << "\n";
 /// @endcode
+/// With MeshOptions::caps (default) every tow is closed by its two end caps (TowMesh::face).
+///
 /// @throws towgeom::Error (InvalidArgument) for bad options, including a relative mesh size
-/// over pi / 4; (TooLarge) when the estimated triangle count is
+/// over pi / 4, and for a mesh size too coarse for a concave end section (its cap's polygon of
+/// end nodes is not simple; the message names the tow and end); (TooLarge) when the estimated triangle count is
 /// over MeshOptions::maxTriangles (checked before intersecting, and with the loops' refinement
 /// before meshing); (Internal) if a kernel fails outside the meshing of a tow.
 ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveOptions& options = {});

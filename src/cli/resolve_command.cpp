@@ -90,7 +90,7 @@ Options:
                      the tows' area (end caps included) / (sqrt(3)/4 H^2), plus the
                      refinement along loops)
   --no-caps          leave every tow a tube open at its two ends (default: each tow closed by
-                     its two end caps, planar meshes of its end sections: a closed surface)
+                     its two end caps, meshes of its end sections: a closed surface)
   --allow-open       exit 0 even when an intersection curve is open (it is never resolved,
                      and still named on stderr); other unresolved pairs still exit 3
   --threads N        worker threads (default: all hardware threads)

@@ -69,8 +69,7 @@ CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>
     std::vector<K::Point_2> polygon;
     for (std::size_t node : loop) polygon.emplace_back(dot(nodes[node] - c, e1), dot(nodes[node] - c, e2));
     if (loop.size() < 3 || !CGAL::is_simple_2(polygon.begin(), polygon.end(), K()))
-        throw Error(ErrorCode::SelfIntersectingSection, "the end of the tow's mesh is not a simple polygon in its plane: the cap cannot be meshed",
-                    where);
+        throw Error(ErrorCode::SelfIntersectingSection, "the end of the tow's mesh is not a simple polygon in its plane", where);
 
     CDT cdt;
     std::vector<CDT::Vertex_handle> vs;

@@ -25,7 +25,8 @@ struct CapMesh {
 /// tube lacks). The triangles run along the loop the other way round, so tube and cap make a
 /// closed, consistently oriented surface.
 /// @throws Error (SelfIntersectingSection) naming @p where when the loop is no simple polygon in
-/// its plane.
+/// its plane (resolveTextile() turns it into InvalidArgument: the mesh size is too coarse for
+/// the section).
 CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>& loop, double h, double minAngle,
                 std::size_t firstNewNode, const std::string& where);
 

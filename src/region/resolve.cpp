@@ -3,6 +3,7 @@
 #include <fnmatch.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -244,8 +245,8 @@ void dropMeetingLoops(const std::vector<TowSurface>& tows, const std::vector<Int
                     if (p == q || dropped.count(p) || dropped.count(q)) continue;
                     const std::size_t s1 = p.first == t ? p.second : p.first, s2 = q.first == t ? q.second : q.first;
                     const TowPair third = std::minmax(s1, s2);
-                    if (dropped.count(third) == 0 && thirdThere(third, on[i].first, s1, on[j].first, s2)) continue;
                     if (!meetOn(on[i].first, on[j].first, t)) continue;
+                    if (dropped.count(third) == 0 && thirdThere(third, on[i].first, s1, on[j].first, s2)) continue;
                     drop(p, q, t, "meets", names(third) + " have no loop resolved there");
                     changed = true;
                 }
@@ -275,12 +276,25 @@ void closeEnds(const std::vector<TowSurface>& tows, const std::vector<double>& t
         const Point3 first = centroid(tows[t].sections().front()), last = centroid(tows[t].sections().back());
         const std::vector<std::vector<std::size_t>> ends = detail::boundaryLoops(meshes[t].triangles);
         if (ends.size() != 2) return;  // not a tube: reported by the check of the final mesh
-        for (const std::vector<std::size_t>& loop : ends) {
+        std::array<Point3, 2> c;
+        for (std::size_t e = 0; e < 2; ++e) {
             std::vector<Point3> points;
-            for (std::size_t n : loop) points.push_back(nodes[n]);
-            const Point3 c = centroid(points);
-            const TowFace f = distance(c, first) <= distance(c, last) ? TowFace::Start : TowFace::End;
-            caps[t].emplace_back(detail::meshCap(nodes, loop, towH[t], minAngle, kLocal, "tow '" + tows[t].name() + "'"), f);
+            for (std::size_t n : ends[e]) points.push_back(nodes[n]);
+            c[e] = centroid(points);
+        }
+        // The two ends together: the pairing with the first and last sections that is nearer.
+        const bool firstIsStart = distance(c[0], first) + distance(c[1], last) <= distance(c[0], last) + distance(c[1], first);
+        for (std::size_t e = 0; e < 2; ++e) {
+            const TowFace f = (e == 0) == firstIsStart ? TowFace::Start : TowFace::End;
+            try {
+                caps[t].emplace_back(detail::meshCap(nodes, ends[e], towH[t], minAngle, kLocal, "tow '" + tows[t].name() + "'"), f);
+            } catch (const Error& x) {
+                throw Error(ErrorCode::InvalidArgument,
+                            std::string("its ") + (f == TowFace::Start ? "start" : "end") + " cap cannot be meshed: " + x.message() +
+                                " (the tube's end nodes, about h apart, make no simple polygon of a section this concave "
+                                "at this mesh size): use a smaller mesh size, or no caps (MeshOptions::caps, --no-caps)",
+                            x.file());
+            }
         }
     });
     for (std::size_t t = 0; t < tows.size(); ++t)
@@ -376,11 +390,6 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
         shared.erase(std::remove_if(shared.begin(), shared.end(),
                                     [&](const detail::SharedLoop& w) { return disagree.count({loops[w.loop].towA(), loops[w.loop].towB()}) > 0; }),
                      shared.end());
-    }
-    if (!tows.empty()) {
-        const auto [lo, hi] = std::minmax_element(towH.begin(), towH.end());
-        say("meshing " + std::to_string(tows.size()) + " tows at h = " + std::to_string(*lo) +
-            (*hi > *lo * (1.0 + 1e-6) ? " to " + std::to_string(*hi) : std::string()));
     }
     constexpr std::size_t kLocal = std::size_t(1) << 60;  // marks a tow's own new nodes
     // Round 1 meshes every tow. Refinement never splits a constraint; where a triangle needs a
@@ -914,6 +923,11 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
     o.intersection = detail::optionsInFrame(options.intersection, frame);
     ResolveResult result = resolveInFrame(detail::towsInFrame(tows, frame), towHInFrame, o, [&](double loopLength) {
         checkMeshSize(options.mesh, area, h, frame.lengthToUser(loopLength), spacing);
+        if (options.progress && !towH.empty()) {  // in the user's units
+            const auto [lo, hi] = std::minmax_element(towH.begin(), towH.end());
+            options.progress("meshing " + std::to_string(tows.size()) + " tows at h = " + std::to_string(*lo) +
+                             (*hi > *lo * (1.0 + 1e-6) ? " to " + std::to_string(*hi) : std::string()));
+        }
     });
     resultToUser(result, tows, frame);
     for (std::size_t t = 0; t < tows.size(); ++t) result.tows[t].meshSize = towH[t];
