@@ -379,6 +379,8 @@ TEST_CASE("a tow through another, or ending inside it: each keeps its volume min
             // outer one, or a pocket where the thin one ends inside it, keeps it one piece.
             CHECK(pieces(res.mesh.tows[1].triangles) == (!thinFirst && !endsInside ? 2u : 1u));
             CHECK(pieces(res.mesh.tows[0].triangles) == 1u);
+            CHECK(res.tows[1].pieces == pieces(res.mesh.tows[1].triangles));
+            CHECK(res.tows[0].pieces == 1u);
             const TriangleMesh outer = closedGrid(tows[0]), thin = closedGrid(tows[1]);
             const double keeps[2] = {thinFirst ? testing::differenceVolume(outer, {thin}) : testing::closedMeshVolume(outer),
                                      thinFirst ? testing::closedMeshVolume(thin) : testing::differenceVolume(thin, {outer})};

@@ -40,6 +40,9 @@ struct TowResolution {
     double volumeAfter = 0.0;      ///< the same after the regions were swapped in
     double area = 0.0;             ///< surface area of the final mesh
     std::size_t boundaryLoops = 0;  ///< 0 for a tow closed by its caps, 2 for a tube open at both ends
+    /// Connected pieces of the final mesh: 1, or more where a higher-ranked tow passes through
+    /// this one and cuts it (each piece closed by the other tow's surface).
+    std::size_t pieces = 1;
     /// The mesh size h this tow was meshed at: MeshOptions::relativeEdgeLength x its own size,
     /// or MeshOptions::edgeLength, at most a quarter of its circumference.
     double meshSize = 0.0;

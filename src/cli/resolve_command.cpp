@@ -42,7 +42,7 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
   DIR/textile.inp  with --formats inp: Abaqus, *NODE, *ELEMENT TYPE=S3 with ELSET=TOW_NAME,
                    *ELSET/*NSET REGION_k, *ELSET CAPS_NAME
   DIR/report.json  {"tows":[{"name","role","volume_before","volume_after","area","triangles",
-                   "boundary_loops","mesh_size"}], "loops":[...as detect...], "findings":[...as detect...],
+                   "boundary_loops","pieces","mesh_size"}], "loops":[...as detect...], "findings":[...as detect...],
                    "unresolved":[{"tow_a","tow_b","reason","message"}], "regions":[{"primary",
                    "secondary","triangles","nodes","area","volume_removed"}],
                    "triple_points":[{"tows":[3 names],"node","point":[x,y,z]}],
@@ -52,6 +52,8 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                    "mesh_rounds", "timings_ms":{...}}
 
   role            primary (keeps its surface), secondary (gave volume), both, or none
+  pieces          connected pieces of the tow's mesh: more than 1 where tows ranked above it
+                  pass through it and cut it
   unresolved      tow pairs that meet but were not resolved (their meshes still overlap), once
                   per pair and reason: open_curve (a curve runs into a tow's end), winds_around
                   (a loop goes around a tow, one passing through the other, with --no-caps;
@@ -199,6 +201,7 @@ int runResolve(int argc, char** argv, int first)
             json.key("area").value(r.area);
             json.key("triangles").value(mesh.tows[t].triangles.size());
             json.key("boundary_loops").value(r.boundaryLoops);
+            json.key("pieces").value(r.pieces);
             json.key("mesh_size").value(r.meshSize);
             json.endObject();
         }
@@ -280,10 +283,15 @@ int runResolve(int argc, char** argv, int first)
         files.open(path("report.json")) << report.str() << "\n";
         files.commit();
 
-        if (!quiet)
+        if (!quiet) {
+            for (std::size_t t = 0; t < tows.size(); ++t)
+                if (result.tows[t].pieces > 1)
+                    std::cerr << "towgeom resolve: tow '" << tows[t].name() << "' is cut into " << result.tows[t].pieces
+                              << " pieces by tows ranked above it that pass through it\n";
             std::cerr << "towgeom resolve: " << mesh.regions.size() << " connected regions, " << mesh.nodes.size() << " nodes, "
                       << result.quality.triangles << " triangles (smallest angle " << result.quality.minAngle
                       << " deg); files in " << *outDir << "\n";
+        }
         // Warnings, not progress: printed whatever --quiet says.
         if (options.mesh.edgeLength > 0.0)
             for (std::size_t t = 0; t < tows.size(); ++t)

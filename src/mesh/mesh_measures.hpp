@@ -20,6 +20,9 @@ double signedVolume(const std::vector<Point3>& nodes, const std::vector<std::arr
 /// triangles, twice in the same direction, or joining a node to itself.
 std::size_t nonManifoldEdges(const std::vector<std::array<std::size_t, 3>>& triangles);
 
+/// The number of connected pieces of @p triangles (triangles joined through shared nodes).
+std::size_t connectedPieces(const std::vector<std::array<std::size_t, 3>>& triangles);
+
 /// The boundary edges of @p triangles (used by one triangle only) chained into loops of nodes,
 /// each loop in the direction its triangles run along it.
 std::vector<std::vector<std::size_t>> boundaryLoops(const std::vector<std::array<std::size_t, 3>>& triangles);

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <map>
+#include <unordered_map>
+#include <utility>
 #include <cstdint>
 
 namespace towgeom {
@@ -140,6 +142,26 @@ double signedVolume(const std::vector<Point3>& nodes, const std::vector<std::arr
     double sum = 0.0;
     for (const auto& t : triangles) sum += dot(nodes[t[0]] - o, cross(nodes[t[1]] - o, nodes[t[2]] - o));
     return sum / 6.0;
+}
+
+std::size_t connectedPieces(const std::vector<std::array<std::size_t, 3>>& triangles)
+{
+    std::unordered_map<std::size_t, std::size_t> parent;
+    const auto find = [&](std::size_t n) {
+        std::size_t root = n;
+        while (parent[root] != root) root = parent[root];
+        while (parent[n] != root) n = std::exchange(parent[n], root);
+        return root;
+    };
+    for (const auto& t : triangles)
+        for (const std::size_t n : t) parent.try_emplace(n, n);
+    for (const auto& t : triangles) {
+        parent[find(t[1])] = find(t[0]);
+        parent[find(t[2])] = find(t[0]);
+    }
+    std::size_t roots = 0;
+    for (const auto& [n, p] : parent) roots += n == p;
+    return roots;
 }
 
 std::size_t nonManifoldEdges(const std::vector<std::array<std::size_t, 3>>& triangles) { return edgeUse(triangles).bad; }

@@ -718,6 +718,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
         r.volumeBefore = detail::closedVolume(N, meshes[t].triangles);
         r.volumeAfter = detail::closedVolume(N, result.mesh.tows[t].triangles, &r.boundaryLoops);
         badEdges[t] = detail::nonManifoldEdges(result.mesh.tows[t].triangles);
+        r.pieces = detail::connectedPieces(result.mesh.tows[t].triangles);
         for (const Triangle& tri : result.mesh.tows[t].triangles) r.area += triangleArea(N, tri);
     });
     for (std::size_t t = 0; t < tows.size(); ++t)
