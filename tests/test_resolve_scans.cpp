@@ -25,6 +25,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <random>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -551,6 +552,48 @@ TEST_CASE("pressed layers resolve at 6 mesh sizes from the largest accepted to a
         CHECK(res.mesh.regions.size() == 44);
         CHECK(testing::crossingPairsBetweenTows(res.mesh) == 0);
         checkClosed(res);
+    }
+}
+
+TEST_CASE("hand-traced pixel-row tows pressed across each other, starts drifting: resolved at 3 sizes", "[resolve][scan][traced]")
+{
+    // Two flat racetracks (1 x 0.25) traced on pixel rows (1/50 of the width), each slice's
+    // first point wandering by 1 to 3 point spacings at random, the second turned to run along
+    // y over the first's middle and pressed 0.05 into it (a fifth of their height).
+    std::mt19937 rng(5);
+    std::uniform_int_distribution<int> step(-3, 3);
+    const auto drift = [&](std::size_t m) {
+        std::vector<double> offset(m, 0.0);
+        for (std::size_t i = 1; i < m; ++i) offset[i] = offset[i - 1] + step(rng);
+        return offset;
+    };
+    TowStack lower = testing::tracedRacetrack(40, 32, drift(40), false).stack;
+    lower.name = "lower";
+    TowStack upper = testing::tracedRacetrack(40, 32, drift(40), true).stack;
+    upper.name = "upper";
+    for (auto& section : upper.sections)
+        for (Point3& p : section) p = {0.78 - p.y, p.x - 0.78, p.z + 0.2};
+    const std::vector<TowSurface> tows = fit({lower, upper});
+    const IntersectionReport loops = intersectTows(tows);
+    REQUIRE(!loops.loops.empty());
+    for (const IntersectionLoop& l : loops.loops) CHECK(l.closed());
+    const TriangleMesh a = closedGrid(tows[0]), b = closedGrid(tows[1]);
+    const double keeps[2] = {testing::closedMeshVolume(a), testing::differenceVolume(b, {a})};
+    for (const double h : {0.785, 0.2, 0.1}) {
+        INFO("relative mesh size " << h);
+        ResolveOptions o;
+        o.mesh.relativeEdgeLength = h;
+        const ResolveResult res = resolveTextile(tows, o);
+        CHECK(res.unresolved.empty());
+        CHECK(res.skipped.empty());
+        CHECK(!res.mesh.regions.empty());
+        CHECK(testing::crossingPairsBetweenTows(res.mesh) == 0);
+        checkClosed(res);
+        if (h > 0.1) continue;  // coarser meshes inscribe a thinner lens
+        for (std::size_t t = 0; t < 2; ++t) {
+            WARN("tow " << tows[t].name() << " keeps " << res.tows[t].volumeAfter << ", CGAL: " << keeps[t]);
+            CHECK(std::abs(res.tows[t].volumeAfter - keeps[t]) <= 0.02 * keeps[t]);
+        }
     }
 }
 

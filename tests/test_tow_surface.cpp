@@ -384,61 +384,9 @@ void checkDriftUndone(const TowStack& stack, const std::vector<long>& drift, Fit
     CHECK(same(input.sections[ds.worstSection][ds.worstPoint], stack.sections[dr.worstSection][dr.worstPoint]));
 }
 
-/// A point of a racetrack of width w and height h (semicircular ends of radius h/2), centred at
-/// the origin, at arc length s from (w/2, 0) counter-clockwise; s is taken modulo the perimeter.
-Point2 racetrackPoint(double w, double h, double s)
-{
-    const double rho = h / 2, half = (w - h) / 2;
-    const double arc = kPi * rho, perimeter = 4 * half + 2 * arc;
-    s = std::fmod(std::fmod(s, perimeter) + perimeter, perimeter);
-    const auto onArc = [&](double cx, double phi) { return Point2{cx + rho * std::cos(phi), rho * std::sin(phi)}; };
-    if (s < arc / 2) return onArc(half, s / rho);
-    s -= arc / 2;
-    if (s < 2 * half) return {half - s, rho};
-    s -= 2 * half;
-    if (s < arc) return onArc(-half, kPi / 2 + s / rho);
-    s -= arc;
-    if (s < 2 * half) return {-half + s, -rho};
-    s -= 2 * half;
-    return onArc(half, 3 * kPi / 2 + s / rho);
-}
-
-/// A flat racetrack tow as traced by hand on micro-CT slices: M sections in the planes x = 2 i g
-/// (g = 1/50 of the width, the pixel), N points each, uniform in arc length, the first point of
-/// section i at arc length offset[i] point spacings from the tip at +y; the section wanders
-/// sideways and up and down and its width varies along the tow; y and z are rounded to the
-/// pixel grid. Goes counter-clockwise about +x unless @p clockwise.
-struct TracedTow {
-    TowStack stack;
-    double spacing = 0.0;  // mean point spacing around (perimeter / N)
-    double volume = 0.0;   // of the unquantised tow, closed form per section (trapezoid rule along)
-};
-
-TracedTow tracedRacetrack(std::size_t m, std::size_t n, const std::vector<double>& offset, bool clockwise)
-{
-    const double g = 1.0 / 50.0, h = 0.25;
-    TracedTow t;
-    t.stack.name = "traced";
-    double previousArea = 0.0;
-    for (std::size_t i = 0; i < m; ++i) {
-        const double x = 2 * g * static_cast<double>(i);
-        const double w = 1.0 + 0.1 * std::sin(x);
-        const double yc = 0.05 * std::sin(2 * x), zc = 0.03 * std::cos(3 * x);
-        const double perimeter = 2 * (w - h) + kPi * h;
-        const double area = (w - h) * h + kPi * h * h / 4;
-        if (i) t.volume += 0.5 * (area + previousArea) * 2 * g;
-        previousArea = area;
-        t.spacing += perimeter / static_cast<double>(n) / static_cast<double>(m);
-        std::vector<Point3> section;
-        for (std::size_t j = 0; j < n; ++j) {
-            const double s = (offset[i] + static_cast<double>(j)) * perimeter / static_cast<double>(n);
-            const Point2 p = racetrackPoint(w, h, clockwise ? -s : s);
-            section.push_back({x, g * std::round((yc + p.x) / g), g * std::round((zc + p.y) / g)});
-        }
-        t.stack.sections.push_back(section);
-    }
-    return t;
-}
+using testing::racetrackPoint;
+using testing::tracedRacetrack;
+using testing::TracedTow;
 
 /// The largest distance between matched points of consecutive sections of @p s (centroids
 /// made to coincide): how far the surface's point columns shear around the tow.

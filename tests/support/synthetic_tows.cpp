@@ -109,4 +109,49 @@ TowStack dentedTubeAlongY(double r, double d, double dent, double width, const S
     return t;
 }
 
+Point2 racetrackPoint(double w, double h, double s)
+{
+    const double rho = h / 2, half = (w - h) / 2;
+    const double arc = kPi * rho, perimeter = 4 * half + 2 * arc;
+    s = std::fmod(std::fmod(s, perimeter) + perimeter, perimeter);
+    const auto onArc = [&](double cx, double phi) { return Point2{cx + rho * std::cos(phi), rho * std::sin(phi)}; };
+    if (s < arc / 2) return onArc(half, s / rho);
+    s -= arc / 2;
+    if (s < 2 * half) return {half - s, rho};
+    s -= 2 * half;
+    if (s < arc) return onArc(-half, kPi / 2 + s / rho);
+    s -= arc;
+    if (s < 2 * half) return {-half + s, -rho};
+    s -= 2 * half;
+    return onArc(half, 3 * kPi / 2 + s / rho);
+}
+
+
+TracedTow tracedRacetrack(std::size_t m, std::size_t n, const std::vector<double>& offset, bool clockwise)
+{
+    const double g = 1.0 / 50.0, h = 0.25;
+    TracedTow t;
+    t.stack.name = "traced";
+    double previousArea = 0.0;
+    for (std::size_t i = 0; i < m; ++i) {
+        const double x = 2 * g * static_cast<double>(i);
+        const double w = 1.0 + 0.1 * std::sin(x);
+        const double yc = 0.05 * std::sin(2 * x), zc = 0.03 * std::cos(3 * x);
+        const double perimeter = 2 * (w - h) + kPi * h;
+        const double area = (w - h) * h + kPi * h * h / 4;
+        if (i) t.volume += 0.5 * (area + previousArea) * 2 * g;
+        previousArea = area;
+        t.spacing += perimeter / static_cast<double>(n) / static_cast<double>(m);
+        std::vector<Point3> section;
+        for (std::size_t j = 0; j < n; ++j) {
+            const double s = (offset[i] + static_cast<double>(j)) * perimeter / static_cast<double>(n);
+            const Point2 p = racetrackPoint(w, h, clockwise ? -s : s);
+            section.push_back({x, g * std::round((yc + p.x) / g), g * std::round((zc + p.y) / g)});
+        }
+        t.stack.sections.push_back(section);
+    }
+    return t;
+}
+
+
 }  // namespace towgeom::testing

@@ -54,4 +54,22 @@ TowStack tubeAlongY(double r, double d, const Sampling& s = {}, const std::strin
 TowStack dentedTubeAlongY(double r, double d, double dent, double width, const Sampling& s = {},
                           const std::string& name = "dented", double widthX = 0.0);
 
+/// A point of a racetrack of width w and height h (semicircular ends of radius h/2), centred at
+/// the origin, at arc length s from (w/2, 0) counter-clockwise; s is taken modulo the perimeter.
+Point2 racetrackPoint(double w, double h, double s);
+
+/// A flat racetrack tow as traced by hand on micro-CT slices (see tracedRacetrack()).
+struct TracedTow {
+    TowStack stack;
+    double spacing = 0.0;  ///< mean point spacing around (perimeter / N)
+    double volume = 0.0;   ///< of the unquantised tow, closed form per section (trapezoid rule along)
+};
+
+/// A flat racetrack tow (width about 1, height 0.25) as traced by hand on micro-CT slices: M
+/// sections in the planes x = 2 i g (g = 1/50 of the width, the pixel), N points each, uniform
+/// in arc length, the first point of section i at arc length offset[i] point spacings from the
+/// tip at +y; the section wanders sideways and up and down and its width varies along the tow;
+/// y and z are rounded to the pixel grid. Goes counter-clockwise about +x unless @p clockwise.
+TracedTow tracedRacetrack(std::size_t m, std::size_t n, const std::vector<double>& offset, bool clockwise);
+
 }  // namespace towgeom::testing
