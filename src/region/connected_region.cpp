@@ -48,8 +48,8 @@ bool insideLoop(const std::vector<UV>& polygon, UV p, double period) { return Lo
 bool loopsMeet(const std::vector<UV>& a, const std::vector<UV>& b, double period)
 {
     if (a.size() < 3 || b.size() < 3) return false;
-    const LoopPolygon pa(a);
-    const double shift0 = std::round((0.5 * (pa.vLo + pa.vHi) - 0.5 * (LoopPolygon(b).vLo + LoopPolygon(b).vHi)) / period);
+    const LoopPolygon pa(a), pb0(b);
+    const double shift0 = std::round((0.5 * (pa.vLo + pa.vHi) - 0.5 * (pb0.vLo + pb0.vHi)) / period);
     for (double k = shift0 - 1.0; k <= shift0 + 1.0; k += 1.0) {
         std::vector<UV> moved = b;
         for (UV& p : moved) p.v += k * period;

@@ -1,7 +1,5 @@
 #include "towgeom/resolve.hpp"
 
-#include <fnmatch.h>
-
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -15,6 +13,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/glob_match.hpp"
 #include "core/parallel.hpp"
 #include "intersect/textile_frame.hpp"
 #include "mesh/end_caps.hpp"
@@ -38,7 +37,7 @@ double msSince(Clock::time_point t0) { return std::chrono::duration<double, std:
 bool matchesAny(const std::string& name, const std::vector<std::string>& patterns)
 {
     return std::any_of(patterns.begin(), patterns.end(),
-                       [&](const std::string& p) { return fnmatch(p.c_str(), name.c_str(), 0) == 0; });
+                       [&](const std::string& p) { return detail::globMatch(p, name); });
 }
 
 double triangleArea(const std::vector<Point3>& nodes, const Triangle& t)
