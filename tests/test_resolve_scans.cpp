@@ -331,10 +331,11 @@ namespace {
 
 /// A thin tube along y (radius 0.1, axis at x = 2, z = 0) right through a round tube along x
 /// (radius 0.5), or, @p endsInside, ending at y = 0 on the other's axis.
-std::vector<TowStack> thinThrough(bool endsInside)
+std::vector<TowStack> thinThrough(bool endsInside, bool startsInside = false)
 {
     TowStack thin = testing::tubeAlongY(0.1, 0.0, sampling(41, 32), "thin");
     if (endsInside) thin.sections.resize(21);  // y from -2 to 0
+    if (startsInside) thin.sections.erase(thin.sections.begin(), thin.sections.begin() + 20);  // y from 0 to 2
     return {testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, sampling(41, 32), "outer"), thin};
 }
 
@@ -361,14 +362,16 @@ std::size_t pieces(const std::vector<std::array<std::size_t, 3>>& triangles)
 
 TEST_CASE("a tow through another, or ending inside it: each keeps its volume minus the tow ranked above it", "[resolve][scan][through]")
 {
-    for (const bool endsInside : {false, true}) {
-        const std::vector<TowSurface> tows = fit(thinThrough(endsInside));
+    for (const int kind : {0, 1, 2}) {  // through, ending inside, starting inside
+        const bool endsInside = kind > 0;
+        const std::vector<TowSurface> tows = fit(thinThrough(kind == 1, kind == 2));
         const IntersectionReport loops = intersectTows(tows);
         // Through: two loops around the thin tube; ending inside: one.
         REQUIRE(loops.loops.size() == (endsInside ? 1u : 2u));
         for (const IntersectionLoop& l : loops.loops) CHECK(l.windsAround(LoopSide::B));
         for (const bool thinFirst : {false, true}) {
-            INFO((endsInside ? "ending inside" : "through") << ", " << (thinFirst ? "thin" : "outer") << " ranked first");
+            INFO((kind == 0 ? "through" : kind == 1 ? "ending inside" : "starting inside") << ", " << (thinFirst ? "thin" : "outer")
+                                                                                               << " ranked first");
             ResolveOptions o;
             if (thinFirst) o.primaryPatterns = {"thin"};
             const ResolveResult res = resolveTextile(tows, o);
@@ -387,9 +390,28 @@ TEST_CASE("a tow through another, or ending inside it: each keeps its volume min
                                      thinFirst ? testing::closedMeshVolume(thin) : testing::differenceVolume(thin, {outer})};
             for (std::size_t t = 0; t < 2; ++t) {
                 WARN("tow " << tows[t].name() << " keeps " << res.tows[t].volumeAfter << ", CGAL: " << keeps[t]);
-                CHECK(std::abs(res.tows[t].volumeAfter - keeps[t]) <= 0.02 * keeps[t]);
+                CHECK(std::abs(res.tows[t].volumeAfter - keeps[t]) <= 0.005 * keeps[t]);  // measured 0.16 %
             }
         }
+    }
+}
+
+TEST_CASE("a loop through the point where both tows' seams meet, mid-chord: one node", "[resolve][scan][through][seam]")
+{
+    // The thin tube's seam turned to face the outer one's: both seams cross the loop at one
+    // point, in the middle of a loop chord at this spacing (two nodes at one point before).
+    testing::Sampling s = sampling(41, 32);
+    s.startAngle = kPi;
+    const std::vector<TowSurface> tows = fit({testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, sampling(41, 32), "outer"),
+                                             testing::tubeAlongY(0.1, 0.0, s, "thin")});
+    for (const double spacing : {0.0, 0.013, 0.007}) {
+        INFO("loop spacing " << spacing);
+        ResolveOptions o;
+        o.mesh.loopSpacing = spacing;
+        const ResolveResult res = resolveTextile(tows, o);
+        CHECK(res.unresolved.empty());
+        CHECK(testing::crossingPairsBetweenTows(res.mesh) == 0);
+        checkClosed(res);
     }
 }
 

@@ -40,7 +40,9 @@ struct TowMesh {
 struct ConnectedRegion {
     std::size_t primary = 0;             ///< tow index of the primary tow
     std::size_t secondary = 0;           ///< tow index of the secondary tow
-    std::size_t loop = 0;                ///< index of the loop in the intersection report
+    /// Index of the loop in the intersection report. Where a tow passes through another, the
+    /// band between two loops around it is one region, named by the first of them.
+    std::size_t loop = 0;
     /// Loops of the same tow pair inside this one (islands where the surfaces separate again):
     /// holes of the region, by index in the intersection report.
     std::vector<std::size_t> holes;

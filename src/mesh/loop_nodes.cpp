@@ -131,24 +131,51 @@ SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, d
             q.onA.v += periodOf(loop, LoopSide::A) * std::round((p.onA.v - q.onA.v) / periodOf(loop, LoopSide::A));
             q.onB.v += periodOf(loop, LoopSide::B) * std::round((p.onB.v - q.onB.v) / periodOf(loop, LoopSide::B));
         }
-        std::vector<std::pair<double, LoopPoint>> crossings;
+        struct Crossing {
+            double t;
+            LoopPoint point;
+            LoopSide side;  // the tow whose seam it is on (exactly)
+        };
+        std::vector<Crossing> found;
         for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
             const double period = periodOf(loop, side), vMin = vMinOf(loop, side);
             const double v0 = sideOf(p, side).v, v1 = sideOf(q, side).v;
             const double lo = std::min(v0, v1), hi = std::max(v0, v1);
             for (double seam = vMin + period * std::ceil((lo - vMin) / period); seam < hi; seam += period) {
                 if (seam <= lo) continue;
-                crossings.emplace_back((seam - v0) / (v1 - v0), seamPoint(sp, p, q, side, seam, loop.tolerance()));
+                found.push_back({(seam - v0) / (v1 - v0), seamPoint(sp, p, q, side, seam, loop.tolerance()), side});
             }
         }
-        std::sort(crossings.begin(), crossings.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        std::sort(found.begin(), found.end(), [](const Crossing& a, const Crossing& b) { return a.t < b.t; });
+        // Both tows' seams crossed at one point (a loop through where the seams meet): one node,
+        // exactly on both seams.
+        const double same = 10.0 * loop.tolerance();
+        std::vector<std::pair<double, LoopPoint>> crossings;
+        for (std::size_t i = 0; i < found.size(); ++i) {
+            LoopPoint c = found[i].point;
+            while (i + 1 < found.size() && found[i + 1].side != found[i].side && distance(found[i + 1].point.point, c.point) <= same) {
+                const LoopSide other = found[i + 1].side;
+                (other == LoopSide::A ? c.onA : c.onB).v = sideOf(found[i + 1].point, other).v;
+                ++i;
+            }
+            crossings.emplace_back(found[i].t, c);
+        }
         constexpr double kSnap = 0.25;
+        // A crossing at a node already put on the other tow's seam: that node, on both seams.
+        const auto onBoth = [&](const LoopPoint& c, std::size_t end, bool closing) {
+            if (!snapped[end] || distance(c.point, points[end].point) > same) return false;
+            for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+                const double period = periodOf(loop, side);
+                const double r = (sideOf(c, side).v - vMinOf(loop, side)) / period;
+                if (std::abs(r - std::round(r)) > kSeamSnap) continue;  // not on this seam
+                double v = sideOf(c, side).v;
+                if (closing) v -= side == LoopSide::A ? q.onA.v - base[0].onA.v : q.onB.v - base[0].onB.v;
+                (side == LoopSide::A ? points[end].onA : points[end].onB).v = v;
+            }
+            return true;
+        };
         for (const auto& [t, c] : crossings) {
-            // Both tows' seams crossed at one point (a loop through where the seams meet): the
-            // node already put there serves both (constraintsOn() snaps it onto each seam).
-            if ((snapped[k] && distance(c.point, points[k].point) <= 10.0 * loop.tolerance()) ||
-                (snapped[(k + 1) % n] && distance(c.point, points[(k + 1) % n].point) <= 10.0 * loop.tolerance()))
-                continue;
+            if (onBoth(c, k, false) || onBoth(c, (k + 1) % n, k + 1 == n)) continue;
             if (t < kSnap && !snapped[k]) {
                 points[k] = c;
                 snapped[k] = 1;

@@ -17,7 +17,12 @@ struct LoopPolygon {
     std::vector<K::Point_2> poly;
     double vLo = 1e300, vHi = -1e300, uLo = 1e300, uHi = -1e300;
 
-    explicit LoopPolygon(const std::vector<UV>& polygon)
+    /// Whole periods the loop's closing chord spans: nonzero for a loop that winds around the tow,
+    /// whose closing chord ends one period on from its first point (as chordEnds()).
+    double wind = 0.0;
+    double period = 0.0;
+
+    explicit LoopPolygon(const std::vector<UV>& polygon, double vPeriod = 0.0) : period(vPeriod)
     {
         for (const UV& p : polygon) {
             poly.emplace_back(p.u, p.v);
@@ -26,6 +31,18 @@ struct LoopPolygon {
             uLo = std::min(uLo, p.u);
             uHi = std::max(uHi, p.u);
         }
+        if (period > 0.0 && polygon.size() > 1) wind = std::round((polygon.back().v - polygon.front().v) / period);
+        if (wind != 0.0) {
+            vLo = std::min(vLo, polygon.front().v + wind * period);
+            vHi = std::max(vHi, polygon.front().v + wind * period);
+        }
+    }
+    bool winds() const { return wind != 0.0; }
+    /// Chord i: from point i to the next, the last to the first (one period on if it winds).
+    K::Segment_2 chord(std::size_t i) const
+    {
+        if (i + 1 < poly.size()) return {poly[i], poly[i + 1]};
+        return {poly[i], K::Point_2(poly[0].x(), poly[0].y() + wind * period)};
     }
 
     bool contains(UV c, double period) const
@@ -48,22 +65,23 @@ bool insideLoop(const std::vector<UV>& polygon, UV p, double period) { return Lo
 bool loopsMeet(const std::vector<UV>& a, const std::vector<UV>& b, double period)
 {
     if (a.size() < 3 || b.size() < 3) return false;
-    const LoopPolygon pa(a), pb0(b);
+    const LoopPolygon pa(a, period), pb0(b, period);
     const double shift0 = std::round((0.5 * (pa.vLo + pa.vHi) - 0.5 * (pb0.vLo + pb0.vHi)) / period);
     for (double k = shift0 - 1.0; k <= shift0 + 1.0; k += 1.0) {
         std::vector<UV> moved = b;
         for (UV& p : moved) p.v += k * period;
-        const LoopPolygon pb(moved);
+        const LoopPolygon pb(moved, period);
         if (pb.uHi < pa.uLo || pa.uHi < pb.uLo || pb.vHi < pa.vLo || pa.vHi < pb.vLo) continue;
         for (std::size_t i = 0; i < pa.poly.size(); ++i) {
-            const K::Segment_2 s(pa.poly[i], pa.poly[(i + 1) % pa.poly.size()]);
+            const K::Segment_2 s = pa.chord(i);
             const CGAL::Bbox_2 bs = s.bbox();
             for (std::size_t j = 0; j < pb.poly.size(); ++j) {
-                const K::Segment_2 t(pb.poly[j], pb.poly[(j + 1) % pb.poly.size()]);
+                const K::Segment_2 t = pb.chord(j);
                 if (CGAL::do_overlap(bs, t.bbox()) && CGAL::do_intersect(s, t)) return true;
             }
         }
-        // No crossing: one inside the other, or apart.
+        // No crossing: one inside the other, or apart (a loop around the tow bounds no inside).
+        if (pa.winds() || pb.winds()) continue;
         if (CGAL::bounded_side_2(pa.poly.begin(), pa.poly.end(), pb.poly.front(), K()) != CGAL::ON_UNBOUNDED_SIDE) return true;
         if (CGAL::bounded_side_2(pb.poly.begin(), pb.poly.end(), pa.poly.front(), K()) != CGAL::ON_UNBOUNDED_SIDE) return true;
     }
@@ -75,19 +93,19 @@ std::vector<LoopCrossing> loopCrossings(const std::vector<UV>& a, const std::vec
 {
     std::vector<LoopCrossing> out;
     if (a.size() < 3 || b.size() < 3) return out;
-    const LoopPolygon pa(a), pb0(b);
+    const LoopPolygon pa(a, period), pb0(b, period);
     const double shift0 = std::round((0.5 * (pa.vLo + pa.vHi) - 0.5 * (pb0.vLo + pb0.vHi)) / period);
     const std::size_t na = a.size(), nb = b.size();
     for (double k = shift0 - 1.0; k <= shift0 + 1.0; k += 1.0) {
         std::vector<UV> moved = b;
         for (UV& p : moved) p.v += k * period;
-        const LoopPolygon pb(moved);
+        const LoopPolygon pb(moved, period);
         if (pb.uHi < pa.uLo || pa.uHi < pb.uLo || pb.vHi < pa.vLo || pa.vHi < pb.vLo) continue;
         for (std::size_t i = 0; i < na; ++i) {
-            const K::Segment_2 s(pa.poly[i], pa.poly[(i + 1) % na]);
+            const K::Segment_2 s = pa.chord(i);
             const CGAL::Bbox_2 bs = s.bbox();
             for (std::size_t j = 0; j < nb; ++j) {
-                const K::Segment_2 t(pb.poly[j], pb.poly[(j + 1) % nb]);
+                const K::Segment_2 t = pb.chord(j);
                 if (!CGAL::do_overlap(bs, t.bbox()) || !CGAL::do_intersect(s, t)) continue;
                 const std::size_t a0 = nodesA[i], a1 = nodesA[(i + 1) % na], b0 = nodesB[j], b1 = nodesB[(j + 1) % nb];
                 if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;

@@ -329,6 +329,33 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
         return options.mesh.loopSpacing > 0.0 ? options.mesh.loopSpacing : std::min(towH[l.towA()], towH[l.towB()]);
     };
     std::vector<Point3> nodes;
+    // Loops that wind around a tow (it passes through the other tow, or ends inside it) cut it
+    // into bands alternately inside and outside the other; a pair whose loops disagree on which
+    // side is inside is left out (before anything else depends on its loops).
+    std::map<TowPair, detail::WindingBands> bands;  // (t, o) -> the bands of t
+    std::set<TowPair> disagree;
+    {
+        std::map<TowPair, std::vector<std::size_t>> winding;  // (t, o) -> the loops winding around t
+        for (std::size_t i = 0; i < loops.size(); ++i) {
+            const IntersectionLoop& l = loops[i];
+            if (!options.mesh.caps || !l.closed() || excluded.count({l.towA(), l.towB()}) ||
+                (l.windsAround(LoopSide::A) && l.windsAround(LoopSide::B)))
+                continue;
+            if (l.windsAround(LoopSide::A)) winding[{l.towA(), l.towB()}].push_back(i);
+            if (l.windsAround(LoopSide::B)) winding[{l.towB(), l.towA()}].push_back(i);
+        }
+        for (const auto& [to, list] : winding) {
+            std::optional<detail::WindingBands> b = detail::windingBands(tows, to.first, to.second, loops, list);
+            if (b)
+                bands.emplace(to, std::move(*b));
+            else
+                disagree.insert(std::minmax(to.first, to.second));
+        }
+        for (const TowPair& p : disagree) {
+            bands.erase(p);
+            bands.erase({p.second, p.first});
+        }
+    }
     std::vector<detail::SharedLoop> shared;
     for (std::size_t i = 0; i < loops.size(); ++i) {
         const IntersectionLoop& l = loops[i];
@@ -340,6 +367,10 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
             result.skipped.emplace_back(i, "the loop goes around tow '" +
                                                (l.windsAround(LoopSide::A) ? l.surfaceA() : l.surfaceB()).name() +
                                                "' (one tow passes through the other; resolved only with end caps)");
+        else if (disagree.count({l.towA(), l.towB()}))
+            result.skipped.emplace_back(i, "the loops of tows '" + l.surfaceA().name() + "' and '" + l.surfaceB().name() +
+                                               "' go around one of them but do not cut it into bands alternately inside and "
+                                               "outside the other");
         else if (!excluded.count({l.towA(), l.towB()}))
             shared.push_back(detail::shareLoopNodes(l, i, spacingOf(l), nodes));
     }
@@ -356,40 +387,6 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
         }
     const detail::TripleJoin triples = detail::joinAtTriplePoints(tows, loops, shared, nodes);
     dropMeetingLoops(tows, loops, shared, triples.crossing, result.unresolved);
-    // Loops that wind around a tow (it passes through the other tow, or ends inside it) cut it
-    // into bands alternately inside and outside the other; a pair whose loops disagree on which
-    // side is inside is left out.
-    std::map<TowPair, detail::WindingBands> bands;  // (t, o) -> the bands of t
-    {
-        std::map<TowPair, std::vector<std::size_t>> winding;  // (t, o) -> the loops winding around t
-        for (const detail::SharedLoop& w : shared) {
-            const IntersectionLoop& l = loops[w.loop];
-            if (l.windsAround(LoopSide::A)) winding[{l.towA(), l.towB()}].push_back(w.loop);
-            if (l.windsAround(LoopSide::B)) winding[{l.towB(), l.towA()}].push_back(w.loop);
-        }
-        std::set<TowPair> disagree;
-        for (const auto& [to, list] : winding) {
-            std::optional<detail::WindingBands> b = detail::windingBands(tows, to.first, to.second, loops, list);
-            if (b)
-                bands.emplace(to, std::move(*b));
-            else
-                disagree.insert(std::minmax(to.first, to.second));
-        }
-        for (const TowPair& p : disagree) {
-            bands.erase(p);
-            bands.erase({p.second, p.first});
-        }
-        for (const detail::SharedLoop& w : shared) {
-            const IntersectionLoop& l = loops[w.loop];
-            if (disagree.count({l.towA(), l.towB()}))
-                result.skipped.emplace_back(w.loop, "the loops of tows '" + l.surfaceA().name() + "' and '" + l.surfaceB().name() +
-                                                        "' go around one of them, but do not cut it into bands alternately inside "
-                                                        "and outside the other");
-        }
-        shared.erase(std::remove_if(shared.begin(), shared.end(),
-                                    [&](const detail::SharedLoop& w) { return disagree.count({loops[w.loop].towA(), loops[w.loop].towB()}) > 0; }),
-                     shared.end());
-    }
     constexpr std::size_t kLocal = std::size_t(1) << 60;  // marks a tow's own new nodes
     // Round 1 meshes every tow. Refinement never splits a constraint; where a triangle needs a
     // split of a loop chord or seam edge to meet the bounds, the split becomes an exact loop node
@@ -568,6 +565,8 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
         std::map<std::size_t, std::size_t> sharedOfLoop;
         for (std::size_t k = 0; k < shared.size(); ++k) sharedOfLoop[shared[k].loop] = k;
         for (const auto& [to, b] : bands) {
+            if (!std::all_of(b.loops.begin(), b.loops.end(), [&](std::size_t l) { return sharedOfLoop.count(l) > 0; }))
+                continue;  // the pair was left out
             TowBands tb{to.second, &b, {}, {}};
             for (const std::size_t l : b.loops) {
                 const std::size_t k = sharedOfLoop.at(l);
@@ -576,6 +575,11 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
             }
             bandsOn[to.first].push_back(std::move(tb));
         }
+    }
+    std::map<TowPair, std::size_t> windingRegionLoop;  // pair -> its first loop around a tow
+    for (std::size_t k = 0; k < shared.size(); ++k) {
+        const IntersectionLoop& l = loops[shared[k].loop];
+        if ((l.windsAround(LoopSide::A) || l.windsAround(LoopSide::B)) && regionOf[k] >= 0) windingRegionLoop.try_emplace(pairOf(k), k);
     }
     std::vector<std::vector<char>> removed(tows.size());
     std::vector<std::vector<long>> region(tows.size());
@@ -619,6 +623,11 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
                     if (it->second.first % 2 == 1 && regionOf[it->second.second] < 0) it->second.second = bounding;
                 }
             }
+            // Inside by parity but its deepest loop is a hole (a loop nested in a loop around a
+            // tow, whose nesting was taken on the other tow): the pair's band region.
+            for (auto& [o, c] : in)
+                if (c.first % 2 == 1 && regionOf[c.second] < 0)
+                    if (const auto w = windingRegionLoop.find(std::minmax(t, o)); w != windingRegionLoop.end()) c.second = w->second;
             std::size_t top = tows.size();  // the highest-ranked tow it lies inside
             for (const auto& [o, c] : in)
                 if (c.first % 2 == 1 && (top == tows.size() || rank[o] < rank[top])) top = o;
@@ -629,7 +638,10 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
                 removed[t][tri] = 1;
             } else {
                 const long id = regionOf[in[top].second];
-                if (id < 0) throw Error(ErrorCode::Internal, "a triangle inside an odd number of loops has no region", "tow '" + tows[t].name() + "'");
+                if (id < 0) {
+                    failures.run(t, [&] { throw Error(ErrorCode::Internal, "a triangle inside an odd number of loops has no region"); });
+                    continue;
+                }
                 const Triangle& triangle = meshes[t].triangles[tri];
                 region[t][tri] = id;
                 ConnectedRegion& r = regions[static_cast<std::size_t>(id)];
@@ -639,6 +651,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
             }
         }
     }
+    failures.throwAll();
     // A tow through another (or ending inside it): its loops bound one overlap together, whose
     // volume goes to the pair's first region that kept triangles.
     for (const auto& [to, b] : bands) {
@@ -799,7 +812,7 @@ ResolveResult resolveInFrame(const std::vector<TowSurface>& tows, const std::vec
     result.timings.intersect = msSince(t0);
     double loopLength = 0.0;  // of the loops that will be meshed
     for (const IntersectionLoop& l : result.intersections.loops)
-        if (l.closed() && !l.windsAround(LoopSide::A) && !l.windsAround(LoopSide::B)) loopLength += l.length();
+        if (l.closed() && (options.mesh.caps || (!l.windsAround(LoopSide::A) && !l.windsAround(LoopSide::B)))) loopLength += l.length();
     checkLoopRefinement(loopLength);
     std::set<TowPair> excluded;
     std::vector<UnresolvedPair> unresolved;

@@ -91,10 +91,20 @@ public:
         const double same = 100.0 * tolerance;  // Newton's points for one triple point agree to rounding
         for (const LoopCrossing& c : loopCrossings(exactPolygon(li, sideOf(li, t)), ni, exactPolygon(lj, sideOf(lj, t)), nj,
                                                    tows_[t].parameterRange().vPeriod())) {
+            // Chord ends, the second's v next to the first's (the closing chord of a loop around a
+            // tow ends one period on).
+            const auto next = [](const IntersectionLoop& l, const std::vector<LoopPoint>& pts, std::size_t k) {
+                LoopPoint q = pts[(k + 1) % pts.size()];
+                for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+                    const double period = periodOn(l, side);
+                    sideRef(q, side).v += period * std::round((onSide(pts[k], side).v - onSide(q, side).v) / period);
+                }
+                return q;
+            };
             const LoopPoint& a0 = pi[c.chordA];
-            const LoopPoint& a1 = pi[(c.chordA + 1) % pi.size()];
+            const LoopPoint a1 = next(li, pi, c.chordA);
             const LoopPoint& b0 = pj[c.chordB];
-            const LoopPoint& b1 = pj[(c.chordB + 1) % pj.size()];
+            const LoopPoint b1 = next(lj, pj, c.chordB);
             const auto lerp = [](UV p, UV q, double f) { return UV{p.u + f * (q.u - p.u), p.v + f * (q.v - p.v)}; };
             const UV onT = lerp(onSide(a0, sideOf(li, t)), onSide(a1, sideOf(li, t)), c.ta);
             const UV onS1 = lerp(onSide(a0, sideOf(li, s1)), onSide(a1, sideOf(li, s1)), c.ta);

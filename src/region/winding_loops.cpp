@@ -15,17 +15,19 @@ UV onTow(const LoopPoint& p, const IntersectionLoop& l, std::size_t tow) { retur
 int exitsAlongU(const std::vector<TowSurface>& tows, std::size_t t, std::size_t o, const IntersectionLoop& l)
 {
     const std::vector<LoopPoint>& pts = l.points();
-    const std::size_t step = std::max<std::size_t>(1, pts.size() / 16);
-    int out = 0, in = 0;
+    // The unit tangent along t against o's normal, summed over the loop: a loop folding back
+    // in v has points of both signs, its crossing is the side that dominates.
+    const std::size_t step = std::max<std::size_t>(1, pts.size() / 32);
+    double sum = 0.0, total = 0.0;
     for (std::size_t k = 0; k < pts.size(); k += step) {
         const UV a = onTow(pts[k], l, t), b = onTow(pts[k], l, o);
-        const double s = dot(tows[t].derivatives(a.u, a.v).du, tows[o].normal(b.u, b.v));
-        if (s > 0.0) ++out;
-        if (s < 0.0) ++in;
+        const Vector3 du = tows[t].derivatives(a.u, a.v).du;
+        const double s = dot(du, tows[o].normal(b.u, b.v)) / norm(du);
+        sum += s;
+        total += std::abs(s);
     }
-    if (out > 0 && in == 0) return 1;
-    if (in > 0 && out == 0) return -1;
-    return 0;
+    if (!(total > 0.0) || std::abs(sum) < 0.5 * total) return 0;  // no clear side
+    return sum > 0.0 ? 1 : -1;
 }
 
 double meanU(const IntersectionLoop& l, std::size_t t)
