@@ -124,7 +124,7 @@ public:
     /// lies on a seam.
     bool insert(const FoundTriple& x)
     {
-        const auto [t, s1, s2] = x.tows;
+        const std::size_t t = x.tows[0], s1 = x.tows[1], s2 = x.tows[2];
         const auto uvOn = [&](std::size_t tow) {
             const std::size_t o = tow == t ? 0 : tow == s1 ? 2 : 4;
             return UV{x.at.uv[o], x.at.uv[o + 1]};
