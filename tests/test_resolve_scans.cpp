@@ -456,18 +456,29 @@ TEST_CASE("resolveTextile refuses bad intersection options", "[resolve][scan]")
     }
 }
 
-TEST_CASE("towgeom resolve names a pair it could not resolve, writes the rest and exits 3", "[resolve][scan][unresolved][cli]")
+namespace {
+
+/// Writes @p stacks as NAME.stw into a fresh @p dir: the quoted paths, for a command line.
+std::string writeStacks(const std::filesystem::path& dir, const std::vector<TowStack>& stacks)
 {
-    const auto dir = std::filesystem::temp_directory_path() / ("towgeom_three_tows_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     std::string files;
-    for (const TowStack& t : threeTows()) {
+    for (const TowStack& t : stacks) {
         const auto path = dir / (t.name + ".stw");
         std::ofstream out(path);
         writeStack(out, t);
         files += " '" + path.string() + "'";
     }
+    return files;
+}
+
+}  // namespace
+
+TEST_CASE("towgeom resolve names a pair it could not resolve, writes the rest and exits 3", "[resolve][scan][unresolved][cli]")
+{
+    const auto dir = std::filesystem::temp_directory_path() / ("towgeom_three_tows_" + std::to_string(::getpid()));
+    const std::string files = writeStacks(dir, threeTows());
     const testing::Run r = testing::cli("resolve" + files + " --quiet --no-caps --out '" + (dir / "out").string() + "'");
     INFO(r.err);
     CHECK(r.status == 3);
@@ -486,15 +497,7 @@ TEST_CASE("towgeom resolve names a pair it could not resolve, writes the rest an
 TEST_CASE("towgeom resolve lists the triple points in report.json", "[resolve][scan][triple][cli]")
 {
     const auto dir = std::filesystem::temp_directory_path() / ("towgeom_triple_" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    std::string files;
-    for (const TowStack& t : threeTowsAtAPoint(0.3, 0.41)) {
-        const auto path = dir / (t.name + ".stw");
-        std::ofstream out(path);
-        writeStack(out, t);
-        files += " '" + path.string() + "'";
-    }
+    const std::string files = writeStacks(dir, threeTowsAtAPoint(0.3, 0.41));
     const testing::Run r = testing::cli("resolve" + files + " --quiet --out '" + (dir / "out").string() + "'");
     INFO(r.err);
     CHECK(r.status == 0);
@@ -508,14 +511,14 @@ TEST_CASE("towgeom resolve lists the triple points in report.json", "[resolve][s
 
 namespace {
 
-/// A pressed 3D orthogonal weave (towgeom generate --weave orthogonal --tows 8x8 --layers 3
-/// --section racetrack --overlap 0.15 --width 0.9 --sections 30 --points 32): 63 tows.
-std::vector<TowStack> pressedOrthogonal()
+/// A pressed 3D orthogonal weave (towgeom generate --weave orthogonal --tows NxN --layers L
+/// --section racetrack --overlap 0.15 --width 0.9 --sections 30 --points 32); 8 x 8 x 3: 63 tows.
+std::vector<TowStack> pressedOrthogonal(std::size_t tows = 8, std::size_t layers = 3)
 {
     WeaveOptions o;
     o.kind = WeaveKind::Orthogonal;
-    o.warps = o.wefts = 8;
-    o.layers = 3;
+    o.warps = o.wefts = tows;
+    o.layers = layers;
     o.shape = SectionShape::Racetrack;
     o.overlap = 0.15;
     o.width = 0.9;
@@ -552,16 +555,7 @@ TEST_CASE("pressed layers resolve at 6 mesh sizes from the largest accepted to a
     // A pressed 3D orthogonal weave, 3 x 3 tows in 2 layers with binders (17 tows, 44 loops):
     // racetrack sections pressed 15 % into each other (shallow, wide contacts), binders a tenth
     // of the warps' size.
-    WeaveOptions w;
-    w.kind = WeaveKind::Orthogonal;
-    w.warps = w.wefts = 3;
-    w.layers = 2;
-    w.shape = SectionShape::Racetrack;
-    w.overlap = 0.15;
-    w.width = 0.9;
-    w.sectionsPerYarn = 30;
-    w.pointsPerSection = 32;
-    const std::vector<TowSurface> tows = fit(generateWeave(w).stacks());
+    const std::vector<TowSurface> tows = fit(pressedOrthogonal(3, 2));
     REQUIRE(tows.size() == 17);
     for (const double h : {0.785, 0.4, 0.2, 0.15, 0.1, 0.0785}) {
         INFO("relative mesh size " << h);
