@@ -1,5 +1,7 @@
 #include "intersect/loop_tracing.hpp"
 
+#include "core/segment_distance.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -103,7 +105,6 @@ bool stepPast(const SurfacePair& s, const PointOn2& end, const PointOn2& before,
     return true;
 }
 
-double segmentDistance(const Point3& p, const Point3& a, const Point3& b);
 double bridgeDistance(const std::vector<PointOn2>& pts, const TraceTolerances& tol);
 
 /// The first index from @p from on where @p chain comes back to its first point (within a few
@@ -252,15 +253,6 @@ void densify(const SurfacePair& s, const TraceTolerances& tol, std::vector<Point
         }
     }
     out.push_back(b);
-}
-
-/// The distance from @p p to the segment [a, b].
-double segmentDistance(const Point3& p, const Point3& a, const Point3& b)
-{
-    const Vector3 ab = b - a;
-    const double l2 = dot(ab, ab);
-    const double t = l2 > 0.0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
-    return distance(p, a + t * ab);
 }
 
 /// Keeps the first and last points and, greedily, as few others as possible such that every

@@ -232,20 +232,17 @@ void dropMeetingLoops(const std::vector<TowSurface>& tows, const std::vector<Int
     for (bool changed = true; changed;) {
         changed = false;
         for (std::size_t t = 0; t < tows.size(); ++t) {
-            std::vector<std::pair<std::size_t, LoopSide>> on;  // the loops on tow t
-            for (std::size_t k = 0; k < shared.size(); ++k) {
-                const IntersectionLoop& l = loops[shared[k].loop];
-                if (l.towA() == t) on.emplace_back(k, LoopSide::A);
-                if (l.towB() == t) on.emplace_back(k, LoopSide::B);
-            }
+            std::vector<std::size_t> on;  // the loops on tow t
+            for (std::size_t k = 0; k < shared.size(); ++k)
+                if (loops[shared[k].loop].towA() == t || loops[shared[k].loop].towB() == t) on.push_back(k);
             for (std::size_t i = 0; i < on.size(); ++i)
                 for (std::size_t j = i + 1; j < on.size(); ++j) {
-                    const TowPair p = pairOf(on[i].first), q = pairOf(on[j].first);
+                    const TowPair p = pairOf(on[i]), q = pairOf(on[j]);
                     if (p == q || dropped.count(p) || dropped.count(q)) continue;
                     const std::size_t s1 = p.first == t ? p.second : p.first, s2 = q.first == t ? q.second : q.first;
                     const TowPair third = std::minmax(s1, s2);
-                    if (!meetOn(on[i].first, on[j].first, t)) continue;
-                    if (dropped.count(third) == 0 && thirdThere(third, on[i].first, s1, on[j].first, s2)) continue;
+                    if (!meetOn(on[i], on[j], t)) continue;
+                    if (dropped.count(third) == 0 && thirdThere(third, on[i], s1, on[j], s2)) continue;
                     drop(p, q, t, "meets", names(third) + " have no loop resolved there");
                     changed = true;
                 }

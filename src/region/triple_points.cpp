@@ -6,6 +6,7 @@
 #include <map>
 #include <set>
 
+#include "core/segment_distance.hpp"
 #include "intersect/intersection_loop_data.hpp"
 #include "intersect/intersection_point.hpp"
 #include "region/connected_region.hpp"
@@ -35,14 +36,6 @@ double periodOn(const IntersectionLoop& l, LoopSide side)
     return (side == LoopSide::A ? l.surfaceA() : l.surfaceB()).parameterRange().vPeriod();
 }
 
-
-double segmentDistance(const Point3& p, const Point3& a, const Point3& b)
-{
-    const Vector3 d = b - a;
-    const double dd = dot(d, d);
-    const double t = dd > 0.0 ? std::clamp(dot(p - a, d) / dd, 0.0, 1.0) : 0.0;
-    return distance(p, a + t * d);
-}
 
 /// A triple point found: the three tows (t, s1, s2) and the point on each.
 struct FoundTriple {
