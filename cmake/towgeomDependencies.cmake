@@ -7,6 +7,8 @@ if(OpenCASCADE_VERSION VERSION_LESS 7.6)
 endif()
 find_package(CGAL 5.5 REQUIRED CONFIG)
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+# Header-only, used inside the library only (JSON reports): not needed by consumers.
+find_package(nlohmann_json 3.11 REQUIRED CONFIG)
 
 # The OCCT toolkits towgeom links (OCCT's imported targets carry no include directories).
 set(TOWGEOM_OCCT_LIBRARIES TKernel TKMath TKG2d TKG3d TKGeomBase TKGeomAlgo)

@@ -33,7 +33,8 @@ enum class ErrorCode {
     FitFailed,                ///< The surface fit could not be computed (singular system, ...).
     WriteFailed,              ///< An output file could not be written.
     Internal,                 ///< A geometry kernel failed unexpectedly; the message says where.
-    TooLarge                  ///< The mesh or tessellation asked for would exceed its size limit
+    TooLarge,                 ///< The mesh or tessellation asked for would exceed its size limit
+    MalformedReport           ///< A JSON report read back is malformed, or is not one of the tows given
                               ///< (MeshOptions::maxTriangles); refused before it is made, the
                               ///< message gives the estimate and the limit.
 };

@@ -146,4 +146,27 @@ struct ResolveResult {
 /// before meshing); (Internal) if a kernel fails outside the meshing of a tow.
 ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveOptions& options = {});
 
+/// resolveTextile() with the intersection loops already computed: @p report is intersectTows()
+/// of these @p tows (kept, filtered, or read back with readIntersectionReport()), so that one
+/// intersection serves several meshes, for a mesh-size study. resolveTextile(tows, options) is
+/// this with `intersectTows(tows, options.intersection)`, so both give the same meshes.
+/// ResolveOptions::intersection is used only for its checks here; ResolveResult::intersections
+/// is @p report and ResolveTimings::intersect is 0.
+///
+/// @code
+/// const towgeom::IntersectionReport loops = towgeom::intersectTows(tows);  // once
+/// for (double h : {0.2, 0.1, 0.05}) {
+///     towgeom::ResolveOptions options;
+///     options.mesh.relativeEdgeLength = h;
+///     const towgeom::ResolveResult r = towgeom::resolveTextile(tows, loops, options);
+///     std::cout << h << ": " << r.quality.triangles << " triangles\n";
+/// }
+/// @endcode
+///
+/// @throws towgeom::Error as resolveTextile(); (InvalidArgument) also when a loop of @p report
+/// is not between two of @p tows (a tow index out of range, or tows of other names at its
+/// indices: the report of another textile or of the tows in another order).
+ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const IntersectionReport& report,
+                             const ResolveOptions& options = {});
+
 }  // namespace towgeom

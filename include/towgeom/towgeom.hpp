@@ -14,6 +14,7 @@
 #include "towgeom/fit_options.hpp"
 #include "towgeom/intersection_loop.hpp"
 #include "towgeom/intersection_options.hpp"
+#include "towgeom/intersection_report_json.hpp"
 #include "towgeom/mesh_export.hpp"
 #include "towgeom/mesh_options.hpp"
 #include "towgeom/point.hpp"

@@ -49,6 +49,7 @@ const char* errorCodeName(ErrorCode code) noexcept
     case ErrorCode::WriteFailed: return "write_failed";
     case ErrorCode::Internal: return "internal";
     case ErrorCode::TooLarge: return "too_large";
+    case ErrorCode::MalformedReport: return "malformed_report";
     }
     return "unknown";
 }

@@ -60,7 +60,12 @@ IntersectionLoop makeLoop(std::size_t towA, std::size_t towB, const TowSurface& 
     return IntersectionLoop(std::move(d));
 }
 
-IntersectionLoop loopToUser(const IntersectionLoop& loop, const TowSurface& a, const TowSurface& b, const Frame& frame)
+namespace {
+
+/// @p loop on the surfaces @p a and @p b, its points mapped by @p move and its lengths
+/// multiplied by @p lengthScale (the (u,v) are the same in both frames).
+template <class Move>
+IntersectionLoop movedLoop(const IntersectionLoop& loop, const TowSurface& a, const TowSurface& b, Move move, double lengthScale)
 {
     const IntersectionLoop::Data& f = loop.data();
     auto d = std::make_shared<IntersectionLoop::Data>(a, b);
@@ -68,14 +73,26 @@ IntersectionLoop loopToUser(const IntersectionLoop& loop, const TowSurface& a, c
     d->towB = f.towB;
     d->closed = f.closed;
     d->openReason = f.openReason;
-    d->tolerance = frame.lengthToUser(f.tolerance);
-    d->maxDistanceA = frame.lengthToUser(f.maxDistanceA);
-    d->maxDistanceB = frame.lengthToUser(f.maxDistanceB);
+    d->tolerance = f.tolerance * lengthScale;
+    d->maxDistanceA = f.maxDistanceA * lengthScale;
+    d->maxDistanceB = f.maxDistanceB * lengthScale;
     d->points = f.points;
-    for (LoopPoint& p : d->points) p.point = frame.toUser(p.point);
+    for (LoopPoint& p : d->points) p.point = move(p.point);
     d->cumulative = f.cumulative;
-    for (double& c : d->cumulative) c = frame.lengthToUser(c);
+    for (double& c : d->cumulative) c *= lengthScale;
     return IntersectionLoop(std::move(d));
+}
+
+}  // namespace
+
+IntersectionLoop loopToUser(const IntersectionLoop& loop, const TowSurface& a, const TowSurface& b, const Frame& frame)
+{
+    return movedLoop(loop, a, b, [&](const Point3& p) { return frame.toUser(p); }, frame.lengthToUser(1.0));
+}
+
+IntersectionLoop loopToFrame(const IntersectionLoop& loop, const TowSurface& a, const TowSurface& b, const Frame& frame)
+{
+    return movedLoop(loop, a, b, [&](const Point3& p) { return frame.toFrame(p); }, frame.lengthToFrame(1.0));
 }
 
 }  // namespace detail

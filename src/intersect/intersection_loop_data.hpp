@@ -37,6 +37,9 @@ IntersectionLoop makeLoop(std::size_t towA, std::size_t towB, const TowSurface& 
 /// (the same parameters; points, lengths and tolerances back in the user's units).
 IntersectionLoop loopToUser(const IntersectionLoop& loop, const TowSurface& a, const TowSurface& b, const Frame& frame);
 
+/// @p loop, given on the user's tows, on @p a and @p b (those tows moved into @p frame).
+IntersectionLoop loopToFrame(const IntersectionLoop& loop, const TowSurface& a, const TowSurface& b, const Frame& frame);
+
 }  // namespace detail
 
 }  // namespace towgeom

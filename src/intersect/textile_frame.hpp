@@ -23,6 +23,9 @@ IntersectionReport intersectInFrame(const std::vector<TowSurface>& tows, const I
 /// @p report, computed on tows moved into @p frame, for the user's @p tows (loops mapped back).
 void reportToUser(IntersectionReport& report, const std::vector<TowSurface>& tows, const Frame& frame);
 
+/// @p report, given for the user's tows, for @p towsInFrame (those tows moved into @p frame).
+IntersectionReport reportToFrame(const IntersectionReport& report, const std::vector<TowSurface>& towsInFrame, const Frame& frame);
+
 /// Refuses (InvalidArgument) negative, zero or non-finite tolerances.
 void checkIntersectionOptions(const IntersectionOptions& options);
 

@@ -219,6 +219,13 @@ void reportToUser(IntersectionReport& report, const std::vector<TowSurface>& tow
     for (IntersectionLoop& l : report.loops) l = loopToUser(l, tows[l.towA()], tows[l.towB()], frame);
 }
 
+IntersectionReport reportToFrame(const IntersectionReport& report, const std::vector<TowSurface>& towsInFrame, const Frame& frame)
+{
+    IntersectionReport moved = report;
+    for (IntersectionLoop& l : moved.loops) l = loopToFrame(l, towsInFrame[l.towA()], towsInFrame[l.towB()], frame);
+    return moved;
+}
+
 IntersectionOptions optionsInFrame(const IntersectionOptions& options, const Frame& frame)
 {
     IntersectionOptions o = options;

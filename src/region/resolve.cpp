@@ -793,30 +793,23 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
     result.timings.regions = msSince(t0);
 }
 
-/// resolveTextile() on tows already in a normalised frame, with options in the frame's units
-/// (the mesh size set); @p checkLoopRefinement is given the loops' length (frame units) before
-/// meshing. A tow whose mesh fails costs only the tow pairs with loops on it: they
-/// are left unresolved (named in the result) and the rest is meshed again without them.
+/// Meshes and connects tows already in a normalised frame with the loops of @p report (on those
+/// tows), options in the frame's units (the mesh size set); @p checkLoopRefinement is given the
+/// loops' length (frame units) before meshing. A tow whose mesh fails costs only the tow pairs
+/// with loops on it: they are left unresolved (named in the result) and the rest is meshed again
+/// without them.
 ResolveResult resolveInFrame(const std::vector<TowSurface>& tows, const std::vector<double>& towH, const ResolveOptions& options,
-                             const std::function<void(double)>& checkLoopRefinement)
+                             const IntersectionReport& report, const std::function<void(double)>& checkLoopRefinement)
 {
-    ResolveResult result;
-    const Clock::time_point t0 = Clock::now();
-    IntersectionOptions io = options.intersection;
-    io.threads = options.threads;
-    if (options.progress) options.progress("intersecting " + std::to_string(tows.size()) + " tows");
-    result.intersections = detail::intersectInFrame(tows, io);
-    result.timings.intersect = msSince(t0);
     double loopLength = 0.0;  // of the loops that will be meshed
-    for (const IntersectionLoop& l : result.intersections.loops)
+    for (const IntersectionLoop& l : report.loops)
         if (l.closed() && (options.mesh.caps || (!l.windsAround(LoopSide::A) && !l.windsAround(LoopSide::B)))) loopLength += l.length();
     checkLoopRefinement(loopLength);
     std::set<TowPair> excluded;
     std::vector<UnresolvedPair> unresolved;
     for (;;) {
         ResolveResult attempt;
-        attempt.intersections = result.intersections;
-        attempt.timings.intersect = result.timings.intersect;
+        attempt.intersections = report;
         try {
             meshAndConnect(tows, towH, options, excluded, attempt);
         } catch (const TowMeshFailures& failed) {
@@ -887,10 +880,11 @@ std::vector<double> meshSizes(const std::vector<TowSurface>& tows, const MeshOpt
     return h;
 }
 
-/// @p result, computed on tows moved into @p frame, in the user's units and tows.
-void resultToUser(ResolveResult& result, const std::vector<TowSurface>& tows, const detail::Frame& frame)
+/// @p result, computed on tows moved into @p frame, in the user's units; @p report (the user's)
+/// replaces the loops in the frame.
+void resultToUser(ResolveResult& result, const IntersectionReport& report, const detail::Frame& frame)
 {
-    detail::reportToUser(result.intersections, tows, frame);
+    result.intersections = report;
     for (Point3& p : result.mesh.nodes) p = frame.toUser(p);
     const double s = frame.scale;
     for (TowResolution& t : result.tows) {
@@ -904,43 +898,97 @@ void resultToUser(ResolveResult& result, const std::vector<TowSurface>& tows, co
     }
 }
 
-}  // namespace
+/// The mesh sizes of resolveTextile(), checked against MeshOptions::maxTriangles before the
+/// loops are known; check() repeats the check with the loops' refinement.
+struct MeshSizePlan {
+    std::vector<double> towH;  ///< per tow, the user's units
+    double area = 0.0;         ///< the tows' (faceted) area
+    double h = 1.0;            ///< the tows' mesh sizes averaged as the triangle count sees them
+    double spacing = 1.0;      ///< the loop spacing
 
-ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveOptions& options)
-{
-    checkOptions(options);
-    detail::checkIntersectionOptions(options.intersection);
-    const std::vector<double> towH = meshSizes(tows, options.mesh);
-    // Refuse a mesh too large for memory now, before intersecting; the loops' part once their
-    // lengths are known. In the user's units, for the message; h is the tows' mesh sizes
-    // averaged as the triangle count sees them (area-weighted in 1/h^2).
-    double area = 0.0, perH2 = 0.0;
-    for (std::size_t t = 0; t < tows.size(); ++t) {
-        const double a = facetedArea(tows[t], options.mesh.caps);
-        area += a;
-        perH2 += a / (towH[t] * towH[t]);
+    MeshSizePlan(const std::vector<TowSurface>& tows, const MeshOptions& mesh) : towH(meshSizes(tows, mesh))
+    {
+        // In the user's units, for the message; h area-weighted in 1/h^2.
+        double perH2 = 0.0;
+        for (std::size_t t = 0; t < tows.size(); ++t) {
+            const double a = facetedArea(tows[t], mesh.caps);
+            area += a;
+            perH2 += a / (towH[t] * towH[t]);
+        }
+        h = perH2 > 0.0 ? std::sqrt(area / perH2) : 1.0;
+        spacing = mesh.loopSpacing > 0.0 ? mesh.loopSpacing : h;
+        checkMeshSize(mesh, area, h, 0.0, spacing);
     }
-    const double h = perH2 > 0.0 ? std::sqrt(area / perH2) : 1.0;
-    const double spacing = options.mesh.loopSpacing > 0.0 ? options.mesh.loopSpacing : h;
-    checkMeshSize(options.mesh, area, h, 0.0, spacing);
+};
+
+/// Refuses (InvalidArgument) a report that is not one of @p tows: a loop naming a tow index out
+/// of range, or tows other than those at its indices.
+void checkReport(const std::vector<TowSurface>& tows, const IntersectionReport& report)
+{
+    for (std::size_t k = 0; k < report.loops.size(); ++k) {
+        const IntersectionLoop& l = report.loops[k];
+        const std::string which = "intersection loop " + std::to_string(k);
+        if (l.towA() >= l.towB() || l.towB() >= tows.size())
+            throw Error(ErrorCode::InvalidArgument, which + " is between tows " + std::to_string(l.towA()) + " and " +
+                                                        std::to_string(l.towB()) + ", not two of the " +
+                                                        std::to_string(tows.size()) + " tows given");
+        if (l.surfaceA().name() != tows[l.towA()].name() || l.surfaceB().name() != tows[l.towB()].name())
+            throw Error(ErrorCode::InvalidArgument, which + " is between tows '" + l.surfaceA().name() + "' and '" +
+                                                        l.surfaceB().name() + "', but the tows at its indices are '" +
+                                                        tows[l.towA()].name() + "' and '" + tows[l.towB()].name() + "'");
+    }
+}
+
+/// resolveTextile() with @p report for @p tows, both checked, the sizes planned.
+ResolveResult resolveWithReport(const std::vector<TowSurface>& tows, const IntersectionReport& report,
+                                const ResolveOptions& options, const MeshSizePlan& plan)
+{
     // Computed in the textile's normalised frame (as intersectTows()), so that the meshes do not
     // depend on the user's units; the results go back to the user's units.
     const detail::Frame frame = detail::textileFrame(tows);
     ResolveOptions o = options;
     std::vector<double> towHInFrame;
-    for (double x : towH) towHInFrame.push_back(frame.lengthToFrame(x));
+    for (double x : plan.towH) towHInFrame.push_back(frame.lengthToFrame(x));
     o.mesh.loopSpacing = frame.lengthToFrame(options.mesh.loopSpacing);
     o.intersection = detail::optionsInFrame(options.intersection, frame);
-    ResolveResult result = resolveInFrame(detail::towsInFrame(tows, frame), towHInFrame, o, [&](double loopLength) {
-        checkMeshSize(options.mesh, area, h, frame.lengthToUser(loopLength), spacing);
-        if (options.progress && !towH.empty()) {  // in the user's units
-            const auto [lo, hi] = std::minmax_element(towH.begin(), towH.end());
+    const std::vector<TowSurface> moved = detail::towsInFrame(tows, frame);
+    ResolveResult result = resolveInFrame(moved, towHInFrame, o, detail::reportToFrame(report, moved, frame), [&](double loopLength) {
+        checkMeshSize(options.mesh, plan.area, plan.h, frame.lengthToUser(loopLength), plan.spacing);
+        if (options.progress && !plan.towH.empty()) {  // in the user's units
+            const auto [lo, hi] = std::minmax_element(plan.towH.begin(), plan.towH.end());
             options.progress("meshing " + std::to_string(tows.size()) + " tows at h = " + std::to_string(*lo) +
                              (*hi > *lo * (1.0 + 1e-6) ? " to " + std::to_string(*hi) : std::string()));
         }
     });
-    resultToUser(result, tows, frame);
-    for (std::size_t t = 0; t < tows.size(); ++t) result.tows[t].meshSize = towH[t];
+    resultToUser(result, report, frame);
+    for (std::size_t t = 0; t < tows.size(); ++t) result.tows[t].meshSize = plan.towH[t];
+    return result;
+}
+
+}  // namespace
+
+ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const IntersectionReport& report, const ResolveOptions& options)
+{
+    checkOptions(options);
+    detail::checkIntersectionOptions(options.intersection);
+    checkReport(tows, report);
+    return resolveWithReport(tows, report, options, MeshSizePlan(tows, options.mesh));
+}
+
+ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveOptions& options)
+{
+    checkOptions(options);
+    detail::checkIntersectionOptions(options.intersection);
+    // A mesh too large for memory is refused now, before intersecting.
+    const MeshSizePlan plan(tows, options.mesh);
+    const Clock::time_point t0 = Clock::now();
+    IntersectionOptions io = options.intersection;
+    io.threads = options.threads;
+    if (options.progress) options.progress("intersecting " + std::to_string(tows.size()) + " tows");
+    const IntersectionReport report = intersectTows(tows, io);
+    const double intersectMs = msSince(t0);
+    ResolveResult result = resolveWithReport(tows, report, options, plan);
+    result.timings.intersect = intersectMs;
     return result;
 }
 

@@ -1,0 +1,193 @@
+// The pipeline as stages: intersectTows() once, its report written as JSON and read back, then
+// resolveTextile() with that report at several mesh sizes; the chained stages give the same
+// meshes as the one-call resolveTextile().
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "mesh_checks.hpp"
+#include "towgeom/towgeom.hpp"
+
+using namespace towgeom;
+
+namespace {
+
+/// The bundled 2/2 twill (examples/data/twill): 8 tows, 16 interpenetrations.
+std::vector<TowSurface> bundledTwill()
+{
+    std::vector<TowSurface> tows;
+    for (const char* name : {"warp_0", "warp_1", "warp_2", "warp_3", "weft_0", "weft_1", "weft_2", "weft_3"})
+        tows.push_back(TowSurface::fit(readStackFile(std::string(TOWGEOM_EXAMPLE_DATA) + "/twill/" + name + ".stw")));
+    return tows;
+}
+
+ResolveOptions atSize(double relative)
+{
+    ResolveOptions o;
+    o.mesh.relativeEdgeLength = relative;
+    return o;
+}
+
+std::string jsonOf(const IntersectionReport& report, const std::vector<TowSurface>& tows)
+{
+    std::ostringstream out;
+    writeIntersectionReport(report, tows, out);
+    return out.str();
+}
+
+IntersectionReport readBack(const std::string& json, const std::vector<TowSurface>& tows)
+{
+    std::istringstream in(json);
+    return readIntersectionReport(in, tows, "report.json");
+}
+
+/// The number of closed boundary loops of each tow's final mesh (0: closed by its caps).
+std::size_t openTows(const ResolveResult& r)
+{
+    std::size_t open = 0;
+    for (const TowMesh& t : r.mesh.tows) open += testing::boundaryOf(t.triangles).edges > 0;
+    return open;
+}
+
+ErrorCode codeOf(const std::function<void()>& f)
+{
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.code();
+    }
+    FAIL("no towgeom::Error thrown");
+    return ErrorCode::Internal;
+}
+
+}  // namespace
+
+TEST_CASE("intersection report JSON: exact round trip, and the chained stages give resolveTextile()'s mesh", "[stages][json]")
+{
+    const std::vector<TowSurface> tows = bundledTwill();
+    const IntersectionReport found = intersectTows(tows);
+    REQUIRE(found.loops.size() == 16);
+    const std::string json = jsonOf(found, tows);
+    const IntersectionReport back = readBack(json, tows);
+
+    // Every field that meshing reads comes back bit for bit, and writing again gives the same text.
+    REQUIRE(back.loops.size() == found.loops.size());
+    for (std::size_t k = 0; k < found.loops.size(); ++k) {
+        const IntersectionLoop &a = found.loops[k], &b = back.loops[k];
+        CHECK(a.towA() == b.towA());
+        CHECK(a.towB() == b.towB());
+        CHECK(a.closed() == b.closed());
+        CHECK(a.length() == b.length());
+        CHECK(a.tolerance() == b.tolerance());
+        REQUIRE(a.points().size() == b.points().size());
+        for (std::size_t i = 0; i < a.points().size(); ++i) {
+            const LoopPoint &p = a.points()[i], &q = b.points()[i];
+            CHECK((p.point.x == q.point.x && p.point.y == q.point.y && p.point.z == q.point.z));
+            CHECK((p.onA.u == q.onA.u && p.onA.v == q.onA.v && p.onB.u == q.onB.u && p.onB.v == q.onB.v));
+        }
+        CHECK(b.maxDistance(LoopSide::A) <= 1e-6);
+        CHECK(b.enclosedArea(LoopSide::B) == Approx(a.enclosedArea(LoopSide::B)).epsilon(1e-12));
+    }
+    CHECK(back.towPairs == found.towPairs);
+    CHECK(back.findings.size() == found.findings.size());
+    IntersectionReport again = back;
+    again.timings = found.timings;  // written, not read back
+    CHECK(jsonOf(again, tows) == json);
+
+    // resolveTextile(tows) against intersectTows -> JSON -> read -> resolveTextile(tows, report).
+    const ResolveOptions o = atSize(0.2);
+    const ResolveResult one = resolveTextile(tows, o);
+    const ResolveResult chained = resolveTextile(tows, back, o);
+    CHECK(chained.timings.intersect == 0.0);
+    REQUIRE(one.mesh.nodes.size() == chained.mesh.nodes.size());
+    std::size_t nodesDiffering = 0;
+    for (std::size_t n = 0; n < one.mesh.nodes.size(); ++n) {
+        const Point3 &p = one.mesh.nodes[n], &q = chained.mesh.nodes[n];
+        nodesDiffering += !(p.x == q.x && p.y == q.y && p.z == q.z);
+    }
+    CHECK(nodesDiffering == 0);
+    REQUIRE(one.mesh.tows.size() == chained.mesh.tows.size());
+    for (std::size_t t = 0; t < one.mesh.tows.size(); ++t) CHECK(one.mesh.tows[t].triangles == chained.mesh.tows[t].triangles);
+    CHECK(one.mesh.regions.size() == 16);
+    CHECK(chained.mesh.regions.size() == 16);
+    CHECK(openTows(chained) == 0);
+}
+
+TEST_CASE("mesh-size study: one intersection report meshed at three sizes", "[stages]")
+{
+    const std::vector<TowSurface> tows = bundledTwill();
+    const auto t0 = std::chrono::steady_clock::now();
+    const IntersectionReport loops = intersectTows(tows);
+    const double intersectS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::size_t previous = 0;
+    std::ostringstream timing;
+    for (double h : {0.3, 0.15, 0.075}) {
+        const auto t1 = std::chrono::steady_clock::now();
+        const ResolveResult r = resolveTextile(tows, loops, atSize(h));
+        timing << " h=" << h << ": " << std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count() << " s,";
+        CHECK(r.mesh.regions.size() == 16);
+        CHECK(r.unresolved.empty());
+        CHECK(openTows(r) == 0);
+        // Halving h about quadruples the triangles (the loops' nodes add a little more).
+        CHECK(r.quality.triangles > 3 * previous);
+        CHECK(r.quality.triangles < 6 * previous + 20000);
+        for (const ConnectedRegion& g : r.mesh.regions) CHECK(g.volumeRemoved > 0.0);
+        previous = r.quality.triangles;
+    }
+    WARN("intersection once: " << intersectS << " s; meshes:" << timing.str());
+}
+
+TEST_CASE("intersection report JSON: a report for other tows or a broken file is refused", "[stages][json]")
+{
+    const std::vector<TowSurface> tows = bundledTwill();
+    const IntersectionReport found = intersectTows(tows);
+    const std::string json = jsonOf(found, tows);
+
+    SECTION("the tows in another order: by name on reading, by name in resolveTextile()")
+    {
+        std::vector<TowSurface> swapped = tows;
+        std::swap(swapped[0], swapped[4]);
+        CHECK(codeOf([&] { readBack(json, swapped); }) == ErrorCode::MalformedReport);
+        CHECK(codeOf([&] { resolveTextile(swapped, found, atSize(0.3)); }) == ErrorCode::InvalidArgument);
+    }
+    SECTION("the same names, other geometry: points off the surfaces")
+    {
+        std::vector<TowSurface> moved;
+        for (const TowSurface& t : tows) {
+            TowStack s;
+            s.name = t.name();
+            s.sections = t.sections();
+            for (auto& section : s.sections)
+                for (Point3& p : section) p.z += 0.05;
+            moved.push_back(TowSurface::fit(s));
+        }
+        try {
+            readBack(json, moved);
+            FAIL("read a report for other geometry");
+        } catch (const Error& e) {
+            CHECK(e.code() == ErrorCode::MalformedReport);
+            CHECK(std::string(e.what()).find("off the surfaces") != std::string::npos);
+            CHECK(e.file() == "report.json");
+        }
+    }
+    SECTION("truncated, not JSON, another version, a point of 7 numbers")
+    {
+        CHECK(codeOf([&] { readBack(json.substr(0, json.size() / 2), tows); }) == ErrorCode::MalformedReport);
+        CHECK(codeOf([&] { readBack("tow a\n0 0 0\n", tows); }) == ErrorCode::MalformedReport);
+        std::string v2 = json;
+        v2.replace(v2.find("\"version\":1"), 11, "\"version\":2");
+        CHECK(codeOf([&] { readBack(v2, tows); }) == ErrorCode::MalformedReport);
+        std::string shortPoint = json;
+        const std::size_t at = shortPoint.find("\"points\":[[") + 11;
+        shortPoint.erase(at, shortPoint.find(',', at) + 1 - at);  // drops x of the first point
+        CHECK(codeOf([&] { readBack(shortPoint, tows); }) == ErrorCode::MalformedReport);
+    }
+    SECTION("a file that does not exist")
+    {
+        CHECK(codeOf([&] { readIntersectionReport("/nonexistent/loops.json", tows); }) == ErrorCode::FileNotFound);
+    }
+}
