@@ -433,3 +433,36 @@ TEST_CASE("towgeom resolve refuses a mesh over --max-triangles at once, with the
     }
     fs::remove_all(out);
 }
+
+TEST_CASE("towgeom detect --save-report, then resolve --report: the same meshes without intersecting again", "[cli][resolve][stages]")
+{
+    const fs::path dir = scratch("report");
+    fs::create_directories(dir);
+    const std::string tows = twill({"warp_0", "warp_1", "weft_0", "weft_1"});
+    const std::string saved = (dir / "loops.json").string();
+    const Run d = cli("detect" + tows + " --quiet --save-report '" + saved + "'");
+    INFO(d.err);
+    REQUIRE(d.status == 0);
+    REQUIRE(fs::file_size(saved) > 1000);
+    const Run direct = cli("resolve" + tows + " --quiet --formats vtk --out '" + (dir / "direct").string() + "'");
+    const Run reused = cli("resolve" + tows + " --formats vtk --report '" + saved + "' --out '" + (dir / "reused").string() + "'");
+    INFO(reused.err);
+    REQUIRE(direct.status == 0);
+    REQUIRE(reused.status == 0);
+    CHECK(reused.err.find("intersecting") == std::string::npos);  // no intersection stage ran
+    for (const char* name : {"warp_0", "warp_1", "weft_0", "weft_1"}) {
+        const std::string file = std::string(name) + ".vtk";
+        CHECK(testing::slurp(dir / "direct" / file) == testing::slurp(dir / "reused" / file));
+    }
+    const std::string report = testing::slurp(dir / "reused" / "report.json");
+    CHECK(count(report, "\"volume_removed\":") == 4);
+
+    // Another order of the same tows: refused, naming the report, nothing written.
+    const Run swapped = cli("resolve" + twill({"warp_1", "warp_0", "weft_0", "weft_1"}) + " --report '" + saved + "' --out '" +
+                            (dir / "swapped").string() + "'");
+    CHECK(swapped.status == 2);
+    CHECK(swapped.err.find("loops.json") != std::string::npos);
+    CHECK(swapped.err.find("[malformed_report]") != std::string::npos);
+    CHECK(!fs::exists(dir / "swapped"));
+    fs::remove_all(dir);
+}

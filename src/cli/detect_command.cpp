@@ -47,6 +47,10 @@ Options:
   --chordal C         largest distance of the curve from a chord between its points
                       (default: 1e-4 x the tow size)
   --spacing S         print points spaced at most S apart along each curve instead
+  --save-report FILE  also write the exact intersection report to FILE (every curve point
+                      with its (u,v) on both tows; written whole or not at all), for
+                      'towgeom resolve --report FILE' with the same tows in the same order:
+                      one intersection, many meshes
   --allow-open        exit 0 even when a curve is open (still named on stderr and reported in
                       the JSON); nested, identical or touching tows still exit 3
   --threads N         worker threads for reading, fitting and intersecting (default: all
@@ -61,8 +65,10 @@ the other, identical or touching). One stderr line per such pair, also with --qu
 and the JSON is printed all the same. 2 invalid input or usage (one line on stderr naming file
 and line); 1 internal failure.
 
-Example:
+Examples:
   towgeom detect examples/data/twill/*.stw > loops.json
+  towgeom detect examples/data/twill/*.stw --save-report twill.loops.json > /dev/null
+  towgeom resolve examples/data/twill/*.stw --report twill.loops.json --mesh-size 0.05 --out h05
 )";
 
 double msSince(std::chrono::steady_clock::time_point t0)
@@ -77,7 +83,7 @@ int runDetect(int argc, char** argv, int first)
     try {
         const Args args(argc, argv, first,
                         {{"help"}, {"quiet"}, {"allow-open"}, {"tolerance", true}, {"chordal", true}, {"spacing", true},
-                         {"threads", true}});
+                         {"threads", true}, {"save-report", true}});
         if (args.has("help")) {
             std::cout << kDetectHelp;
             return kExitOk;
@@ -107,6 +113,7 @@ int runDetect(int argc, char** argv, int first)
                 }
             };
         const IntersectionReport report = intersectTows(surfaces, options);
+        if (const auto path = args.value("save-report")) writeIntersectionReport(report, surfaces, *path);
 
         std::ostringstream out;
         detail::JsonWriter json(out);

@@ -87,6 +87,10 @@ Options:
                      the loop's two tows)
   --formats LIST     comma-separated from stl,vtk,msh,inp (default stl,vtk)
   --tolerance T      intersection point tolerance (default: 1e-7 x the tow size)
+  --report FILE      take the intersection loops from FILE, written by 'towgeom detect
+                     --save-report FILE' for the same tows in the same order, instead of
+                     intersecting again (a mesh-size study intersects once); a report for
+                     other tows is refused (exit 2)
   --max-triangles N  refuse (exit 2, before meshing) meshes estimated at more than N triangles,
                      all tows together (default 20000000, about 5 GB; the estimate: about 3 x
                      the tows' area (end caps included) / (sqrt(3)/4 H^2), plus the
@@ -145,7 +149,7 @@ int runResolve(int argc, char** argv, int first)
         const Args args(argc, argv, first,
                         {{"help"}, {"quiet"}, {"allow-open"}, {"out", true}, {"primary", true}, {"mesh-size", true},
                          {"min-angle", true}, {"loop-spacing", true}, {"formats", true}, {"tolerance", true},
-                         {"threads", true}, {"max-triangles", true}, {"no-caps"}});
+                         {"threads", true}, {"max-triangles", true}, {"no-caps"}, {"report", true}});
         if (args.has("help")) {
             std::cout << kResolveHelp;
             return kExitOk;
@@ -175,8 +179,10 @@ int runResolve(int argc, char** argv, int first)
         auto t0 = std::chrono::steady_clock::now();
         const std::vector<TowSurface> tows = fitSurfaces(stacks, {}, "resolve", quiet, options.threads);
         const double fitMs = msSince(t0);
+        const auto reportPath = args.value("report");
         const ResolveResult result = [&] {
             try {
+                if (reportPath) return resolveTextile(tows, readIntersectionReport(*reportPath, tows), options);
                 return resolveTextile(tows, options);
             } catch (const Error& e) {
                 if (e.code() != ErrorCode::TooLarge) throw;
