@@ -3,13 +3,17 @@ include(CMakePackageConfigHelpers)
 
 set(TOWGEOM_CMAKE_DIR "${CMAKE_INSTALL_LIBDIR}/cmake/towgeom")
 
-install(TARGETS towgeom towgeom_cli EXPORT towgeomTargets
+set(towgeom_installed towgeom)
+if(TOWGEOM_BUILD_CLI)
+  list(APPEND towgeom_installed towgeom_cli)
+endif()
+install(TARGETS ${towgeom_installed} EXPORT towgeomTargets
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(DIRECTORY include/towgeom DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(FILES "${PROJECT_BINARY_DIR}/include/towgeom/version.hpp" DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towgeom)
+install(FILES "${PROJECT_BINARY_DIR}/include/towgeom/version.hpp" "${PROJECT_BINARY_DIR}/include/towgeom/export.hpp" DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towgeom)
 install(EXPORT towgeomTargets NAMESPACE towgeom:: DESTINATION ${TOWGEOM_CMAKE_DIR})
 
 configure_package_config_file(cmake/towgeomConfig.cmake.in "${PROJECT_BINARY_DIR}/towgeomConfig.cmake"
@@ -18,4 +22,4 @@ write_basic_package_version_file("${PROJECT_BINARY_DIR}/towgeomConfigVersion.cma
   COMPATIBILITY SameMinorVersion)
 install(FILES "${PROJECT_BINARY_DIR}/towgeomConfig.cmake" "${PROJECT_BINARY_DIR}/towgeomConfigVersion.cmake"
   DESTINATION ${TOWGEOM_CMAKE_DIR})
-install(FILES LICENSE README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
+install(FILES LICENSE README.md CHANGELOG.md DESTINATION ${CMAKE_INSTALL_DOCDIR})

@@ -8,8 +8,9 @@
 
 #include "towgeom/tow_stack.hpp"
 #include "towgeom/weave.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 /// How detectCollisions() finds candidate triangle pairs.
 enum class CollisionMethod {
@@ -27,7 +28,7 @@ struct YarnCollision {
 };
 
 /// Everything detectCollisions() found.
-struct CollisionReport {
+struct TOWGEOM_EXPORT CollisionReport {
     std::vector<YarnCollision> collisions;  ///< yarn pairs with at least one colliding triangle pair, sorted
     std::size_t yarnPairsTested = 0;        ///< yarn pairs that reached triangle tests
     std::size_t trianglePairsTested = 0;    ///< exact triangle-triangle tests performed
@@ -36,13 +37,13 @@ struct CollisionReport {
 };
 
 /// Finds every pair of intersecting triangles between different yarns (exact predicates).
-CollisionReport detectCollisions(const std::vector<TowStack>& yarns, CollisionMethod method = CollisionMethod::Hierarchy);
+TOWGEOM_EXPORT CollisionReport detectCollisions(const std::vector<TowStack>& yarns, CollisionMethod method = CollisionMethod::Hierarchy);
 
 /// The colliding triangle pairs of @p report attributed to the crossings of @p textile: for
 /// each crossing, how many of its warp's and weft's colliding triangle pairs lie nearer (in
 /// plan, by the warp triangle's centroid) to it than to any other crossing of the same two
 /// yarns. @p stacks are the stacks the report was computed on (textile.stacks()).
-std::vector<std::size_t> collisionsPerCrossing(const Textile& textile, const std::vector<TowStack>& stacks,
+TOWGEOM_EXPORT std::vector<std::size_t> collisionsPerCrossing(const Textile& textile, const std::vector<TowStack>& stacks,
                                                const CollisionReport& report);
 
 /// What flattenToTouching() did at one crossing.
@@ -64,6 +65,6 @@ struct CrossingResponse {
 /// stronger flattening, and passes over all crossings repeat (at most 4) until none changes.
 /// @throws towgeom::Error (InvalidArgument) for a non-positive tolerance, (Internal) if no
 ///         flattening down to 1/16 separates a crossing (e.g. parallel yarns that overlap).
-std::vector<CrossingResponse> flattenToTouching(Textile& textile, double tolerance);
+TOWGEOM_EXPORT std::vector<CrossingResponse> flattenToTouching(Textile& textile, double tolerance);
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

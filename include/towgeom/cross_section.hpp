@@ -7,8 +7,9 @@
 #include <vector>
 
 #include "towgeom/point.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 /// The section shapes of the weave generator.
 enum class SectionShape {
@@ -21,7 +22,7 @@ enum class SectionShape {
 };
 
 /// "circle", "ellipse", "racetrack", "lenticular" or "hermite".
-const char* sectionShapeName(SectionShape shape) noexcept;
+TOWGEOM_EXPORT const char* sectionShapeName(SectionShape shape) noexcept;
 
 /// A yarn cross-section in its own plane: x across the yarn (its width), y through its
 /// thickness (its height); the centre line passes through (0, 0).
@@ -36,7 +37,7 @@ const char* sectionShapeName(SectionShape shape) noexcept;
 /// **Lenticular** geometry: with r = (w^2 + h^2) / (4 h) each arc has half-angle a with
 /// sin a = 2 w h / (w^2 + h^2); the arcs leave the corners at the cut-off angle
 /// acos(2 w h / (w^2 + h^2)) = pi/2 - a from the y direction.
-struct CrossSection {
+struct TOWGEOM_EXPORT CrossSection {
     SectionShape shape = SectionShape::Ellipse;  ///< which shape
     double width = 1.0;                          ///< full width (x extent), user's units
     double height = 0.25;                        ///< full height (y extent), user's units
@@ -55,4 +56,4 @@ struct CrossSection {
     void validate() const;
 };
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -6,13 +6,14 @@
 #include <vector>
 
 #include "towgeom/point.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 /// An evaluable, immutable 3D curve, e.g. an iso-parametric section of a TowSurface.
 ///
 /// Copies are cheap and share the underlying curve; all members are const and thread-safe.
-class Curve3 {
+class TOWGEOM_EXPORT Curve3 {
 public:
     /// The kernel-side curve; defined in the library only.
     struct Impl;
@@ -48,4 +49,4 @@ private:
     std::shared_ptr<const Impl> impl_;
 };
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -6,7 +6,9 @@
 #include <stdexcept>
 #include <string>
 
-namespace towgeom {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
 
 /// What went wrong. Every failure the library reports carries one of these codes.
 enum class ErrorCode {
@@ -40,13 +42,13 @@ enum class ErrorCode {
 };
 
 /// A short, stable, machine-readable name of a code, e.g. "non_numeric".
-const char* errorCodeName(ErrorCode code) noexcept;
+TOWGEOM_EXPORT const char* errorCodeName(ErrorCode code) noexcept;
 
 /// The exception thrown by every towgeom function on bad input or failure.
 ///
 /// `what()` reads `FILE:LINE: message` when a file and line are known, `FILE: message` when only
 /// the file is known, and `message` otherwise, so it can be shown to a user as it is.
-class Error : public std::runtime_error {
+class TOWGEOM_EXPORT Error : public std::runtime_error {
 public:
     /// @param code    what went wrong
     /// @param message a sentence for a person, without the location prefix
@@ -70,4 +72,4 @@ private:
     std::size_t line_;
 };
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

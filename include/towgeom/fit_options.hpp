@@ -2,7 +2,9 @@
 /// @brief How TowSurface::fit turns a stack of sections into a surface.
 #pragma once
 
-namespace towgeom {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
 
 /// The fitting methods of TowSurface::fit.
 enum class FitMode {
@@ -29,6 +31,6 @@ struct FitOptions {
 };
 
 /// "interpolate", "approximate" or "controlnet".
-const char* fitModeName(FitMode mode) noexcept;
+TOWGEOM_EXPORT const char* fitModeName(FitMode mode) noexcept;
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -10,8 +10,9 @@
 #include "towgeom/curve3.hpp"
 #include "towgeom/point.hpp"
 #include "towgeom/tow_surface.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 /// Which tow of a pair: A is the first (lower index), B the second.
 enum class LoopSide { A, B };
@@ -37,7 +38,7 @@ struct LoopPoint {
 /// For a closed loop the first point is not repeated at the end.
 ///
 /// Copies are cheap (the data is shared); every member is const and thread-safe.
-class IntersectionLoop {
+class TOWGEOM_EXPORT IntersectionLoop {
 public:
     /// The loop's data; defined in the library only.
     struct Data;
@@ -104,4 +105,4 @@ private:
     std::shared_ptr<const Data> data_;
 };
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -5,7 +5,9 @@
 #include <cstddef>
 #include <functional>
 
-namespace towgeom {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
 
 /// Options for intersectTows() and intersectPair(). Lengths are in the user's units; each
 /// tolerance left at 0 is its relative value times the tow size (TowSurface::towSize(), the
@@ -30,4 +32,4 @@ struct IntersectionOptions {
     std::function<void(std::size_t, std::size_t)> progress;
 };
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

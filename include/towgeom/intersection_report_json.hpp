@@ -9,8 +9,9 @@
 
 #include "towgeom/tow_intersection.hpp"
 #include "towgeom/tow_surface.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 /// @defgroup report_json Intersection reports as JSON
 /// @brief intersectTows() once, its loops kept in a file, meshes made from them later.
@@ -34,12 +35,12 @@ namespace towgeom {
 
 /// Writes @p report, computed for @p tows, as JSON to @p out.
 /// @throws towgeom::Error (InvalidArgument) if a loop of @p report is not between two of @p tows.
-void writeIntersectionReport(const IntersectionReport& report, const std::vector<TowSurface>& tows, std::ostream& out);
+TOWGEOM_EXPORT void writeIntersectionReport(const IntersectionReport& report, const std::vector<TowSurface>& tows, std::ostream& out);
 
 /// Writes @p report, computed for @p tows, as JSON to the file @p path: complete or not at all
 /// (written to a temporary file beside it, then renamed).
 /// @throws towgeom::Error (WriteFailed) if the file cannot be written; (InvalidArgument) as above.
-void writeIntersectionReport(const IntersectionReport& report, const std::vector<TowSurface>& tows, const std::string& path);
+TOWGEOM_EXPORT void writeIntersectionReport(const IntersectionReport& report, const std::vector<TowSurface>& tows, const std::string& path);
 
 /// Reads a report written by writeIntersectionReport() for @p tows: the loops become loops of
 /// these tows (their points checked to lie on both surfaces). @p sourceName names the input in
@@ -49,13 +50,13 @@ void writeIntersectionReport(const IntersectionReport& report, const std::vector
 /// non-finite number, a closed loop of fewer than 3 points, a (u,v) off a tow's range, or is for
 /// other tows: other names, another count or order, or points off the tows' surfaces (farther
 /// than 1000 x the loop's tolerance plus 1e-6 of the tow's size).
-IntersectionReport readIntersectionReport(std::istream& in, const std::vector<TowSurface>& tows,
+TOWGEOM_EXPORT IntersectionReport readIntersectionReport(std::istream& in, const std::vector<TowSurface>& tows,
                                           const std::string& sourceName = "<stream>");
 
 /// readIntersectionReport() from the file @p path.
 /// @throws towgeom::Error (FileNotFound, FileUnreadable) if @p path cannot be read; as above.
-IntersectionReport readIntersectionReport(const std::string& path, const std::vector<TowSurface>& tows);
+TOWGEOM_EXPORT IntersectionReport readIntersectionReport(const std::string& path, const std::vector<TowSurface>& tows);
 
 /// @}
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -4,7 +4,9 @@
 
 #include <cstddef>
 
-namespace towgeom {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
 
 /// How each tow's surface is meshed. Lengths are in the user's units; 0 means "relative to the
 /// tow size" (TowSurface::towSize() of each tow).
@@ -36,4 +38,4 @@ struct MeshOptions {
     bool caps = true;
 };
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -4,7 +4,9 @@
 
 #include <cmath>
 
-namespace towgeom {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
 
 /// A point or vector in 3D, in the user's units.
 struct Point3 {
@@ -69,4 +71,4 @@ struct BoundingBox {
     }
 };
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

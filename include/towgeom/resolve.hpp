@@ -13,8 +13,9 @@
 #include "towgeom/textile_mesh.hpp"
 #include "towgeom/tow_intersection.hpp"
 #include "towgeom/tow_surface.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 /// Options for resolveTextile().
 struct ResolveOptions {
@@ -49,7 +50,7 @@ struct TowResolution {
 };
 
 /// Smallest 3D angles of the final triangles.
-struct MeshQuality {
+struct TOWGEOM_EXPORT MeshQuality {
     double minAngle = 0.0;                ///< degrees, over all triangles
     std::vector<std::size_t> histogram;  ///< triangles per 5-degree bin of their smallest angle (0-5, 5-10, ... 55-60)
     std::size_t triangles = 0;            ///< distinct triangles counted (shared ones once)
@@ -144,7 +145,7 @@ struct ResolveResult {
 /// end nodes is not simple; the message names the tow and end); (TooLarge) when the estimated triangle count is
 /// over MeshOptions::maxTriangles (checked before intersecting, and with the loops' refinement
 /// before meshing); (Internal) if a kernel fails outside the meshing of a tow.
-ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveOptions& options = {});
+TOWGEOM_EXPORT ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveOptions& options = {});
 
 /// resolveTextile() with the intersection loops already computed: @p report is intersectTows()
 /// of these @p tows (kept, filtered, or read back with readIntersectionReport()), so that one
@@ -166,7 +167,7 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
 /// @throws towgeom::Error as resolveTextile(); (InvalidArgument) also when a loop of @p report
 /// is not between two of @p tows (a tow index out of range, or tows of other names at its
 /// indices: the report of another textile or of the tows in another order).
-ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const IntersectionReport& report,
+TOWGEOM_EXPORT ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const IntersectionReport& report,
                              const ResolveOptions& options = {});
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

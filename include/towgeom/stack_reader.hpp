@@ -24,8 +24,9 @@
 #include <string>
 
 #include "towgeom/tow_stack.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 /// Reads and validates one `.stw` file.
 ///
@@ -33,13 +34,13 @@ namespace towgeom {
 /// @throws towgeom::Error naming the file and line for a missing or unreadable file, an empty
 ///         file, binary data, an over-long line, a non-numeric token, a line with other than 3
 ///         coordinates, NaN/Inf, a coordinate beyond 1e100, and every rule of validateStack().
-TowStack readStackFile(const std::string& path);
+TOWGEOM_EXPORT TowStack readStackFile(const std::string& path);
 
 /// Reads and validates a stack from a stream; @p sourceName is used in messages and
 /// @p defaultName is the tow's name unless the stream holds a `tow NAME` line.
-TowStack readStack(std::istream& in, const std::string& sourceName, const std::string& defaultName);
+TOWGEOM_EXPORT TowStack readStack(std::istream& in, const std::string& sourceName, const std::string& defaultName);
 
 /// Writes @p stack in the `.stw` format (17 significant digits, round-trips exactly).
-void writeStack(std::ostream& out, const TowStack& stack);
+TOWGEOM_EXPORT void writeStack(std::ostream& out, const TowStack& stack);
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -5,8 +5,9 @@
 #include <string>
 
 #include "towgeom/weave.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 /// What writeTextile() writes besides the stacks.
 struct TextileOutput {
@@ -19,6 +20,6 @@ struct TextileOutput {
 /// "points"}], "crossings":[{"warp","weft","x","y","warp_over"}]}, so later tools can use roles.
 /// The directory is created if needed; all files appear only if every one was written.
 /// @throws towgeom::Error (WriteFailed) naming the file that failed.
-void writeTextile(const Textile& textile, const std::string& directory, const TextileOutput& output = {});
+TOWGEOM_EXPORT void writeTextile(const Textile& textile, const std::string& directory, const TextileOutput& output = {});
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -10,8 +10,9 @@
 
 #include "towgeom/point.hpp"
 #include "towgeom/triangle_mesh.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 /// Which part of a tow's closed surface a triangle lies on.
 enum class TowFace : unsigned char {
@@ -66,7 +67,7 @@ struct TriplePoint {
 
 /// The meshes of all tows of a textile on one node numbering: a node on an intersection loop
 /// or in a connected region is the same node in every tow that uses it.
-struct TextileMesh {
+struct TOWGEOM_EXPORT TextileMesh {
     std::vector<Point3> nodes;             ///< global node positions
     std::vector<TowMesh> tows;             ///< one per input tow, in input order
     /// One per resolved loop that is not a hole of another and keeps triangles (a loop whose
@@ -89,10 +90,10 @@ struct TextileMesh {
 
 /// The mesh of @p triangles over @p nodes as a standalone TriangleMesh: only the nodes used,
 /// renumbered in the order the triangles first use them.
-TriangleMesh surfaceOf(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles);
+TOWGEOM_EXPORT TriangleMesh surfaceOf(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles);
 
 /// The mesh of @p triangles over @p nodes (only the nodes used, renumbered) with each boundary
 /// loop closed by a fan from its centroid: for the volume of an open tube.
-TriangleMesh closedSurface(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles);
+TOWGEOM_EXPORT TriangleMesh closedSurface(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles);
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -9,8 +9,9 @@
 #include "towgeom/intersection_loop.hpp"
 #include "towgeom/intersection_options.hpp"
 #include "towgeom/tow_surface.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 /// Wall-clock time of the stages of intersectTows(), in milliseconds.
 struct IntersectionTimings {
@@ -35,7 +36,7 @@ struct PairFinding {
 };
 
 /// The result of intersectTows().
-struct IntersectionReport {
+struct TOWGEOM_EXPORT IntersectionReport {
     /// Every intersection curve, ordered by (towA, towB); within a pair in the order found, which
     /// depends only on the input (not on the number of threads).
     std::vector<IntersectionLoop> loops;
@@ -76,10 +77,10 @@ struct IntersectionReport {
 ///
 /// @throws towgeom::Error (InvalidArgument) for bad options, (Internal) naming the tow pair if
 ///         a kernel fails.
-IntersectionReport intersectTows(const std::vector<TowSurface>& tows, const IntersectionOptions& options = {});
+TOWGEOM_EXPORT IntersectionReport intersectTows(const std::vector<TowSurface>& tows, const IntersectionOptions& options = {});
 
 /// The intersection curves of two tows (towA() = 0, towB() = 1).
-std::vector<IntersectionLoop> intersectPair(const TowSurface& a, const TowSurface& b,
+TOWGEOM_EXPORT std::vector<IntersectionLoop> intersectPair(const TowSurface& a, const TowSurface& b,
                                             const IntersectionOptions& options = {});
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

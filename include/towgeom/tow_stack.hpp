@@ -8,8 +8,9 @@
 
 #include "towgeom/point.hpp"
 #include "towgeom/triangle_mesh.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 /// One tow as a stack of cross-sections: M sections along the tow, each N points around it.
 ///
@@ -71,12 +72,12 @@ struct TowStack {
 /// A point counts as a duplicate of its neighbour when they are closer than 1e-9 times the
 /// section's size (its bounding-box diagonal); a section has zero area when its area is below
 /// 1e-9 times its size squared.
-void validateStack(const TowStack& stack);
+TOWGEOM_EXPORT void validateStack(const TowStack& stack);
 
 /// The faceted tube of a stack: the quad between points j, j+1 of sections i, i+1 split into
 /// triangles (i,j)(i+1,j)(i+1,j+1) and (i,j)(i+1,j+1)(i,j+1), 2 (M-1) N triangles in that order,
 /// vertices numbered i * N + j. With @p closeEnds, each end is closed by a fan from the mean of
 /// its points (2 extra vertices, 2 N extra triangles), orientation consistent with the sides.
-TriangleMesh facetedTube(const TowStack& stack, bool closeEnds);
+TOWGEOM_EXPORT TriangleMesh facetedTube(const TowStack& stack, bool closeEnds);
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -12,8 +12,9 @@
 #include "towgeom/point.hpp"
 #include "towgeom/tow_stack.hpp"
 #include "towgeom/triangle_mesh.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 namespace detail {
 struct TowSurfaceAccess;
@@ -99,7 +100,7 @@ struct SeamJump {
 ///
 /// Copies are cheap (the surface is shared and never modified); every member is const and safe
 /// to call from several threads at once.
-class TowSurface {
+class TOWGEOM_EXPORT TowSurface {
 public:
     /// The kernel-side surface; defined in the library only.
     struct Impl;
@@ -197,4 +198,4 @@ private:
     std::shared_ptr<const Impl> impl_;
 };
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

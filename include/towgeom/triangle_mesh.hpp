@@ -7,8 +7,9 @@
 #include <vector>
 
 #include "towgeom/point.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 /// An indexed triangle mesh: vertices and triangles as vertex indices (counter-clockwise seen from
 /// the side the normals point to).
@@ -20,6 +21,6 @@ struct TriangleMesh {
 
 /// The signed volume enclosed by a closed, consistently oriented mesh (positive when its
 /// triangles face outwards); meaningless for an open mesh.
-double enclosedVolume(const TriangleMesh& mesh);
+TOWGEOM_EXPORT double enclosedVolume(const TriangleMesh& mesh);
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

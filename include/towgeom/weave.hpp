@@ -9,8 +9,9 @@
 #include "towgeom/cross_section.hpp"
 #include "towgeom/tow_stack.hpp"
 #include "towgeom/yarn_path.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 /// The weave patterns of generateWeave().
 enum class WeaveKind {
@@ -23,7 +24,7 @@ enum class WeaveKind {
 };
 
 /// "plain", "twill", "satin", "basket" or "orthogonal".
-const char* weaveKindName(WeaveKind kind) noexcept;
+TOWGEOM_EXPORT const char* weaveKindName(WeaveKind kind) noexcept;
 
 /// What a generated yarn is in its textile.
 enum class YarnRole {
@@ -33,10 +34,10 @@ enum class YarnRole {
 };
 
 /// "warp", "weft" or "binder".
-const char* yarnRoleName(YarnRole role) noexcept;
+TOWGEOM_EXPORT const char* yarnRoleName(YarnRole role) noexcept;
 
 /// Parameters of generateWeave(). Lengths are in the user's units.
-struct WeaveOptions {
+struct TOWGEOM_EXPORT WeaveOptions {
     WeaveKind kind = WeaveKind::Plain;  ///< the pattern
     std::size_t warps = 4;              ///< number of warps (along x), at y = i * spacing
     std::size_t wefts = 4;              ///< number of wefts (along y), at x = j * spacing
@@ -73,7 +74,7 @@ struct Crossing {
 
 /// One generated yarn: its centre line and its sections along it. Every section has its own
 /// CrossSection, so shape, size and flattening may vary along the yarn.
-struct GeneratedYarn {
+struct TOWGEOM_EXPORT GeneratedYarn {
     std::string name;                    ///< e.g. "warp_0", "weft_3", "binder_1"
     YarnRole role = YarnRole::Warp;      ///< warp, weft or binder
     YarnPath path;                       ///< the centre line
@@ -89,7 +90,7 @@ struct GeneratedYarn {
 };
 
 /// A generated textile: yarns, their crossings, and the options that made it.
-struct Textile {
+struct TOWGEOM_EXPORT Textile {
     WeaveOptions options;              ///< the parameters used
     std::vector<GeneratedYarn> yarns;  ///< warps first, then wefts, then binders
     std::vector<Crossing> crossings;   ///< every warp/binder-weft crossing in plan
@@ -109,6 +110,6 @@ struct Textile {
 /// section by rotation-minimising transport instead, and n keeps the previous section's side
 /// where a path turns back through the vertical (so no section starts half way round).
 /// @throws towgeom::Error (InvalidArgument) for invalid options.
-Textile generateWeave(const WeaveOptions& options);
+TOWGEOM_EXPORT Textile generateWeave(const WeaveOptions& options);
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

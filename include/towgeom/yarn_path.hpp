@@ -6,8 +6,9 @@
 #include <vector>
 
 #include "towgeom/point.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 /// A yarn's centre line: a piecewise cubic Hermite curve through points p[0..n-1], one segment
 /// per pair of consecutive points, C1 at the points. The parameter t runs over [0, n-1]; the
@@ -18,7 +19,7 @@ namespace towgeom {
 /// (1 - s) / 2 * (p[i+1] - p[i-1]) with tension s (s = 0 is Catmull-Rom, s = 1 gives zero
 /// tangents); at the two ends the one-sided difference (p[1] - p[0], p[n-1] - p[n-2]) is used,
 /// scaled the same way. Copies are cheap; every member is const and thread-safe.
-class YarnPath {
+class TOWGEOM_EXPORT YarnPath {
 public:
     /// The kernel-side curve; defined in the library only.
     struct Impl;
@@ -55,4 +56,4 @@ private:
     std::shared_ptr<const Impl> impl_;
 };
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

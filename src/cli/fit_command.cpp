@@ -8,7 +8,6 @@
 #include "cli/commands.hpp"
 #include "cli/tow_input.hpp"
 #include "core/json_writer.hpp"
-#include "export/vtk_format.hpp"
 #include "io/output_files.hpp"
 #include "towgeom/towgeom.hpp"
 
@@ -187,7 +186,7 @@ int runFit(int argc, char** argv, int first)
                 const TowSurface& s = surfaces[k];
                 const auto [nu, nv] = stations(stacks[k]);
                 const std::string path = (std::filesystem::path(*outDir) / (s.name() + ".vtk")).string();
-                detail::writeVtkPolyData(files.open(path), s.tessellate(nu, nv), "towgeom surface of tow " + s.name());
+                writeVtk(s.tessellate(nu, nv), files.open(path), "towgeom surface of tow " + s.name());
             }
             files.commit();
         }

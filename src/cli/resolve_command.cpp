@@ -13,9 +13,6 @@
 #include "cli/unresolved_pairs.hpp"
 #include "core/json_writer.hpp"
 #include "core/parallel.hpp"
-#include "export/model_formats.hpp"
-#include "export/stl_format.hpp"
-#include "export/vtk_format.hpp"
 #include "io/output_files.hpp"
 #include "towgeom/towgeom.hpp"
 
@@ -267,18 +264,21 @@ int runResolve(int argc, char** argv, int first)
         }
         detail::parallelFor(tows.size(), detail::workerCount(options.threads), [&](std::size_t t) {
             const TriangleMesh surface = mesh.towSurface(t);
-            if (stl[t] && !detail::writeStlBinary(*stl[t], surface))
-                throw Error(ErrorCode::WriteFailed, "CGAL could not write the STL", path(tows[t].name() + ".stl"));
+            if (stl[t]) try {
+                    writeStl(surface, *stl[t]);
+                } catch (const Error& e) {
+                    throw Error(e.code(), e.message(), path(tows[t].name() + ".stl"));
+                }
             if (vtk[t]) {
                 std::vector<long> towId(surface.triangles.size(), static_cast<long>(t)), nodeId, face;
                 for (std::size_t n : mesh.towNodes(t)) nodeId.push_back(static_cast<long>(n));
                 for (const TowFace f : mesh.tows[t].face) face.push_back(static_cast<long>(f));
-                detail::writeVtkPolyData(*vtk[t], surface, "towgeom resolved tow " + tows[t].name(),
-                                         {{"tow_id", towId}, {"region_id", mesh.tows[t].region}, {"face", face}}, {{"node_id", nodeId}});
+                writeVtk(surface, *vtk[t], "towgeom resolved tow " + tows[t].name(),
+                         {{"tow_id", towId}, {"region_id", mesh.tows[t].region}, {"face", face}}, {{"node_id", nodeId}});
             }
         });
-        if (formats.count("msh")) detail::writeGmshMsh41(files.open(path("textile.msh")), mesh);
-        if (formats.count("inp")) detail::writeAbaqusInp(files.open(path("textile.inp")), mesh);
+        if (formats.count("msh")) writeGmsh(mesh, files.open(path("textile.msh")));
+        if (formats.count("inp")) writeAbaqus(mesh, files.open(path("textile.inp")));
         const double writeMs = msSince(t0);
         json.key("timings_ms").beginObject();
         json.key("read").value(readMs).key("fit").value(fitMs);

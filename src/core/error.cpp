@@ -2,7 +2,9 @@
 
 #include <utility>
 
-namespace towgeom {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
 
 namespace {
 std::string locate(const std::string& message, const std::string& file, std::size_t line)
@@ -54,4 +56,4 @@ const char* errorCodeName(ErrorCode code) noexcept
     return "unknown";
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -1,7 +1,8 @@
 // facetedTube(): a stack's sections joined by flat triangles.
 #include "towgeom/tow_stack.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 TriangleMesh facetedTube(const TowStack& stack, bool closeEnds)
 {
@@ -34,4 +35,4 @@ TriangleMesh facetedTube(const TowStack& stack, bool closeEnds)
     return mesh;
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

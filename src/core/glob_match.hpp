@@ -5,7 +5,10 @@
 #include <cstddef>
 #include <string_view>
 
-namespace towgeom::detail {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// Matches the bracket expression starting at @p pattern[@p at] ('[') against @p c: sets
 /// @p matched and moves @p at past the closing ']'. False when the expression has no closing ']'
@@ -86,4 +89,5 @@ inline bool globMatch(std::string_view pattern, std::string_view name)
     return p == pattern.size();
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

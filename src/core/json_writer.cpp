@@ -3,7 +3,10 @@
 #include <cmath>
 #include <cstdio>
 
-namespace towgeom::detail {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 void JsonWriter::separate()
 {
@@ -107,4 +110,5 @@ JsonWriter& JsonWriter::value(bool b)
     return *this;
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

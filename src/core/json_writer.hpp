@@ -5,7 +5,10 @@
 #include <string>
 #include <vector>
 
-namespace towgeom::detail {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 class JsonWriter {
 public:
@@ -30,4 +33,5 @@ private:
     bool afterKey_ = false;
 };
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

@@ -9,7 +9,10 @@
 #include <thread>
 #include <vector>
 
-namespace towgeom::detail {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// The number of worker threads for a request: @p requested, or one per hardware thread if 0.
 inline std::size_t workerCount(std::size_t requested)
@@ -44,4 +47,5 @@ void parallelFor(std::size_t n, std::size_t threads, Body&& body)
     if (failure) std::rethrow_exception(failure);
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

@@ -6,8 +6,10 @@
 #include <vector>
 
 #include "towgeom/point.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// Mean of the polygon's vertices.
 inline Point3 vertexCentroid(const std::vector<Point3>& poly)
@@ -165,4 +167,5 @@ inline std::vector<Point3> cyclicallyShifted(const std::vector<Point3>& section,
     return out;
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

@@ -4,8 +4,10 @@
 #include <algorithm>
 
 #include "towgeom/point.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// The distance from @p p to the segment [a, b].
 inline double segmentDistance(const Point3& p, const Point3& a, const Point3& b)
@@ -16,4 +18,5 @@ inline double segmentDistance(const Point3& p, const Point3& a, const Point3& b)
     return distance(p, a + t * ab);
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

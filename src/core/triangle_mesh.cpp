@@ -6,8 +6,9 @@
 
 #include "towgeom/error.hpp"
 #include "towgeom/triangle_mesh.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 double enclosedVolume(const TriangleMesh& mesh)
 {
@@ -27,4 +28,4 @@ double enclosedVolume(const TriangleMesh& mesh)
     return CGAL::Polygon_mesh_processing::volume(m);
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -1,5 +1,6 @@
 #include "towgeom/version.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 const char* versionString() noexcept { return TOWGEOM_VERSION_STRING; }
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

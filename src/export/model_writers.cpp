@@ -8,15 +8,17 @@
 #include <map>
 #include <set>
 
-#include "export/model_formats.hpp"
+#include <ostream>
+
 #include "export/number_writer.hpp"
 #include "io/output_files.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
-
-namespace detail {
+TOWGEOM_BEGIN_NAMESPACE
 
 namespace {
+
+using detail::NumberWriter;
 
 /// Abaqus and Gmsh names: letters, digits and underscores.
 std::string label(const std::string& prefix, const std::string& name)
@@ -32,7 +34,7 @@ bool isCap(const TowMesh& m, std::size_t k) { return k < m.face.size() && m.face
 
 }  // namespace
 
-void writeGmshMsh41(std::ostream& out, const TextileMesh& mesh)
+void writeGmsh(const TextileMesh& mesh, std::ostream& out)
 {
     out << std::setprecision(std::numeric_limits<double>::max_digits10);
     // Surface entities: each tow's tube triangles outside regions, then each region's triangles
@@ -128,7 +130,7 @@ void writeGmshMsh41(std::ostream& out, const TextileMesh& mesh)
     out << "$EndElements\n";
 }
 
-void writeAbaqusInp(std::ostream& out, const TextileMesh& mesh)
+void writeAbaqus(const TextileMesh& mesh, std::ostream& out)
 {
     out << std::setprecision(std::numeric_limits<double>::max_digits10);
     out << "*HEADING\ntowgeom: compatible tow surface meshes (" << mesh.tows.size() << " tows, " << mesh.regions.size()
@@ -167,20 +169,18 @@ void writeAbaqusInp(std::ostream& out, const TextileMesh& mesh)
     }
 }
 
-}  // namespace detail
-
 void writeGmsh(const TextileMesh& mesh, const std::string& path)
 {
     detail::OutputFiles files;
-    detail::writeGmshMsh41(files.open(path), mesh);
+    writeGmsh(mesh, files.open(path));
     files.commit();
 }
 
 void writeAbaqus(const TextileMesh& mesh, const std::string& path)
 {
     detail::OutputFiles files;
-    detail::writeAbaqusInp(files.open(path), mesh);
+    writeAbaqus(mesh, files.open(path));
     files.commit();
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -6,7 +6,10 @@
 #include <ostream>
 #include <string>
 
-namespace towgeom::detail {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// Lines of numbers formatted with std::to_chars (the shortest text that reads back to the same
 /// double), gathered in a buffer and written in large blocks: iostream formatting of a million
@@ -47,4 +50,5 @@ private:
 };
 
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

@@ -4,31 +4,31 @@
 #include <CGAL/IO/io.h>
 #include <CGAL/Simple_cartesian.h>
 
-#include "export/stl_format.hpp"
 #include "io/output_files.hpp"
 #include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
-namespace detail {
-
-bool writeStlBinary(std::ostream& out, const TriangleMesh& mesh)
+void writeStl(const TriangleMesh& mesh, std::ostream& out)
 {
     using Point = CGAL::Simple_cartesian<double>::Point_3;
     std::vector<Point> points;
     points.reserve(mesh.vertices.size());
     for (const Point3& p : mesh.vertices) points.emplace_back(p.x, p.y, p.z);
     CGAL::IO::set_binary_mode(out);
-    return CGAL::IO::write_STL(out, points, mesh.triangles);
+    if (!CGAL::IO::write_STL(out, points, mesh.triangles)) throw Error(ErrorCode::WriteFailed, "CGAL could not write the STL");
 }
-
-}  // namespace detail
 
 void writeStl(const TriangleMesh& mesh, const std::string& path)
 {
     detail::OutputFiles files;
-    if (!detail::writeStlBinary(files.open(path), mesh)) throw Error(ErrorCode::WriteFailed, "STL writer failed", path);
+    try {
+        writeStl(mesh, files.open(path));
+    } catch (const Error& e) {
+        throw Error(e.code(), e.message(), path);
+    }
     files.commit();
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -2,23 +2,31 @@
 // one every ParaView and VisIt version reads and that FE pre-processors import.
 #include "towgeom/vtk_writer.hpp"
 
+#include <ostream>
 
 #include "export/number_writer.hpp"
-#include "export/vtk_format.hpp"
 #include "io/output_files.hpp"
+#include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
-namespace detail {
-
-void writeVtkPolyData(std::ostream& out, const TriangleMesh& mesh, const std::string& title, const VtkCellData& cellData,
-                      const VtkCellData& pointData)
+void writeVtk(const TriangleMesh& mesh, std::ostream& out, const std::string& title, const VtkIntegerFields& cellData,
+              const VtkIntegerFields& pointData)
 {
+    for (const auto& [name, values] : cellData)
+        if (values.size() != mesh.triangles.size())
+            throw Error(ErrorCode::InvalidArgument, "VTK cell field '" + name + "' has " + std::to_string(values.size()) +
+                                                        " values for " + std::to_string(mesh.triangles.size()) + " triangles");
+    for (const auto& [name, values] : pointData)
+        if (values.size() != mesh.vertices.size())
+            throw Error(ErrorCode::InvalidArgument, "VTK point field '" + name + "' has " + std::to_string(values.size()) +
+                                                        " values for " + std::to_string(mesh.vertices.size()) + " vertices");
     std::string header = title.substr(0, 255);
     for (char& c : header)
         if (c == '\n' || c == '\r') c = ' ';
     out << "# vtk DataFile Version 3.0\n" << header << "\nASCII\nDATASET POLYDATA\n";
-    NumberWriter w(out);
+    detail::NumberWriter w(out);
     w.text("POINTS ").number(mesh.vertices.size()).text(" double").end();
     for (const Point3& p : mesh.vertices) w.number(p.x).text(" ").number(p.y).text(" ").number(p.z).end();
     w.text("POLYGONS ").number(mesh.triangles.size()).text(" ").number(4 * mesh.triangles.size()).end();
@@ -40,13 +48,11 @@ void writeVtkPolyData(std::ostream& out, const TriangleMesh& mesh, const std::st
     }
 }
 
-}  // namespace detail
-
 void writeVtk(const TriangleMesh& mesh, const std::string& path, const std::string& title)
 {
     detail::OutputFiles files;
-    detail::writeVtkPolyData(files.open(path), mesh, title);
+    writeVtk(mesh, files.open(path), title);
     files.commit();
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -11,8 +11,9 @@
 #include <map>
 
 #include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 namespace {
 
@@ -357,4 +358,4 @@ std::vector<CrossingResponse> flattenToTouching(Textile& textile, double toleran
     return out;
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -5,8 +5,9 @@
 #include <cmath>
 
 #include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 namespace {
 
@@ -180,4 +181,4 @@ std::vector<Point2> CrossSection::sample(std::size_t count) const
     return out;
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

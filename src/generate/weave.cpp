@@ -6,8 +6,9 @@
 #include <string>
 
 #include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 namespace {
 
@@ -256,4 +257,4 @@ Textile generateWeave(const WeaveOptions& options)
     return t;
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -14,8 +14,9 @@
 #include "surface/occt_convert.hpp"
 #include "surface/occt_guard.hpp"
 #include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 using detail::fromOcct;
 using detail::toOcct;
@@ -124,4 +125,4 @@ double YarnPath::length(double t0, double t1) const
     });
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -10,8 +10,10 @@
 #include <set>
 
 #include "surface/tow_surface_impl.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 namespace {
 
@@ -113,4 +115,5 @@ std::vector<CandidatePair> broadPhase(const std::vector<TowSurface>& tows, doubl
     return result;
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

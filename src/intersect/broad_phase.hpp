@@ -7,8 +7,10 @@
 #include <vector>
 
 #include "towgeom/tow_surface.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// An interval of u on one tow.
 struct UWindow {
@@ -34,4 +36,5 @@ struct CandidatePair {
 /// consecutive overlapping spans form a window, widened by one span on each side.
 std::vector<CandidatePair> broadPhase(const std::vector<TowSurface>& tows, double margin);
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

@@ -4,7 +4,10 @@
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
-namespace towgeom::detail {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 bool pointOfInsideOther(const TowSurface& inner, const TowSurface& outer)
 {
@@ -24,4 +27,5 @@ bool pointOfInsideOther(const TowSurface& inner, const TowSurface& outer)
     return side(K::Point_3(p.x, p.y, p.z)) == CGAL::ON_BOUNDED_SIDE;
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

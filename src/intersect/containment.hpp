@@ -3,11 +3,14 @@
 #pragma once
 
 #include "towgeom/tow_surface.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// True when a point of @p inner's surface (the middle of its first input section's first
 /// point column) lies strictly inside @p outer's input tube, closed at its ends.
 bool pointOfInsideOther(const TowSurface& inner, const TowSurface& outer);
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

@@ -16,8 +16,9 @@
 #include "surface/occt_guard.hpp"
 #include "surface/tow_surface_impl.hpp"
 #include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 namespace detail {
 
@@ -364,4 +365,4 @@ Curve3 IntersectionLoop::curve() const
     });
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

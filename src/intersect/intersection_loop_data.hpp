@@ -8,8 +8,9 @@
 #include "intersect/intersection_point.hpp"
 #include "surface/frame.hpp"
 #include "towgeom/intersection_loop.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 struct IntersectionLoop::Data {
     Data(TowSurface surfaceA, TowSurface surfaceB) : a(std::move(surfaceA)), b(std::move(surfaceB)) {}
@@ -42,4 +43,4 @@ IntersectionLoop loopToFrame(const IntersectionLoop& loop, const TowSurface& a, 
 
 }  // namespace detail
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -9,8 +9,10 @@
 #include <cmath>
 
 #include "surface/occt_convert.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 namespace {
 
@@ -183,4 +185,5 @@ bool refineNearest(const SurfacePair& s, PointOn2& x, double tolerance)
     return refineOnIntersection(s, x, c, tolerance);
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

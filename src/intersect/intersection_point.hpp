@@ -8,8 +8,10 @@
 #include <array>
 
 #include "towgeom/point.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// A point on two surfaces: (ua, va) on A, (ub, vb) on B. v may be unwrapped (beyond the period).
 struct PointOn2 {
@@ -72,4 +74,5 @@ bool refineTriplePoint(const SurfacePair& ab, const SurfacePair& ac, PointOn3& x
 /// intersection point nearest a good guess.
 bool refineNearest(const SurfacePair& s, PointOn2& x, double tolerance);
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

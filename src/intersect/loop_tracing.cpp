@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <cmath>
 
-namespace towgeom::detail {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 namespace {
 
@@ -457,4 +460,5 @@ void consolidateCurve(const SurfacePair& surfaces, TracedCurve& curve, const Tra
     curve.points = std::move(dense);
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

@@ -9,8 +9,10 @@
 
 #include "intersect/intersection_point.hpp"
 #include "intersect/surface_walk.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// Tolerances of a trace, in the user's units.
 struct TraceTolerances {
@@ -56,4 +58,5 @@ private:
     std::vector<BoundingBox> runs_;
 };
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

@@ -8,7 +8,10 @@
 #include <algorithm>
 #include <cmath>
 
-namespace towgeom::detail {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 namespace {
 
@@ -148,4 +151,5 @@ std::vector<Seed> findSeeds(const SurfaceGrid& a, const SurfaceGrid& b, const Wi
     return seeds;
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

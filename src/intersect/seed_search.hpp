@@ -9,8 +9,10 @@
 #include "intersect/broad_phase.hpp"
 #include "intersect/intersection_point.hpp"
 #include "towgeom/tow_surface.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// A surface sampled at its sections' u and its points' v (subdivided where the input is
 /// coarse): the vertices of its facets, each exactly on the surface with known (u, v).
@@ -34,4 +36,5 @@ struct Seed {
 /// one per crossing facet pair, in a deterministic order.
 std::vector<Seed> findSeeds(const SurfaceGrid& a, const SurfaceGrid& b, const WindowPair& window);
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

@@ -8,8 +8,10 @@
 #include <cmath>
 
 #include "surface/occt_convert.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 SurfaceWalker::SurfaceWalker(const SurfacePair& surfaces, double tolerance)
     : a_(new GeomAdaptor_Surface(surfaces.a)),
@@ -54,4 +56,5 @@ std::vector<PointOn2> SurfaceWalker::walk(const PointOn2& start) const
     return line;
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

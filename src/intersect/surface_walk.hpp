@@ -9,8 +9,10 @@
 #include <vector>
 
 #include "intersect/intersection_point.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// One thread's OCCT adaptors over a pair of surfaces (adaptors cache spans: not shareable).
 class SurfaceWalker {
@@ -30,4 +32,5 @@ private:
     double uvMaxStep_;
 };
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

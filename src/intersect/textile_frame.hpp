@@ -6,8 +6,10 @@
 
 #include "surface/frame.hpp"
 #include "towgeom/tow_intersection.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// The frame a textile is computed in: the box of all tows centred at the origin, the smallest
 /// tow's size between 1 and 2.
@@ -32,4 +34,5 @@ void checkIntersectionOptions(const IntersectionOptions& options);
 /// @p options with its absolute lengths moved into @p frame.
 IntersectionOptions optionsInFrame(const IntersectionOptions& options, const Frame& frame);
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

@@ -17,8 +17,9 @@
 #include "intersect/textile_frame.hpp"
 #include "surface/tow_surface_impl.hpp"
 #include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 namespace {
 
@@ -252,4 +253,4 @@ std::vector<IntersectionLoop> intersectPair(const TowSurface& a, const TowSurfac
     return intersectTows({a, b}, options).loops;
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -15,8 +15,9 @@
 #include "intersect/intersection_loop_data.hpp"
 #include "io/output_files.hpp"
 #include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 namespace {
 
@@ -270,4 +271,4 @@ IntersectionReport readIntersectionReport(const std::string& path, const std::ve
     return readIntersectionReport(in, tows, path);
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

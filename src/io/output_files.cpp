@@ -9,8 +9,10 @@
 #include <filesystem>
 
 #include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 namespace fs = std::filesystem;
 
@@ -142,4 +144,5 @@ void OutputFiles::commit()
     entries_.clear();
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

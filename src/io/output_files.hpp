@@ -8,7 +8,10 @@
 #include <string>
 #include <vector>
 
-namespace towgeom::detail {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 class OutputFiles {
 public:
@@ -51,4 +54,5 @@ private:
     bool committed_ = false;
 };
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

@@ -11,8 +11,9 @@
 
 #include "core/section_geometry.hpp"
 #include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 namespace {
 
@@ -256,4 +257,4 @@ void writeStack(std::ostream& out, const TowStack& stack)
     }
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

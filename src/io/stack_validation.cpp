@@ -12,8 +12,9 @@
 #include "core/section_geometry.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/tow_stack.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 namespace {
 
@@ -175,4 +176,4 @@ void validateStack(const TowStack& stack)
     checkAlongTow(stack);
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

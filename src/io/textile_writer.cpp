@@ -6,13 +6,14 @@
 #include <limits>
 
 #include "core/json_writer.hpp"
-#include "export/stl_format.hpp"
-#include "export/vtk_format.hpp"
 #include "io/output_files.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/stack_reader.hpp"
+#include "towgeom/stl_writer.hpp"
+#include "towgeom/vtk_writer.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 void writeTextile(const Textile& textile, const std::string& directory, const TextileOutput& output)
 {
@@ -27,9 +28,12 @@ void writeTextile(const Textile& textile, const std::string& directory, const Te
         if (!output.facetedVtk && !output.facetedStl) continue;
         const TriangleMesh mesh = facetedTube(s, true);
         if (output.facetedVtk)
-            detail::writeVtkPolyData(files.open(path(s.name + ".faceted.vtk")), mesh, "towgeom faceted yarn " + s.name);
-        if (output.facetedStl && !detail::writeStlBinary(files.open(path(s.name + ".faceted.stl")), mesh))
-            throw Error(ErrorCode::WriteFailed, "STL writer failed", path(s.name + ".faceted.stl"));
+            writeVtk(mesh, files.open(path(s.name + ".faceted.vtk")), "towgeom faceted yarn " + s.name);
+        if (output.facetedStl) try {
+                writeStl(mesh, files.open(path(s.name + ".faceted.stl")));
+            } catch (const Error& e) {
+                throw Error(e.code(), e.message(), path(s.name + ".faceted.stl"));
+            }
     }
     const WeaveOptions& o = textile.options;
     detail::JsonWriter json(files.open(path("textile.json")));
@@ -68,4 +72,4 @@ void writeTextile(const Textile& textile, const std::string& directory, const Te
     files.commit();
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

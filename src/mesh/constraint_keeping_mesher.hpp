@@ -15,7 +15,10 @@
 #include <algorithm>
 #include <vector>
 
-namespace towgeom::detail {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 template <class CDT>
 class KeepConstrainedEdges
@@ -67,4 +70,5 @@ void refineKeepingConstraints(CDT& cdt, Criteria criteria, bool wholeHull = true
     faces.refine(nullVisitor);
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

@@ -10,8 +10,10 @@
 #include "mesh/constraint_keeping_mesher.hpp"
 #include "mesh/mesh_cdt.hpp"
 #include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 using mesh2::CDT;
 using mesh2::K;
@@ -97,4 +99,5 @@ CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>
     return out;
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

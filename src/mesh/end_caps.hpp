@@ -8,8 +8,10 @@
 #include <vector>
 
 #include "towgeom/point.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// One cap's triangles and its own new nodes.
 struct CapMesh {
@@ -30,4 +32,5 @@ struct CapMesh {
 CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>& loop, double h, double minAngle,
                 std::size_t firstNewNode, const std::string& where);
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

@@ -5,8 +5,10 @@
 
 #include "intersect/intersection_loop_data.hpp"
 #include "intersect/intersection_point.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 namespace {
 
@@ -353,4 +355,5 @@ std::vector<LoopConstraint> constraintsOn(const SharedLoop& shared, const Inters
     return pieces;
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

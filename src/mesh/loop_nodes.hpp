@@ -7,8 +7,10 @@
 #include <vector>
 
 #include "towgeom/intersection_loop.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// A closed loop's shared nodes, in loop order (the first is not repeated).
 struct SharedLoop {
@@ -61,4 +63,5 @@ std::vector<LoopConstraint> constraintsOn(const SharedLoop& shared, const Inters
 /// The loop's polygon on tow @p side in unwrapped (u,v), for point-in-polygon tests.
 std::vector<UV> loopPolygon(const SharedLoop& shared, LoopSide side);
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

@@ -13,8 +13,10 @@
 #include <cstddef>
 
 #include "mesh/surface_metric.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail::mesh2 {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail::mesh2 {
 
 /// What a triangulation vertex is: a loop node (its global index), or not (-1).
 struct VertexInfo {
@@ -96,4 +98,5 @@ private:
     const SurfaceMetric* metric_;
 };
 
-}  // namespace towgeom::detail::mesh2
+}  // namespace detail::mesh2
+TOWGEOM_END_NAMESPACE

@@ -9,8 +9,10 @@
 #include <vector>
 
 #include "towgeom/point.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// The signed volume bounded by @p triangles (a closed surface; outward orientation gives a
 /// positive volume), by the divergence theorem.
@@ -32,4 +34,5 @@ std::vector<std::vector<std::size_t>> boundaryLoops(const std::vector<std::array
 double closedVolume(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles,
                     std::size_t* loopCount = nullptr);
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

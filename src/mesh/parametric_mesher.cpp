@@ -10,8 +10,10 @@
 #include "mesh/starting_points.hpp"
 #include "mesh/surface_metric.hpp"
 #include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 using mesh2::CDT;
 using mesh2::Criteria;
@@ -331,4 +333,5 @@ ParametricMesh ParametricMesher::result(std::size_t firstNewNode)
     return out;
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

@@ -11,8 +11,10 @@
 
 #include "mesh/loop_nodes.hpp"
 #include "towgeom/tow_surface.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// Size and shape asked of the mesh.
 struct MeshSizes {
@@ -80,4 +82,5 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

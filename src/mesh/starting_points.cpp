@@ -4,7 +4,10 @@
 #include <array>
 #include <cmath>
 
-namespace towgeom::detail::mesh2 {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail::mesh2 {
 
 namespace {
 
@@ -136,4 +139,5 @@ void insertStartingPoints(CDT& cdt, const std::vector<std::vector<K::Point_2>>& 
     cdt.insert(points.begin(), points.end());
 }
 
-}  // namespace towgeom::detail::mesh2
+}  // namespace detail::mesh2
+TOWGEOM_END_NAMESPACE

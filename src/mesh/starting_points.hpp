@@ -5,8 +5,10 @@
 #include <vector>
 
 #include "mesh/mesh_cdt.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail::mesh2 {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail::mesh2 {
 
 /// Inserts into @p cdt (its constraints already in, the rectangle [0,lx] x [0,ly]):
 /// - along every loop chord of @p chords (polylines, closed ones closed), the apexes on both
@@ -19,4 +21,5 @@ namespace towgeom::detail::mesh2 {
 void insertStartingPoints(CDT& cdt, const std::vector<std::vector<K::Point_2>>& chords, const SurfaceMetric& metric,
                           double lx, double ly, double h);
 
-}  // namespace towgeom::detail::mesh2
+}  // namespace detail::mesh2
+TOWGEOM_END_NAMESPACE

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-namespace towgeom::detail {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 SurfaceMetric::SurfaceMetric(const TowSurface& surface, double su, double sv, double lx, double ly, double spacing)
 {
@@ -50,4 +53,5 @@ double SurfaceMetric::squaredLength(double x, double y, double dx, double dy) co
     return m.e * dx * dx + 2.0 * m.f * dx * dy + m.g * dy * dy;
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

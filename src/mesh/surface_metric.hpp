@@ -8,8 +8,10 @@
 #include <vector>
 
 #include "towgeom/tow_surface.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 class SurfaceMetric {
 public:
@@ -33,4 +35,5 @@ private:
     std::vector<Form> forms_;  ///< (i, j) at i * ny_ + j
 };
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

@@ -8,7 +8,9 @@
 #include <utility>
 #include <cstdint>
 
-namespace towgeom {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
 
 namespace {
 
@@ -206,4 +208,4 @@ TriangleMesh TextileMesh::closedTowSurface(std::size_t tow) const { return close
 
 std::size_t TextileMesh::boundaryLoopCount(std::size_t tow) const { return boundaryLoops(tows.at(tow).triangles).size(); }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <cmath>
 
-namespace towgeom::detail {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 namespace {
 
@@ -133,4 +136,5 @@ std::vector<std::size_t> trianglesInside(const ParametricMesh& mesh, const std::
     return inside;
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

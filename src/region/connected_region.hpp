@@ -5,8 +5,10 @@
 #include <vector>
 
 #include "mesh/parametric_mesher.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// The triangles of @p mesh whose (u,v) centroid lies inside @p polygon (the loop on this tow,
 /// v unwrapped), by CGAL's exact point-in-polygon test. Centroids are tried at v and v shifted
@@ -35,4 +37,5 @@ struct LoopCrossing {
 std::vector<LoopCrossing> loopCrossings(const std::vector<UV>& a, const std::vector<std::size_t>& nodesA,
                                         const std::vector<UV>& b, const std::vector<std::size_t>& nodesB, double period);
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

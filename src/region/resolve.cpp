@@ -24,8 +24,9 @@
 #include "region/triple_points.hpp"
 #include "region/winding_loops.hpp"
 #include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 namespace {
 
@@ -992,4 +993,4 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
     return result;
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

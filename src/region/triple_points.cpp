@@ -10,8 +10,10 @@
 #include "intersect/intersection_loop_data.hpp"
 #include "intersect/intersection_point.hpp"
 #include "region/connected_region.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 namespace {
 
@@ -282,4 +284,5 @@ TripleJoin joinAtTriplePoints(const std::vector<TowSurface>& tows, const std::ve
     return out;
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

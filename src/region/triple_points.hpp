@@ -10,8 +10,10 @@
 #include "towgeom/intersection_loop.hpp"
 #include "towgeom/textile_mesh.hpp"
 #include "towgeom/tow_surface.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// Two loops of different tow pairs that still cross on tow @p tow (their triple point could not
 /// be found: no loop of the third pair there, Newton's method did not converge, or the point lies
@@ -36,4 +38,5 @@ struct TripleJoin {
 TripleJoin joinAtTriplePoints(const std::vector<TowSurface>& tows, const std::vector<IntersectionLoop>& loops,
                               std::vector<SharedLoop>& shared, std::vector<Point3>& nodes);
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

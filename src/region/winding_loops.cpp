@@ -4,7 +4,10 @@
 #include <cmath>
 #include <utility>
 
-namespace towgeom::detail {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 namespace {
 
@@ -104,4 +107,5 @@ std::size_t loopsBefore(const std::vector<WindingPolygon>& polygons, UV p, doubl
     return before;
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

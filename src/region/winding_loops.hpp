@@ -10,8 +10,10 @@
 #include "mesh/loop_nodes.hpp"
 #include "towgeom/intersection_loop.hpp"
 #include "towgeom/tow_surface.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// The loops of one tow pair (t, o) that wind around t, and which bands of t lie inside o.
 struct WindingBands {
@@ -38,4 +40,5 @@ struct WindingPolygon {
 /// before p in u counts without a test, one wholly after it not).
 std::size_t loopsBefore(const std::vector<WindingPolygon>& polygons, UV p, double uMin, double period);
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

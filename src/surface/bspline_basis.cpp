@@ -7,7 +7,10 @@
 #include <cmath>
 #include <numeric>
 
-namespace towgeom::detail {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 int KnotVector::poleCount() const
 {
@@ -150,4 +153,5 @@ Eigen::SparseMatrix<double> basisMatrix(const KnotVector& kv, const std::vector<
     return b;
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

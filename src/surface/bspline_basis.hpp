@@ -8,7 +8,10 @@
 
 #include <vector>
 
-namespace towgeom::detail {
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// A cubic B-spline knot vector in OCCT's form (distinct knots and multiplicities).
 struct KnotVector {
@@ -41,4 +44,5 @@ KnotVector uniformKnotsPeriodic(int poles, double a, double period);
 /// B(r, c) = value at params[r] of the basis function of pole c (OCCT's pole numbering, 0-based).
 Eigen::SparseMatrix<double> basisMatrix(const KnotVector& kv, const std::vector<double>& params);
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

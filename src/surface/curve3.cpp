@@ -9,8 +9,9 @@
 #include "surface/occt_convert.hpp"
 #include "surface/occt_guard.hpp"
 #include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 using detail::fromOcct;
 
@@ -81,4 +82,4 @@ std::vector<Point3> Curve3::polylineBySpacing(double spacing) const
     });
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

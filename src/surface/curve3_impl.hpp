@@ -4,11 +4,12 @@
 #include <Geom_Curve.hxx>
 
 #include "towgeom/curve3.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 struct Curve3::Impl {
     Handle(Geom_Curve) curve;
 };
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

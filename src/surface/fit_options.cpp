@@ -1,6 +1,7 @@
 #include "towgeom/fit_options.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 const char* fitModeName(FitMode mode) noexcept
 {
@@ -12,4 +13,4 @@ const char* fitModeName(FitMode mode) noexcept
     return "unknown";
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

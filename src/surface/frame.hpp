@@ -8,8 +8,10 @@
 #include <cmath>
 
 #include "towgeom/point.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 /// A similarity x -> (x - origin) * scale with scale a power of two, so that lengths, areas and
 /// volumes go back to the user's units exactly (a division by scale, scale^2, scale^3).
@@ -40,4 +42,5 @@ struct Frame {
     }
 };
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

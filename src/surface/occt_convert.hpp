@@ -5,11 +5,14 @@
 #include <gp_Vec.hxx>
 
 #include "towgeom/point.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 inline gp_Pnt toOcct(const Point3& p) { return {p.x, p.y, p.z}; }
 inline Point3 fromOcct(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 inline Vector3 fromOcct(const gp_Vec& v) { return {v.X(), v.Y(), v.Z()}; }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

@@ -7,8 +7,10 @@
 #include <string>
 
 #include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 template <class F>
 auto guarded(const std::string& tow, const char* operation, F&& body) -> decltype(body())
@@ -21,4 +23,5 @@ auto guarded(const std::string& tow, const char* operation, F&& body) -> decltyp
     }
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

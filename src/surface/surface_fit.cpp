@@ -13,8 +13,10 @@
 #include "surface/bspline_basis.hpp"
 #include "surface/tow_surface_impl.hpp"
 #include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom::detail {
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
 
 namespace {
 
@@ -237,4 +239,5 @@ std::shared_ptr<const TowSurface::Impl> fitSurface(const TowStack& stack, const 
     return t;
 }
 
-}  // namespace towgeom::detail
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

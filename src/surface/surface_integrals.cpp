@@ -9,8 +9,9 @@
 #include "surface/occt_convert.hpp"
 #include "surface/occt_guard.hpp"
 #include "surface/tow_surface_impl.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 using detail::fromOcct;
 
@@ -163,4 +164,4 @@ double TowSurface::facetedVolume() const
     });
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

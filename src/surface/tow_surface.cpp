@@ -14,8 +14,9 @@
 #include "surface/occt_guard.hpp"
 #include "surface/tow_surface_impl.hpp"
 #include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 using detail::fromOcct;
 using detail::toOcct;
@@ -313,4 +314,4 @@ TriangleMesh TowSurface::tessellate(std::size_t nu, std::size_t nv) const
     });
 }
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE

@@ -8,8 +8,9 @@
 
 #include "surface/frame.hpp"
 #include "towgeom/tow_surface.hpp"
+#include "towgeom/export.hpp"
 
-namespace towgeom {
+TOWGEOM_BEGIN_NAMESPACE
 
 struct TowSurface::Impl {
     std::string name;
@@ -49,4 +50,4 @@ void setUnitFrame(TowSurface::Impl& tow);
 std::shared_ptr<const TowSurface::Impl> fitSurface(const TowStack& stack, const FitOptions& options);
 }  // namespace detail
 
-}  // namespace towgeom
+TOWGEOM_END_NAMESPACE
