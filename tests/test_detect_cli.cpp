@@ -83,7 +83,7 @@ TEST_CASE("towgeom detect finds one closed loop per crossing of the bundled twil
     // Refined to rounding level: observed at most 2.0e-15 (tows of size ~0.5; was 1e-7).
     for (std::size_t k = 0; k < 16; ++k) CHECK(testing::jsonNumber(r.out, "max_distance", k) <= 5e-15);
     CHECK(r.out.find("\"timings_ms\":{\"read\":") != std::string::npos);
-    CHECK(r.err.find("tow pairs intersected") != std::string::npos);  // progress
+    CHECK(r.err.find("] intersecting tow pairs") != std::string::npos);  // progress
     const Run quiet = cli("detect" + twillFiles() + " --quiet --spacing 0.1");
     CHECK(quiet.status == 0);
     CHECK(quiet.err.empty());

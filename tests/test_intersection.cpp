@@ -357,10 +357,13 @@ TEST_CASE("intersection options are checked", "[intersection]")
     o = {};
     o.threads = 1;
     std::size_t calls = 0;
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"  // the callback stays until 0.3
     o.progress = [&](std::size_t done, std::size_t total) {
         ++calls;
         CHECK(done <= total);
     };
+#pragma GCC diagnostic pop
     CHECK(intersectPair(c.x, c.y, o).size() == 1);
     CHECK(calls == 1);
 }

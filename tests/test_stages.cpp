@@ -6,8 +6,11 @@
 #include <chrono>
 #include <functional>
 #include <sstream>
+#include <tuple>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "mesh_checks.hpp"
 #include "towgeom/towgeom.hpp"
@@ -190,4 +193,128 @@ TEST_CASE("intersection report JSON: a report for other tows or a broken file is
     {
         CHECK(codeOf([&] { readIntersectionReport("/nonexistent/loops.json", tows); }) == ErrorCode::FileNotFound);
     }
+}
+
+namespace {
+
+/// Records every update; cancels at the first update of the stage that starts with @p cancelAt.
+struct Recorder : Progress {
+    std::vector<std::tuple<std::string, std::size_t, std::size_t>> updates;
+    std::string cancelAt;
+    void update(const std::string& stage, std::size_t done, std::size_t total) override
+    {
+        updates.emplace_back(stage, done, total);
+        if (!cancelAt.empty() && stage.rfind(cancelAt, 0) == 0) cancel();
+    }
+    bool saw(const std::string& prefix) const
+    {
+        for (const auto& u : updates)
+            if (std::get<0>(u).rfind(prefix, 0) == 0) return true;
+        return false;
+    }
+};
+
+}  // namespace
+
+TEST_CASE("one Progress for every stage: counted updates, and cancel() stops the stage in hand", "[stages][progress]")
+{
+    const std::vector<TowSurface> tows = bundledTwill();
+    ResolveOptions o = atSize(0.3);
+    o.threads = 2;
+
+    SECTION("updates: the tow pairs counted up to their number, then meshing and connecting")
+    {
+        Recorder r;
+        o.monitor = &r;
+        const ResolveResult res = resolveTextile(tows, o);
+        CHECK(res.mesh.regions.size() == 16);
+        std::size_t pairs = 0, last = 0, meshedTows = 0;
+        for (const auto& [stage, done, total] : r.updates) {
+            if (stage == "intersecting tow pairs") {
+                CHECK(done <= total);
+                CHECK(done >= last);  // never concurrently, so never out of order
+                last = done;
+                pairs = total;
+            }
+            if (stage == "meshing tows") meshedTows = std::max(meshedTows, done);
+        }
+        CHECK(pairs == res.intersections.pairsTested);
+        CHECK(last == pairs);
+        CHECK(meshedTows == tows.size());
+        CHECK(r.saw("intersecting 8 tows"));
+        CHECK(r.saw("connecting 16 regions"));
+    }
+    SECTION("cancelled in each stage: Error(Cancelled), never a mesh failure or an unresolved pair")
+    {
+        for (const char* stage : {"intersecting tow pairs", "meshing 8 tows", "meshing tows", "connecting"}) {
+            INFO(stage);
+            Recorder r;
+            r.cancelAt = stage;
+            o.monitor = &r;
+            try {
+                resolveTextile(tows, o);
+                FAIL("not cancelled");
+            } catch (const Error& e) {
+                CHECK(e.code() == ErrorCode::Cancelled);
+            }
+            CHECK(!r.saw("meshing again"));  // the cancellation was not taken for a failed tow
+        }
+    }
+    SECTION("cancelled before the call: intersectTows() does no work")
+    {
+        Recorder r;
+        r.cancel();
+        IntersectionOptions io;
+        io.monitor = &r;
+        try {
+            intersectTows(tows, io);
+            FAIL("not cancelled");
+        } catch (const Error& e) {
+            CHECK(e.code() == ErrorCode::Cancelled);
+        }
+        CHECK(r.updates.size() == 1);  // the stage announced, no pair done
+    }
+}
+
+TEST_CASE("intersection report JSON: numbers out of range, far v, wrong arc lengths, repeats, huge tolerances are refused", "[stages][json]")
+{
+    const std::vector<TowSurface> tows = bundledTwill();
+    const IntersectionReport found = intersectTows(tows);
+    const nlohmann::json good = nlohmann::json::parse(jsonOf(found, tows));
+    const auto refused = [&](const std::function<void(nlohmann::json&)>& edit) {
+        nlohmann::json j = good;
+        edit(j);
+        return codeOf([&] { readBack(j.dump(), tows); }) == ErrorCode::MalformedReport;
+    };
+    // A number beyond double's range (nlohmann's out_of_range, not JSON's syntax).
+    std::string huge = good.dump();
+    const std::size_t at = huge.find("\"tolerance\":") + 12;
+    huge.replace(at, huge.find(',', at) - at, "1e999");
+    CHECK(codeOf([&] { readBack(huge, tows); }) == ErrorCode::MalformedReport);
+    CHECK(refused([](nlohmann::json& j) { j["loops"][0]["points"][3][4] = 1e20; }));      // vA
+    CHECK(refused([](nlohmann::json& j) { j["loops"][0]["points"][3][7] = 0.5; }));       // s
+    CHECK(refused([](nlohmann::json& j) {                                                  // all s and length 0
+        for (auto& p : j["loops"][0]["points"]) p[7] = 0.0;
+        j["loops"][0]["length"] = 0.0;
+    }));
+    CHECK(refused([](nlohmann::json& j) {  // the closing chord of no length
+        const auto& pts = j["loops"][0]["points"];
+        j["loops"][0]["length"] = pts[pts.size() - 1][7];
+    }));
+    CHECK(refused([](nlohmann::json& j) { j["loops"].push_back(j["loops"][0]); }));      // a loop twice
+    CHECK(refused([](nlohmann::json& j) {                                                  // a tolerance that would pass anything
+        j["loops"][0]["tolerance"] = 1e300;
+        for (auto& p : j["loops"][0]["points"]) p[0] = p[1] = p[2] = 0.0;
+    }));
+    CHECK(refused([](nlohmann::json& j) { j["loops"][0]["tow_a"] = -1; }));
+    CHECK_NOTHROW(readBack(good.dump(), tows));  // the untouched report reads
+
+    // The writer refuses what the reader would: tows in another order, a name that is not UTF-8.
+    std::vector<TowSurface> swapped = tows;
+    std::swap(swapped[0], swapped[4]);
+    CHECK(codeOf([&] { jsonOf(found, swapped); }) == ErrorCode::InvalidArgument);
+    TowStack odd;
+    odd.name = "w\xff";
+    odd.sections = tows[0].sections();
+    CHECK(codeOf([&] { jsonOf(IntersectionReport{}, {TowSurface::fit(odd)}); }) == ErrorCode::InvalidArgument);
 }

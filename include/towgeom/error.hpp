@@ -36,9 +36,10 @@ enum class ErrorCode {
     WriteFailed,              ///< An output file could not be written.
     Internal,                 ///< A geometry kernel failed unexpectedly; the message says where.
     TooLarge,                 ///< The mesh or tessellation asked for would exceed its size limit
-    MalformedReport           ///< A JSON report read back is malformed, or is not one of the tows given
                               ///< (MeshOptions::maxTriangles); refused before it is made, the
                               ///< message gives the estimate and the limit.
+    MalformedReport,          ///< A JSON report read back is malformed, or is not one of the tows given.
+    Cancelled                 ///< Progress::cancel() stopped the work; no result was made.
 };
 
 /// A short, stable, machine-readable name of a code, e.g. "non_numeric".

@@ -6,9 +6,14 @@
 #include <functional>
 
 #include "towgeom/export.hpp"
+#include "towgeom/progress.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
 
+// The deprecated callback member makes GCC warn in the implicit copy and move members, at this
+// definition; only the callback's own uses should warn.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
 /// Options for intersectTows() and intersectPair(). Lengths are in the user's units; each
 /// tolerance left at 0 is its relative value times the tow size (TowSurface::towSize(), the
 /// smaller of the two tows of a pair).
@@ -27,9 +32,16 @@ struct IntersectionOptions {
     /// Worker threads for the exact intersection of candidate pairs; 0 (default) means one per
     /// hardware thread. Results do not depend on it.
     std::size_t threads = 0;
+    /// Progress reports ("intersecting tow pairs", pairs done, candidate pairs) and
+    /// cancellation (checked before each tow pair); may be null. Not owned: it must outlive the
+    /// call.
+    Progress* monitor = nullptr;
     /// Called after each candidate tow pair is done, with (pairs done, candidate pairs), from
     /// the calling thread or a worker (never concurrently). May be empty.
+    /// @deprecated Use monitor (Progress::update()); removed in 0.3.
+    [[deprecated("use IntersectionOptions::monitor (towgeom::Progress); removed in 0.3")]]
     std::function<void(std::size_t, std::size_t)> progress;
 };
+#pragma GCC diagnostic pop
 
 TOWGEOM_END_NAMESPACE

@@ -20,9 +20,11 @@ TOWGEOM_BEGIN_NAMESPACE
 /// the report is for, in order, and per loop its tows (indices into that list), whether it is
 /// closed (or why not), its point tolerance and its points, each as
 /// `[x, y, z, uA, vA, uB, vB, s]`: the 3D point, its (u,v) on tow A and on tow B, and the arc
-/// length s from the first point. Numbers are written to round-trip exactly, so a report read
-/// back gives the same meshes as the one written. The pair findings (touching, nested, contact)
-/// and the counts of the search are kept too; timings are written but not read back.
+/// length s from the first point. Numbers are written to round-trip exactly: the points, their
+/// (u,v), arc lengths, tolerances, open reasons, the pair findings (touching, nested, contact)
+/// and the counts of the search read back bit for bit, so a report read back gives the same
+/// meshes as the one written. IntersectionLoop::maxDistance() is recomputed from the points
+/// (it may differ in the last bits); timings are written but not read back.
 ///
 /// @code
 /// const towgeom::IntersectionReport found = towgeom::intersectTows(tows);
@@ -34,7 +36,8 @@ TOWGEOM_BEGIN_NAMESPACE
 /// @{
 
 /// Writes @p report, computed for @p tows, as JSON to @p out.
-/// @throws towgeom::Error (InvalidArgument) if a loop of @p report is not between two of @p tows.
+/// @throws towgeom::Error (InvalidArgument) if a loop of @p report is not between two of @p tows
+/// (an index out of range, or tows of other names at its indices), or a tow name is not UTF-8.
 TOWGEOM_EXPORT void writeIntersectionReport(const IntersectionReport& report, const std::vector<TowSurface>& tows, std::ostream& out);
 
 /// Writes @p report, computed for @p tows, as JSON to the file @p path: complete or not at all
@@ -47,9 +50,11 @@ TOWGEOM_EXPORT void writeIntersectionReport(const IntersectionReport& report, co
 /// errors.
 /// @throws towgeom::Error (MalformedReport) naming @p sourceName and the loop or point when the
 /// input is not JSON, not this format or version, has a missing or wrong-typed field, a
-/// non-finite number, a closed loop of fewer than 3 points, a (u,v) off a tow's range, or is for
-/// other tows: other names, another count or order, or points off the tows' surfaces (farther
-/// than 1000 x the loop's tolerance plus 1e-6 of the tow's size).
+/// non-finite or out-of-range number, a closed loop of fewer than 3 points, a u off a tow's
+/// range or a v more than 100 periods off, arc lengths that are not the distances of the points
+/// (to 1e-9), a loop of no length, a tolerance over 1e-2 of the tows' size, a loop given twice,
+/// or is for other tows: other names, another count or order, or points off the tows' surfaces
+/// (farther than 1000 x the loop's tolerance plus 1e-6 of the tow's size).
 TOWGEOM_EXPORT IntersectionReport readIntersectionReport(std::istream& in, const std::vector<TowSurface>& tows,
                                           const std::string& sourceName = "<stream>");
 

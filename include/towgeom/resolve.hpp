@@ -10,6 +10,7 @@
 
 #include "towgeom/intersection_options.hpp"
 #include "towgeom/mesh_options.hpp"
+#include "towgeom/progress.hpp"
 #include "towgeom/textile_mesh.hpp"
 #include "towgeom/tow_intersection.hpp"
 #include "towgeom/tow_surface.hpp"
@@ -17,6 +18,10 @@
 
 TOWGEOM_BEGIN_NAMESPACE
 
+// The deprecated callback member makes GCC warn in the implicit copy and move members, at this
+// definition; only the callback's own uses should warn.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
 /// Options for resolveTextile().
 struct ResolveOptions {
     MeshOptions mesh;                  ///< mesh size and quality
@@ -29,9 +34,17 @@ struct ResolveOptions {
     std::vector<std::string> primaryPatterns;
     /// Worker threads (intersection and meshing); 0: one per hardware thread.
     std::size_t threads = 0;
+    /// Progress reports of every stage (intersecting tow pairs, meshing, connecting regions)
+    /// and cancellation (checked per tow pair, per tow and between stages); may be null. Not
+    /// owned: it must outlive the call. Also used for the intersection (whatever
+    /// intersection.monitor says).
+    Progress* monitor = nullptr;
     /// Progress: called with a short stage description; may be empty.
+    /// @deprecated Use monitor (Progress::update()); removed in 0.3.
+    [[deprecated("use ResolveOptions::monitor (towgeom::Progress); removed in 0.3")]]
     std::function<void(const std::string&)> progress;
 };
+#pragma GCC diagnostic pop
 
 /// What resolution did to one tow.
 struct TowResolution {

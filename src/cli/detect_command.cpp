@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "cli/tow_input.hpp"
 #include "cli/loop_json.hpp"
+#include "cli/progress_printer.hpp"
 #include "cli/unresolved_pairs.hpp"
 #include "core/json_writer.hpp"
 #include "towgeom/towgeom.hpp"
@@ -63,7 +64,7 @@ unresolved: a curve is open (unless --allow-open), or two tows overlap with no c
 the other, identical or touching). One stderr line per such pair, also with --quiet:
   towgeom detect: unresolved tow pair 'a' and 'b': MESSAGE [open_curve|nested|identical_or_touching]
 and the JSON is printed all the same. 2 invalid input or usage (one line on stderr naming file
-and line); 1 internal failure.
+and line); 1 internal failure; 130 stopped by Ctrl-C or SIGTERM (nothing printed or written).
 
 Examples:
   towgeom detect examples/data/twill/*.stw > loops.json
@@ -103,15 +104,8 @@ int runDetect(int argc, char** argv, int first)
         const std::vector<TowSurface> surfaces = fitSurfaces(stacks, {}, "detect", quiet, options.threads);
         const double fitMs = msSince(fitStart);
 
-        std::size_t reported = 0;
-        if (!quiet)
-            options.progress = [&reported](std::size_t done, std::size_t total) {
-                // About twenty lines however many pairs there are.
-                if (done == total || done * 20 / total > reported * 20 / total) {
-                    std::cerr << "towgeom detect: [" << done << "/" << total << "] tow pairs intersected\n";
-                    reported = done;
-                }
-            };
+        ProgressPrinter printer("detect", quiet);
+        options.monitor = &printer;
         const IntersectionReport report = intersectTows(surfaces, options);
         if (const auto path = args.value("save-report")) writeIntersectionReport(report, surfaces, *path);
 

@@ -4,6 +4,7 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/progress_printer.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/version.hpp"
 
@@ -36,6 +37,11 @@ Options:
 
 int reportError(const char* command, const std::exception& e)
 {
+    const auto* stopped = dynamic_cast<const Error*>(&e);
+    if (stopped && stopped->code() == ErrorCode::Cancelled) {
+        std::cerr << "towgeom " << command << ": stopped by a signal (Ctrl-C or SIGTERM); nothing written [cancelled]\n";
+        return kExitCancelled;
+    }
     std::string message = e.what();
     for (char& c : message)
         if (c == '\n') c = ' ';
@@ -49,6 +55,7 @@ int reportError(const char* command, const std::exception& e)
     std::cerr << "\n";
     if (error) {
         switch (error->code()) {
+        case ErrorCode::Cancelled: return kExitCancelled;
         case ErrorCode::WriteFailed:
         case ErrorCode::Internal: return kExitFailure;
         default: return kExitInput;

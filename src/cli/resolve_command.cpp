@@ -9,6 +9,7 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "cli/loop_json.hpp"
+#include "cli/progress_printer.hpp"
 #include "cli/tow_input.hpp"
 #include "cli/unresolved_pairs.hpp"
 #include "core/json_writer.hpp"
@@ -105,7 +106,8 @@ Exit status: 0 success; 3 a tow pair is unresolved (see "unresolved": one stderr
 also with --quiet; the files are written all the same), unless every such pair is an open curve
 and --allow-open is given; 2 invalid input or usage (one line on stderr naming file and line;
 nothing written); 1 a file could not be written or an internal failure (e.g. the meshes fail
-their own check); a failed run leaves DIR exactly as it was.
+their own check); 130 stopped by Ctrl-C or SIGTERM while computing; a failed or stopped run
+leaves DIR exactly as it was.
 
 Example:
   towgeom resolve examples/data/twill/*.stw --out resolved --formats stl,vtk,msh,inp
@@ -168,7 +170,8 @@ int runResolve(int argc, char** argv, int first)
         options.mesh.caps = !args.has("no-caps");
         const std::set<std::string> formats = parseFormats(args.value("formats"));
         const bool quiet = args.has("quiet");
-        if (!quiet) options.progress = [](const std::string& stage) { std::cerr << "towgeom resolve: " << stage << "\n"; };
+        ProgressPrinter printer("resolve", quiet);
+        options.monitor = &printer;
 
         const auto start = std::chrono::steady_clock::now();
         const std::vector<TowStack> stacks = readStacks(args.positional(), options.threads);
@@ -177,6 +180,8 @@ int runResolve(int argc, char** argv, int first)
         const std::vector<TowSurface> tows = fitSurfaces(stacks, {}, "resolve", quiet, options.threads);
         const double fitMs = msSince(t0);
         const auto reportPath = args.value("report");
+        if (reportPath && options.intersection.tolerance > 0.0)
+            throw UsageError("--tolerance has no effect with --report: the loops were computed with the report's tolerance");
         const ResolveResult result = [&] {
             try {
                 if (reportPath) return resolveTextile(tows, readIntersectionReport(*reportPath, tows), options);

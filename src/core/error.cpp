@@ -52,6 +52,7 @@ const char* errorCodeName(ErrorCode code) noexcept
     case ErrorCode::Internal: return "internal";
     case ErrorCode::TooLarge: return "too_large";
     case ErrorCode::MalformedReport: return "malformed_report";
+    case ErrorCode::Cancelled: return "cancelled";
     }
     return "unknown";
 }

@@ -28,6 +28,10 @@ void reportToUser(IntersectionReport& report, const std::vector<TowSurface>& tow
 /// @p report, given for the user's tows, for @p towsInFrame (those tows moved into @p frame).
 IntersectionReport reportToFrame(const IntersectionReport& report, const std::vector<TowSurface>& towsInFrame, const Frame& frame);
 
+/// Refuses (InvalidArgument) a report that is not one of @p tows: a loop naming a tow index out
+/// of range, or tows other than those at its indices (by name).
+void checkReportTows(const std::vector<TowSurface>& tows, const IntersectionReport& report);
+
 /// Refuses (InvalidArgument) negative, zero or non-finite tolerances.
 void checkIntersectionOptions(const IntersectionOptions& options);
 

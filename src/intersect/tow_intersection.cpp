@@ -8,6 +8,7 @@
 #include <mutex>
 
 #include "core/parallel.hpp"
+#include "core/progress_report.hpp"
 #include "intersect/broad_phase.hpp"
 #include "intersect/containment.hpp"
 #include "intersect/intersection_loop_data.hpp"
@@ -170,7 +171,14 @@ IntersectionReport intersectInFrame(const std::vector<TowSurface>& tows, const I
     std::vector<PairResult> results(candidates.size());
     std::mutex progressMutex;
     std::size_t done = 0;
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"  // IntersectionOptions::progress, until 0.3
+    const auto& legacy = options.progress;
+#pragma GCC diagnostic pop
+    if (options.monitor) options.monitor->update("intersecting tow pairs", 0, candidates.size());
+    detail::throwIfCancelled(options.monitor);
     detail::parallelFor(candidates.size(), threads, [&](std::size_t i) {
+        detail::throwIfCancelled(options.monitor);
         const detail::CandidatePair& c = candidates[i];
         try {
             results[i] = intersectCandidate(tows, grids, c, options);
@@ -179,10 +187,8 @@ IntersectionReport intersectInFrame(const std::vector<TowSurface>& tows, const I
                         std::string("OpenCASCADE failed intersecting tows '") + tows[c.a].name() + "' and '" +
                             tows[c.b].name() + "': " + e.GetMessageString());
         }
-        if (options.progress) {
-            std::lock_guard<std::mutex> lock(progressMutex);
-            options.progress(++done, candidates.size());
-        }
+        std::lock_guard<std::mutex> lock(progressMutex);
+        detail::reportStage(options.monitor, legacy, "intersecting tow pairs", ++done, candidates.size());
     });
     for (PairResult& r : results) {
         report.seeds += r.seeds;
@@ -225,6 +231,24 @@ IntersectionReport reportToFrame(const IntersectionReport& report, const std::ve
     IntersectionReport moved = report;
     for (IntersectionLoop& l : moved.loops) l = loopToFrame(l, towsInFrame[l.towA()], towsInFrame[l.towB()], frame);
     return moved;
+}
+
+/// Refuses (InvalidArgument) a report that is not one of @p tows: a loop naming a tow index out
+/// of range, or tows other than those at its indices.
+void checkReportTows(const std::vector<TowSurface>& tows, const IntersectionReport& report)
+{
+    for (std::size_t k = 0; k < report.loops.size(); ++k) {
+        const IntersectionLoop& l = report.loops[k];
+        const std::string which = "intersection loop " + std::to_string(k);
+        if (l.towA() >= l.towB() || l.towB() >= tows.size())
+            throw Error(ErrorCode::InvalidArgument, which + " is between tows " + std::to_string(l.towA()) + " and " +
+                                                        std::to_string(l.towB()) + ", not two of the " +
+                                                        std::to_string(tows.size()) + " tows given");
+        if (l.surfaceA().name() != tows[l.towA()].name() || l.surfaceB().name() != tows[l.towB()].name())
+            throw Error(ErrorCode::InvalidArgument, which + " is between tows '" + l.surfaceA().name() + "' and '" +
+                                                        l.surfaceB().name() + "', but the tows at its indices are '" +
+                                                        tows[l.towA()].name() + "' and '" + tows[l.towB()].name() + "'");
+    }
 }
 
 IntersectionOptions optionsInFrame(const IntersectionOptions& options, const Frame& frame)

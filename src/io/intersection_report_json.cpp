@@ -13,6 +13,7 @@
 #include <ostream>
 
 #include "intersect/intersection_loop_data.hpp"
+#include "intersect/textile_frame.hpp"
 #include "io/output_files.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
@@ -25,6 +26,18 @@ using Json = nlohmann::json;
 
 constexpr const char* kFormat = "towgeom-intersections";
 constexpr int kVersion = 1;
+constexpr double kVPeriods = 100.0;  // how far an unwrapped v may lie from the period
+
+/// The same tows and the same points in the same order.
+bool sameLoop(const IntersectionLoop& a, const IntersectionLoop& b)
+{
+    if (a.towA() != b.towA() || a.towB() != b.towB() || a.points().size() != b.points().size()) return false;
+    for (std::size_t k = 0; k < a.points().size(); ++k) {
+        const Point3 &p = a.points()[k].point, &q = b.points()[k].point;
+        if (!(p.x == q.x && p.y == q.y && p.z == q.z)) return false;
+    }
+    return true;
+}
 
 const char* kindName(PairFinding::Kind k)
 {
@@ -36,20 +49,9 @@ const char* kindName(PairFinding::Kind k)
     return "touching";
 }
 
-void checkLoopTows(const IntersectionReport& report, const std::vector<TowSurface>& tows)
-{
-    for (std::size_t k = 0; k < report.loops.size(); ++k) {
-        const IntersectionLoop& l = report.loops[k];
-        if (l.towA() >= l.towB() || l.towB() >= tows.size())
-            throw Error(ErrorCode::InvalidArgument, "intersection loop " + std::to_string(k) + " is between tows " +
-                                                        std::to_string(l.towA()) + " and " + std::to_string(l.towB()) +
-                                                        ", not two of the " + std::to_string(tows.size()) + " tows given");
-    }
-}
-
 Json toJson(const IntersectionReport& report, const std::vector<TowSurface>& tows)
 {
-    checkLoopTows(report, tows);
+    detail::checkReportTows(tows, report);
     Json j;
     j["format"] = kFormat;
     j["version"] = kVersion;
@@ -86,6 +88,16 @@ public:
 
     IntersectionReport read(std::istream& in)
     {
+        try {
+            return readJson(in);
+        } catch (const Json::exception& e) {  // a number out of double's range, ...
+            fail("not a readable report (" + std::string(e.what()) + ")");
+        }
+    }
+
+private:
+    IntersectionReport readJson(std::istream& in)
+    {
         Json j;
         try {
             j = Json::parse(in);
@@ -101,7 +113,12 @@ public:
         IntersectionReport report;
         const Json& loops = field(j, "loops", "the report");
         if (!loops.is_array()) fail("\"loops\" is not an array");
-        for (std::size_t k = 0; k < loops.size(); ++k) report.loops.push_back(loop(loops[k], "loop " + std::to_string(k)));
+        for (std::size_t k = 0; k < loops.size(); ++k) {
+            report.loops.push_back(loop(loops[k], "loop " + std::to_string(k)));
+            for (std::size_t i = 0; i < k; ++i)
+                if (sameLoop(report.loops[i], report.loops[k]))
+                    fail("loop " + std::to_string(k) + " repeats loop " + std::to_string(i));
+        }
         const Json& findings = field(j, "findings", "the report");
         if (!findings.is_array()) fail("\"findings\" is not an array");
         for (std::size_t k = 0; k < findings.size(); ++k) report.findings.push_back(finding(findings[k], "finding " + std::to_string(k)));
@@ -114,7 +131,6 @@ public:
         return report;
     }
 
-private:
     [[noreturn]] void fail(const std::string& what) const { throw Error(ErrorCode::MalformedReport, what, source_); }
 
     const Json& field(const Json& object, const char* key, const std::string& where) const
@@ -178,7 +194,9 @@ private:
         d->closed = closed.get<bool>();
         d->openReason = reason.get<std::string>();
         d->tolerance = number(field(l, "tolerance", where), where + " tolerance");
-        if (!(d->tolerance > 0.0)) fail(where + ": the tolerance is not positive");
+        const double size = std::min(tows_[a].towSize(), tows_[b].towSize());
+        if (!(d->tolerance > 0.0) || d->tolerance > 1e-2 * size)
+            fail(where + ": the tolerance is not positive and at most 1e-2 of the tows' size");
         const Json& points = field(l, "points", where);
         if (!points.is_array() || points.size() < (d->closed ? 3u : 2u))
             fail(where + ": \"points\" is not an array of at least " + (d->closed ? "3" : "2") + " points");
@@ -193,9 +211,14 @@ private:
                 const double slack = 1e-9 * (r.uMax - r.uMin);
                 return u >= r.uMin - slack && u <= r.uMax + slack;
             };
+            // v is unwrapped along a loop (it may go round the tow a few times), never far.
+            const auto nearV = [](double v, const ParameterRange& r) {
+                return v >= r.vMin - kVPeriods * r.vPeriod() && v <= r.vMax + kVPeriods * r.vPeriod();
+            };
             if (!inU(x[3], ra) || !inU(x[5], rb)) fail(at + ": u lies off the tow's parameter range");
-            if (k > 0 && !(x[7] >= d->cumulative.back())) fail(at + ": the arc length s decreases");
+            if (!nearV(x[4], ra) || !nearV(x[6], rb)) fail(at + ": v lies more than 100 periods off the tow's");
             if (k == 0 && x[7] != 0.0) fail(at + ": the arc length s of the first point is not 0");
+            if (k > 0) checkStep(d->points.back().point, {x[0], x[1], x[2]}, x[7] - d->cumulative.back(), at);
             d->points.push_back({{x[0], x[1], x[2]}, {x[3], x[4]}, {x[5], x[6]}});
             d->cumulative.push_back(x[7]);
             d->maxDistanceA = std::max(d->maxDistanceA, distance(d->points.back().point, tows_[a].point(x[3], x[4])));
@@ -203,11 +226,12 @@ private:
         }
         const double length = number(field(l, "length", where), where + " length");
         if (d->closed) {
-            if (!(length >= d->cumulative.back())) fail(where + ": \"length\" is below the last point's arc length");
+            checkStep(d->points.back().point, d->points.front().point, length - d->cumulative.back(), where + " closing chord");
             d->cumulative.push_back(length);
         } else if (length != d->cumulative.back()) {
             fail(where + ": \"length\" of an open curve is not the last point's arc length");
         }
+        if (!(length > 0.0)) fail(where + " has no length");
         const auto offBy = [&](double gap, const TowSurface& t) {
             return gap > 1000.0 * d->tolerance + 1e-6 * t.towSize();
         };
@@ -216,6 +240,16 @@ private:
                  "' (up to " + std::to_string(std::max(d->maxDistanceA, d->maxDistanceB)) +
                  "): the report is not for these tows' geometry");
         return IntersectionLoop(std::move(d));
+    }
+
+    /// Refuses an arc length step @p ds that is not the distance from @p p to @p q (to 1e-9 of
+    /// it, plus rounding).
+    void checkStep(const Point3& p, const Point3& q, double ds, const std::string& at) const
+    {
+        const double d = distance(p, q);
+        if (!(std::abs(ds - d) <= 1e-9 * d + 1e-14 * (std::abs(p.x) + std::abs(p.y) + std::abs(p.z) + d)))
+            fail(at + ": the arc length grows by " + std::to_string(ds) + " where the points are " + std::to_string(d) +
+                 " apart");
     }
 
     PairFinding finding(const Json& f, const std::string& where) const
@@ -241,16 +275,30 @@ private:
 
 }  // namespace
 
+namespace {
+
+/// The report's JSON text; a tow name that is not UTF-8 is refused (InvalidArgument).
+std::string jsonText(const IntersectionReport& report, const std::vector<TowSurface>& tows)
+{
+    try {
+        return toJson(report, tows).dump() + '\n';
+    } catch (const Json::type_error& e) {
+        throw Error(ErrorCode::InvalidArgument, std::string("a tow name cannot be written as JSON: ") + e.what());
+    }
+}
+
+}  // namespace
+
 void writeIntersectionReport(const IntersectionReport& report, const std::vector<TowSurface>& tows, std::ostream& out)
 {
-    out << toJson(report, tows).dump() << '\n';
+    out << jsonText(report, tows);
 }
 
 void writeIntersectionReport(const IntersectionReport& report, const std::vector<TowSurface>& tows, const std::string& path)
 {
-    const Json j = toJson(report, tows);  // refuses a report not of these tows before any file is made
+    const std::string text = jsonText(report, tows);  // refuses a bad report before any file is made
     detail::OutputFiles files;
-    files.open(path) << j.dump() << '\n';
+    files.open(path) << text;
     files.commit();
 }
 

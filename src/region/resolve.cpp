@@ -10,11 +10,13 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <mutex>
 #include <set>
 #include <sstream>
 
 #include "core/glob_match.hpp"
 #include "core/parallel.hpp"
+#include "core/progress_report.hpp"
 #include "intersect/textile_frame.hpp"
 #include "mesh/end_caps.hpp"
 #include "mesh/loop_nodes.hpp"
@@ -70,6 +72,16 @@ void checkOptions(const ResolveOptions& o)
         throw Error(ErrorCode::InvalidArgument, "minimum angle must lie in (0, 30] degrees");
     if (!nonNegative(m.loopSpacing)) throw Error(ErrorCode::InvalidArgument, "loop spacing must be >= 0 and finite");
     if (m.maxTriangles == 0) throw Error(ErrorCode::InvalidArgument, "the triangle limit must be at least 1");
+}
+
+/// Reports stage @p what to the Progress and the deprecated callback of @p options, then throws
+/// Error(Cancelled) if cancelled.
+void say(const ResolveOptions& options, const std::string& what)
+{
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"  // ResolveOptions::progress, until 0.3
+    detail::reportStage(options.monitor, options.progress, what, 0, 0);
+#pragma GCC diagnostic pop
 }
 
 /// Triangles the mesher makes per equilateral triangle of side h in the same area: it keeps
@@ -150,6 +162,7 @@ public:
         } catch (const std::bad_alloc&) {
             throw;  // out of memory is not this tow's geometry
         } catch (const Error& e) {
+            if (e.code() == ErrorCode::Cancelled) throw;
             message = e.message();  // without the "tow 'NAME'" context, which the caller adds
         } catch (const std::exception& e) {
             message = e.what();
@@ -314,9 +327,6 @@ void closeEnds(const std::vector<TowSurface>& tows, const std::vector<double>& t
 void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<double>& towH, const ResolveOptions& options,
                     const std::set<TowPair>& excluded, ResolveResult& result)
 {
-    const auto say = [&](const std::string& what) {
-        if (options.progress) options.progress(what);
-    };
     const std::size_t threads = detail::workerCount(options.threads);
     const std::vector<IntersectionLoop>& loops = result.intersections.loops;
 
@@ -412,11 +422,17 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
     };
     std::vector<std::vector<double>> seamU(tows.size());
     TowFailures failures(loops, shared, tows.size());
+    std::mutex meshedMutex;
+    std::size_t meshed = 0;
     detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
+        detail::throwIfCancelled(options.monitor);
         failures.run(t, [&] {
             meshers[t] = std::make_unique<detail::ParametricMesher>(tows[t], detail::MeshSizes{towH[t], options.mesh.minAngle});
             meshers[t]->mesh(constraintsOf(t), {}, requests[t]);
         });
+        if (!options.monitor) return;
+        std::lock_guard<std::mutex> lock(meshedMutex);
+        options.monitor->update("meshing tows", ++meshed, tows.size());
     });
     failures.throwAll();
     int round = 1;
@@ -453,6 +469,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
         if (busy.empty()) break;
         for (std::size_t t : busy) requests[t] = {};
         detail::parallelFor(busy.size(), threads, [&](std::size_t k) {
+            detail::throwIfCancelled(options.monitor);
             const std::size_t t = busy[k];
             failures.run(t, [&] {
                 if (!meshers[t]->split(splits[t], newSeamU[t], requests[t])) {
@@ -468,6 +485,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
     std::vector<detail::ParametricMesh> meshes(tows.size());
     std::vector<std::vector<Point3>> ownNodes(tows.size());
     detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
+        detail::throwIfCancelled(options.monitor);
         meshes[t] = meshers[t]->result(kLocal);
         meshers[t].reset();
         ownNodes[t].reserve(meshes[t].newNodes.size());
@@ -494,7 +512,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
     // ranked above t; otherwise, inside lower-ranked tows, it is also a triangle of the highest
     // ranked of them (the surface between t and that tow): a region of its pair's loop around it.
     t0 = Clock::now();
-    say("connecting " + std::to_string(shared.size()) + " regions");
+    say(options, "connecting " + std::to_string(shared.size()) + " regions");
     result.mesh.nodes = std::move(nodes);
     const std::vector<Point3>& N = result.mesh.nodes;
     result.tows.resize(tows.size());
@@ -523,6 +541,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
     // Per tow, (triangle, loop) for every loop whose inside holds the triangle, by triangle.
     std::vector<std::vector<std::pair<std::size_t, std::size_t>>> hits(tows.size());
     detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
+        detail::throwIfCancelled(options.monitor);
         for (std::size_t k = 0; k < shared.size(); ++k)
             for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
                 const IntersectionLoop& l = loops[shared[k].loop];
@@ -826,8 +845,7 @@ ResolveResult resolveInFrame(const std::vector<TowSurface>& tows, const std::vec
                                               tows[p.first].name() + "' and '" + tows[p.second].name() + "': " + f.message});
                 }
             }
-            if (options.progress)
-                options.progress("meshing again without the " + std::to_string(left) + " tow pair(s) on " +
+            say(options, "meshing again without the " + std::to_string(left) + " tow pair(s) on " +
                                  std::to_string(failed.tows.size()) + " tow(s) whose mesh failed");
             continue;
         }
@@ -922,24 +940,6 @@ struct MeshSizePlan {
     }
 };
 
-/// Refuses (InvalidArgument) a report that is not one of @p tows: a loop naming a tow index out
-/// of range, or tows other than those at its indices.
-void checkReport(const std::vector<TowSurface>& tows, const IntersectionReport& report)
-{
-    for (std::size_t k = 0; k < report.loops.size(); ++k) {
-        const IntersectionLoop& l = report.loops[k];
-        const std::string which = "intersection loop " + std::to_string(k);
-        if (l.towA() >= l.towB() || l.towB() >= tows.size())
-            throw Error(ErrorCode::InvalidArgument, which + " is between tows " + std::to_string(l.towA()) + " and " +
-                                                        std::to_string(l.towB()) + ", not two of the " +
-                                                        std::to_string(tows.size()) + " tows given");
-        if (l.surfaceA().name() != tows[l.towA()].name() || l.surfaceB().name() != tows[l.towB()].name())
-            throw Error(ErrorCode::InvalidArgument, which + " is between tows '" + l.surfaceA().name() + "' and '" +
-                                                        l.surfaceB().name() + "', but the tows at its indices are '" +
-                                                        tows[l.towA()].name() + "' and '" + tows[l.towB()].name() + "'");
-    }
-}
-
 /// resolveTextile() with @p report for @p tows, both checked, the sizes planned.
 ResolveResult resolveWithReport(const std::vector<TowSurface>& tows, const IntersectionReport& report,
                                 const ResolveOptions& options, const MeshSizePlan& plan)
@@ -955,9 +955,9 @@ ResolveResult resolveWithReport(const std::vector<TowSurface>& tows, const Inter
     const std::vector<TowSurface> moved = detail::towsInFrame(tows, frame);
     ResolveResult result = resolveInFrame(moved, towHInFrame, o, detail::reportToFrame(report, moved, frame), [&](double loopLength) {
         checkMeshSize(options.mesh, plan.area, plan.h, frame.lengthToUser(loopLength), plan.spacing);
-        if (options.progress && !plan.towH.empty()) {  // in the user's units
+        if (!plan.towH.empty()) {  // in the user's units
             const auto [lo, hi] = std::minmax_element(plan.towH.begin(), plan.towH.end());
-            options.progress("meshing " + std::to_string(tows.size()) + " tows at h = " + std::to_string(*lo) +
+            say(options, "meshing " + std::to_string(tows.size()) + " tows at h = " + std::to_string(*lo) +
                              (*hi > *lo * (1.0 + 1e-6) ? " to " + std::to_string(*hi) : std::string()));
         }
     });
@@ -972,7 +972,7 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const Intersec
 {
     checkOptions(options);
     detail::checkIntersectionOptions(options.intersection);
-    checkReport(tows, report);
+    detail::checkReportTows(tows, report);
     return resolveWithReport(tows, report, options, MeshSizePlan(tows, options.mesh));
 }
 
@@ -985,7 +985,8 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
     const Clock::time_point t0 = Clock::now();
     IntersectionOptions io = options.intersection;
     io.threads = options.threads;
-    if (options.progress) options.progress("intersecting " + std::to_string(tows.size()) + " tows");
+    say(options, "intersecting " + std::to_string(tows.size()) + " tows");
+    if (!io.monitor) io.monitor = options.monitor;
     const IntersectionReport report = intersectTows(tows, io);
     const double intersectMs = msSince(t0);
     ResolveResult result = resolveWithReport(tows, report, options, plan);

@@ -1,7 +1,8 @@
-# Installs the built (shared) towgeom into a fresh prefix, then configures, builds and runs the
-# consumer project (examples/consumer) against it with find_package(towgeom) while the engines'
-# CMake packages (OpenCASCADE, CGAL, Eigen3, nlohmann_json) cannot be found: the install tree
-# must be self-sufficient and towgeomConfig.cmake must not ask for them.
+# Installs the built towgeom into a fresh prefix, then configures, builds and runs the consumer
+# project (examples/consumer) against it with find_package(towgeom). For a shared libtowgeom
+# (SHARED) the engines' CMake packages (OpenCASCADE, CGAL, Eigen3, nlohmann_json) cannot be
+# found meanwhile: the install tree must be self-sufficient and towgeomConfig.cmake must not ask
+# for them. A static one needs them for the link.
 include("${CMAKE_CURRENT_LIST_DIR}/consumer_common.cmake")
 file(REMOVE_RECURSE "${WORK}")
 run(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${WORK}/prefix")
@@ -10,10 +11,13 @@ foreach(f include/towgeom/towgeom.hpp include/towgeom/version.hpp include/towgeo
     message(FATAL_ERROR "not installed: ${f}")
   endif()
 endforeach()
+set(no_engines "")
+if(SHARED)
+  set(no_engines -DCMAKE_DISABLE_FIND_PACKAGE_OpenCASCADE=ON -DCMAKE_DISABLE_FIND_PACKAGE_CGAL=ON
+      -DCMAKE_DISABLE_FIND_PACKAGE_Eigen3=ON -DCMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=ON)
+endif()
 run(${CMAKE_COMMAND} -S "${CONSUMER_SOURCE}" -B "${WORK}/build" -G "${GENERATOR}"
-    -DCMAKE_BUILD_TYPE=Release "-DCMAKE_PREFIX_PATH=${WORK}/prefix"
-    -DCMAKE_DISABLE_FIND_PACKAGE_OpenCASCADE=ON -DCMAKE_DISABLE_FIND_PACKAGE_CGAL=ON
-    -DCMAKE_DISABLE_FIND_PACKAGE_Eigen3=ON -DCMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=ON)
+    -DCMAKE_BUILD_TYPE=Release "-DCMAKE_PREFIX_PATH=${WORK}/prefix" ${no_engines})
 run(${CMAKE_COMMAND} --build "${WORK}/build")
 check_consumer_volume("${WORK}/build/fit_volume" "${EXAMPLE}")
 run("${WORK}/prefix/bin/towgeom" --version)
