@@ -88,7 +88,7 @@ std::size_t checkResolved(const ResolveResult& res, std::size_t expectedRegions)
 {
     const TextileMesh& mesh = res.mesh;
     const std::size_t n = mesh.tows.size();
-    CHECK(res.skipped.empty());
+    CHECK(res.skippedLoops.empty());
     // At most 6 rounds (resolve.cpp's kMaxRounds; resolve.hpp documents it), and nothing left
     // over the bounds after them (README: 0 on every textile in the tests).
     CHECK(res.meshRounds >= 1);
@@ -383,7 +383,7 @@ void checkQuality(const std::vector<TowSurface>& tows, const char* what)
             // and 20.3 deg (tubes).
             CHECK(res.quality.fractionAtLeast(20) >= 0.9997);
             CHECK(res.quality.minAngle >= 16.0);
-            CHECK(res.skipped.empty());
+            CHECK(res.skippedLoops.empty());
             // Size in 3D: edges other than loop chords (which are at the loop spacing) at most h,
             // up to the metric's interpolation; faces the mesher could not make good are counted.
             std::set<std::size_t> loopNodes;

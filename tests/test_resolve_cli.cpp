@@ -242,7 +242,7 @@ TEST_CASE("towgeom resolve skips and names an open curve (exit 3), refuses bad u
     CHECK(r.status == 3);
     CHECK(r.err.find("'short' and 'crossing'") != std::string::npos);
     const std::string report = testing::slurp(dir / "out" / "report.json");
-    CHECK(report.find("\"skipped\":[{\"tow_a\":\"short\",\"tow_b\":\"crossing\",\"reason\":\"open curve:") != std::string::npos);
+    CHECK(report.find("\"skipped\":[{\"tow_a\":\"short\",\"tow_b\":\"crossing\",\"code\":\"open_curve\",\"reason\":\"open curve:") != std::string::npos);
     CHECK(count(report, "\"boundary_loops\":0") == 2);
     checkClosed(dir / "out", {"short", "crossing"});
     const Run allowed = cli("resolve" + files + " --out '" + (dir / "out2").string() + "' --quiet --allow-open");

@@ -104,7 +104,7 @@ TEST_CASE("a loop spacing well over h gives no coincident nodes", "[resolve][rob
 {
     const ResolveResult& r = coarseLoopTwill();
     CHECK(r.mesh.regions.size() == 16);
-    CHECK(r.skipped.empty());
+    CHECK(r.skippedLoops.empty());
     checkClosed(r);
     CHECK(r.quality.minAngle > 0.1);  // observed 0.31 deg: loop chords of 1.0 on loops ~1.7 long
     std::vector<Point3> sorted = r.mesh.nodes;
@@ -161,7 +161,7 @@ TEST_CASE("a loop that dips across the seam between two nodes keeps both sides o
             }
         CHECK(flat == 0);
         CHECK(r.mesh.regions.size() == 25);
-        CHECK(r.skipped.empty());
+        CHECK(r.skippedLoops.empty());
         checkClosed(r);
         CHECK(crossingPairs(r) == 0);
     }
@@ -198,7 +198,7 @@ TEST_CASE("a mesh size near or over the tow circumference is capped per tow and 
     o.mesh.edgeLength = 0.4;
     const ResolveResult r = resolveTextile(tows, o);
     CHECK(r.mesh.regions.size() == 4);
-    CHECK(r.skipped.empty());
+    CHECK(r.skippedLoops.empty());
     const auto [repeated, nonManifold] = degenerate(r);
     CHECK(repeated == 0);
     CHECK(nonManifold == 0);

@@ -99,7 +99,7 @@ TEST_CASE("an island loop inside a loop of the same pair is a hole of the region
     ResolveOptions o;
     o.mesh.edgeLength = 0.02;
     const ResolveResult res = resolveTextile(tows, o);
-    CHECK(res.skipped.empty());
+    CHECK(res.skippedLoops.empty());
     CHECK(res.unresolved.empty());
     REQUIRE(res.mesh.regions.size() == 1);
     const ConnectedRegion& r = res.mesh.regions[0];
@@ -196,7 +196,7 @@ TriangleMesh closedGrid(const TowSurface& t)
 void checkThreeTows(const std::vector<TowSurface>& tows, const ResolveResult& res, const std::vector<std::size_t>& order,
                     std::size_t triplePoints, std::size_t regions = 3)
 {
-    CHECK(res.skipped.empty());
+    CHECK(res.skippedLoops.empty());
     CHECK(res.unresolved.empty());
     CHECK(res.mesh.regions.size() == regions);
     for (const ConnectedRegion& r : res.mesh.regions) {
@@ -376,7 +376,7 @@ TEST_CASE("a tow through another, or ending inside it: each keeps its volume min
             if (thinFirst) o.primaryPatterns = {"thin"};
             const ResolveResult res = resolveTextile(tows, o);
             CHECK(res.unresolved.empty());
-            CHECK(res.skipped.empty());
+            CHECK(res.skippedLoops.empty());
             CHECK(testing::crossingPairsBetweenTows(res.mesh) == 0);
             checkClosed(res);
             // The thin tow given way is cut in two where it passes through; a tunnel through the
@@ -564,7 +564,7 @@ TEST_CASE("pressed layers resolve at 6 mesh sizes from the largest accepted to a
         const ResolveResult res = resolveTextile(tows, o);
         CHECK(res.intersections.loops.size() == 44);
         CHECK(res.unresolved.empty());
-        CHECK(res.skipped.empty());
+        CHECK(res.skippedLoops.empty());
         CHECK(res.mesh.regions.size() == 44);
         CHECK(testing::crossingPairsBetweenTows(res.mesh) == 0);
         checkClosed(res);
@@ -601,7 +601,7 @@ TEST_CASE("hand-traced pixel-row tows pressed across each other, starts drifting
         o.mesh.relativeEdgeLength = h;
         const ResolveResult res = resolveTextile(tows, o);
         CHECK(res.unresolved.empty());
-        CHECK(res.skipped.empty());
+        CHECK(res.skippedLoops.empty());
         CHECK(!res.mesh.regions.empty());
         CHECK(testing::crossingPairsBetweenTows(res.mesh) == 0);
         checkClosed(res);

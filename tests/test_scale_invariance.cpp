@@ -137,7 +137,7 @@ TEST_CASE("resolve gives the same regions and no crossing triangles at scales 1e
     for (const double s : {1e-6, 1e-3, 1.0, 1e3, 1e6}) {
         INFO("scale " << s);
         const ResolveResult res = resolveTextile(fit(scaled(tubes, s)));
-        CHECK(res.skipped.empty());
+        CHECK(res.skippedLoops.empty());
         CHECK(res.intersections.loops.size() == 1);
         REQUIRE(res.mesh.regions.size() == 1);
         CHECK(crossings(res) == 0);
@@ -159,7 +159,7 @@ TEST_CASE("resolve of the bundled twill gives 16 regions and no crossing triangl
     for (const double s : {1e-6, 1e6}) {
         INFO("scale " << s);
         const ResolveResult res = resolveTextile(fit(scaled(twill, s)));
-        CHECK(res.skipped.empty());
+        CHECK(res.skippedLoops.empty());
         CHECK(res.mesh.regions.size() == 16);
         CHECK(crossings(res) == 0);
         for (const TowResolution& t : res.tows) CHECK(t.boundaryLoops == 0);

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "mesh_checks.hpp"
+#include "synthetic_tows.hpp"
 #include "towgeom/towgeom.hpp"
 
 using namespace towgeom;
@@ -317,4 +318,26 @@ TEST_CASE("intersection report JSON: numbers out of range, far v, wrong arc leng
     odd.name = "w\xff";
     odd.sections = tows[0].sections();
     CHECK(codeOf([&] { jsonOf(IntersectionReport{}, {TowSurface::fit(odd)}); }) == ErrorCode::InvalidArgument);
+}
+
+TEST_CASE("typed reasons: a tow through another is resolved with caps, skipped as AroundTowWithoutCaps without", "[stages][reasons]")
+{
+    // y (r = 0.3) passes right through x (R = 0.5): two loops around y.
+    const std::vector<TowSurface> tows = {TowSurface::fit(testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, {}, "x")),
+                                          TowSurface::fit(testing::tubeAlongY(0.3, 0.0, {}, "y"))};
+    const IntersectionReport loops = intersectTows(tows);
+    REQUIRE(loops.loops.size() == 2);
+    ResolveOptions o = atSize(0.2);
+    const ResolveResult capped = resolveTextile(tows, loops, o);
+    CHECK(capped.skippedLoops.empty());
+    CHECK(capped.tows[1].pieces == 2);  // y, ranked below x, gives way: cut into two pieces
+    o.mesh.caps = false;
+    const ResolveResult open = resolveTextile(tows, loops, o);
+    REQUIRE(open.skippedLoops.size() == 2);
+    for (std::size_t k = 0; k < 2; ++k) {
+        CHECK(open.skippedLoops[k].loop == k);
+        CHECK(open.skippedLoops[k].reason == SkippedLoop::Reason::AroundTowWithoutCaps);
+        CHECK(open.skippedLoops[k].message.find("'y'") != std::string::npos);
+    }
+    CHECK(open.mesh.regions.empty());
 }

@@ -103,14 +103,42 @@ struct UnresolvedPair {
     std::string message;   ///< a sentence naming the tows and the failure
 };
 
+/// An intersection loop that was not resolved, and why (ResolveResult::skippedLoops).
+struct SkippedLoop {
+    /// Why the loop bounds no region.
+    enum class Reason {
+        /// The curve is open (IntersectionLoop::closed() false; IntersectionLoop::openReason()
+        /// says where it stops: a tow's end, tangent surfaces).
+        OpenCurve,
+        /// The loop goes around both tows.
+        AroundBothTows,
+        /// The loop goes around one tow (the other passes through it or ends inside it), which is
+        /// resolved only when the tows are closed by their caps (MeshOptions::caps).
+        AroundTowWithoutCaps,
+        /// The pair's loops go around one of the tows but do not cut it into bands alternately
+        /// inside and outside the other.
+        BandsDoNotAlternate
+    };
+    std::size_t loop = 0;              ///< index in ResolveResult::intersections.loops
+    Reason reason = Reason::OpenCurve;  ///< why
+    std::string message;               ///< a sentence naming the tows
+};
+
+// The deprecated member skipped makes GCC warn in the implicit copy and move members, at this
+// definition; only its own uses should warn.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
 /// The result of resolveTextile().
 struct ResolveResult {
     IntersectionReport intersections;  ///< every loop found (open ones included)
     TextileMesh mesh;                  ///< the compatible meshes
     std::vector<TowResolution> tows;   ///< per input tow
     /// Loops that were not resolved (open; winding around a tow without caps, around both tows,
-    /// or cutting it into bands that do not alternate), by index in intersections.loops, with the
-    /// reason.
+    /// or cutting it into bands that do not alternate), in loop order, with the reason.
+    std::vector<SkippedLoop> skippedLoops;
+    /// skippedLoops as (loop index, message).
+    /// @deprecated Use skippedLoops (typed reasons); removed in 0.3.
+    [[deprecated("use ResolveResult::skippedLoops; removed in 0.3")]]
     std::vector<std::pair<std::size_t, std::string>> skipped;
     /// Tow pairs left unresolved so that the rest of the textile could be (their loops are in
     /// intersections.loops but bound no region).
@@ -122,6 +150,7 @@ struct ResolveResult {
     std::size_t meshRounds = 0;
     ResolveTimings timings;            ///< where the time went
 };
+#pragma GCC diagnostic pop
 
 /// Meshes every tow in its (u,v) rectangle with the closed intersection loops as constraints
 /// (ParametricMesher: CGAL constrained Delaunay mesher in a parameter space scaled by the

@@ -44,7 +44,7 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                    "unresolved":[{"tow_a","tow_b","reason","message"}], "regions":[{"primary",
                    "secondary","triangles","nodes","area","volume_removed"}],
                    "triple_points":[{"tows":[3 names],"node","point":[x,y,z]}],
-                   "skipped":[{"tow_a","tow_b","reason"}], "node_count",
+                   "skipped":[{"tow_a","tow_b","code","reason"}], "node_count",
                    "mesh_quality":{"min_angle_deg","angle_histogram","fraction_at_least_20",
                    "triangles","faces_over_bounds"},
                    "mesh_rounds", "timings_ms":{...}}
@@ -62,7 +62,8 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                   tow, or the point lies at a seam; or meets it while the third pair has no
                   resolved loop there; the later pair is left out), mesh_failed (a tow could not be
                   meshed with the pair's loops: its pairs are left out, the rest resolved)
-  skipped         every loop not resolved (open or around a tow), with the reason as a sentence
+  skipped         every loop not resolved, with its code (open_curve, around_both_tows,
+                  around_tow_without_caps, bands_do_not_alternate) and the reason as a sentence
   volume_removed  the volume of the two tows' overlap inside the region's loop: what the
                   secondary lost there when no third tow overlaps them there
   triple_points   points where three tows' surfaces meet (node: the global node number)
@@ -113,6 +114,18 @@ Example:
   towgeom resolve examples/data/twill/*.stw --out resolved --formats stl,vtk,msh,inp
   (then open resolved/*.vtk in ParaView and colour by region_id)
 )";
+
+/// The report.json code of a skipped loop's reason.
+const char* skipCode(SkippedLoop::Reason r)
+{
+    switch (r) {
+    case SkippedLoop::Reason::OpenCurve: return "open_curve";
+    case SkippedLoop::Reason::AroundBothTows: return "around_both_tows";
+    case SkippedLoop::Reason::AroundTowWithoutCaps: return "around_tow_without_caps";
+    case SkippedLoop::Reason::BandsDoNotAlternate: return "bands_do_not_alternate";
+    }
+    return "open_curve";
+}
 
 double msSince(std::chrono::steady_clock::time_point t0)
 {
@@ -240,10 +253,10 @@ int runResolve(int argc, char** argv, int first)
         }
         json.endArray();
         json.key("skipped").beginArray();
-        for (const auto& [loop, why] : result.skipped) {
-            const IntersectionLoop& l = result.intersections.loops[loop];
+        for (const SkippedLoop& s : result.skippedLoops) {
+            const IntersectionLoop& l = result.intersections.loops[s.loop];
             json.beginObject().key("tow_a").value(tows[l.towA()].name()).key("tow_b").value(tows[l.towB()].name());
-            json.key("reason").value(why).endObject();
+            json.key("code").value(skipCode(s.reason)).key("reason").value(s.message).endObject();
         }
         json.endArray();
         json.key("node_count").value(mesh.nodes.size());

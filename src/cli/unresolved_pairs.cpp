@@ -50,12 +50,12 @@ std::vector<UnresolvedEntry> unresolvedPairs(const IntersectionReport& report)
 std::vector<UnresolvedEntry> unresolvedPairs(const ResolveResult& result)
 {
     std::vector<UnresolvedEntry> pairs;
-    for (const auto& [index, why] : result.skipped) {
-        const IntersectionLoop& l = result.intersections.loops[index];
-        if (l.closed())
-            addOnce(pairs, {l.towA(), l.towB(), reason::kWindsAround, why});
-        else
+    for (const SkippedLoop& s : result.skippedLoops) {
+        const IntersectionLoop& l = result.intersections.loops[s.loop];
+        if (s.reason == SkippedLoop::Reason::OpenCurve)
             addOnce(pairs, {l.towA(), l.towB(), reason::kOpenCurve, "open intersection curve: " + l.openReason()});
+        else
+            addOnce(pairs, {l.towA(), l.towB(), reason::kWindsAround, s.message});
     }
     for (const towgeom::UnresolvedPair& u : result.unresolved)
         addOnce(pairs, {u.towA, u.towB, u.reason == towgeom::UnresolvedPair::Reason::LoopsMeet ? reason::kLoopsMeet : reason::kMeshFailed,

@@ -367,18 +367,22 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
     std::vector<detail::SharedLoop> shared;
     for (std::size_t i = 0; i < loops.size(); ++i) {
         const IntersectionLoop& l = loops[i];
+        using Why = SkippedLoop::Reason;
         if (!l.closed())
-            result.skipped.emplace_back(i, "open curve: " + l.openReason());
+            result.skippedLoops.push_back({i, Why::OpenCurve, "open curve: " + l.openReason()});
         else if (l.windsAround(LoopSide::A) && l.windsAround(LoopSide::B))
-            result.skipped.emplace_back(i, "the loop goes around both tows '" + l.surfaceA().name() + "' and '" + l.surfaceB().name() + "'");
+            result.skippedLoops.push_back({i, Why::AroundBothTows, "the loop goes around both tows '" + l.surfaceA().name() +
+                                                                       "' and '" + l.surfaceB().name() + "'"});
         else if ((l.windsAround(LoopSide::A) || l.windsAround(LoopSide::B)) && !options.mesh.caps)
-            result.skipped.emplace_back(i, "the loop goes around tow '" +
+            result.skippedLoops.push_back({i, Why::AroundTowWithoutCaps,
+                                           "the loop goes around tow '" +
                                                (l.windsAround(LoopSide::A) ? l.surfaceA() : l.surfaceB()).name() +
-                                               "' (one tow passes through the other; resolved only with end caps)");
+                                               "' (one tow passes through the other; resolved only with end caps)"});
         else if (disagree.count({l.towA(), l.towB()}))
-            result.skipped.emplace_back(i, "the loops of tows '" + l.surfaceA().name() + "' and '" + l.surfaceB().name() +
+            result.skippedLoops.push_back({i, Why::BandsDoNotAlternate,
+                                           "the loops of tows '" + l.surfaceA().name() + "' and '" + l.surfaceB().name() +
                                                "' go around one of them but do not cut it into bands alternately inside and "
-                                               "outside the other");
+                                               "outside the other"});
         else if (!excluded.count({l.towA(), l.towB()}))
             shared.push_back(detail::shareLoopNodes(l, i, spacingOf(l), nodes));
     }
@@ -962,6 +966,10 @@ ResolveResult resolveWithReport(const std::vector<TowSurface>& tows, const Inter
         }
     });
     resultToUser(result, report, frame);
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"  // ResolveResult::skipped, until 0.3
+    for (const SkippedLoop& s : result.skippedLoops) result.skipped.emplace_back(s.loop, s.message);
+#pragma GCC diagnostic pop
     for (std::size_t t = 0; t < tows.size(); ++t) result.tows[t].meshSize = plan.towH[t];
     return result;
 }
