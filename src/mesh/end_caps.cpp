@@ -8,7 +8,9 @@
 #include <queue>
 
 #include "mesh/constraint_keeping_mesher.hpp"
+#include "core/parallel.hpp"
 #include "mesh/mesh_cdt.hpp"
+#include "mesh/mesh_measures.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
 
@@ -97,6 +99,57 @@ CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>
         if (f->is_in_domain())  // counter-clockwise in the plane, the loop's turn: reversed
             out.triangles.push_back({nodeOf(f->vertex(0)), nodeOf(f->vertex(2)), nodeOf(f->vertex(1))});
     return out;
+}
+
+/// Closes every tow's tube mesh (@p meshes, open at their two ends) by its two end caps
+/// (meshCap(), at the tow's mesh size); @p face gets each triangle's part (TowFace::Start or End
+/// by the nearer of the tow's first and last sections). The caps' nodes are appended to @p nodes.
+void closeEnds(const std::vector<TowSurface>& tows, const std::vector<double>& towH, double minAngle, std::size_t threads,
+               std::vector<ParametricMesh>& meshes, std::vector<std::vector<TowFace>>& face, std::vector<Point3>& nodes)
+{
+    constexpr std::size_t kLocal = std::size_t(1) << 60;  // marks a cap's own new nodes
+    std::vector<std::vector<std::pair<CapMesh, TowFace>>> caps(tows.size());
+    parallelFor(tows.size(), threads, [&](std::size_t t) {
+        const auto centroid = [](const std::vector<Point3>& points) {
+            Point3 c;
+            for (const Point3& p : points) c = c + p;
+            return (1.0 / static_cast<double>(points.size())) * c;
+        };
+        const Point3 first = centroid(tows[t].sections().front()), last = centroid(tows[t].sections().back());
+        const std::vector<std::vector<std::size_t>> ends = boundaryLoops(meshes[t].triangles);
+        if (ends.size() != 2) return;  // not a tube: reported by the check of the final mesh
+        std::array<Point3, 2> c;
+        for (std::size_t e = 0; e < 2; ++e) {
+            std::vector<Point3> points;
+            for (std::size_t n : ends[e]) points.push_back(nodes[n]);
+            c[e] = centroid(points);
+        }
+        // The two ends together: the pairing with the first and last sections that is nearer.
+        const bool firstIsStart = distance(c[0], first) + distance(c[1], last) <= distance(c[0], last) + distance(c[1], first);
+        for (std::size_t e = 0; e < 2; ++e) {
+            const TowFace f = (e == 0) == firstIsStart ? TowFace::Start : TowFace::End;
+            try {
+                caps[t].emplace_back(meshCap(nodes, ends[e], towH[t], minAngle, kLocal, "tow '" + tows[t].name() + "'"), f);
+            } catch (const Error& x) {
+                throw Error(ErrorCode::InvalidArgument,
+                            std::string("its ") + (f == TowFace::Start ? "start" : "end") + " cap cannot be meshed: " + x.message() +
+                                " (the tube's end nodes, about h apart, make no simple polygon of a section this concave "
+                                "at this mesh size): use a smaller mesh size, or no caps (MeshOptions::caps, --no-caps)",
+                            x.file());
+            }
+        }
+    });
+    for (std::size_t t = 0; t < tows.size(); ++t)
+        for (auto& [cap, f] : caps[t]) {
+            const std::size_t base = nodes.size();
+            nodes.insert(nodes.end(), cap.newNodes.begin(), cap.newNodes.end());
+            for (std::array<std::size_t, 3> tri : cap.triangles) {
+                for (std::size_t& n : tri)
+                    if (n >= kLocal) n = base + (n - kLocal);
+                meshes[t].triangles.push_back(tri);
+                face[t].push_back(f);
+            }
+        }
 }
 
 }  // namespace detail

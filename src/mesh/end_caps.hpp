@@ -7,7 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "mesh/parametric_mesher.hpp"
 #include "towgeom/point.hpp"
+#include "towgeom/textile_mesh.hpp"
+#include "towgeom/tow_surface.hpp"
 #include "towgeom/export.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
@@ -31,6 +34,14 @@ struct CapMesh {
 /// the section).
 CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>& loop, double h, double minAngle,
                 std::size_t firstNewNode, const std::string& where);
+
+/// Closes every tow's tube mesh (@p meshes, open at their two ends) by its two end caps
+/// (meshCap(), at the tow's mesh size @p towH); @p face gets each triangle's part
+/// (TowFace::Start or End by the nearer of the tow's first and last sections). The caps' nodes
+/// are appended to @p nodes.
+/// @throws Error (InvalidArgument) naming the tow and end whose cap cannot be meshed.
+void closeEnds(const std::vector<TowSurface>& tows, const std::vector<double>& towH, double minAngle, std::size_t threads,
+               std::vector<ParametricMesh>& meshes, std::vector<std::vector<TowFace>>& face, std::vector<Point3>& nodes);
 
 }  // namespace detail
 TOWGEOM_END_NAMESPACE

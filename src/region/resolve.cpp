@@ -269,57 +269,6 @@ void dropMeetingLoops(const std::vector<TowSurface>& tows, const std::vector<Int
                  shared.end());
 }
 
-/// Closes every tow's tube mesh (@p meshes, open at their two ends) by its two end caps
-/// (meshCap(), at the tow's mesh size); @p face gets each triangle's part (TowFace::Start or End
-/// by the nearer of the tow's first and last sections). The caps' nodes are appended to @p nodes.
-void closeEnds(const std::vector<TowSurface>& tows, const std::vector<double>& towH, double minAngle, std::size_t threads,
-               std::vector<detail::ParametricMesh>& meshes, std::vector<std::vector<TowFace>>& face, std::vector<Point3>& nodes)
-{
-    constexpr std::size_t kLocal = std::size_t(1) << 60;  // marks a cap's own new nodes
-    std::vector<std::vector<std::pair<detail::CapMesh, TowFace>>> caps(tows.size());
-    detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
-        const auto centroid = [](const std::vector<Point3>& points) {
-            Point3 c;
-            for (const Point3& p : points) c = c + p;
-            return (1.0 / static_cast<double>(points.size())) * c;
-        };
-        const Point3 first = centroid(tows[t].sections().front()), last = centroid(tows[t].sections().back());
-        const std::vector<std::vector<std::size_t>> ends = detail::boundaryLoops(meshes[t].triangles);
-        if (ends.size() != 2) return;  // not a tube: reported by the check of the final mesh
-        std::array<Point3, 2> c;
-        for (std::size_t e = 0; e < 2; ++e) {
-            std::vector<Point3> points;
-            for (std::size_t n : ends[e]) points.push_back(nodes[n]);
-            c[e] = centroid(points);
-        }
-        // The two ends together: the pairing with the first and last sections that is nearer.
-        const bool firstIsStart = distance(c[0], first) + distance(c[1], last) <= distance(c[0], last) + distance(c[1], first);
-        for (std::size_t e = 0; e < 2; ++e) {
-            const TowFace f = (e == 0) == firstIsStart ? TowFace::Start : TowFace::End;
-            try {
-                caps[t].emplace_back(detail::meshCap(nodes, ends[e], towH[t], minAngle, kLocal, "tow '" + tows[t].name() + "'"), f);
-            } catch (const Error& x) {
-                throw Error(ErrorCode::InvalidArgument,
-                            std::string("its ") + (f == TowFace::Start ? "start" : "end") + " cap cannot be meshed: " + x.message() +
-                                " (the tube's end nodes, about h apart, make no simple polygon of a section this concave "
-                                "at this mesh size): use a smaller mesh size, or no caps (MeshOptions::caps, --no-caps)",
-                            x.file());
-            }
-        }
-    });
-    for (std::size_t t = 0; t < tows.size(); ++t)
-        for (auto& [cap, f] : caps[t]) {
-            const std::size_t base = nodes.size();
-            nodes.insert(nodes.end(), cap.newNodes.begin(), cap.newNodes.end());
-            for (Triangle tri : cap.triangles) {
-                for (std::size_t& n : tri)
-                    if (n >= kLocal) n = base + (n - kLocal);
-                meshes[t].triangles.push_back(tri);
-                face[t].push_back(f);
-            }
-        }
-}
-
 /// Stages 2 and 3 of resolveTextile() on tows already in a normalised frame, with options in the
 /// frame's units (the mesh size set): @p result holds the intersections; loops of the tow pairs
 /// in @p excluded are left out.
@@ -507,7 +456,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
     // its end caps before the regions are made, so that a cap inside another tow is shared too.
     std::vector<std::vector<TowFace>> faceOf(tows.size());
     for (std::size_t t = 0; t < tows.size(); ++t) faceOf[t].assign(meshes[t].triangles.size(), TowFace::Side);
-    if (options.mesh.caps) closeEnds(tows, towH, options.mesh.minAngle, threads, meshes, faceOf, nodes);
+    if (options.mesh.caps) detail::closeEnds(tows, towH, options.mesh.minAngle, threads, meshes, faceOf, nodes);
     result.timings.mesh = msSince(t0);
 
     // 3. Connected regions, by rank: every tow minus the tows ranked above it. A triangle of tow

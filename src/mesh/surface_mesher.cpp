@@ -1,0 +1,197 @@
+// The public ParametricMesher: one tow meshed with the host's constraint polylines by the
+// mesher of resolveTextile() (detail::ParametricMesher), in meshing rounds that put in the splits
+// of constraint chords and seam edges the refinement asks for, then closed by its end caps.
+#include "towgeom/surface_mesher.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <string>
+
+#include "mesh/end_caps.hpp"
+#include "mesh/mesh_measures.hpp"
+#include "mesh/parametric_mesher.hpp"
+#include "surface/frame.hpp"
+#include "surface/tow_surface_impl.hpp"
+#include "towgeom/error.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+
+namespace {
+
+constexpr int kMaxRounds = 6;                          // as resolveTextile()
+constexpr std::size_t kLocal = std::size_t(1) << 60;  // marks the mesher's own new nodes
+
+Vector3 unit(const Vector3& v)
+{
+    const double n = norm(v);
+    return n > 0.0 ? (1.0 / n) * v : v;
+}
+
+/// The constraint pieces for the internal mesher: nodes numbered in order of first use, a point
+/// on the seam one node for both sides (by its u).
+struct Pieces {
+    std::vector<detail::LoopConstraint> pieces;
+    std::vector<UV> nodeUV;  ///< per node; seam nodes at v = vMin
+
+    Pieces(const std::vector<MeshConstraint>& constraints, const ParameterRange& r)
+    {
+        std::map<double, std::size_t> seamNode;  // u -> node
+        for (std::size_t c = 0; c < constraints.size(); ++c) {
+            const MeshConstraint& mc = constraints[c];
+            const std::string which = "constraint " + std::to_string(c);
+            if (mc.points.size() < (mc.closed ? 3u : 2u))
+                throw Error(ErrorCode::InvalidArgument, which + " has fewer than " + (mc.closed ? "3" : "2") + " points");
+            detail::LoopConstraint& piece = pieces.emplace_back();
+            piece.closed = mc.closed;
+            for (std::size_t k = 0; k < mc.points.size(); ++k) {
+                const UV& p = mc.points[k];
+                const std::string at = which + " point " + std::to_string(k);
+                if (!std::isfinite(p.u) || !std::isfinite(p.v)) throw Error(ErrorCode::InvalidArgument, at + " is not finite");
+                if (p.u < r.uMin || p.u > r.uMax || p.v < r.vMin || p.v > r.vMax)
+                    throw Error(ErrorCode::InvalidArgument, at + " (" + std::to_string(p.u) + ", " + std::to_string(p.v) +
+                                                                ") lies off the tow's (u,v) rectangle");
+                const std::size_t prev = k > 0 ? k - 1 : mc.closed ? mc.points.size() - 1 : k;
+                if (prev != k && mc.points[prev].u == p.u && mc.points[prev].v == p.v)
+                    throw Error(ErrorCode::InvalidArgument, at + " repeats the point before it");
+                std::size_t node = nodeUV.size();
+                if (p.v == r.vMin || p.v == r.vMax) {
+                    const auto [it, isNew] = seamNode.emplace(p.u, node);
+                    node = it->second;
+                    if (isNew) nodeUV.push_back({p.u, r.vMin});
+                } else {
+                    nodeUV.push_back(p);
+                }
+                piece.uv.push_back(p);
+                piece.nodes.push_back(node);
+            }
+        }
+    }
+
+    /// Puts a node between consecutive nodes @p a and @p b of a piece, at the middle of the chord
+    /// in (u,v); returns the split for the mesher, or false if no piece has that chord.
+    bool split(std::size_t a, std::size_t b, detail::ChordSplit& out)
+    {
+        for (detail::LoopConstraint& c : pieces) {
+            const std::size_t n = c.uv.size();
+            for (std::size_t k = 0; k < n; ++k) {
+                const std::size_t next = (k + 1) % n;
+                if (next == 0 && !c.closed) break;
+                if (!((c.nodes[k] == a && c.nodes[next] == b) || (c.nodes[k] == b && c.nodes[next] == a))) continue;
+                const UV mid{0.5 * (c.uv[k].u + c.uv[next].u), 0.5 * (c.uv[k].v + c.uv[next].v)};
+                out = {a, b, nodeUV.size(), mid};
+                nodeUV.push_back(mid);
+                c.uv.insert(c.uv.begin() + static_cast<std::ptrdiff_t>(k + 1), mid);
+                c.nodes.insert(c.nodes.begin() + static_cast<std::ptrdiff_t>(k + 1), out.node);
+                return true;
+            }
+        }
+        return false;
+    }
+};
+
+}  // namespace
+
+ParametricMesher::ParametricMesher(TowSurface surface, const SurfaceMeshOptions& options)
+    : surface_(std::move(surface)), options_(options)
+{
+    const auto finitePositive = [](double x) { return x > 0.0 && std::isfinite(x); };
+    if (!(options.edgeLength == 0.0 || finitePositive(options.edgeLength)))
+        throw Error(ErrorCode::InvalidArgument, "the edge length must be 0 (relative) or finite and positive");
+    if (options.edgeLength == 0.0 && !finitePositive(options.relativeEdgeLength))
+        throw Error(ErrorCode::InvalidArgument, "the relative edge length must be finite and positive");
+    if (!(options.minAngle > 0.0 && options.minAngle <= 30.0))
+        throw Error(ErrorCode::InvalidArgument, "the minimum angle must lie in (0, 30] degrees");
+    h_ = options.edgeLength > 0.0 ? options.edgeLength : options.relativeEdgeLength * surface_.towSize();
+    const double around = 3.14159265358979323846 * surface_.towSize();
+    if (h_ > around / 4.0)
+        throw Error(ErrorCode::InvalidArgument, "edge length " + std::to_string(h_) + " is too coarse for tow '" + surface_.name() +
+                                                    "': at least 4 edges around it are needed (at most " +
+                                                    std::to_string(around / 4.0) + ")");
+}
+
+SurfaceMesh ParametricMesher::mesh(const std::vector<MeshConstraint>& constraints) const
+{
+    const ParameterRange r = surface_.parameterRange();
+    Pieces pieces(constraints, r);
+    // In a frame where the tow is about unit size (as resolveTextile()), so that the mesh does
+    // not depend on the units.
+    const detail::Frame frame = detail::Frame::around(surface_.boundingBox(), surface_.towSize());
+    const TowSurface tow = detail::inFrame(surface_, frame);
+    const double h = frame.lengthToFrame(h_);
+
+    std::vector<Point3> nodes;  // frame
+    for (const UV& p : pieces.nodeUV) nodes.push_back(tow.point(p.u, p.v));
+    detail::ParametricMesher mesher(tow, detail::MeshSizes{h, options_.minAngle});
+    detail::MeshRequests requests;
+    SurfaceMesh out;
+    std::vector<double> seamU;
+    try {
+        mesher.mesh(pieces.pieces, {}, requests);
+        out.rounds = 1;
+        for (; out.rounds < static_cast<std::size_t>(kMaxRounds) && !requests.empty(); ++out.rounds) {
+            std::vector<detail::ChordSplit> splits;
+            std::set<std::pair<std::size_t, std::size_t>> chords;
+            for (const detail::MeshRequests::OnLoop& q : requests.onLoop) chords.emplace(std::min(q.a, q.b), std::max(q.a, q.b));
+            for (const auto& [a, b] : chords) {
+                detail::ChordSplit s;
+                if (!pieces.split(a, b, s)) continue;
+                nodes.push_back(tow.point(s.at.u, s.at.v));
+                splits.push_back(s);
+            }
+            const std::vector<double> newSeamU = requests.seamU;
+            seamU.insert(seamU.end(), newSeamU.begin(), newSeamU.end());
+            requests = {};
+            if (!mesher.split(splits, newSeamU, requests)) {
+                requests = {};
+                mesher.mesh(pieces.pieces, seamU, requests);
+            }
+        }
+    } catch (const Error&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw Error(ErrorCode::Internal, std::string("the mesher failed: ") + e.what(), "tow '" + surface_.name() + "'");
+    }
+    std::vector<detail::ParametricMesh> meshes{mesher.result(kLocal)};
+    detail::ParametricMesh& m = meshes.front();
+    const std::size_t base = nodes.size();
+    std::vector<UV> uv = pieces.nodeUV;
+    for (const UV& p : m.newNodes) {
+        nodes.push_back(tow.point(p.u, p.v));
+        uv.push_back(p);
+    }
+    for (auto& tri : m.triangles)
+        for (std::size_t& n : tri)
+            if (n >= kLocal) n = base + (n - kLocal);
+    for (const UV& c : m.centroids) out.fibreDirection.push_back(unit(tow.derivatives(c.u, c.v).du));
+    std::vector<std::vector<TowFace>> face{std::vector<TowFace>(m.triangles.size(), TowFace::Side)};
+    if (options_.caps) {
+        detail::closeEnds({tow}, {h}, options_.minAngle, 1, meshes, face, nodes);
+        // A cap's fibre direction: the tow's along its end section, its mean over v.
+        const auto endDirection = [&](double u) {
+            Vector3 sum;
+            for (int k = 0; k < 16; ++k) sum = sum + unit(tow.derivatives(u, r.vMin + r.vPeriod() * k / 16.0).du);
+            return unit(sum);
+        };
+        const Vector3 start = endDirection(r.uMin), end = endDirection(r.uMax);
+        for (std::size_t k = out.fibreDirection.size(); k < face[0].size(); ++k)
+            out.fibreDirection.push_back(face[0][k] == TowFace::Start ? start : end);
+    }
+    uv.resize(nodes.size(), {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()});
+    const std::size_t ends = detail::boundaryLoops(m.triangles).size();
+    if (ends != (options_.caps ? 0u : 2u))
+        throw Error(ErrorCode::Internal,
+                    "the mesh is not a " + std::string(options_.caps ? "closed surface" : "tube open at its two ends") + " (" +
+                        std::to_string(ends) + " boundary loops)",
+                    "tow '" + surface_.name() + "'");
+    out.triangles = std::move(m.triangles);
+    out.face = std::move(face[0]);
+    out.uv = std::move(uv);
+    for (const Point3& p : nodes) out.nodes.push_back(frame.toUser(p));
+    for (const detail::LoopConstraint& c : pieces.pieces) out.constraintNodes.push_back(c.nodes);
+    return out;
+}
+
+TOWGEOM_END_NAMESPACE
