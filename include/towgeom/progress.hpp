@@ -10,6 +10,10 @@
 
 TOWGEOM_BEGIN_NAMESPACE
 
+/// @defgroup progress Progress and cancellation
+/// @brief One Progress object watched by every stage.
+/// @{
+
 /// Watches long work and can stop it: give a pointer to one Progress to the options of every
 /// stage (IntersectionOptions::monitor, ResolveOptions::monitor). The stages call update() as
 /// they go; cancel(), from any thread (a signal handler too: it only sets a flag), makes the
@@ -56,5 +60,7 @@ public:
 private:
     std::atomic<bool> cancelled_{false};
 };
+
+/// @}
 
 TOWGEOM_END_NAMESPACE

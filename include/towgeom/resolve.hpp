@@ -18,6 +18,10 @@
 
 TOWGEOM_BEGIN_NAMESPACE
 
+/// @defgroup resolution Resolving a textile
+/// @brief resolveTextile(): compatible meshes of all tows, from the tows alone or from an IntersectionReport kept earlier (the stages chained: intersect, mesh, connect regions).
+/// @{
+
 // The deprecated callback member makes GCC warn in the implicit copy and move members, at this
 // definition; only the callback's own uses should warn.
 #pragma GCC diagnostic push
@@ -211,5 +215,7 @@ TOWGEOM_EXPORT ResolveResult resolveTextile(const std::vector<TowSurface>& tows,
 /// indices: the report of another textile or of the tows in another order).
 TOWGEOM_EXPORT ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const IntersectionReport& report,
                              const ResolveOptions& options = {});
+
+/// @}
 
 TOWGEOM_END_NAMESPACE

@@ -13,6 +13,10 @@
 
 TOWGEOM_BEGIN_NAMESPACE
 
+/// @defgroup intersection Intersecting tows
+/// @brief intersectTows(): every interpenetration of the tows as closed IntersectionLoop curves with their (u,v) on both tows (the first stage of resolveTextile()).
+/// @{
+
 /// Wall-clock time of the stages of intersectTows(), in milliseconds.
 struct IntersectionTimings {
     double broadPhase = 0.0;  ///< span boxes and their overlaps
@@ -75,6 +79,15 @@ struct TOWGEOM_EXPORT IntersectionReport {
 /// at a near-tangent angle along a curve (two equal tubes side by side overlapping by ~1e-6 of
 /// their size) have no transversal intersection curve the walk can follow, and give no curve.
 ///
+/// @code
+/// const towgeom::IntersectionReport r = towgeom::intersectTows(tows);
+/// for (const towgeom::IntersectionLoop& l : r.loops)
+///     std::cout << tows[l.towA()].name() << " x " << tows[l.towB()].name() << ": "
+///               << (l.closed() ? "closed" : l.openReason()) << ", area on A " << l.enclosedArea(towgeom::LoopSide::A) << "\n";
+/// for (const towgeom::PairFinding& f : r.findings) std::cerr << f.message << "\n";  // touching, nested
+/// towgeom::writeIntersectionReport(r, tows, "loops.json");  // for resolveTextile(tows, report) later
+/// @endcode
+///
 /// @throws towgeom::Error (InvalidArgument) for bad options, (Internal) naming the tow pair if
 ///         a kernel fails.
 TOWGEOM_EXPORT IntersectionReport intersectTows(const std::vector<TowSurface>& tows, const IntersectionOptions& options = {});
@@ -82,5 +95,7 @@ TOWGEOM_EXPORT IntersectionReport intersectTows(const std::vector<TowSurface>& t
 /// The intersection curves of two tows (towA() = 0, towB() = 1).
 TOWGEOM_EXPORT std::vector<IntersectionLoop> intersectPair(const TowSurface& a, const TowSurface& b,
                                             const IntersectionOptions& options = {});
+
+/// @}
 
 TOWGEOM_END_NAMESPACE
