@@ -14,6 +14,7 @@
 
 #include "intersect/intersection_loop_data.hpp"
 #include "intersect/textile_frame.hpp"
+#include "io/input_file.hpp"
 #include "io/output_files.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
@@ -309,13 +310,7 @@ IntersectionReport readIntersectionReport(std::istream& in, const std::vector<To
 
 IntersectionReport readIntersectionReport(const std::string& path, const std::vector<TowSurface>& tows)
 {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::file_status status = fs::status(path, ec);
-    if (!fs::exists(status)) throw Error(ErrorCode::FileNotFound, "no such file", path);
-    if (fs::is_directory(status)) throw Error(ErrorCode::FileUnreadable, "is a directory, not an intersection report", path);
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(ErrorCode::FileUnreadable, "cannot open for reading", path);
+    std::ifstream in = detail::openInputFile(path, "an intersection report");
     return readIntersectionReport(in, tows, path);
 }
 

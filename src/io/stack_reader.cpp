@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "core/section_geometry.hpp"
+#include "io/input_file.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
 
@@ -228,12 +229,7 @@ TowStack readStack(std::istream& in, const std::string& sourceName, const std::s
 TowStack readStackFile(const std::string& path)
 {
     namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::file_status status = fs::status(path, ec);
-    if (!fs::exists(status)) throw Error(ErrorCode::FileNotFound, "no such file", path);
-    if (fs::is_directory(status)) throw Error(ErrorCode::FileUnreadable, "is a directory, not a stack file", path);
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(ErrorCode::FileUnreadable, "cannot open for reading", path);
+    std::ifstream in = detail::openInputFile(path, "a stack file");
     std::string stem = fs::path(path).stem().string();
     bool stemOk = !stem.empty() && stem.front() != '.';
     for (char c : stem) stemOk = stemOk && isNameChar(c);
