@@ -3,6 +3,7 @@
 // meshes as the one-call resolveTextile().
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <functional>
 #include <sstream>
@@ -340,4 +341,45 @@ TEST_CASE("typed reasons: a tow through another is resolved with caps, skipped a
         CHECK(open.skippedLoops[k].message.find("'y'") != std::string::npos);
     }
     CHECK(open.mesh.regions.empty());
+}
+
+TEST_CASE("TextileMesh: each triangle's fibre direction and each node's (u,v) on the tows it lies on", "[stages][fibre]")
+{
+    const std::vector<TowSurface> tows = bundledTwill();
+    const ResolveResult r = resolveTextile(tows, atSize(0.2));
+    const TextileMesh& mesh = r.mesh;
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        INFO(tows[t].name());
+        const TowMesh& m = mesh.tows[t];
+        REQUIRE(m.fibreDirection.size() == m.triangles.size());
+        // Warps run along x, wefts along y (with crimp): the fibre directions follow, on the
+        // tow's own triangles; on a region's triangles taken from the other tow, that tow's.
+        const bool warp = t < 4;
+        std::size_t own = 0, taken = 0;
+        for (std::size_t k = 0; k < m.triangles.size(); ++k) {
+            const Vector3& d = m.fibreDirection[k];
+            CHECK(norm(d) == Approx(1.0).epsilon(1e-12));
+            const bool fromOther = m.region[k] >= 0 && !warp;  // the wefts took the warps' surface
+            const double along = std::abs(warp != fromOther ? d.x : d.y);
+            CHECK(along > 0.9);
+            (fromOther ? taken : own)++;
+        }
+        CHECK(own > 0);
+        CHECK(taken == (warp ? 0u : std::size_t(std::count_if(m.region.begin(), m.region.end(), [](long g) { return g >= 0; }))));
+        // (u,v) of every node on the tow's own surface: sorted, on the surface; the caps'
+        // inner nodes and the nodes of the surface taken from another tow have none.
+        std::size_t previous = 0;
+        for (std::size_t k = 0; k < m.parameters.size(); ++k) {
+            const auto& [node, uv] = m.parameters[k];
+            if (k > 0) CHECK(node > previous);
+            previous = node;
+            const ParameterRange range = tows[t].parameterRange();
+            CHECK(uv.v >= range.vMin);
+            CHECK(uv.v < range.vMax);
+            CHECK(distance(mesh.nodes[node], tows[t].point(uv.u, uv.v)) <= 1e-6 * tows[t].towSize());
+        }
+        const std::size_t used = mesh.towNodes(t).size();
+        CHECK(m.parameters.size() < used);        // cap interiors (and taken surfaces) have none
+        CHECK(m.parameters.size() > used * 8 / 10);
+    }
 }

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "towgeom/point.hpp"
@@ -31,6 +32,16 @@ struct TowMesh {
     std::vector<long> region;
     /// For each triangle: the tube or one of the two end caps (MeshOptions::caps).
     std::vector<TowFace> face;
+    /// For each triangle the fibre direction of the surface it lies on: the unit tangent along
+    /// that tow, dS/du / |dS/du| at the triangle's (u,v) centroid — this tow's for its own
+    /// triangles, the other tow's for a region's triangles taken from it; on an end cap, that of
+    /// the cap's end section (its mean over v).
+    std::vector<Vector3> fibreDirection;
+    /// Every node of this tow's mesh that lies on its own surface with its (u,v) there (v in
+    /// [vMin, vMax)), sorted by node: its own nodes and its loops' nodes, not the nodes inside
+    /// its caps nor those of another tow's surface it took (a loop node, on both surfaces, has
+    /// its (u,v) on each tow in that tow's list).
+    std::vector<std::pair<std::size_t, UV>> parameters;
 };
 
 /// Where two tows overlapped, the surface between them: the primary's (the higher-ranked tow's)

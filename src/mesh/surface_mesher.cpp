@@ -13,6 +13,7 @@
 #include "mesh/end_caps.hpp"
 #include "mesh/mesh_measures.hpp"
 #include "mesh/parametric_mesher.hpp"
+#include "surface/fibre_directions.hpp"
 #include "surface/frame.hpp"
 #include "surface/tow_surface_impl.hpp"
 #include "towgeom/error.hpp"
@@ -165,7 +166,7 @@ SurfaceMesh ParametricMesher::mesh(const std::vector<MeshConstraint>& constraint
     for (auto& tri : m.triangles)
         for (std::size_t& n : tri)
             if (n >= kLocal) n = base + (n - kLocal);
-    for (const UV& c : m.centroids) out.fibreDirection.push_back(unit(tow.derivatives(c.u, c.v).du));
+    out.fibreDirection = detail::fibreDirections(tow, m.centroids);
     std::vector<std::vector<TowFace>> face{std::vector<TowFace>(m.triangles.size(), TowFace::Side)};
     if (options_.caps) {
         detail::closeEnds({tow}, {h}, options_.minAngle, 1, meshes, face, nodes);

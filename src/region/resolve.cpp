@@ -12,6 +12,7 @@
 #include <optional>
 #include <mutex>
 #include <set>
+#include <tuple>
 #include <sstream>
 
 #include "core/glob_match.hpp"
@@ -25,6 +26,7 @@
 #include "region/connected_region.hpp"
 #include "region/triple_points.hpp"
 #include "region/winding_loops.hpp"
+#include "surface/fibre_directions.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
 
@@ -60,6 +62,31 @@ double smallestAngle(const std::vector<Point3>& nodes, const Triangle& t)
 }
 
 Triangle reversed(const Triangle& t) { return {t[0], t[2], t[1]}; }
+
+/// @p v / |v|, or 0 for a zero vector.
+Vector3 unitOr0(const Vector3& v)
+{
+    const double n = norm(v);
+    return n > 0.0 ? (1.0 / n) * v : v;
+}
+
+/// @p p with v moved into the period [vMin, vMax) by whole periods.
+UV inPeriod(UV p, const ParameterRange& r)
+{
+    p.v = r.vMin + std::fmod(p.v - r.vMin, r.vPeriod());
+    if (p.v < r.vMin) p.v += r.vPeriod();
+    if (p.v >= r.vMax) p.v = r.vMin;
+    return p;
+}
+
+/// The tow's unit direction along its section at @p u: the mean of dS/du / |dS/du| over v.
+Vector3 endDirection(const TowSurface& tow, double u)
+{
+    const ParameterRange r = tow.parameterRange();
+    Vector3 sum;
+    for (int k = 0; k < 16; ++k) sum = sum + unitOr0(tow.derivatives(u, r.vMin + r.vPeriod() * k / 16.0).du);
+    return unitOr0(sum);
+}
 
 void checkOptions(const ResolveOptions& o)
 {
@@ -437,15 +464,29 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
     // The final meshes, and the tows' own nodes evaluated on their surfaces.
     std::vector<detail::ParametricMesh> meshes(tows.size());
     std::vector<std::vector<Point3>> ownNodes(tows.size());
+    std::vector<std::vector<Vector3>> fibre(tows.size());  // per mesher triangle (then caps)
     detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
         detail::throwIfCancelled(options.monitor);
         meshes[t] = meshers[t]->result(kLocal);
         meshers[t].reset();
         ownNodes[t].reserve(meshes[t].newNodes.size());
         for (const UV& p : meshes[t].newNodes) ownNodes[t].push_back(tows[t].point(p.u, p.v));
+        fibre[t] = detail::fibreDirections(tows[t], meshes[t].centroids);
     });
+    // Per tow, the (u,v) of every node on its own surface: its own nodes and its loops' nodes.
+    // (Sorted by node once all are in; a node in several loops, as a triple point, keeps one.)
+    std::vector<std::vector<std::pair<std::size_t, UV>>> uvOn(tows.size());
+    for (const detail::SharedLoop& s : shared) {
+        const IntersectionLoop& l = loops[s.loop];
+        for (std::size_t k = 0; k < s.nodes.size(); ++k) {
+            uvOn[l.towA()].emplace_back(s.nodes[k], inPeriod(s.points[k].onA, tows[l.towA()].parameterRange()));
+            uvOn[l.towB()].emplace_back(s.nodes[k], inPeriod(s.points[k].onB, tows[l.towB()].parameterRange()));
+        }
+    }
     for (std::size_t t = 0; t < tows.size(); ++t) {
         const std::size_t base = nodes.size();
+        for (std::size_t k = 0; k < meshes[t].newNodes.size(); ++k)
+            uvOn[t].emplace_back(base + k, inPeriod(meshes[t].newNodes[k], tows[t].parameterRange()));
         nodes.insert(nodes.end(), ownNodes[t].begin(), ownNodes[t].end());
         for (Triangle& tri : meshes[t].triangles)
             for (std::size_t& n : tri)
@@ -457,6 +498,12 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
     std::vector<std::vector<TowFace>> faceOf(tows.size());
     for (std::size_t t = 0; t < tows.size(); ++t) faceOf[t].assign(meshes[t].triangles.size(), TowFace::Side);
     if (options.mesh.caps) detail::closeEnds(tows, towH, options.mesh.minAngle, threads, meshes, faceOf, nodes);
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        if (fibre[t].size() == faceOf[t].size()) continue;
+        const ParameterRange r = tows[t].parameterRange();
+        const Vector3 start = endDirection(tows[t], r.uMin), end = endDirection(tows[t], r.uMax);
+        for (std::size_t k = fibre[t].size(); k < faceOf[t].size(); ++k) fibre[t].push_back(faceOf[t][k] == TowFace::Start ? start : end);
+    }
     result.timings.mesh = msSince(t0);
 
     // 3. Connected regions, by rank: every tow minus the tows ranked above it. A triangle of tow
@@ -553,7 +600,9 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
     }
     std::vector<std::vector<char>> removed(tows.size());
     std::vector<std::vector<long>> region(tows.size());
-    std::vector<std::vector<std::pair<Triangle, long>>> inserted(tows.size());
+    // Per tow, the triangles of lower-ranked tows' surfaces it gets: (triangle, region, fibre
+    // direction of the surface it lies on).
+    std::vector<std::vector<std::tuple<Triangle, long, Vector3>>> inserted(tows.size());
     for (std::size_t t = 0; t < tows.size(); ++t) {
         removed[t].assign(meshes[t].triangles.size(), 0);
         region[t].assign(meshes[t].triangles.size(), -1);
@@ -617,7 +666,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
                 ConnectedRegion& r = regions[static_cast<std::size_t>(id)];
                 r.triangles.push_back(tri);
                 r.area += triangleArea(N, triangle);
-                inserted[top].emplace_back(reversed(triangle), id);
+                inserted[top].emplace_back(reversed(triangle), id, fibre[t][tri]);
             }
         }
     }
@@ -668,7 +717,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
         for (long& id : ids)
             if (id >= 0) id = renumbered[static_cast<std::size_t>(id)];
     for (auto& list : inserted)
-        for (auto& entry : list) entry.second = renumbered[static_cast<std::size_t>(entry.second)];
+        for (auto& entry : list) std::get<1>(entry) = renumbered[static_cast<std::size_t>(std::get<1>(entry))];
     result.mesh.tows.resize(tows.size());
     std::vector<std::vector<std::size_t>> placeOf(tows.size());  // mesher's triangle -> its place in the tow's mesh
     for (std::size_t t = 0; t < tows.size(); ++t) {
@@ -681,13 +730,32 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
             m.triangles.push_back(meshes[t].triangles[k]);
             m.region.push_back(region[t][k]);
             m.face.push_back(faceOf[t][k]);
+            m.fibreDirection.push_back(fibre[t][k]);
         }
-        for (const auto& [tri, id] : inserted[t]) {  // another tow's surface (or cap): this tow's side
+        for (const auto& [tri, id, direction] : inserted[t]) {  // another tow's surface (or cap): this tow's side
             m.triangles.push_back(tri);
             m.region.push_back(id);
             m.face.push_back(TowFace::Side);
+            m.fibreDirection.push_back(direction);
         }
     }
+    // Each tow's nodes on its own surface, with their (u,v).
+    detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
+        TowMesh& m = result.mesh.tows[t];
+        std::vector<std::size_t> used;
+        used.reserve(3 * m.triangles.size());
+        for (const Triangle& tri : m.triangles) used.insert(used.end(), tri.begin(), tri.end());
+        std::sort(used.begin(), used.end());
+        used.erase(std::unique(used.begin(), used.end()), used.end());
+        std::vector<std::pair<std::size_t, UV>>& on = uvOn[t];
+        std::stable_sort(on.begin(), on.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        auto at = on.begin();
+        for (std::size_t n : used) {
+            while (at != on.end() && at->first < n) ++at;
+            if (at != on.end() && at->first == n) m.parameters.push_back(*at);
+        }
+        on = {};
+    });
     // A region's triangles by their place in the primary's final mesh (it keeps them all).
     for (ConnectedRegion& r : result.mesh.regions)
         for (std::size_t& k : r.triangles) k = placeOf[r.primary][k];
@@ -741,6 +809,10 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
         for (TowMesh& m : result.mesh.tows)
             for (Triangle& tri : m.triangles)
                 for (std::size_t& n : tri) use(n);
+        for (TowMesh& m : result.mesh.tows) {  // every node listed is one of the tow's triangles'
+            for (auto& entry : m.parameters) entry.first = renumber[entry.first];
+            std::sort(m.parameters.begin(), m.parameters.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        }
         for (ConnectedRegion& g : result.mesh.regions) {
             for (std::size_t& n : g.nodes) use(n);
             for (std::size_t& n : g.loopNodes) use(n);

@@ -1,0 +1,19 @@
+// The fibre direction of a tow at many (u,v): the unit tangent along it, dS/du / |dS/du|.
+#pragma once
+
+#include <vector>
+
+#include "towgeom/export.hpp"
+#include "towgeom/point.hpp"
+#include "towgeom/tow_surface.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
+
+/// dS/du / |dS/du| of @p tow at each of @p at (0 where dS/du vanishes), evaluated through
+/// OpenCASCADE's per-span cache: several times faster than TowSurface::derivatives() each for
+/// points that come span by span, as a mesh's triangles do.
+std::vector<Vector3> fibreDirections(const TowSurface& tow, const std::vector<UV>& at);
+
+}  // namespace detail
+TOWGEOM_END_NAMESPACE
