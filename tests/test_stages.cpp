@@ -319,6 +319,10 @@ TEST_CASE("intersection report JSON: numbers out of range, far v, wrong arc leng
     odd.name = "w\xff";
     odd.sections = tows[0].sections();
     CHECK(codeOf([&] { jsonOf(IntersectionReport{}, {TowSurface::fit(odd)}); }) == ErrorCode::InvalidArgument);
+    // A loop computed with a tolerance the reader could not check against: refused on writing.
+    IntersectionOptions loose;
+    loose.relativeTolerance = 0.02;
+    CHECK(codeOf([&] { jsonOf(intersectTows(tows, loose), tows); }) == ErrorCode::InvalidArgument);
 }
 
 TEST_CASE("typed reasons: a tow through another is resolved with caps, skipped as AroundTowWithoutCaps without", "[stages][reasons]")

@@ -156,4 +156,18 @@ TEST_CASE("ParametricMesher: the same mesh in any units, a tube without caps, ba
     SurfaceMeshOptions coarse;
     coarse.relativeEdgeLength = 1.0;  // over pi / 4
     CHECK(code([&] { ParametricMesher(tow, coarse); }) == ErrorCode::InvalidArgument);
+    SurfaceMeshOptions fine;
+    fine.relativeEdgeLength = 0.002;  // about 7 million triangles
+    fine.maxTriangles = 1'000'000;
+    CHECK(code([&] { ParametricMesher(tow, fine).mesh(); }) == ErrorCode::TooLarge);
+
+    // Constraints meet only at points they share: crossing, ending on a chord, or running along
+    // the seam or an end is refused; a shared point is one node of both.
+    const auto at = [&](double u, double v) { return UV{r.uMin + u * (r.uMax - r.uMin), r.vMin + v * r.vPeriod()}; };
+    const MeshConstraint a{{at(0.3, 0.3), at(0.7, 0.7)}, false};
+    CHECK(code([&] { ParametricMesher(tow).mesh({a, {{at(0.3, 0.7), at(0.7, 0.3)}, false}}); }) == ErrorCode::InvalidArgument);
+    CHECK(code([&] { ParametricMesher(tow).mesh({a, {{at(0.3, 0.7), at(0.5, 0.5)}, false}}); }) == ErrorCode::InvalidArgument);
+    CHECK(code([&] { ParametricMesher(tow).mesh({{{at(0.3, 0.0), at(0.6, 0.0)}, false}}); }) == ErrorCode::InvalidArgument);
+    const SurfaceMesh shared = ParametricMesher(tow).mesh({{{at(0.3, 0.3), at(0.5, 0.5)}, false}, {{at(0.5, 0.5), at(0.7, 0.3)}, false}});
+    CHECK(shared.constraintNodes[0].back() == shared.constraintNodes[1].front());
 }

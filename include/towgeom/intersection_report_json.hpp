@@ -37,7 +37,8 @@ TOWGEOM_BEGIN_NAMESPACE
 
 /// Writes @p report, computed for @p tows, as JSON to @p out.
 /// @throws towgeom::Error (InvalidArgument) if a loop of @p report is not between two of @p tows
-/// (an index out of range, or tows of other names at its indices), or a tow name is not UTF-8.
+/// (an index out of range, or tows of other names at its indices), a loop's tolerance is over
+/// 1e-2 of the tows' size, or a tow name is not UTF-8.
 TOWGEOM_EXPORT void writeIntersectionReport(const IntersectionReport& report, const std::vector<TowSurface>& tows, std::ostream& out);
 
 /// Writes @p report, computed for @p tows, as JSON to the file @p path: complete or not at all

@@ -40,8 +40,8 @@ struct ResolveOptions {
     std::size_t threads = 0;
     /// Progress reports of every stage (intersecting tow pairs, meshing, connecting regions)
     /// and cancellation (checked per tow pair, per tow and between stages); may be null. Not
-    /// owned: it must outlive the call. Also used for the intersection (whatever
-    /// intersection.monitor says).
+    /// owned: it must outlive the call. Also used for the intersection unless
+    /// intersection.monitor is set.
     Progress* monitor = nullptr;
     /// Progress: called with a short stage description; may be empty.
     /// @deprecated Use monitor (Progress::update()); removed in 0.3.

@@ -24,7 +24,9 @@ TOWGEOM_BEGIN_NAMESPACE
 struct MeshConstraint {
     /// (u,v) on the tow: u within its range, v within [vMin, vMax]. A curve over the seam is
     /// given as pieces that end on v = vMin and v = vMax at the same u: a point on the seam is
-    /// one node on both sides. Consecutive points differ.
+    /// one node on both sides. Consecutive points differ. Equal points (in this or another
+    /// constraint) are one node: constraints may meet there, and nowhere else — they may not
+    /// cross, end on another's chord, or run along the seam or an end of the tow.
     std::vector<UV> points;
     bool closed = false;  ///< the last point joins the first (which is not repeated)
 };
@@ -37,6 +39,9 @@ struct SurfaceMeshOptions {
     double relativeEdgeLength = 0.1;  ///< h relative to the tow size when edgeLength is 0
     double minAngle = 20.0;           ///< smallest triangle angle aimed for, degrees in (0, 30]
     bool caps = true;                 ///< close the tube by its two end caps
+    /// Refuse (TooLarge) a mesh estimated at more triangles (3 x the surface's area / (sqrt(3)/4
+    /// h^2)), before meshing.
+    std::size_t maxTriangles = 20'000'000;
 };
 
 /// One tow's mesh made by ParametricMesher.
@@ -85,9 +90,10 @@ public:
     /// The surface meshed with @p constraints. Results do not depend on the units (computed in a
     /// frame where the tow is about unit size).
     /// @throws towgeom::Error (InvalidArgument) naming the constraint and point for a point off
-    /// the rectangle or not finite, fewer than 2 points (3 when closed), or two consecutive
-    /// points alike; (Internal) if the mesher cannot make a valid tube (e.g. constraints that
-    /// cross each other: they must meet only at their points).
+    /// the rectangle or not finite, fewer than 2 points (3 when closed), two consecutive points
+    /// alike, or a chord that is not a mesh edge (constraints that cross, end on another's
+    /// chord, or run along the seam or an end); (TooLarge) for a mesh estimated over
+    /// SurfaceMeshOptions::maxTriangles; (Internal) if the mesher cannot make a valid tube.
     SurfaceMesh mesh(const std::vector<MeshConstraint>& constraints = {}) const;
 
     /// The target edge length h in the user's units.

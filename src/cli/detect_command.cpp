@@ -107,6 +107,7 @@ int runDetect(int argc, char** argv, int first)
         ProgressPrinter printer("detect", quiet);
         options.monitor = &printer;
         const IntersectionReport report = intersectTows(surfaces, options);
+        printer.throwIfCancelled();
         if (const auto path = args.value("save-report")) writeIntersectionReport(report, surfaces, *path);
 
         std::ostringstream out;

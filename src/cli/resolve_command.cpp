@@ -305,6 +305,7 @@ int runResolve(int argc, char** argv, int first)
         json.key("total").value(msSince(start));
         json.endObject().endObject();
         files.open(path("report.json")) << report.str() << "\n";
+        printer.throwIfCancelled();  // a signal while writing: nothing is committed
         files.commit();
 
         if (!quiet) {

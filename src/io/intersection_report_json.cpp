@@ -50,9 +50,20 @@ const char* kindName(PairFinding::Kind k)
     return "touching";
 }
 
+/// The largest loop tolerance a report holds, relative to the smaller tow's size: beyond it the
+/// reader's check that the points lie on the tows' surfaces would mean nothing.
+constexpr double kMaxRelativeTolerance = 1e-2;
+
 Json toJson(const IntersectionReport& report, const std::vector<TowSurface>& tows)
 {
     detail::checkReportTows(tows, report);
+    for (std::size_t k = 0; k < report.loops.size(); ++k) {
+        const IntersectionLoop& l = report.loops[k];
+        if (l.tolerance() > kMaxRelativeTolerance * std::min(tows[l.towA()].towSize(), tows[l.towB()].towSize()))
+            throw Error(ErrorCode::InvalidArgument, "intersection loop " + std::to_string(k) +
+                                                        " was computed with a tolerance over 1e-2 of the tows' size: a report "
+                                                        "cannot hold it (its points could not be checked on reading)");
+    }
     Json j;
     j["format"] = kFormat;
     j["version"] = kVersion;
@@ -196,7 +207,7 @@ private:
         d->openReason = reason.get<std::string>();
         d->tolerance = number(field(l, "tolerance", where), where + " tolerance");
         const double size = std::min(tows_[a].towSize(), tows_[b].towSize());
-        if (!(d->tolerance > 0.0) || d->tolerance > 1e-2 * size)
+        if (!(d->tolerance > 0.0) || d->tolerance > kMaxRelativeTolerance * size)
             fail(where + ": the tolerance is not positive and at most 1e-2 of the tows' size");
         const Json& points = field(l, "points", where);
         if (!points.is_array() || points.size() < (d->closed ? 3u : 2u))

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <new>
 #include <set>
 #include <string>
 
@@ -31,15 +32,15 @@ Vector3 unit(const Vector3& v)
     return n > 0.0 ? (1.0 / n) * v : v;
 }
 
-/// The constraint pieces for the internal mesher: nodes numbered in order of first use, a point
-/// on the seam one node for both sides (by its u).
+/// The constraint pieces for the internal mesher: nodes numbered in order of first use, one node
+/// per distinct point (a point shared by constraints, or on the seam on both sides, is one).
 struct Pieces {
     std::vector<detail::LoopConstraint> pieces;
     std::vector<UV> nodeUV;  ///< per node; seam nodes at v = vMin
 
     Pieces(const std::vector<MeshConstraint>& constraints, const ParameterRange& r)
     {
-        std::map<double, std::size_t> seamNode;  // u -> node
+        std::map<std::pair<double, double>, std::size_t> pointNode;  // (u,v), seam points at vMin -> node
         for (std::size_t c = 0; c < constraints.size(); ++c) {
             const MeshConstraint& mc = constraints[c];
             const std::string which = "constraint " + std::to_string(c);
@@ -58,13 +59,11 @@ struct Pieces {
                 if (prev != k && mc.points[prev].u == p.u && mc.points[prev].v == p.v)
                     throw Error(ErrorCode::InvalidArgument, at + " repeats the point before it");
                 std::size_t node = nodeUV.size();
-                if (p.v == r.vMin || p.v == r.vMax) {
-                    const auto [it, isNew] = seamNode.emplace(p.u, node);
-                    node = it->second;
-                    if (isNew) nodeUV.push_back({p.u, r.vMin});
-                } else {
-                    nodeUV.push_back(p);
-                }
+                const bool onSeam = p.v == r.vMin || p.v == r.vMax;
+                const UV key = onSeam ? UV{p.u, r.vMin} : p;
+                const auto [it, isNew] = pointNode.emplace(std::make_pair(key.u, key.v), node);
+                node = it->second;
+                if (isNew) nodeUV.push_back(key);
                 piece.uv.push_back(p);
                 piece.nodes.push_back(node);
             }
@@ -105,6 +104,7 @@ ParametricMesher::ParametricMesher(TowSurface surface, const SurfaceMeshOptions&
         throw Error(ErrorCode::InvalidArgument, "the relative edge length must be finite and positive");
     if (!(options.minAngle > 0.0 && options.minAngle <= 30.0))
         throw Error(ErrorCode::InvalidArgument, "the minimum angle must lie in (0, 30] degrees");
+    if (options.maxTriangles == 0) throw Error(ErrorCode::InvalidArgument, "the triangle limit must be at least 1");
     h_ = options.edgeLength > 0.0 ? options.edgeLength : options.relativeEdgeLength * surface_.towSize();
     const double around = 3.14159265358979323846 * surface_.towSize();
     if (h_ > around / 4.0)
@@ -117,6 +117,13 @@ SurfaceMesh ParametricMesher::mesh(const std::vector<MeshConstraint>& constraint
 {
     const ParameterRange r = surface_.parameterRange();
     Pieces pieces(constraints, r);
+    // As resolveTextile(): about 3 triangles per equilateral triangle of side h in the area.
+    const double estimate = 3.0 * surface_.area() / (std::sqrt(3.0) / 4.0 * h_ * h_);
+    if (!(estimate <= static_cast<double>(options_.maxTriangles)))
+        throw Error(ErrorCode::TooLarge, "the mesh would have about " + std::to_string(static_cast<long long>(estimate)) +
+                                             " triangles, over the limit of " + std::to_string(options_.maxTriangles) +
+                                             " (SurfaceMeshOptions::maxTriangles); refused before meshing",
+                    "tow '" + surface_.name() + "'");
     // In a frame where the tow is about unit size (as resolveTextile()), so that the mesh does
     // not depend on the units.
     const detail::Frame frame = detail::Frame::around(surface_.boundingBox(), surface_.towSize());
@@ -152,6 +159,8 @@ SurfaceMesh ParametricMesher::mesh(const std::vector<MeshConstraint>& constraint
         }
     } catch (const Error&) {
         throw;
+    } catch (const std::bad_alloc&) {
+        throw;  // out of memory is not the input's geometry
     } catch (const std::exception& e) {
         throw Error(ErrorCode::Internal, std::string("the mesher failed: ") + e.what(), "tow '" + surface_.name() + "'");
     }
@@ -187,6 +196,22 @@ SurfaceMesh ParametricMesher::mesh(const std::vector<MeshConstraint>& constraint
                     "the mesh is not a " + std::string(options_.caps ? "closed surface" : "tube open at its two ends") + " (" +
                         std::to_string(ends) + " boundary loops)",
                     "tow '" + surface_.name() + "'");
+    // Every constraint chord must be a mesh edge: constraints that cross, end on another's chord,
+    // or run along the seam or an end are split by points no constraint lists.
+    std::set<std::pair<std::size_t, std::size_t>> edges;
+    for (const auto& t : m.triangles)
+        for (int k = 0; k < 3; ++k) edges.emplace(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
+    for (std::size_t c = 0; c < pieces.pieces.size(); ++c) {
+        const std::vector<std::size_t>& n = pieces.pieces[c].nodes;
+        const std::size_t chords = pieces.pieces[c].closed ? n.size() : n.size() - 1;
+        for (std::size_t k = 0; k < chords; ++k)
+            if (!edges.count(std::minmax(n[k], n[(k + 1) % n.size()])))
+                throw Error(ErrorCode::InvalidArgument,
+                            "constraint " + std::to_string(c) + ": its chord from point " + std::to_string(k) +
+                                " is not an edge of the mesh: constraints may meet only at points they share, and may "
+                                "not cross, end on another's chord, or run along the seam or an end of the tow",
+                            "tow '" + surface_.name() + "'");
+    }
     out.triangles = std::move(m.triangles);
     out.face = std::move(face[0]);
     out.uv = std::move(uv);

@@ -405,8 +405,8 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
     std::mutex meshedMutex;
     std::size_t meshed = 0;
     detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
-        detail::throwIfCancelled(options.monitor);
         failures.run(t, [&] {
+            detail::throwIfCancelled(options.monitor);  // inside: TowFailures must pass it on
             meshers[t] = std::make_unique<detail::ParametricMesher>(tows[t], detail::MeshSizes{towH[t], options.mesh.minAngle});
             meshers[t]->mesh(constraintsOf(t), {}, requests[t]);
         });
