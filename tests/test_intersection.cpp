@@ -6,6 +6,7 @@
 #include <towgeom/towgeom.hpp>
 
 #include <cmath>
+#include <sstream>
 #include <map>
 
 #include "analytic_reference.hpp"
@@ -98,6 +99,7 @@ TEST_CASE("two crossing tubes intersect in one closed loop on both cylinders", "
         const IntersectionLoop& l = loops.front();
         CHECK(l.closed());
         CHECK(l.openReason().empty());
+        CHECK(l.openKind() == IntersectionLoop::OpenKind::None);
         CHECK(l.towA() == 0);
         CHECK(l.towB() == 1);
         checkOnCylinders(l, R, r, d);
@@ -272,6 +274,11 @@ TEST_CASE("a tow that ends inside another gives an open curve, not a loop", "[in
     const IntersectionLoop& l = loops.front();
     CHECK_FALSE(l.closed());
     CHECK(l.openReason().find("end of the first tow") != std::string::npos);
+    CHECK(l.openKind() == IntersectionLoop::OpenKind::ReachesEndOfA);
+    // The same through a report written and read back.
+    std::stringstream json;
+    writeIntersectionReport(IntersectionReport{loops}, {x, y}, json);
+    CHECK(readIntersectionReport(json, {x, y}).loops.front().openKind() == IntersectionLoop::OpenKind::ReachesEndOfA);
     // Both ends on the x-tube's end section u = 1, the curve between them on both cylinders.
     // Observed 8.3e-12 and 1.3e-11 short of u = 1 (was a margin of 1e-9).
     CHECK(l.points().front().onA.u == Approx(1.0).margin(3e-11));

@@ -309,6 +309,7 @@ TEST_CASE("intersection report JSON: numbers out of range, far v, wrong arc leng
         for (auto& p : j["loops"][0]["points"]) p[0] = p[1] = p[2] = 0.0;
     }));
     CHECK(refused([](nlohmann::json& j) { j["loops"][0]["tow_a"] = -1; }));
+    CHECK(refused([](nlohmann::json& j) { j["loops"][0]["open_reason"] = "closed anyway"; }));  // a reason on a closed loop
     CHECK_NOTHROW(readBack(good.dump(), tows));  // the untouched report reads
 
     // The writer refuses what the reader would: tows in another order, a name that is not UTF-8.

@@ -57,6 +57,16 @@ public:
     bool closed() const;
     /// Why the curve is open; empty when closed().
     const std::string& openReason() const;
+    /// Why a curve is open, typed (openKind()).
+    enum class OpenKind {
+        None,           ///< the curve is closed
+        ReachesEndOfA,  ///< it runs into an end of tow A (A ends inside B, or B crosses A's end)
+        ReachesEndOfB,  ///< it runs into an end of tow B
+        WalkStops,      ///< the surface-surface walk stops and cannot be continued (tangent surfaces)
+        DoesNotClose    ///< the walk goes on but the curve does not close after many pieces
+    };
+    /// Why the curve is open, typed; OpenKind::None when closed(). openReason() says it in words.
+    OpenKind openKind() const;
 
     /// The dense exact points of the curve, in order.
     const std::vector<LoopPoint>& points() const;

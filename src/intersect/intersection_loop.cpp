@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "intersect/intersection_loop_data.hpp"
+#include "intersect/loop_tracing.hpp"
 #include "surface/curve3_impl.hpp"
 #include "surface/occt_convert.hpp"
 #include "surface/occt_guard.hpp"
@@ -171,6 +172,14 @@ const TowSurface& IntersectionLoop::surfaceA() const { return data_->a; }
 const TowSurface& IntersectionLoop::surfaceB() const { return data_->b; }
 bool IntersectionLoop::closed() const { return data_->closed; }
 const std::string& IntersectionLoop::openReason() const { return data_->openReason; }
+
+IntersectionLoop::OpenKind IntersectionLoop::openKind() const
+{
+    OpenKind kind = OpenKind::None;
+    if (!data_->closed && !detail::openKindOf(data_->openReason, kind))
+        throw Error(ErrorCode::Internal, "an open curve with an unknown reason: " + data_->openReason);
+    return kind;
+}
 const std::vector<LoopPoint>& IntersectionLoop::points() const { return data_->points; }
 double IntersectionLoop::length() const { return data_->cumulative.back(); }
 double IntersectionLoop::tolerance() const { return data_->tolerance; }

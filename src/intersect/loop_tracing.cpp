@@ -49,9 +49,9 @@ bool atTowEnd(const Domain& d, const PointOn2& p)
 std::string endReason(const Domain& d, const PointOn2& p)
 {
     const double ea = 1e-9 * (d.uMaxA - d.uMinA), eb = 1e-9 * (d.uMaxB - d.uMinB);
-    if (p.ua <= d.uMinA + ea || p.ua >= d.uMaxA - ea) return "the curve reaches an end of the first tow";
-    if (p.ub <= d.uMinB + eb || p.ub >= d.uMaxB - eb) return "the curve reaches an end of the second tow";
-    return "the surface-surface walk stops here and cannot be continued (tangent surfaces?)";
+    if (p.ua <= d.uMinA + ea || p.ua >= d.uMaxA - ea) return open_reason::kEndOfA;
+    if (p.ub <= d.uMinB + eb || p.ub >= d.uMaxB - eb) return open_reason::kEndOfB;
+    return open_reason::kWalkStops;
 }
 
 /// Shifts the v of every point of @p piece by whole periods so the piece starts next to @p ref.
@@ -223,7 +223,7 @@ struct Tracer {
             }
             if (chain.size() == before) break;
         }
-        reason = "the curve does not close after many pieces";
+        reason = open_reason::kDoesNotClose;
         return false;
     }
 
@@ -387,6 +387,21 @@ void joinOpenCurves(const SurfacePair& surfaces, std::vector<TracedCurve>& curve
                 joined = true;
             }
     }
+}
+
+bool openKindOf(const std::string& reason, IntersectionLoop::OpenKind& kind)
+{
+    using K = IntersectionLoop::OpenKind;
+    const std::pair<const char*, K> known[] = {{open_reason::kEndOfA, K::ReachesEndOfA},
+                                               {open_reason::kEndOfB, K::ReachesEndOfB},
+                                               {open_reason::kWalkStops, K::WalkStops},
+                                               {open_reason::kDoesNotClose, K::DoesNotClose}};
+    for (const auto& [text, k] : known)
+        if (reason == text) {
+            kind = k;
+            return true;
+        }
+    return false;
 }
 
 TracedCurve traceCurve(const SurfacePair& surfaces, const SurfaceWalker& walker, const PointOn2& seed,

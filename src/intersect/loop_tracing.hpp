@@ -10,6 +10,7 @@
 #include "intersect/intersection_point.hpp"
 #include "intersect/surface_walk.hpp"
 #include "towgeom/export.hpp"
+#include "towgeom/intersection_loop.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
@@ -20,6 +21,18 @@ struct TraceTolerances {
     double chordal = 1e-4;   ///< largest distance of the curve from a chord between loop points
     double closing = 1e-6;   ///< two piece ends closer than this are the same point
 };
+
+/// The sentences of IntersectionLoop::openReason(), one per IntersectionLoop::OpenKind.
+namespace open_reason {
+constexpr const char* kEndOfA = "the curve reaches an end of the first tow";
+constexpr const char* kEndOfB = "the curve reaches an end of the second tow";
+constexpr const char* kWalkStops = "the surface-surface walk stops here and cannot be continued (tangent surfaces?)";
+constexpr const char* kDoesNotClose = "the curve does not close after many pieces";
+}  // namespace open_reason
+
+/// The kind of an open curve's reason (one of open_reason's sentences), or false if
+/// @p reason is none of them.
+bool openKindOf(const std::string& reason, IntersectionLoop::OpenKind& kind);
 
 /// One traced intersection curve.
 struct TracedCurve {

@@ -13,6 +13,7 @@
 #include <ostream>
 
 #include "intersect/intersection_loop_data.hpp"
+#include "intersect/loop_tracing.hpp"
 #include "intersect/textile_frame.hpp"
 #include "io/input_file.hpp"
 #include "io/output_files.hpp"
@@ -205,6 +206,9 @@ private:
         if (!closed.is_boolean() || !reason.is_string()) fail(where + ": \"closed\" or \"open_reason\" has the wrong type");
         d->closed = closed.get<bool>();
         d->openReason = reason.get<std::string>();
+        IntersectionLoop::OpenKind kind = IntersectionLoop::OpenKind::None;
+        if (d->closed ? !d->openReason.empty() : !detail::openKindOf(d->openReason, kind))
+            fail(where + ": \"open_reason\" is " + (d->closed ? "not empty for a closed loop" : "none of towgeom's reasons"));
         d->tolerance = number(field(l, "tolerance", where), where + " tolerance");
         const double size = std::min(tows_[a].towSize(), tows_[b].towSize());
         if (!(d->tolerance > 0.0) || d->tolerance > kMaxRelativeTolerance * size)
