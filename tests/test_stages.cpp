@@ -388,3 +388,37 @@ TEST_CASE("TextileMesh: each triangle's fibre direction and each node's (u,v) on
         CHECK(m.parameters.size() > used * 8 / 10);
     }
 }
+
+TEST_CASE("intersection loops from the host's own points: refined onto both surfaces, resolved like intersectTows()'s", "[stages][host-loops]")
+{
+    const std::vector<TowSurface> tows = bundledTwill();
+    const IntersectionReport found = intersectTows(tows);
+    // Every 4th exact point, moved off the curve by 1 % of the tow size: a coarser, noisier
+    // polyline such as another program gives.
+    IntersectionReport mine;
+    for (const IntersectionLoop& l : found.loops) {
+        std::vector<Point3> points;
+        for (std::size_t k = 0; k < l.points().size(); k += 4)
+            points.push_back(l.points()[k].point + Vector3{0.01 * tows[0].towSize(), 0.0, 0.0});
+        const IntersectionLoop back = intersectionLoopFromPoints(tows, l.towA(), l.towB(), points, true);
+        CHECK(back.closed());
+        CHECK(back.openKind() == IntersectionLoop::OpenKind::None);
+        CHECK(back.maxDistance(LoopSide::A) <= 1e-6 * tows[l.towA()].towSize());
+        CHECK(back.maxDistance(LoopSide::B) <= 1e-6 * tows[l.towB()].towSize());
+        // A polygon through a quarter of the points: its area within 1 % of the dense loop's.
+        CHECK(back.enclosedArea(LoopSide::B) == Approx(l.enclosedArea(LoopSide::B)).epsilon(0.01));
+        mine.loops.push_back(back);
+    }
+    const ResolveResult a = resolveTextile(tows, found, atSize(0.2));
+    const ResolveResult b = resolveTextile(tows, mine, atSize(0.2));
+    REQUIRE(b.mesh.regions.size() == 16);
+    CHECK(b.unresolved.empty());
+    for (std::size_t g = 0; g < 16; ++g) CHECK(b.mesh.regions[g].volumeRemoved == Approx(a.mesh.regions[g].volumeRemoved).epsilon(0.02));
+
+    // A point far from the curve, a wrong pair, too few points: refused.
+    std::vector<Point3> far = {found.loops[0].points()[0].point, found.loops[0].points()[5].point, Point3{50.0, 50.0, 50.0}};
+    CHECK(codeOf([&] { intersectionLoopFromPoints(tows, found.loops[0].towA(), found.loops[0].towB(), far, true); }) ==
+          ErrorCode::InvalidArgument);
+    CHECK(codeOf([&] { intersectionLoopFromPoints(tows, 5, 2, {}, true); }) == ErrorCode::InvalidArgument);
+    CHECK(codeOf([&] { intersectionLoopFromPoints(tows, 0, 4, {Point3{}, Point3{1, 0, 0}}, true); }) == ErrorCode::InvalidArgument);
+}

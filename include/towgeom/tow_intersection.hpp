@@ -96,6 +96,28 @@ TOWGEOM_EXPORT IntersectionReport intersectTows(const std::vector<TowSurface>& t
 TOWGEOM_EXPORT std::vector<IntersectionLoop> intersectPair(const TowSurface& a, const TowSurface& b,
                                             const IntersectionOptions& options = {});
 
+/// A loop of the host's own: @p points, near the curve where the surfaces of tows @p towA and
+/// @p towB cross (from another program, an earlier run, a coarser sampling), each refined onto
+/// both surfaces by Newton's method (the intersection point nearest it, on the plane normal to
+/// the curve there), with its (u,v) on both tows, v unwrapped along the loop. The result is an
+/// IntersectionLoop like intersectTows() makes (openReason() empty, or, for an open polyline,
+/// OpenKind::WalkStops), to put into an IntersectionReport for resolveTextile(tows, report).
+/// Tolerances as in intersectTows() (@p options; the point tolerance).
+///
+/// @code
+/// towgeom::IntersectionReport mine;
+/// mine.loops.push_back(towgeom::intersectionLoopFromPoints(tows, 0, 5, myPolyline, true));
+/// const towgeom::ResolveResult r = towgeom::resolveTextile(tows, mine);
+/// @endcode
+///
+/// @throws towgeom::Error (InvalidArgument) naming the point for tow indices that are not two
+/// of @p tows (towA < towB), fewer than 3 points (2 for an open polyline), a point that is not
+/// finite, that Newton's method cannot bring onto both surfaces, or that lies farther than
+/// 0.1 x the smaller tow's size from the curve.
+TOWGEOM_EXPORT IntersectionLoop intersectionLoopFromPoints(const std::vector<TowSurface>& tows, std::size_t towA, std::size_t towB,
+                                                           const std::vector<Point3>& points, bool closed,
+                                                           const IntersectionOptions& options = {});
+
 /// @}
 
 TOWGEOM_END_NAMESPACE

@@ -261,6 +261,60 @@ IntersectionOptions optionsInFrame(const IntersectionOptions& options, const Fra
 
 }  // namespace detail
 
+IntersectionLoop intersectionLoopFromPoints(const std::vector<TowSurface>& tows, std::size_t towA, std::size_t towB,
+                                            const std::vector<Point3>& points, bool closed, const IntersectionOptions& options)
+{
+    detail::checkIntersectionOptions(options);
+    if (towA >= towB || towB >= tows.size())
+        throw Error(ErrorCode::InvalidArgument, "tows " + std::to_string(towA) + " and " + std::to_string(towB) +
+                                                    " are not two of the " + std::to_string(tows.size()) + " tows (towA < towB)");
+    if (points.size() < (closed ? 3u : 2u))
+        throw Error(ErrorCode::InvalidArgument, std::string("a loop needs at least ") + (closed ? "3" : "2") + " points");
+    // In the textile's frame, as intersectTows(): the same tolerances at every scale.
+    const detail::Frame frame = detail::textileFrame(tows);
+    const TowSurface a = detail::inFrame(tows[towA], frame), b = detail::inFrame(tows[towB], frame);
+    const IntersectionOptions o = detail::optionsInFrame(options, frame);
+    const double size = std::min(a.towSize(), b.towSize());
+    const double tolerance = o.tolerance > 0.0 ? o.tolerance : o.relativeTolerance * size;
+    const detail::SurfacePair s = detail::surfacePairOf(a, b);
+    const ParameterRange ra = a.parameterRange(), rb = b.parameterRange();
+    std::vector<detail::PointOn2> refined;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        const std::string which = "point " + std::to_string(k) + " of the loop of tows '" + tows[towA].name() + "' and '" +
+                                  tows[towB].name() + "'";
+        const Point3& p = points[k];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            throw Error(ErrorCode::InvalidArgument, which + " is not finite");
+        const Point3 q = frame.toFrame(p);
+        const bool first = refined.empty();
+        const UV onA = first ? a.closestParameters(q) : a.closestParameters(q, {refined.back().ua, refined.back().va});
+        const UV onB = first ? b.closestParameters(q) : b.closestParameters(q, {refined.back().ub, refined.back().vb});
+        detail::PointOn2 x{onA.u, onA.v, onB.u, onB.v, q, 0.0};
+        // v unwrapped along the loop: the period that keeps it next to the previous point's.
+        if (!first) {
+            x.va += ra.vPeriod() * std::round((refined.back().va - x.va) / ra.vPeriod());
+            x.vb += rb.vPeriod() * std::round((refined.back().vb - x.vb) / rb.vPeriod());
+        }
+        bool onBoth = false;
+        try {
+            onBoth = detail::refineNearest(s, x, tolerance);
+        } catch (const Standard_Failure& e) {
+            throw Error(ErrorCode::Internal, which + ": OpenCASCADE failed refining it: " + e.GetMessageString());
+        }
+        if (!onBoth)
+            throw Error(ErrorCode::InvalidArgument, which + " cannot be brought onto both surfaces (Newton's method does not "
+                                                            "converge there: not near their intersection, or the surfaces are "
+                                                            "tangent)");
+        if (distance(x.point, q) > 0.1 * size)
+            throw Error(ErrorCode::InvalidArgument, which + " lies " + std::to_string(frame.lengthToUser(distance(x.point, q))) +
+                                                        " from the intersection curve, over 0.1 x the tows' size");
+        refined.push_back(x);
+    }
+    const IntersectionLoop loop = detail::makeLoop(towA, towB, a, b, refined, closed, closed ? std::string() : detail::open_reason::kWalkStops,
+                                                   tolerance);
+    return detail::loopToUser(loop, tows[towA], tows[towB], frame);
+}
+
 IntersectionReport intersectTows(const std::vector<TowSurface>& tows, const IntersectionOptions& options)
 {
     detail::checkIntersectionOptions(options);
