@@ -171,3 +171,57 @@ TEST_CASE("ParametricMesher: the same mesh in any units, a tube without caps, ba
     const SurfaceMesh shared = ParametricMesher(tow).mesh({{{at(0.3, 0.3), at(0.5, 0.5)}, false}, {{at(0.5, 0.5), at(0.7, 0.3)}, false}});
     CHECK(shared.constraintNodes[0].back() == shared.constraintNodes[1].front());
 }
+
+TEST_CASE("ParametricMesher: a size function grades the mesh where the host asks", "[mesher][size]")
+{
+    testing::Sampling s;
+    s.sections = 21;
+    s.points = 24;
+    const TowSurface tow = TowSurface::fit(testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "x"));
+    const ParameterRange r = tow.parameterRange();
+    const double uMid = 0.5 * (r.uMin + r.uMax);
+    SurfaceMeshOptions uniform;
+    uniform.caps = false;
+    SurfaceMeshOptions graded = uniform;
+    const double h = 0.1 * tow.towSize();
+    graded.size = [&](const UV& at) { return at.u < uMid ? h / 3.0 : h; };  // 3x finer on the first half
+    const SurfaceMesh a = ParametricMesher(tow, uniform).mesh(), b = ParametricMesher(tow, graded).mesh();
+    const auto trianglesBefore = [&](const SurfaceMesh& m) {
+        std::size_t n = 0;
+        for (const auto& t : m.triangles) n += (m.nodes[t[0]].x + m.nodes[t[1]].x + m.nodes[t[2]].x) / 3.0 < 2.0;
+        return n;
+    };
+    // The first half: about 9x the triangles (h/3); the second: about the same as uniform.
+    const double firstHalf = double(trianglesBefore(b)) / double(trianglesBefore(a));
+    const double secondHalf = double(b.triangles.size() - trianglesBefore(b)) / double(a.triangles.size() - trianglesBefore(a));
+    WARN("graded / uniform triangles: first half " << firstHalf << ", second half " << secondHalf);
+    CHECK(firstHalf > 6.0);
+    CHECK(firstHalf < 12.0);
+    CHECK(secondHalf < 1.5);
+    CHECK(testing::boundaryOf(b.triangles).loops == 2);
+    // The edges: about h/3 long on the first half, about h on the second (means, 3D).
+    double sum[2] = {0.0, 0.0};
+    std::size_t count[2] = {0, 0};
+    for (const auto& t : b.triangles)
+        for (int k = 0; k < 3; ++k) {
+            const Point3 &p = b.nodes[t[k]], &q = b.nodes[t[(k + 1) % 3]];
+            const double x = 0.5 * (p.x + q.x);
+            if (x > 1.8 && x < 2.2) continue;  // the grading between them
+            sum[x > 2.0] += distance(p, q);
+            ++count[x > 2.0];
+        }
+    const double fine = sum[0] / double(count[0]), coarse = sum[1] / double(count[1]);
+    WARN("mean edge: " << fine << " (h/3 = " << h / 3.0 << "), " << coarse << " (h = " << h << ")");
+    CHECK(fine < 0.45 * coarse);
+    CHECK(fine < 1.1 * h / 3.0);
+    CHECK(coarse < 1.1 * h);
+
+    SurfaceMeshOptions bad = uniform;
+    bad.size = [](const UV&) { return -1.0; };
+    try {
+        ParametricMesher(tow, bad).mesh();
+        FAIL("a negative size was taken");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::InvalidArgument);
+    }
+}

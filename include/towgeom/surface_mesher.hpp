@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -38,6 +39,12 @@ struct SurfaceMeshOptions {
     double edgeLength = 0.0;
     double relativeEdgeLength = 0.1;  ///< h relative to the tow size when edgeLength is 0
     double minAngle = 20.0;           ///< smallest triangle angle aimed for, degrees in (0, 30]
+    /// Optional: the target edge length at a (u,v) of the tow, in the user's units, for a mesh
+    /// graded where the host needs it (finer near a contact, a crack, a sensor). Taken within
+    /// [h / 100, h] with h the edge length above, which stays the size of the seam and end
+    /// stations. Called from the meshing thread; must be finite and positive
+    /// (InvalidArgument otherwise).
+    std::function<double(const UV&)> size;
     bool caps = true;                 ///< close the tube by its two end caps
     /// Refuse (TooLarge) a mesh estimated at more triangles (3 x the surface's area / (sqrt(3)/4
     /// h^2)), before meshing.

@@ -10,7 +10,9 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <functional>
 
 #include "mesh/surface_metric.hpp"
 #include "towgeom/export.hpp"
@@ -39,26 +41,36 @@ using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predi
 class Criteria : public CGAL::Delaunay_mesh_size_criteria_2<CDT> {
 public:
     using Base = CGAL::Delaunay_mesh_size_criteria_2<CDT>;
-    Criteria(double shapeBound, double h, const SurfaceMetric& metric)
-        : CGAL::Delaunay_mesh_criteria_2<CDT>(shapeBound), Base(shapeBound, h), metric_(&metric) {}
+    /// @p localH, if given, is the target edge length at a point of the scaled space, taken
+    /// within [h / 100, h].
+    using LocalSize = std::function<double(double, double)>;
+    Criteria(double shapeBound, double h, const SurfaceMetric& metric, LocalSize localH = {})
+        : CGAL::Delaunay_mesh_criteria_2<CDT>(shapeBound), Base(shapeBound, h), metric_(&metric), localH_(std::move(localH)) {}
 
     class Is_bad : public Base::Is_bad {
     public:
-        Is_bad(double shapeBound, double h, const SurfaceMetric& metric)
-            : Base::Is_bad(shapeBound, h, traits()), metric_(&metric)
+        Is_bad(double shapeBound, double h, const SurfaceMetric& metric, LocalSize localH = {})
+            : Base::Is_bad(shapeBound, h, traits()), metric_(&metric), localH_(std::move(localH))
         {
         }
         using Base::Is_bad::operator();
         CGAL::Mesh_2::Face_badness operator()(const CDT::Face_handle& f, Quality& q) const
         {
             q.second = 0.0;
+            double bound2 = this->squared_size_bound;
+            if (localH_) {
+                const K::Point_2 &p0 = f->vertex(0)->point(), &p1 = f->vertex(1)->point(), &p2 = f->vertex(2)->point();
+                const double h = std::sqrt(this->squared_size_bound);
+                const double hl = std::clamp(localH_((p0.x() + p1.x() + p2.x()) / 3.0, (p0.y() + p1.y() + p2.y()) / 3.0), h / 100.0, h);
+                bound2 = hl * hl;
+            }
             double l2[3];
             for (int k = 0; k < 3; ++k) {
                 const CDT::Vertex_handle a = f->vertex(CDT::cw(k)), b = f->vertex(CDT::ccw(k));
                 const K::Point_2 &p = a->point(), &r = b->point();
                 l2[k] = metric_->squaredLength(0.5 * (p.x() + r.x()), 0.5 * (p.y() + r.y()), r.x() - p.x(), r.y() - p.y());
                 if (f->is_constrained(k) && a->info().node >= 0 && b->info().node >= 0) continue;
-                q.second = std::max(q.second, l2[k] / this->squared_size_bound);
+                q.second = std::max(q.second, l2[k] / bound2);
             }
             if (q.size() > 1.0) {
                 q.first = 1.0;
@@ -69,7 +81,7 @@ public:
             CGAL::Mesh_2::Face_badness badness = Base::Is_bad(this->B, 0.0, traits())(f, shape);
             q.first = shape.first;
             std::sort(l2, l2 + 3);
-            if (64.0 * l2[2] > this->squared_size_bound) {
+            if (64.0 * l2[2] > bound2) {
                 // The same measure with the edges' 3D lengths, so that angles are good in 3D
                 // where the metric is not the plane's: sine^2 of the smallest angle is
                 // (2 area)^2 / (longest^2 second^2), the area by Heron's formula. Only for faces
@@ -91,11 +103,13 @@ public:
             return k;
         }
         const SurfaceMetric* metric_;
+        LocalSize localH_;
     };
-    Is_bad is_bad_object() const { return Is_bad(this->bound(), this->size_bound(), *metric_); }
+    Is_bad is_bad_object() const { return Is_bad(this->bound(), this->size_bound(), *metric_, localH_); }
 
 private:
     const SurfaceMetric* metric_;
+    LocalSize localH_;
 };
 
 }  // namespace detail::mesh2

@@ -138,8 +138,22 @@ struct ParametricMesher::Impl {
         : surface(s), sizes(z), range(s.parameterRange()), scale(parameterScale(s)),
           su(scale.alongU / (range.uMax - range.uMin)), sv(scale.aroundV / range.vPeriod()),
           metric(s, su, sv, scale.alongU, scale.aroundV, z.edgeLength),
-          criteria(shapeBound(z.minAngle), z.edgeLength, metric)
+          criteria(shapeBound(z.minAngle), z.edgeLength, metric, localSize())
     {
+    }
+    /// sizes.sizeAt in the scaled space, or none.
+    Criteria::LocalSize localSize() const
+    {
+        if (!sizes.sizeAt) return {};
+        return [this](double x, double y) {
+            const UV at = toUV({x, y});
+            const double h = sizes.sizeAt(at);
+            if (!(h > 0.0) || !std::isfinite(h))
+                throw Error(ErrorCode::InvalidArgument, "the mesh size function gives " + std::to_string(h) + " at (u, v) = (" +
+                                                            std::to_string(at.u) + ", " + std::to_string(at.v) + ")",
+                            "tow '" + surface.name() + "'");
+            return h;
+        };
     }
     static double shapeBound(double minAngle)
     {

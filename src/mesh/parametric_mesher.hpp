@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -20,6 +21,9 @@ namespace detail {
 struct MeshSizes {
     double edgeLength = 0.1;  ///< target 3D edge length h
     double minAngle = 20.0;   ///< degrees
+    /// The target edge length at a (u,v), if given: the mesh is refined to it, taken within
+    /// [h / 100, h] (the seam and end stations and the starting lattice stay at h).
+    std::function<double(const UV&)> sizeAt;
 };
 
 /// One tow's mesh: its triangles over global nodes (loop nodes) and its own new nodes.

@@ -117,8 +117,26 @@ SurfaceMesh ParametricMesher::mesh(const std::vector<MeshConstraint>& constraint
 {
     const ParameterRange r = surface_.parameterRange();
     Pieces pieces(constraints, r);
-    // As resolveTextile(): about 3 triangles per equilateral triangle of side h in the area.
-    const double estimate = 3.0 * surface_.area() / (std::sqrt(3.0) / 4.0 * h_ * h_);
+    // As resolveTextile(): about 3 triangles per equilateral triangle of side h in the area; with
+    // a size function, (h / size)^2 times as many on average over a grid of the (u,v) rectangle.
+    double finer = 1.0;
+    if (options_.size) {
+        double sum = 0.0;
+        constexpr int kGrid = 16;
+        for (int i = 0; i < kGrid; ++i)
+            for (int j = 0; j < kGrid; ++j) {
+                const UV at{r.uMin + (r.uMax - r.uMin) * (i + 0.5) / kGrid, r.vMin + r.vPeriod() * (j + 0.5) / kGrid};
+                const double hl = options_.size(at);
+                if (!(hl > 0.0) || !std::isfinite(hl))
+                    throw Error(ErrorCode::InvalidArgument, "the mesh size function gives " + std::to_string(hl) + " at (u, v) = (" +
+                                                                std::to_string(at.u) + ", " + std::to_string(at.v) + ")",
+                                "tow '" + surface_.name() + "'");
+                const double ratio = h_ / std::clamp(hl, h_ / 100.0, h_);
+                sum += ratio * ratio;
+            }
+        finer = sum / (kGrid * kGrid);
+    }
+    const double estimate = finer * 3.0 * surface_.area() / (std::sqrt(3.0) / 4.0 * h_ * h_);
     if (!(estimate <= static_cast<double>(options_.maxTriangles)))
         throw Error(ErrorCode::TooLarge, "the mesh would have about " + std::to_string(static_cast<long long>(estimate)) +
                                              " triangles, over the limit of " + std::to_string(options_.maxTriangles) +
@@ -132,7 +150,9 @@ SurfaceMesh ParametricMesher::mesh(const std::vector<MeshConstraint>& constraint
 
     std::vector<Point3> nodes;  // frame
     for (const UV& p : pieces.nodeUV) nodes.push_back(tow.point(p.u, p.v));
-    detail::ParametricMesher mesher(tow, detail::MeshSizes{h, options_.minAngle});
+    detail::MeshSizes sizes{h, options_.minAngle, {}};
+    if (options_.size) sizes.sizeAt = [&](const UV& at) { return frame.lengthToFrame(options_.size(at)); };
+    detail::ParametricMesher mesher(tow, sizes);
     detail::MeshRequests requests;
     SurfaceMesh out;
     std::vector<double> seamU;
