@@ -1,6 +1,7 @@
 #include "surface/fibre_directions.hpp"
 
 #include <GeomAdaptor_Surface.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <gp_Pnt.hxx>
 #include <gp_Vec.hxx>
 
@@ -17,13 +18,18 @@ namespace detail {
 std::vector<Vector3> fibreDirections(const TowSurface& tow, const std::vector<UV>& at)
 {
     return guarded(tow.name(), "fibre directions", [&] {
-        // In order of u (then v), so that the adaptor's span cache is rebuilt once per span, not
-        // at nearly every point of a mesh's (unordered) triangles.
+        // Patch by patch (u knot span, then v), so that the adaptor's cache of one patch's
+        // polynomial is rebuilt once per patch, not at nearly every point of a mesh's
+        // (unordered) triangles.
+        const Handle(Geom_BSplineSurface)& bs = tow.impl().surface;
+        std::vector<double> uKnots;
+        for (int k = 1; k <= bs->NbUKnots(); ++k) uKnots.push_back(bs->UKnot(k));
+        std::vector<std::pair<std::size_t, double>> key(at.size());
+        for (std::size_t k = 0; k < at.size(); ++k)
+            key[k] = {static_cast<std::size_t>(std::upper_bound(uKnots.begin(), uKnots.end(), at[k].u) - uKnots.begin()), at[k].v};
         std::vector<std::size_t> order(at.size());
         std::iota(order.begin(), order.end(), std::size_t(0));
-        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-            return at[a].u < at[b].u || (at[a].u == at[b].u && at[a].v < at[b].v);
-        });
+        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
         GeomAdaptor_Surface surface(tow.impl().surface);
         std::vector<Vector3> out(at.size());
         gp_Pnt p;
