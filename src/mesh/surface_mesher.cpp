@@ -26,12 +26,6 @@ namespace {
 constexpr int kMaxRounds = 6;                          // as resolveTextile()
 constexpr std::size_t kLocal = std::size_t(1) << 60;  // marks the mesher's own new nodes
 
-Vector3 unit(const Vector3& v)
-{
-    const double n = norm(v);
-    return n > 0.0 ? (1.0 / n) * v : v;
-}
-
 /// The constraint pieces for the internal mesher: nodes numbered in order of first use, one node
 /// per distinct point (a point shared by constraints, or on the seam on both sides, is one).
 struct Pieces {
@@ -199,15 +193,7 @@ SurfaceMesh ParametricMesher::mesh(const std::vector<MeshConstraint>& constraint
     std::vector<std::vector<TowFace>> face{std::vector<TowFace>(m.triangles.size(), TowFace::Side)};
     if (options_.caps) {
         detail::closeEnds({tow}, {h}, options_.minAngle, 1, meshes, face, nodes);
-        // A cap's fibre direction: the tow's along its end section, its mean over v.
-        const auto endDirection = [&](double u) {
-            Vector3 sum;
-            for (int k = 0; k < 16; ++k) sum = sum + unit(tow.derivatives(u, r.vMin + r.vPeriod() * k / 16.0).du);
-            return unit(sum);
-        };
-        const Vector3 start = endDirection(r.uMin), end = endDirection(r.uMax);
-        for (std::size_t k = out.fibreDirection.size(); k < face[0].size(); ++k)
-            out.fibreDirection.push_back(face[0][k] == TowFace::Start ? start : end);
+        detail::appendCapDirections(tow, face[0], out.fibreDirection);
     }
     uv.resize(nodes.size(), {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()});
     const std::size_t ends = detail::boundaryLoops(m.triangles).size();

@@ -63,13 +63,6 @@ double smallestAngle(const std::vector<Point3>& nodes, const Triangle& t)
 
 Triangle reversed(const Triangle& t) { return {t[0], t[2], t[1]}; }
 
-/// @p v / |v|, or 0 for a zero vector.
-Vector3 unitOr0(const Vector3& v)
-{
-    const double n = norm(v);
-    return n > 0.0 ? (1.0 / n) * v : v;
-}
-
 /// @p p with v moved into the period [vMin, vMax) by whole periods.
 UV inPeriod(UV p, const ParameterRange& r)
 {
@@ -77,15 +70,6 @@ UV inPeriod(UV p, const ParameterRange& r)
     if (p.v < r.vMin) p.v += r.vPeriod();
     if (p.v >= r.vMax) p.v = r.vMin;
     return p;
-}
-
-/// The tow's unit direction along its section at @p u: the mean of dS/du / |dS/du| over v.
-Vector3 endDirection(const TowSurface& tow, double u)
-{
-    const ParameterRange r = tow.parameterRange();
-    Vector3 sum;
-    for (int k = 0; k < 16; ++k) sum = sum + unitOr0(tow.derivatives(u, r.vMin + r.vPeriod() * k / 16.0).du);
-    return unitOr0(sum);
 }
 
 void checkOptions(const ResolveOptions& o)
@@ -407,7 +391,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
     detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
         failures.run(t, [&] {
             detail::throwIfCancelled(options.monitor);  // inside: TowFailures must pass it on
-            meshers[t] = std::make_unique<detail::ParametricMesher>(tows[t], detail::MeshSizes{towH[t], options.mesh.minAngle});
+            meshers[t] = std::make_unique<detail::ParametricMesher>(tows[t], detail::MeshSizes{towH[t], options.mesh.minAngle, {}});
             meshers[t]->mesh(constraintsOf(t), {}, requests[t]);
         });
         if (!options.monitor) return;
@@ -498,12 +482,7 @@ void meshAndConnect(const std::vector<TowSurface>& tows, const std::vector<doubl
     std::vector<std::vector<TowFace>> faceOf(tows.size());
     for (std::size_t t = 0; t < tows.size(); ++t) faceOf[t].assign(meshes[t].triangles.size(), TowFace::Side);
     if (options.mesh.caps) detail::closeEnds(tows, towH, options.mesh.minAngle, threads, meshes, faceOf, nodes);
-    for (std::size_t t = 0; t < tows.size(); ++t) {
-        if (fibre[t].size() == faceOf[t].size()) continue;
-        const ParameterRange r = tows[t].parameterRange();
-        const Vector3 start = endDirection(tows[t], r.uMin), end = endDirection(tows[t], r.uMax);
-        for (std::size_t k = fibre[t].size(); k < faceOf[t].size(); ++k) fibre[t].push_back(faceOf[t][k] == TowFace::Start ? start : end);
-    }
+    for (std::size_t t = 0; t < tows.size(); ++t) detail::appendCapDirections(tows[t], faceOf[t], fibre[t]);
     result.timings.mesh = msSince(t0);
 
     // 3. Connected regions, by rank: every tow minus the tows ranked above it. A triangle of tow

@@ -5,6 +5,7 @@
 
 #include "towgeom/export.hpp"
 #include "towgeom/point.hpp"
+#include "towgeom/textile_mesh.hpp"
 #include "towgeom/tow_surface.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
@@ -14,6 +15,11 @@ namespace detail {
 /// OpenCASCADE's per-span cache: several times faster than TowSurface::derivatives() each for
 /// points that come span by span, as a mesh's triangles do.
 std::vector<Vector3> fibreDirections(const TowSurface& tow, const std::vector<UV>& at);
+
+/// Appends to @p fibre (one direction per triangle so far) the directions of the cap triangles
+/// that follow in @p face: the tow's direction along its first or last section, the unit mean
+/// of dS/du / |dS/du| over v there.
+void appendCapDirections(const TowSurface& tow, const std::vector<TowFace>& face, std::vector<Vector3>& fibre);
 
 }  // namespace detail
 TOWGEOM_END_NAMESPACE
