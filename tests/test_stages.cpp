@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <functional>
 #include <sstream>
@@ -120,6 +121,162 @@ TEST_CASE("intersection report JSON: exact round trip, and the chained stages gi
     CHECK(one.mesh.regions.size() == 16);
     CHECK(chained.mesh.regions.size() == 16);
     CHECK(openTows(chained) == 0);
+
+    // The three stages called one by one: the same nodes and triangles again.
+    const ResolveResult staged = connectRegions(tows, meshTows(tows, back, o), o);
+    REQUIRE(staged.mesh.nodes.size() == one.mesh.nodes.size());
+    nodesDiffering = 0;
+    for (std::size_t n = 0; n < one.mesh.nodes.size(); ++n) {
+        const Point3 &p = one.mesh.nodes[n], &q = staged.mesh.nodes[n];
+        nodesDiffering += !(p.x == q.x && p.y == q.y && p.z == q.z);
+    }
+    CHECK(nodesDiffering == 0);
+    for (std::size_t t = 0; t < one.mesh.tows.size(); ++t) {
+        CHECK(one.mesh.tows[t].triangles == staged.mesh.tows[t].triangles);
+        CHECK(one.mesh.tows[t].region == staged.mesh.tows[t].region);
+    }
+    CHECK(staged.mesh.regions.size() == 16);
+}
+
+TEST_CASE("meshTows alone: every tow's own closed mesh, loops shared node for node, connectRegions on it with two rankings",
+          "[stages][connect]")
+{
+    const std::vector<TowSurface> tows = bundledTwill();
+    const IntersectionReport found = intersectTows(tows);
+    const ResolveOptions o = atSize(0.2);
+    const ResolveResult meshed = meshTows(tows, found, o);
+
+    // No swap yet: no region, every tow closed by its caps, its volume that of its own surface.
+    CHECK(meshed.mesh.regions.empty());
+    CHECK(openTows(meshed) == 0);
+    REQUIRE(meshed.mesh.loops.size() == 16);
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        const TowResolution& r = meshed.tows[t];
+        CHECK(r.volumeBefore == r.volumeAfter);
+        CHECK(r.volumeBefore == Approx(tows[t].volume()).epsilon(0.02));
+        CHECK(r.pieces == 1);
+    }
+    // Each loop's nodes lie on both tows' meshes, with (u,v) on each, and on both surfaces.
+    for (const MeshedLoop& l : meshed.mesh.loops) {
+        const IntersectionLoop& loop = found.loops[l.loop];
+        REQUIRE(l.nodes.size() >= 3);
+        for (const std::size_t t : {loop.towA(), loop.towB()}) {
+            const TowMesh& m = meshed.mesh.tows[t];
+            std::vector<std::size_t> used;
+            for (const auto& tri : m.triangles) used.insert(used.end(), tri.begin(), tri.end());
+            std::sort(used.begin(), used.end());
+            std::size_t missing = 0, far = 0;
+            for (std::size_t n : l.nodes) {
+                missing += !std::binary_search(used.begin(), used.end(), n);
+                const auto it = std::lower_bound(m.parameters.begin(), m.parameters.end(), n,
+                                                 [](const auto& e, std::size_t k) { return e.first < k; });
+                REQUIRE(it != m.parameters.end());
+                REQUIRE(it->first == n);
+                far += norm(tows[t].point(it->second.u, it->second.v) - meshed.mesh.nodes[n]) > 1e-6 * tows[t].towSize();
+            }
+            CHECK(missing == 0);
+            CHECK(far == 0);
+        }
+    }
+    // Still overlapping: the warps' and wefts' volumes add up to more than the textile holds
+    // after resolution, by the regions' removed volume.
+    const ResolveResult byOrder = connectRegions(tows, meshed, o);
+    CHECK(byOrder.mesh.regions.size() == 16);
+    CHECK(openTows(byOrder) == 0);
+    double removed = 0.0, lost = 0.0;
+    for (const ConnectedRegion& g : byOrder.mesh.regions) removed += g.volumeRemoved;
+    for (const TowResolution& r : byOrder.tows) lost += r.volumeBefore - r.volumeAfter;
+    CHECK(removed > 0.0);
+    CHECK(lost == Approx(removed).epsilon(1e-6));
+
+    // The same meshes ranked the other way (wefts first): every region changes hands, the shared
+    // surface differs, nothing is meshed again.
+    ResolveOptions weftsFirst = o;
+    weftsFirst.primaryPatterns = {"weft*"};
+    const ResolveResult byWeft = connectRegions(tows, meshed, weftsFirst);
+    REQUIRE(byWeft.mesh.regions.size() == 16);
+    CHECK(openTows(byWeft) == 0);
+    for (const ConnectedRegion& g : byOrder.mesh.regions) CHECK(tows[g.primary].name().rfind("warp", 0) == 0);
+    for (const ConnectedRegion& g : byWeft.mesh.regions) CHECK(tows[g.primary].name().rfind("weft", 0) == 0);
+    double removedByWeft = 0.0;
+    for (const ConnectedRegion& g : byWeft.mesh.regions) removedByWeft += g.volumeRemoved;
+    CHECK(removedByWeft == Approx(removed).epsilon(1e-9));  // the same overlaps, bounded by the same two surfaces
+}
+
+TEST_CASE("connectRegions: a pair whose loop is wrong on one tow is left unresolved (RegionFailed), the rest connected",
+          "[stages][connect]")
+{
+    const std::vector<TowSurface> tows = bundledTwill();
+    const ResolveOptions o = atSize(0.2);
+    ResolveResult meshed = meshTows(tows, intersectTows(tows), o);
+    REQUIRE(meshed.mesh.loops.size() == 16);
+    // Loop 0's polygon on its tow B moved half way round the tow: that tow's triangles inside it
+    // are not the ones the loop bounds, so its mesh cannot close after the swap.
+    const MeshedLoop moved = meshed.mesh.loops[0];
+    const IntersectionLoop& loop = meshed.intersections.loops[moved.loop];
+    const ParameterRange range = tows[loop.towB()].parameterRange();
+    for (auto& [node, uv] : meshed.mesh.tows[loop.towB()].parameters)
+        if (std::find(moved.nodes.begin(), moved.nodes.end(), node) != moved.nodes.end())
+            uv.v = range.vMin + std::fmod(uv.v - range.vMin + 0.5 * range.vPeriod(), range.vPeriod());
+    const ResolveResult r = connectRegions(tows, meshed, o);
+    // Every pair with a loop on the failed tow is left out (in the twill, a weft crosses four
+    // warps); the others keep their regions and every tow stays closed.
+    const std::size_t failed = loop.towB();
+    std::size_t onFailed = 0, pairs = 0;
+    for (const MeshedLoop& l : meshed.mesh.loops) {
+        const IntersectionLoop& k = meshed.intersections.loops[l.loop];
+        onFailed += k.towA() == failed || k.towB() == failed;
+    }
+    for (const UnresolvedPair& u : r.unresolved) {
+        CHECK(u.reason == UnresolvedPair::Reason::RegionFailed);
+        CHECK((u.towA == failed || u.towB == failed));
+        CHECK(u.message.find("tow '" + tows[failed].name() + "' could not be connected") == 0);
+        ++pairs;
+    }
+    CHECK(pairs >= 1);
+    CHECK(onFailed >= pairs);
+    CHECK(r.mesh.regions.size() == 16 - onFailed);
+    CHECK(r.mesh.loops.size() == 16 - onFailed);
+    CHECK(openTows(r) == 0);
+    // The failed tow keeps its own surface whole (its loop nodes stay in its mesh).
+    CHECK(r.tows[failed].volumeAfter == Approx(r.tows[failed].volumeBefore).epsilon(1e-12));
+}
+
+TEST_CASE("connectRegions refuses meshes that do not fit the tows, naming the tow or loop", "[stages][connect]")
+{
+    const std::vector<TowSurface> tows = bundledTwill();
+    const ResolveOptions o = atSize(0.3);
+    const ResolveResult meshed = meshTows(tows, intersectTows(tows), o);
+    const auto messageOf = [&](const ResolveResult& bad, const std::vector<TowSurface>& with) {
+        try {
+            connectRegions(with, bad, o);
+        } catch (const Error& e) {
+            CHECK(e.code() == ErrorCode::InvalidArgument);
+            return std::string(e.what());
+        }
+        FAIL("not refused");
+        return std::string();
+    };
+    SECTION("fewer tows") { CHECK(messageOf(meshed, {tows.begin(), tows.end() - 1}).find("8 tows, not 7") != std::string::npos); }
+    SECTION("regions already made")
+    {
+        const ResolveResult connected = connectRegions(tows, meshed, o);
+        CHECK(messageOf(connected, tows).find("connected already") != std::string::npos);
+    }
+    SECTION("a loop node without (u,v)")
+    {
+        ResolveResult bad = meshed;
+        const MeshedLoop& l = bad.mesh.loops[3];
+        auto& p = bad.mesh.tows[bad.intersections.loops[l.loop].towA()].parameters;
+        p.erase(std::find_if(p.begin(), p.end(), [&](const auto& e) { return e.first == l.nodes[0]; }));
+        CHECK(messageOf(bad, tows).find("loop " + std::to_string(l.loop)) != std::string::npos);
+    }
+    SECTION("a triangle's node out of range")
+    {
+        ResolveResult bad = meshed;
+        bad.mesh.tows[2].triangles[5][1] = bad.mesh.nodes.size();
+        CHECK(messageOf(bad, tows).find("tow '" + tows[2].name() + "'") != std::string::npos);
+    }
 }
 
 TEST_CASE("mesh-size study: one intersection report meshed at three sizes", "[stages]")

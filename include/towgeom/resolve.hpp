@@ -99,7 +99,11 @@ struct UnresolvedPair {
         /// open or skipped, the point was not found, or it lies within 1 % of a chord of a seam
         /// or of another loop's fixed node, where it would make slivers), or meets it while the third
         /// pair has no resolved loop. Of two such pairs the later one (by tow indices) is left out.
-        LoopsMeet
+        LoopsMeet,
+        /// Tow A or B was not a closed surface after its regions were swapped in (connectRegions()):
+        /// every pair with loops on that tow was left out of the regions and the rest connected
+        /// again; the pair's loop nodes stay in both meshes (since 0.2).
+        RegionFailed
     };
     std::size_t towA = 0;  ///< lower tow index
     std::size_t towB = 0;  ///< higher tow index

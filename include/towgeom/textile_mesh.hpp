@@ -76,6 +76,15 @@ struct TriplePoint {
     std::array<std::size_t, 3> tows{};  ///< the three tows, ascending
 };
 
+/// An intersection loop in the meshes: the global nodes both tows' meshes share along it.
+struct MeshedLoop {
+    std::size_t loop = 0;            ///< index in the intersection report
+    /// Its global nodes in loop order, the first not repeated (a node of both tows' meshes; after
+    /// connectRegions(), the nodes some triangle still uses: where a higher-ranked third tow covers
+    /// part of the loop, its nodes there are gone).
+    std::vector<std::size_t> nodes;
+};
+
 /// The meshes of all tows of a textile on one node numbering: a node on an intersection loop
 /// or in a connected region is the same node in every tow that uses it.
 struct TOWGEOM_EXPORT TextileMesh {
@@ -85,6 +94,9 @@ struct TOWGEOM_EXPORT TextileMesh {
     /// surface lies wholly inside a third, higher-ranked tow has none).
     std::vector<ConnectedRegion> regions;
     std::vector<TriplePoint> triplePoints;  ///< where three tows' resolved loops cross
+    /// The loops the tows were meshed with (meshTows(): every closed loop meshed; after
+    /// connectRegions(): those of the tow pairs resolved), in report order.
+    std::vector<MeshedLoop> loops;
 
     /// Tow @p tow's mesh as a standalone TriangleMesh (only the nodes it uses, renumbered in
     /// the order the triangles first use them).

@@ -21,6 +21,8 @@
 #include "towgeom/mesh_options.hpp"
 #include "towgeom/point.hpp"
 #include "towgeom/resolve.hpp"
+#include "towgeom/mesh_tows.hpp"
+#include "towgeom/connect_regions.hpp"
 #include "towgeom/stack_reader.hpp"
 #include "towgeom/stl_writer.hpp"
 #include "towgeom/textile_io.hpp"

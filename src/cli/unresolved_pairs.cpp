@@ -57,9 +57,11 @@ std::vector<UnresolvedEntry> unresolvedPairs(const ResolveResult& result)
         else
             addOnce(pairs, {l.towA(), l.towB(), reason::kWindsAround, s.message});
     }
-    for (const towgeom::UnresolvedPair& u : result.unresolved)
-        addOnce(pairs, {u.towA, u.towB, u.reason == towgeom::UnresolvedPair::Reason::LoopsMeet ? reason::kLoopsMeet : reason::kMeshFailed,
-                        u.message});
+    for (const towgeom::UnresolvedPair& u : result.unresolved) {
+        using Why = towgeom::UnresolvedPair::Reason;
+        const char* code = u.reason == Why::LoopsMeet ? reason::kLoopsMeet : u.reason == Why::RegionFailed ? reason::kRegionFailed : reason::kMeshFailed;
+        addOnce(pairs, {u.towA, u.towB, code, u.message});
+    }
     addFindings(result.intersections, pairs);
     sortByPair(pairs);
     return pairs;

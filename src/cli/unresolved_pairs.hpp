@@ -22,6 +22,7 @@ constexpr const char* kNested = "nested";                  ///< one tow lies ins
 constexpr const char* kIdenticalOrTouching = "identical_or_touching";  ///< surfaces coincide or touch, no curve
 constexpr const char* kMeshFailed = "mesh_failed";  ///< a tow could not be meshed with the pair's loops (resolve only)
 constexpr const char* kLoopsMeet = "loops_meet";    ///< the pair's loop meets another pair's on a tow (resolve only)
+constexpr const char* kRegionFailed = "region_failed";  ///< a tow was not closed after the swap (resolve only)
 }  // namespace reason
 
 /// One tow pair that meets without a resolvable intersection loop: an entry of report.json's

@@ -36,5 +36,16 @@ void reportStage(Progress* monitor, const Legacy& legacy, const std::string& sta
     throwIfCancelled(monitor);
 }
 
+/// Reports stage @p what (no count) to the Progress of @p options and to its deprecated
+/// `progress` callback (ResolveOptions), then throws if cancelled.
+template <class Options>
+void sayStage(const Options& options, const std::string& what)
+{
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"  // ResolveOptions::progress, until 0.3
+    reportStage(options.monitor, options.progress, what, 0, 0);
+#pragma GCC diagnostic pop
+}
+
 }  // namespace detail
 TOWGEOM_END_NAMESPACE

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "towgeom/point.hpp"
@@ -33,6 +34,27 @@ std::vector<std::vector<std::size_t>> boundaryLoops(const std::vector<std::array
 /// centroid (as closedSurface() does); @p loopCount, if given, gets the number of loops.
 double closedVolume(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles,
                     std::size_t* loopCount = nullptr);
+
+/// What resolve reports and checks of one tow's mesh, from one pass over its edges.
+struct SurfaceFigures {
+    double volume = 0.0;            ///< closedVolume()
+    double area = 0.0;              ///< the triangles' area
+    std::size_t boundaryLoops = 0;  ///< boundary loops
+    std::size_t badEdges = 0;       ///< nonManifoldEdges()
+};
+
+/// The SurfaceFigures of @p triangles over @p nodes.
+SurfaceFigures surfaceFigures(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles);
+
+/// The area of triangle @p t over @p nodes.
+double triangleArea(const std::vector<Point3>& nodes, const std::array<std::size_t, 3>& t);
+
+/// The smallest of the three angles of triangle @p t over @p nodes, in degrees.
+double smallestAngle(const std::vector<Point3>& nodes, const std::array<std::size_t, 3>& t);
+
+/// Why a tow's mesh that should be closed (@p caps; else a tube open at its two ends) is not:
+/// a sentence with its @p badEdges (nonManifoldEdges()) and @p boundaryLoops.
+std::string notClosedMessage(bool caps, std::size_t badEdges, std::size_t boundaryLoops);
 
 }  // namespace detail
 TOWGEOM_END_NAMESPACE

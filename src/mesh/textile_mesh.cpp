@@ -3,6 +3,8 @@
 #include "mesh/mesh_measures.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 #include <map>
 #include <unordered_map>
 #include <utility>
@@ -57,14 +59,11 @@ EdgeUse edgeUse(const std::vector<std::array<std::size_t, 3>>& triangles)
     return out;
 }
 
-}  // namespace
-
-namespace detail {
-
-std::vector<std::vector<std::size_t>> boundaryLoops(const std::vector<std::array<std::size_t, 3>>& triangles)
+/// Directed boundary edges chained into loops of nodes, each in the direction its edges run.
+std::vector<std::vector<std::size_t>> chainLoops(const std::vector<Edge>& boundary)
 {
     std::multimap<std::size_t, std::size_t> next;
-    for (const Edge& e : edgeUse(triangles).boundary) next.emplace(e.first, e.second);
+    for (const Edge& e : boundary) next.emplace(e.first, e.second);
     std::vector<std::vector<std::size_t>> loops;
     while (!next.empty()) {
         std::vector<std::size_t> loop;
@@ -82,6 +81,19 @@ std::vector<std::vector<std::size_t>> boundaryLoops(const std::vector<std::array
         loops.push_back(std::move(loop));
     }
     return loops;
+}
+
+/// signedVolume() plus the fans closing @p loops (boundary loops of @p triangles).
+double fannedVolume(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles,
+                    const std::vector<std::vector<std::size_t>>& loops);
+
+}  // namespace
+
+namespace detail {
+
+std::vector<std::vector<std::size_t>> boundaryLoops(const std::vector<std::array<std::size_t, 3>>& triangles)
+{
+    return chainLoops(edgeUse(triangles).boundary);
 }
 
 }  // namespace detail
@@ -148,21 +160,25 @@ double signedVolume(const std::vector<Point3>& nodes, const std::vector<std::arr
 
 std::size_t connectedPieces(const std::vector<std::array<std::size_t, 3>>& triangles)
 {
-    std::unordered_map<std::size_t, std::size_t> parent;
+    // Union-find over the node numbers (SIZE_MAX: a node no triangle uses).
+    std::size_t top = 0;
+    for (const auto& t : triangles) top = std::max({top, t[0] + 1, t[1] + 1, t[2] + 1});
+    std::vector<std::size_t> parent(top, SIZE_MAX);
+    for (const auto& t : triangles)
+        for (const std::size_t n : t) parent[n] = n;
     const auto find = [&](std::size_t n) {
         std::size_t root = n;
         while (parent[root] != root) root = parent[root];
         while (parent[n] != root) n = std::exchange(parent[n], root);
         return root;
     };
-    for (const auto& t : triangles)
-        for (const std::size_t n : t) parent.try_emplace(n, n);
     for (const auto& t : triangles) {
-        parent[find(t[1])] = find(t[0]);
-        parent[find(t[2])] = find(t[0]);
+        const std::size_t a = find(t[0]);
+        parent[find(t[1])] = a;
+        parent[find(t[2])] = a;
     }
     std::size_t roots = 0;
-    for (const auto& [n, p] : parent) roots += n == p;
+    for (std::size_t n = 0; n < top; ++n) roots += parent[n] == n;
     return roots;
 }
 
@@ -171,9 +187,54 @@ std::size_t nonManifoldEdges(const std::vector<std::array<std::size_t, 3>>& tria
 double closedVolume(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles,
                     std::size_t* loopCount)
 {
-    double volume = signedVolume(nodes, triangles);
     const std::vector<std::vector<std::size_t>> loops = boundaryLoops(triangles);
     if (loopCount) *loopCount = loops.size();
+    return fannedVolume(nodes, triangles, loops);
+}
+
+SurfaceFigures surfaceFigures(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles)
+{
+    const EdgeUse use = edgeUse(triangles);
+    const std::vector<std::vector<std::size_t>> loops = chainLoops(use.boundary);
+    SurfaceFigures f;
+    f.volume = fannedVolume(nodes, triangles, loops);
+    f.boundaryLoops = loops.size();
+    f.badEdges = use.bad;
+    for (const auto& t : triangles) f.area += triangleArea(nodes, t);
+    return f;
+}
+
+double triangleArea(const std::vector<Point3>& nodes, const std::array<std::size_t, 3>& t)
+{
+    return 0.5 * norm(cross(nodes[t[1]] - nodes[t[0]], nodes[t[2]] - nodes[t[0]]));
+}
+
+double smallestAngle(const std::vector<Point3>& nodes, const std::array<std::size_t, 3>& t)
+{
+    double best = 180.0;
+    for (int k = 0; k < 3; ++k) {
+        const Vector3 a = nodes[t[(k + 1) % 3]] - nodes[t[k]], b = nodes[t[(k + 2) % 3]] - nodes[t[k]];
+        const double c = dot(a, b) / (norm(a) * norm(b));
+        best = std::min(best, std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / 3.14159265358979323846);
+    }
+    return best;
+}
+
+std::string notClosedMessage(bool caps, std::size_t badEdges, std::size_t boundaryLoops)
+{
+    return std::string(caps ? "the mesh is not a closed surface (" : "the mesh is not a tube open at its two ends (") +
+           std::to_string(badEdges) + " edges not shared by exactly two triangles the opposite way round, " +
+           std::to_string(boundaryLoops) + " boundary loops)";
+}
+
+}  // namespace detail
+
+namespace {
+
+double fannedVolume(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles,
+                    const std::vector<std::vector<std::size_t>>& loops)
+{
+    double volume = detail::signedVolume(nodes, triangles);
     if (triangles.empty()) return volume;
     const Point3 o = nodes[triangles.front()[0]];
     for (const std::vector<std::size_t>& loop : loops) {
@@ -187,7 +248,7 @@ double closedVolume(const std::vector<Point3>& nodes, const std::vector<std::arr
     return volume;
 }
 
-}  // namespace detail
+}  // namespace
 
 TriangleMesh surfaceOf(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles)
 {

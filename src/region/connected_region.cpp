@@ -50,7 +50,7 @@ struct LoopPolygon {
 
     bool contains(UV c, double period) const
     {
-        if (poly.size() < 3 || c.u < uLo || c.u > uHi) return false;  // outside the box: no exact test
+        if (poly.size() < 3 || !(c.u >= uLo && c.u <= uHi)) return false;  // outside the box (or NaN): no exact test
         // The copy of the point, one period over or not, that can lie in the loop's v range.
         const double shift = period * std::floor((c.v - vLo) / period);
         for (const double v : {c.v - shift, c.v - shift + period}) {
@@ -127,12 +127,12 @@ std::vector<LoopCrossing> loopCrossings(const std::vector<UV>& a, const std::vec
     return out;
 }
 
-std::vector<std::size_t> trianglesInside(const ParametricMesh& mesh, const std::vector<UV>& polygon, double period)
+std::vector<std::size_t> trianglesInside(const std::vector<UV>& centroids, const std::vector<UV>& polygon, double period)
 {
     const LoopPolygon loop(polygon);
     std::vector<std::size_t> inside;
-    for (std::size_t t = 0; t < mesh.centroids.size(); ++t)
-        if (loop.contains(mesh.centroids[t], period)) inside.push_back(t);
+    for (std::size_t t = 0; t < centroids.size(); ++t)
+        if (loop.contains(centroids[t], period)) inside.push_back(t);
     return inside;
 }
 

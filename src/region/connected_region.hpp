@@ -4,17 +4,17 @@
 #include <cstddef>
 #include <vector>
 
-#include "mesh/parametric_mesher.hpp"
+#include "towgeom/point.hpp"
 #include "towgeom/export.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
 
-/// The triangles of @p mesh whose (u,v) centroid lies inside @p polygon (the loop on this tow,
-/// v unwrapped), by CGAL's exact point-in-polygon test. Centroids are tried at v and v shifted
-/// by whole periods into the polygon's v range, so loops across the seam work. The loop is a
-/// constraint of the mesh, so no triangle straddles it.
-std::vector<std::size_t> trianglesInside(const ParametricMesh& mesh, const std::vector<UV>& polygon, double period);
+/// The triangles whose (u,v) centroid (@p centroids, one per triangle; NaN for none, as on a cap)
+/// lies inside @p polygon (the loop on this tow, v unwrapped), by CGAL's exact point-in-polygon
+/// test. Centroids are tried at v and v shifted by whole periods into the polygon's v range, so
+/// loops across the seam work. The loop is a constraint of the mesh, so no triangle straddles it.
+std::vector<std::size_t> trianglesInside(const std::vector<UV>& centroids, const std::vector<UV>& polygon, double period);
 
 /// True when @p p (or its copy shifted by whole periods in v) lies strictly inside @p polygon
 /// (a loop on a tow, v unwrapped): CGAL's exact point-in-polygon test.

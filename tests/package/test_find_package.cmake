@@ -34,6 +34,15 @@ if(NOT sizes EQUAL 3)
   message(FATAL_ERROR "mesh_size_study: not 16 regions at each of 3 sizes:\n${last_output}")
 endif()
 message(STATUS "mesh_size_study:\n${last_output}")
+run("${WORK}/build/rank_study" "${WORK}/loops.json" ${twill})
+# Both rankings: 16 regions of the same overlap volume; each tow keeps all of its volume when it
+# ranks first (warps, then wefts) and loses some when it gives way.
+string(REGEX MATCHALL "first: 16 regions, overlap volume ([0-9.e-]+)" both "${last_output}")
+list(LENGTH both rankings)
+if(NOT rankings EQUAL 2 OR NOT last_output MATCHES "warp_0 keeps 100 %.*warp_0 keeps 9[0-9.]+ %")
+  message(FATAL_ERROR "rank_study: not 16 regions under both rankings, or warp_0 not giving way second:\n${last_output}")
+endif()
+message(STATUS "rank_study:\n${last_output}")
 run("${WORK}/build/mesh_one_tow" "${EXAMPLE}" "${WORK}/tube.vtk")
 # The closed mesh's volume: within 0.5 % of the fitted tube's 3.14155.
 if(NOT last_output MATCHES "volume (3\\.1[34][0-9]*)")

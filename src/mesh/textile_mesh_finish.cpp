@@ -1,0 +1,78 @@
+#include "mesh/textile_mesh_finish.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "mesh/mesh_measures.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
+
+void keepUsedNodes(TextileMesh& mesh)
+{
+    std::vector<std::size_t> renumber(mesh.nodes.size(), SIZE_MAX);
+    std::vector<Point3> kept;
+    for (TowMesh& m : mesh.tows)
+        for (std::array<std::size_t, 3>& tri : m.triangles)
+            for (std::size_t& n : tri) {
+                if (renumber[n] == SIZE_MAX) {
+                    renumber[n] = kept.size();
+                    kept.push_back(mesh.nodes[n]);
+                }
+                n = renumber[n];
+            }
+    const auto used = [&](std::size_t n) { return renumber[n] != SIZE_MAX; };
+    const auto renumbered = [&](std::vector<std::size_t>& list) {
+        list.erase(std::remove_if(list.begin(), list.end(), [&](std::size_t n) { return !used(n); }), list.end());
+        for (std::size_t& n : list) n = renumber[n];
+    };
+    for (TowMesh& m : mesh.tows) {
+        auto& p = m.parameters;
+        p.erase(std::remove_if(p.begin(), p.end(), [&](const auto& e) { return !used(e.first); }), p.end());
+        for (auto& e : p) e.first = renumber[e.first];
+        std::sort(p.begin(), p.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    }
+    for (MeshedLoop& l : mesh.loops) renumbered(l.nodes);
+    for (ConnectedRegion& g : mesh.regions) {
+        renumbered(g.nodes);
+        renumbered(g.loopNodes);
+        std::sort(g.nodes.begin(), g.nodes.end());
+    }
+    auto& triple = mesh.triplePoints;
+    triple.erase(std::remove_if(triple.begin(), triple.end(), [&](const TriplePoint& p) { return !used(p.node); }), triple.end());
+    for (TriplePoint& p : triple) p.node = renumber[p.node];
+    mesh.nodes = std::move(kept);
+}
+
+MeshQuality meshQuality(const TextileMesh& mesh)
+{
+    MeshQuality q;
+    q.histogram.assign(12, 0);
+    q.minAngle = 180.0;
+    for (std::size_t t = 0; t < mesh.tows.size(); ++t) {
+        const TowMesh& m = mesh.tows[t];
+        for (std::size_t k = 0; k < m.triangles.size(); ++k) {
+            if (k < m.region.size() && m.region[k] >= 0 && mesh.regions[static_cast<std::size_t>(m.region[k])].secondary == t) continue;
+            const double a = smallestAngle(mesh.nodes, m.triangles[k]);
+            q.minAngle = std::min(q.minAngle, a);
+            ++q.histogram[std::min<std::size_t>(11, static_cast<std::size_t>(a / 5.0))];
+            ++q.triangles;
+        }
+    }
+    return q;
+}
+
+}  // namespace detail
+
+double MeshQuality::fractionAtLeast(double degrees) const
+{
+    if (triangles == 0) return 1.0;
+    std::size_t below = 0;
+    for (std::size_t b = 0; b < histogram.size(); ++b)
+        if (5.0 * static_cast<double>(b + 1) <= degrees) below += histogram[b];
+    return 1.0 - static_cast<double>(below) / static_cast<double>(triangles);
+}
+
+TOWGEOM_END_NAMESPACE

@@ -1,0 +1,24 @@
+// What every stage that makes a TextileMesh does last: drops the nodes no triangle uses (loop
+// nodes inside a removed triangle, a secondary's nodes inside a region it gave up) and measures
+// the triangles' quality.
+#pragma once
+
+#include "towgeom/resolve.hpp"
+#include "towgeom/textile_mesh.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
+
+/// Keeps only the nodes of @p mesh that a tow's triangle uses, numbered in the order the tows'
+/// triangles first use them. TowMesh::parameters, TextileMesh::loops and ConnectedRegion::
+/// loopNodes lose their unused nodes (parameters and region nodes sorted by the new numbers);
+/// a triple point whose node is unused is dropped.
+void keepUsedNodes(TextileMesh& mesh);
+
+/// The smallest angles of @p mesh's distinct triangles (a region's copy in its secondary is not
+/// counted again); facesOverBounds is left 0.
+MeshQuality meshQuality(const TextileMesh& mesh);
+
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

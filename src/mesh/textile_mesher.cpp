@@ -1,0 +1,385 @@
+#include "mesh/textile_mesher.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+
+#include "core/parallel.hpp"
+#include "core/progress_report.hpp"
+#include "mesh/end_caps.hpp"
+#include "mesh/loop_nodes.hpp"
+#include "mesh/mesh_measures.hpp"
+#include "mesh/parametric_mesher.hpp"
+#include "mesh/textile_mesh_finish.hpp"
+#include "region/meeting_loops.hpp"
+#include "region/triple_points.hpp"
+#include "region/winding_loops.hpp"
+#include "surface/fibre_directions.hpp"
+#include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using Triangle = std::array<std::size_t, 3>;
+using TowPair = std::pair<std::size_t, std::size_t>;
+
+double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+/// @p p with v moved into the period [vMin, vMax) by whole periods.
+UV inPeriod(UV p, const ParameterRange& r)
+{
+    p.v = r.vMin + std::fmod(p.v - r.vMin, r.vPeriod());
+    if (p.v < r.vMin) p.v += r.vPeriod();
+    if (p.v >= r.vMax) p.v = r.vMin;
+    return p;
+}
+
+/// The meshes of tow @p tow could not be made with the loops of @p pairs on it.
+struct TowMeshFailure {
+    std::size_t tow = 0;
+    std::string message;
+    std::set<TowPair> pairs;  ///< the tow pairs with resolved loops on that tow
+};
+
+/// Every tow that failed in one meshing stage, in tow order.
+struct TowMeshFailures {
+    std::vector<TowMeshFailure> tows;
+};
+
+/// The failures of the tows meshed in parallel, kept per tow so that what is reported does not
+/// depend on the threads' timing.
+class TowFailures {
+public:
+    TowFailures(const std::vector<IntersectionLoop>& loops, const std::vector<detail::SharedLoop>& shared, std::size_t tows)
+        : loops_(loops), shared_(shared), failures_(tows)
+    {
+    }
+    /// Runs @p body for tow @p tow; a failure is kept as a TowMeshFailure naming the tow's pairs.
+    template <class Body>
+    void run(std::size_t tow, Body&& body)
+    {
+        std::string message;
+        try {
+            body();
+            return;
+        } catch (const std::bad_alloc&) {
+            throw;  // out of memory is not this tow's geometry
+        } catch (const Error& e) {
+            if (e.code() == ErrorCode::Cancelled) throw;
+            message = e.message();  // without the "tow 'NAME'" context, which the caller adds
+        } catch (const std::exception& e) {
+            message = e.what();
+        }
+        {
+            auto f = std::make_unique<TowMeshFailure>(TowMeshFailure{tow, message, {}});
+            for (const detail::SharedLoop& s : shared_) {
+                const IntersectionLoop& l = loops_[s.loop];
+                if (l.towA() == tow || l.towB() == tow) f->pairs.emplace(l.towA(), l.towB());
+            }
+            failures_[tow] = std::move(f);
+        }
+    }
+    /// Throws every failure so far (TowMeshFailures), if any.
+    void throwAll() const
+    {
+        TowMeshFailures all;
+        for (const auto& f : failures_)
+            if (f) all.tows.push_back(*f);
+        if (!all.tows.empty()) throw all;
+    }
+
+private:
+    const std::vector<IntersectionLoop>& loops_;
+    const std::vector<detail::SharedLoop>& shared_;
+    std::vector<std::unique_ptr<TowMeshFailure>> failures_;
+};
+
+/// Two loops of one tow pair closer than this (relative to the tow size) touch: a figure-8.
+constexpr double kTouchingLoops = 1e-3;
+
+/// One attempt of meshTowsInFrame(): loops of the tow pairs in @p excluded are left out.
+/// @throws TowMeshFailures when a tow's mesh cannot be made or is not a tube.
+void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>& towH, const ResolveOptions& options,
+                 const std::set<TowPair>& excluded, ResolveResult& result)
+{
+    const std::size_t threads = workerCount(options.threads);
+    const std::vector<IntersectionLoop>& loops = result.intersections.loops;
+
+    // Shared loop nodes and each tow's constraints: loop spacing the finer of the two tows'
+    // mesh sizes unless given.
+    Clock::time_point t0 = Clock::now();
+    const auto spacingOf = [&](const IntersectionLoop& l) {
+        return options.mesh.loopSpacing > 0.0 ? options.mesh.loopSpacing : std::min(towH[l.towA()], towH[l.towB()]);
+    };
+    std::vector<Point3> nodes;
+    // Loops that wind around a tow (it passes through the other tow, or ends inside it) cut it
+    // into bands alternately inside and outside the other; a pair whose loops disagree on which
+    // side is inside is left out (before anything else depends on its loops).
+    std::set<TowPair> disagree;
+    {
+        std::map<TowPair, std::vector<std::size_t>> winding;  // (t, o) -> the loops winding around t
+        for (std::size_t i = 0; i < loops.size(); ++i) {
+            const IntersectionLoop& l = loops[i];
+            if (!options.mesh.caps || !l.closed() || excluded.count({l.towA(), l.towB()}) ||
+                (l.windsAround(LoopSide::A) && l.windsAround(LoopSide::B)))
+                continue;
+            if (l.windsAround(LoopSide::A)) winding[{l.towA(), l.towB()}].push_back(i);
+            if (l.windsAround(LoopSide::B)) winding[{l.towB(), l.towA()}].push_back(i);
+        }
+        for (const auto& [to, list] : winding)
+            if (!windingBands(tows, to.first, to.second, loops, list)) disagree.insert(std::minmax(to.first, to.second));
+    }
+    std::vector<SharedLoop> shared;
+    for (std::size_t i = 0; i < loops.size(); ++i) {
+        const IntersectionLoop& l = loops[i];
+        using Why = SkippedLoop::Reason;
+        if (!l.closed())
+            result.skippedLoops.push_back({i, Why::OpenCurve, "open curve: " + l.openReason()});
+        else if (l.windsAround(LoopSide::A) && l.windsAround(LoopSide::B))
+            result.skippedLoops.push_back({i, Why::AroundBothTows, "the loop goes around both tows '" + l.surfaceA().name() +
+                                                                       "' and '" + l.surfaceB().name() + "'"});
+        else if ((l.windsAround(LoopSide::A) || l.windsAround(LoopSide::B)) && !options.mesh.caps)
+            result.skippedLoops.push_back({i, Why::AroundTowWithoutCaps,
+                                           "the loop goes around tow '" +
+                                               (l.windsAround(LoopSide::A) ? l.surfaceA() : l.surfaceB()).name() +
+                                               "' (one tow passes through the other; resolved only with end caps)"});
+        else if (disagree.count({l.towA(), l.towB()}))
+            result.skippedLoops.push_back({i, Why::BandsDoNotAlternate,
+                                           "the loops of tows '" + l.surfaceA().name() + "' and '" + l.surfaceB().name() +
+                                               "' go around one of them but do not cut it into bands alternately inside and "
+                                               "outside the other"});
+        else if (!excluded.count({l.towA(), l.towB()}))
+            shared.push_back(shareLoopNodes(l, i, spacingOf(l), nodes));
+    }
+    // Lobes of a figure-8 (one pair's loops touching where the surfaces are tangent) meet in one
+    // node; loops of different pairs that cross meet in triple points, or the later pair is left
+    // out.
+    for (std::size_t i = 0; i < shared.size(); ++i)
+        for (std::size_t j = i + 1; j < shared.size(); ++j) {
+            const IntersectionLoop& li = loops[shared[i].loop];
+            const IntersectionLoop& lj = loops[shared[j].loop];
+            if (li.towA() != lj.towA() || li.towB() != lj.towB()) continue;
+            const double within = kTouchingLoops * std::min(tows[li.towA()].towSize(), tows[li.towB()].towSize());
+            joinTouchingLoops(shared[i], li, shared[j], lj, within, nodes);
+        }
+    const TripleJoin triples = joinAtTriplePoints(tows, loops, shared, nodes);
+    dropMeetingLoops(tows, loops, shared, triples.crossing, result.unresolved);
+    constexpr std::size_t kLocal = std::size_t(1) << 60;  // marks a tow's own new nodes
+    // Round 1 meshes every tow. Refinement never splits a constraint; where a triangle needs a
+    // split of a loop chord or seam edge to meet the bounds, the split becomes an exact loop node
+    // (both tows) or a seam station (both sides), and the next round puts it into the tows
+    // concerned and refines around it. The last round's requests are not taken: its meshes are
+    // consistent, a few triangles stay over the bounds (reported).
+    constexpr int kMaxRounds = 6;
+    // loop node -> its shared loop(s): a figure-8's touching node belongs to both lobes
+    std::multimap<std::size_t, std::size_t> sharedOf;
+    for (std::size_t k = 0; k < shared.size(); ++k)
+        for (std::size_t n : shared[k].nodes) sharedOf.emplace(n, k);
+    std::vector<std::unique_ptr<ParametricMesher>> meshers(tows.size());
+    std::vector<MeshRequests> requests(tows.size());
+    const auto constraintsOf = [&](std::size_t t) {
+        std::vector<LoopConstraint> c;
+        for (const SharedLoop& s : shared) {
+            const IntersectionLoop& l = loops[s.loop];
+            for (const LoopSide side : {LoopSide::A, LoopSide::B})
+                if ((side == LoopSide::A ? l.towA() : l.towB()) == t) {
+                    auto pieces = constraintsOn(s, l, side);
+                    c.insert(c.end(), pieces.begin(), pieces.end());
+                }
+        }
+        return c;
+    };
+    std::vector<std::vector<double>> seamU(tows.size());
+    TowFailures failures(loops, shared, tows.size());
+    std::mutex meshedMutex;
+    std::size_t meshed = 0;
+    parallelFor(tows.size(), threads, [&](std::size_t t) {
+        failures.run(t, [&] {
+            throwIfCancelled(options.monitor);  // inside: TowFailures must pass it on
+            meshers[t] = std::make_unique<ParametricMesher>(tows[t], MeshSizes{towH[t], options.mesh.minAngle, {}});
+            meshers[t]->mesh(constraintsOf(t), {}, requests[t]);
+        });
+        if (!options.monitor) return;
+        std::lock_guard<std::mutex> lock(meshedMutex);
+        options.monitor->update("meshing tows", ++meshed, tows.size());
+    });
+    failures.throwAll();
+    int round = 1;
+    for (; round < kMaxRounds; ++round) {
+        // Every split asked for (by either tow) becomes an exact loop node; seam stations are
+        // copied to both sides by the tow itself.
+        std::vector<std::vector<ChordSplit>> splits(tows.size());
+        std::vector<std::vector<double>> newSeamU(tows.size());
+        std::set<std::pair<std::size_t, std::size_t>> chords;
+        for (std::size_t t = 0; t < tows.size(); ++t) {
+            newSeamU[t] = requests[t].seamU;
+            seamU[t].insert(seamU[t].end(), requests[t].seamU.begin(), requests[t].seamU.end());
+            for (const MeshRequests::OnLoop& q : requests[t].onLoop)
+                chords.emplace(std::min(q.a, q.b), std::max(q.a, q.b));
+        }
+        for (const auto& [a, b] : chords) {
+            // The loop this chord belongs to: of the loops through node a, the one where b follows.
+            std::size_t k = shared.size();
+            const auto range = sharedOf.equal_range(a);
+            for (auto it = range.first; it != range.second && k == shared.size(); ++it)
+                if (splitChord(loops[shared[it->second].loop], shared[it->second], a, b, 0.5, nodes)) k = it->second;
+            if (k == shared.size()) continue;
+            SharedLoop& s = shared[k];
+            const std::size_t node = nodes.size() - 1;
+            sharedOf.emplace(node, k);
+            const LoopPoint& p = s.points[static_cast<std::size_t>(std::find(s.nodes.begin(), s.nodes.end(), node) - s.nodes.begin())];
+            const IntersectionLoop& l = loops[s.loop];
+            splits[l.towA()].push_back({a, b, node, p.onA});
+            splits[l.towB()].push_back({a, b, node, p.onB});
+        }
+        std::vector<std::size_t> busy;
+        for (std::size_t t = 0; t < tows.size(); ++t)
+            if (!splits[t].empty() || !newSeamU[t].empty()) busy.push_back(t);
+        if (busy.empty()) break;
+        for (std::size_t t : busy) requests[t] = {};
+        parallelFor(busy.size(), threads, [&](std::size_t k) {
+            throwIfCancelled(options.monitor);
+            const std::size_t t = busy[k];
+            failures.run(t, [&] {
+                if (!meshers[t]->split(splits[t], newSeamU[t], requests[t])) {
+                    requests[t] = {};
+                    meshers[t]->mesh(constraintsOf(t), seamU[t], requests[t]);
+                }
+            });
+        });
+        failures.throwAll();
+    }
+    result.meshRounds = static_cast<std::size_t>(round);
+    // The final meshes, and the tows' own nodes evaluated on their surfaces.
+    std::vector<ParametricMesh> meshes(tows.size());
+    std::vector<std::vector<Point3>> ownNodes(tows.size());
+    std::vector<std::vector<Vector3>> fibre(tows.size());  // per mesher triangle (then caps)
+    parallelFor(tows.size(), threads, [&](std::size_t t) {
+        throwIfCancelled(options.monitor);
+        meshes[t] = meshers[t]->result(kLocal);
+        meshers[t].reset();
+        ownNodes[t].reserve(meshes[t].newNodes.size());
+        for (const UV& p : meshes[t].newNodes) ownNodes[t].push_back(tows[t].point(p.u, p.v));
+        fibre[t] = fibreDirections(tows[t], meshes[t].centroids);
+    });
+    // Per tow, the (u,v) of every node on its own surface: its own nodes and its loops' nodes.
+    // (Sorted by node once all are in; a node in several loops, as a triple point, keeps one.)
+    std::vector<std::vector<std::pair<std::size_t, UV>>> uvOn(tows.size());
+    for (const SharedLoop& s : shared) {
+        const IntersectionLoop& l = loops[s.loop];
+        for (std::size_t k = 0; k < s.nodes.size(); ++k) {
+            uvOn[l.towA()].emplace_back(s.nodes[k], inPeriod(s.points[k].onA, tows[l.towA()].parameterRange()));
+            uvOn[l.towB()].emplace_back(s.nodes[k], inPeriod(s.points[k].onB, tows[l.towB()].parameterRange()));
+        }
+    }
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        const std::size_t base = nodes.size();
+        for (std::size_t k = 0; k < meshes[t].newNodes.size(); ++k)
+            uvOn[t].emplace_back(base + k, inPeriod(meshes[t].newNodes[k], tows[t].parameterRange()));
+        nodes.insert(nodes.end(), ownNodes[t].begin(), ownNodes[t].end());
+        for (Triangle& tri : meshes[t].triangles)
+            for (std::size_t& n : tri)
+                if (n >= kLocal) n = base + (n - kLocal);
+        result.quality.facesOverBounds += meshes[t].badFaces;
+    }
+    // Every tow's own mesh is a tube (the mesher's rectangle closed across the seam); closed by
+    // its end caps before the regions are made, so that a cap inside another tow is shared too.
+    std::vector<std::vector<TowFace>> faceOf(tows.size());
+    for (std::size_t t = 0; t < tows.size(); ++t) faceOf[t].assign(meshes[t].triangles.size(), TowFace::Side);
+    if (options.mesh.caps) closeEnds(tows, towH, options.mesh.minAngle, threads, meshes, faceOf, nodes);
+    for (std::size_t t = 0; t < tows.size(); ++t) appendCapDirections(tows[t], faceOf[t], fibre[t]);
+
+    // The stage's result: every tow's own closed mesh over the global nodes, each of its nodes on
+    // its surface with its (u,v) there, and the loops it was made with.
+    TextileMesh& out = result.mesh;
+    out.nodes = std::move(nodes);
+    out.tows.resize(tows.size());
+    parallelFor(tows.size(), threads, [&](std::size_t t) {
+        TowMesh& m = out.tows[t];
+        m.name = tows[t].name();
+        m.triangles = std::move(meshes[t].triangles);
+        m.region.assign(m.triangles.size(), -1);
+        m.face = std::move(faceOf[t]);
+        m.fibreDirection = std::move(fibre[t]);
+        std::vector<std::pair<std::size_t, UV>>& on = uvOn[t];
+        std::stable_sort(on.begin(), on.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        on.erase(std::unique(on.begin(), on.end(), [](const auto& a, const auto& b) { return a.first == b.first; }), on.end());
+        m.parameters = std::move(on);
+    });
+    for (const SharedLoop& s : shared) out.loops.push_back({s.loop, s.nodes});
+    out.triplePoints = triples.points;
+    keepUsedNodes(out);
+    // Every tow's own mesh must be closed (a tube open at its two ends without caps), oriented
+    // and 2-manifold before any region is made of it.
+    const std::size_t ends = options.mesh.caps ? 0 : 2;
+    result.tows.resize(tows.size());
+    std::vector<std::size_t> badEdges(tows.size(), 0);
+    parallelFor(tows.size(), threads, [&](std::size_t t) {
+        TowResolution& r = result.tows[t];
+        const auto& triangles = out.tows[t].triangles;
+        const SurfaceFigures f = surfaceFigures(out.nodes, triangles);
+        r.volumeBefore = r.volumeAfter = f.volume;
+        r.area = f.area;
+        r.boundaryLoops = f.boundaryLoops;
+        badEdges[t] = f.badEdges;
+        r.pieces = connectedPieces(triangles);
+        r.meshSize = towH[t];
+    });
+    for (std::size_t t = 0; t < tows.size(); ++t)
+        if (badEdges[t] != 0 || result.tows[t].boundaryLoops != ends)
+            failures.run(t, [&] { throw Error(ErrorCode::Internal, notClosedMessage(options.mesh.caps, badEdges[t], result.tows[t].boundaryLoops)); });
+    failures.throwAll();
+    const std::size_t overBounds = result.quality.facesOverBounds;
+    result.quality = meshQuality(out);
+    result.quality.facesOverBounds = overBounds;
+    result.timings.mesh = msSince(t0);
+}
+
+}  // namespace
+
+ResolveResult meshTowsInFrame(const std::vector<TowSurface>& tows, const std::vector<double>& towH, const ResolveOptions& options,
+                              const IntersectionReport& report)
+{
+    std::set<TowPair> excluded;
+    std::vector<UnresolvedPair> unresolved;
+    for (;;) {
+        ResolveResult attempt;
+        attempt.intersections = report;
+        try {
+            meshTextile(tows, towH, options, excluded, attempt);
+        } catch (const TowMeshFailures& failed) {
+            // Every pair with loops on a failed tow is left out; the rest is meshed again.
+            std::size_t left = 0;
+            for (const TowMeshFailure& f : failed.tows) {
+                if (f.pairs.empty()) throw Error(ErrorCode::Internal, f.message, "tow '" + tows[f.tow].name() + "'");
+                for (const TowPair& p : f.pairs) {
+                    if (!excluded.insert(p).second) continue;
+                    ++left;
+                    unresolved.push_back({p.first, p.second, UnresolvedPair::Reason::MeshFailed,
+                                          "tow '" + tows[f.tow].name() + "' could not be meshed with the loops of tows '" +
+                                              tows[p.first].name() + "' and '" + tows[p.second].name() + "': " + f.message});
+                }
+            }
+            sayStage(options, "meshing again without the " + std::to_string(left) + " tow pair(s) on " +
+                                          std::to_string(failed.tows.size()) + " tow(s) whose mesh failed");
+            continue;
+        }
+        attempt.unresolved.insert(attempt.unresolved.end(), unresolved.begin(), unresolved.end());
+        return attempt;
+    }
+}
+
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

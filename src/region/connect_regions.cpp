@@ -1,0 +1,523 @@
+#include "towgeom/connect_regions.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <tuple>
+#include <utility>
+
+#include "core/glob_match.hpp"
+#include "core/parallel.hpp"
+#include "core/progress_report.hpp"
+#include "mesh/mesh_measures.hpp"
+#include "mesh/textile_mesh_finish.hpp"
+#include "region/connected_region.hpp"
+#include "region/winding_loops.hpp"
+#include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using Triangle = std::array<std::size_t, 3>;
+using TowPair = std::pair<std::size_t, std::size_t>;
+using NodeUV = std::pair<std::size_t, UV>;
+
+double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+Triangle reversed(const Triangle& t) { return {t[0], t[2], t[1]}; }
+
+/// Each tow's rank (0 first): tows whose name matches a primary pattern, then the others, each
+/// in input order. A tow gives way to every tow ranked above it.
+std::vector<std::size_t> towRanks(const std::vector<TowSurface>& tows, const std::vector<std::string>& primaryPatterns)
+{
+    std::vector<std::size_t> order(tows.size());
+    for (std::size_t t = 0; t < tows.size(); ++t) order[t] = t;
+    std::stable_partition(order.begin(), order.end(), [&](std::size_t t) {
+        return std::any_of(primaryPatterns.begin(), primaryPatterns.end(),
+                           [&](const std::string& p) { return detail::globMatch(p, tows[t].name()); });
+    });
+    std::vector<std::size_t> rank(tows.size());
+    for (std::size_t r = 0; r < order.size(); ++r) rank[order[r]] = r;
+    return rank;
+}
+
+/// The (u,v) of @p node in a tow's TowMesh::parameters (sorted by node), or null.
+const UV* uvOf(const std::vector<NodeUV>& parameters, std::size_t node)
+{
+    const auto it = std::lower_bound(parameters.begin(), parameters.end(), node,
+                                     [](const NodeUV& e, std::size_t n) { return e.first < n; });
+    return it != parameters.end() && it->first == node ? &it->second : nullptr;
+}
+
+/// @p v moved by whole periods to within half a period of @p near.
+double vNear(double v, double near, double period) { return v - period * std::round((v - near) / period); }
+
+Error badInput(const std::string& what, const std::string& context)
+{
+    return Error(ErrorCode::InvalidArgument, what + " (connectRegions() takes the result of meshTows() on the same tows)", context);
+}
+
+/// What the classification reads from meshTows()'s result, in (u,v): every loop's node polygon
+/// on both its tows (v unwrapped), every side triangle's centroid (NaN on caps).
+struct Parametric {
+    std::vector<std::array<std::vector<UV>, 2>> polygon;  ///< per TextileMesh::loops entry, on tow A and B
+    std::vector<std::vector<UV>> centroid;                 ///< per tow, per triangle
+    std::vector<bool> capped;                              ///< per tow: closed by its caps
+};
+
+/// Checks that @p meshed is meshTows()'s result for @p tows (sizes, names, node indices, the
+/// loops' and side triangles' nodes with (u,v) on their tows) and reads it in (u,v).
+Parametric readParametric(const std::vector<TowSurface>& tows, const ResolveResult& meshed)
+{
+    const TextileMesh& mesh = meshed.mesh;
+    const std::vector<IntersectionLoop>& loops = meshed.intersections.loops;
+    if (mesh.tows.size() != tows.size())
+        throw badInput("the meshes are of " + std::to_string(mesh.tows.size()) + " tows, not " + std::to_string(tows.size()), "");
+    if (!mesh.regions.empty()) throw badInput("the meshes are connected already (TextileMesh::regions is not empty)", "");
+    const std::size_t n = mesh.nodes.size();
+    Parametric p;
+    p.centroid.resize(tows.size());
+    p.capped.assign(tows.size(), false);
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        const TowMesh& m = mesh.tows[t];
+        const std::string where = "tow '" + tows[t].name() + "'";
+        if (m.name != tows[t].name()) throw badInput("the mesh of tow " + std::to_string(t) + " is named '" + m.name + "'", where);
+        const std::size_t k = m.triangles.size();
+        if (m.region.size() != k || m.face.size() != k || m.fibreDirection.size() != k)
+            throw badInput("region, face and fibreDirection must have one entry per triangle", where);
+        for (std::size_t i = 0; i < m.parameters.size(); ++i)
+            if (m.parameters[i].first >= n || (i > 0 && m.parameters[i - 1].first >= m.parameters[i].first) ||
+                !std::isfinite(m.parameters[i].second.u) || !std::isfinite(m.parameters[i].second.v))
+                throw badInput("parameters must list nodes in increasing order, each once, with finite (u,v)", where);
+    }
+    for (const TriplePoint& t : mesh.triplePoints)
+        if (t.node >= n) throw badInput("a triple point's node is out of range", "");
+    for (std::size_t k = 0; k < mesh.loops.size(); ++k) {
+        const MeshedLoop& ml = mesh.loops[k];
+        const std::string where = "loop " + std::to_string(ml.loop);
+        if (ml.loop >= loops.size() || !loops[ml.loop].closed()) throw badInput("not a closed loop of the intersection report", where);
+        if (ml.nodes.size() < 3) throw badInput("a loop needs at least 3 nodes", where);
+        const IntersectionLoop& l = loops[ml.loop];
+        if (l.towA() >= tows.size() || l.towB() >= tows.size()) throw badInput("the loop's tows are not among the tows", where);
+        std::array<std::vector<UV>, 2>& both = p.polygon.emplace_back();
+        for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+            const std::size_t t = side == LoopSide::A ? l.towA() : l.towB();
+            const double period = tows[t].parameterRange().vPeriod();
+            std::vector<UV>& out = both[side == LoopSide::A ? 0 : 1];
+            for (std::size_t node : ml.nodes) {
+                const UV* uv = node < n ? uvOf(mesh.tows[t].parameters, node) : nullptr;
+                if (!uv) throw badInput("a loop node has no (u,v) on tow '" + tows[t].name() + "'", where);
+                // v unwrapped along the loop: a loop around the tow ends one period on.
+                out.push_back({uv->u, out.empty() ? uv->v : vNear(uv->v, out.back().v, period)});
+            }
+        }
+    }
+    // Every side triangle's (u,v) centroid, v unwrapped from its first node's; the tow's (u,v)
+    // looked up by node in a table filled per tow.
+    std::vector<const UV*> at(n, nullptr);
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        const TowMesh& m = mesh.tows[t];
+        const std::string where = "tow '" + tows[t].name() + "'";
+        const std::size_t k = m.triangles.size();
+        const double period = tows[t].parameterRange().vPeriod();
+        for (const NodeUV& e : m.parameters) at[e.first] = &e.second;
+        p.centroid[t].assign(k, UV{std::nan(""), std::nan("")});
+        for (std::size_t i = 0; i < k; ++i) {
+            const Triangle& tri = m.triangles[i];
+            if (tri[0] >= n || tri[1] >= n || tri[2] >= n) throw badInput("a triangle's node is out of range", where);
+            if (m.face[i] != TowFace::Side) {
+                p.capped[t] = true;
+                continue;
+            }
+            const UV *a = at[tri[0]], *b = at[tri[1]], *c = at[tri[2]];
+            if (!a || !b || !c) throw badInput("a side triangle's node has no (u,v) on the tow", where);
+            const double vb = vNear(b->v, a->v, period), vc = vNear(c->v, a->v, period);
+            p.centroid[t][i] = {(a->u + b->u + c->u) / 3.0, (a->v + vb + vc) / 3.0};
+        }
+        for (const NodeUV& e : m.parameters) at[e.first] = nullptr;
+    }
+    return p;
+}
+
+/// A tow whose mesh after the swap is not closed, or has a triangle no region takes.
+struct TowFailure {
+    std::size_t tow = 0;
+    std::string message;
+};
+
+/// The bands of a tow cut by the loops of one pair that wind around it: the other tow, its bands
+/// and their loops' node polygons on this tow, in band order.
+struct TowBands {
+    std::size_t other = 0;
+    detail::WindingBands bands;
+    std::vector<std::size_t> loops;                // indices into TextileMesh::loops, in band order
+    std::vector<detail::WindingPolygon> polygons;  // each loop's node polygon on the tow
+};
+
+/// One classification and swap with the loops of @p meshed flagged in @p active; @p out gets the
+/// mesh, the regions and the tows' figures. Returns the tows that failed (then @p out is not
+/// complete).
+std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const ResolveResult& meshed, const Parametric& uv,
+                                const std::vector<char>& active, const ResolveOptions& options, ResolveResult& out)
+{
+    const std::size_t threads = detail::workerCount(options.threads);
+    const std::vector<IntersectionLoop>& loops = meshed.intersections.loops;
+    const TextileMesh& in = meshed.mesh;
+    const std::vector<Point3>& N = in.nodes;
+    std::vector<TowFailure> failures;
+    // The active loops ("shared" below): indices into in.loops.
+    std::vector<std::size_t> shared;
+    for (std::size_t k = 0; k < in.loops.size(); ++k)
+        if (active[k]) shared.push_back(k);
+    const auto loopOf = [&](std::size_t s) -> const IntersectionLoop& { return loops[in.loops[shared[s]].loop]; };
+    const auto polygonOf = [&](std::size_t s, LoopSide side) -> const std::vector<UV>& {
+        return uv.polygon[shared[s]][side == LoopSide::A ? 0 : 1];
+    };
+    const std::vector<std::size_t> rank = towRanks(tows, options.primaryPatterns);
+    const auto period = [&](std::size_t t) { return tows[t].parameterRange().vPeriod(); };
+    const auto pairOf = [&](std::size_t s) { return TowPair{loopOf(s).towA(), loopOf(s).towB()}; };
+    // The nesting depth of each loop among its pair's loops; the loops directly inside one of
+    // even depth are the holes of its region.
+    std::vector<std::size_t> depth(shared.size(), 0);
+    std::vector<std::vector<std::size_t>> inside(shared.size());  // the pair's loops inside each loop
+    for (std::size_t a = 0; a < shared.size(); ++a)
+        for (std::size_t b = 0; b < shared.size(); ++b) {
+            if (a == b || pairOf(a) != pairOf(b)) continue;
+            // On a tow around which neither loop winds (a loop around a tow bounds no inside there).
+            const IntersectionLoop& la = loopOf(a);
+            const IntersectionLoop& lb = loopOf(b);
+            const bool onA = !la.windsAround(LoopSide::A) && !lb.windsAround(LoopSide::A);
+            if (!onA && (la.windsAround(LoopSide::B) || lb.windsAround(LoopSide::B))) continue;
+            const LoopSide side = onA ? LoopSide::A : LoopSide::B;
+            if (detail::insideLoop(polygonOf(a, side), polygonOf(b, side).front(), period(onA ? pairOf(a).first : pairOf(a).second))) {
+                ++depth[b];
+                inside[a].push_back(b);
+            }
+        }
+    // Per tow, (triangle, loop) for every loop whose inside holds the triangle, by triangle.
+    std::vector<std::vector<std::pair<std::size_t, std::size_t>>> hits(tows.size());
+    detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
+        detail::throwIfCancelled(options.monitor);
+        for (std::size_t k = 0; k < shared.size(); ++k)
+            for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+                const IntersectionLoop& l = loopOf(k);
+                if ((side == LoopSide::A ? l.towA() : l.towB()) != t || l.windsAround(side)) continue;  // bands: below
+                for (std::size_t tri : detail::trianglesInside(uv.centroid[t], polygonOf(k, side), period(t)))
+                    hits[t].emplace_back(tri, k);
+            }
+        std::sort(hits[t].begin(), hits[t].end());
+    });
+    // One region per loop of even depth, primary the higher-ranked tow of its pair.
+    std::vector<long> regionOf(shared.size(), -1);
+    std::vector<ConnectedRegion> regions;
+    std::vector<std::vector<Triangle>> lens;  // per region: both tows' surfaces inside the loop
+    for (std::size_t k = 0; k < shared.size(); ++k) {
+        if (depth[k] % 2 == 1) continue;  // a hole of the region around it
+        const auto [a, b] = pairOf(k);
+        ConnectedRegion r;
+        r.primary = rank[a] < rank[b] ? a : b;
+        r.secondary = rank[a] < rank[b] ? b : a;
+        r.loop = in.loops[shared[k]].loop;
+        for (std::size_t h : inside[k])
+            if (depth[h] == depth[k] + 1) r.holes.push_back(in.loops[shared[h]].loop);
+        r.loopNodes = in.loops[shared[k]].nodes;
+        regionOf[k] = static_cast<long>(regions.size());
+        regions.push_back(std::move(r));
+        lens.emplace_back();
+    }
+    // Loops that wind around a tow (it passes through the other tow, or ends inside it) cut it
+    // into bands alternately inside and outside the other.
+    std::vector<std::vector<TowBands>> bandsOn(tows.size());
+    std::set<TowPair> bandPairs;
+    {
+        std::map<TowPair, std::vector<std::size_t>> winding;  // (t, o) -> its loops winding around t, by index in shared
+        for (std::size_t k = 0; k < shared.size(); ++k) {
+            const IntersectionLoop& l = loopOf(k);
+            if (l.windsAround(LoopSide::A) && l.windsAround(LoopSide::B)) continue;
+            if (l.windsAround(LoopSide::A)) winding[{l.towA(), l.towB()}].push_back(k);
+            if (l.windsAround(LoopSide::B)) winding[{l.towB(), l.towA()}].push_back(k);
+        }
+        for (const auto& [to, list] : winding) {
+            std::vector<std::size_t> reportLoops;
+            for (std::size_t k : list) reportLoops.push_back(in.loops[shared[k]].loop);
+            std::optional<detail::WindingBands> b = detail::windingBands(tows, to.first, to.second, loops, reportLoops);
+            if (!b) {
+                failures.push_back({to.first, "its loops with tow '" + tows[to.second].name() +
+                                                  "' go around it but do not cut it into bands alternately inside and outside"});
+                continue;
+            }
+            TowBands tb{to.second, std::move(*b), {}, {}};
+            for (const std::size_t l : tb.bands.loops) {
+                const std::size_t k = *std::find_if(list.begin(), list.end(), [&](std::size_t s) { return in.loops[shared[s]].loop == l; });
+                tb.loops.push_back(k);
+                tb.polygons.emplace_back(polygonOf(k, loops[l].towA() == to.first ? LoopSide::A : LoopSide::B));
+            }
+            bandPairs.insert(std::minmax(to.first, to.second));
+            bandsOn[to.first].push_back(std::move(tb));
+        }
+    }
+    if (!failures.empty()) return failures;
+    std::map<TowPair, std::size_t> windingRegionLoop;  // pair -> its first loop around a tow
+    for (std::size_t k = 0; k < shared.size(); ++k) {
+        const IntersectionLoop& l = loopOf(k);
+        if ((l.windsAround(LoopSide::A) || l.windsAround(LoopSide::B)) && regionOf[k] >= 0) windingRegionLoop.try_emplace(pairOf(k), k);
+    }
+    std::vector<std::vector<char>> removed(tows.size());
+    std::vector<std::vector<long>> region(tows.size());
+    // Per tow, the triangles of lower-ranked tows' surfaces it gets: (triangle, region, fibre
+    // direction of the surface it lies on).
+    std::vector<std::vector<std::tuple<Triangle, long, Vector3>>> inserted(tows.size());
+    std::vector<char> failed(tows.size(), 0);
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        const TowMesh& mesh = in.tows[t];
+        removed[t].assign(mesh.triangles.size(), 0);
+        region[t].assign(mesh.triangles.size(), -1);
+        const auto& h = hits[t];
+        const double uMin = tows[t].parameterRange().uMin;
+        std::size_t next = 0;  // into hits, sorted by triangle
+        for (std::size_t tri = 0; tri < mesh.triangles.size(); ++tri) {
+            const std::size_t first = next;
+            while (next < h.size() && h[next].first == tri) ++next;
+            if (first == next && bandsOn[t].empty()) {  // inside no loop: skip ahead
+                tri = next < h.size() ? h[next].first - 1 : mesh.triangles.size();
+                continue;
+            }
+            // The tows it lies inside, each with its pair's deepest loop around it.
+            std::map<std::size_t, std::pair<std::size_t, std::size_t>> within;  // tow -> (loops around it, deepest)
+            for (std::size_t q = first; q < next; ++q) {
+                const std::size_t k = h[q].second;
+                const auto [a, b] = pairOf(k);
+                auto& [count, deepest] = within.try_emplace(a == t ? b : a, 0, k).first->second;
+                ++count;
+                if (depth[k] > depth[deepest]) deepest = k;
+            }
+            // Bands: inside the other tow when an odd number of its winding loops lie between the
+            // tow's start and the triangle, unless the start is inside; caps in the end bands.
+            for (const TowBands& b : bandsOn[t]) {
+                const std::size_t n = b.loops.size();
+                std::size_t passed = 0;
+                if (mesh.face[tri] == TowFace::End)
+                    passed = n;
+                else if (mesh.face[tri] == TowFace::Side)
+                    passed = detail::loopsBefore(b.polygons, uv.centroid[t][tri], uMin, period(t));
+                if (b.bands.startInside == (passed % 2 == 1)) continue;  // outside o there
+                const std::size_t bounding = b.loops[passed > 0 ? std::min(passed, n) - 1 : 0];
+                auto [it, added] = within.try_emplace(b.other, 1, bounding);
+                if (!added) {
+                    ++it->second.first;
+                    if (it->second.first % 2 == 1 && regionOf[it->second.second] < 0) it->second.second = bounding;
+                }
+            }
+            // Inside by parity but its deepest loop is a hole (a loop nested in a loop around a
+            // tow, whose nesting was taken on the other tow): the pair's band region.
+            for (auto& [o, c] : within)
+                if (c.first % 2 == 1 && regionOf[c.second] < 0)
+                    if (const auto w = windingRegionLoop.find(std::minmax(t, o)); w != windingRegionLoop.end()) c.second = w->second;
+            std::size_t top = tows.size();  // the highest-ranked tow it lies inside
+            for (const auto& [o, c] : within)
+                if (c.first % 2 == 1 && (top == tows.size() || rank[o] < rank[top])) top = o;
+            for (const auto& [o, c] : within)
+                if (c.first % 2 == 1 && regionOf[c.second] >= 0) lens[static_cast<std::size_t>(regionOf[c.second])].push_back(mesh.triangles[tri]);
+            if (top == tows.size()) continue;
+            if (rank[top] < rank[t]) {
+                removed[t][tri] = 1;
+            } else {
+                const long id = regionOf[within[top].second];
+                if (id < 0) {
+                    if (!failed[t]) failures.push_back({t, "a triangle inside an odd number of loops has no region"});
+                    failed[t] = 1;
+                    continue;
+                }
+                const Triangle& triangle = mesh.triangles[tri];
+                region[t][tri] = id;
+                ConnectedRegion& r = regions[static_cast<std::size_t>(id)];
+                r.triangles.push_back(tri);
+                r.area += detail::triangleArea(N, triangle);
+                inserted[top].emplace_back(reversed(triangle), id, mesh.fibreDirection[tri]);
+            }
+        }
+    }
+    if (!failures.empty()) return failures;
+    // A tow through another (or ending inside it): its loops bound one overlap together, whose
+    // volume goes to the pair's first region that kept triangles.
+    for (const TowPair& pair : bandPairs) {
+        std::vector<Triangle> all;
+        long keep = -1;
+        for (std::size_t k = 0; k < shared.size(); ++k) {
+            if (pairOf(k) != pair || regionOf[k] < 0) continue;
+            const std::size_t g = static_cast<std::size_t>(regionOf[k]);
+            all.insert(all.end(), lens[g].begin(), lens[g].end());
+            lens[g].clear();
+            if (keep < 0 && !regions[g].triangles.empty()) keep = regionOf[k];
+        }
+        if (keep >= 0) lens[static_cast<std::size_t>(keep)] = std::move(all);
+    }
+    // Regions that kept triangles (a loop's surface may lie wholly inside a higher-ranked tow),
+    // renumbered in loop order.
+    out.tows.assign(tows.size(), TowResolution{});
+    std::vector<long> renumbered(regions.size(), -1);
+    for (std::size_t g = 0; g < regions.size(); ++g) {
+        ConnectedRegion& r = regions[g];
+        if (r.triangles.empty()) continue;
+        std::set<std::size_t> regionNodes;
+        for (std::size_t k : r.triangles) {
+            const Triangle& tri = in.tows[r.primary].triangles[k];
+            regionNodes.insert(tri.begin(), tri.end());
+        }
+        r.nodes.assign(regionNodes.begin(), regionNodes.end());
+        // The loop's nodes around this region: where a higher-ranked tow covers part of the
+        // loop, its nodes there belong to no triangle of the region.
+        std::vector<std::size_t> around;
+        for (std::size_t n : r.loopNodes)
+            if (regionNodes.count(n)) around.push_back(n);
+        r.loopNodes = std::move(around);
+        // Both tows' surfaces inside the loop bound the two tows' overlap there, facing out of
+        // it: its volume.
+        r.volumeRemoved = std::abs(detail::signedVolume(N, lens[g]));
+        out.tows[r.primary].primaryAnywhere = true;
+        out.tows[r.secondary].secondaryAnywhere = true;
+        renumbered[g] = static_cast<long>(out.mesh.regions.size());
+        out.mesh.regions.push_back(std::move(r));
+    }
+    for (auto& ids : region)
+        for (long& id : ids)
+            if (id >= 0) id = renumbered[static_cast<std::size_t>(id)];
+    for (auto& list : inserted)
+        for (auto& entry : list) std::get<1>(entry) = renumbered[static_cast<std::size_t>(std::get<1>(entry))];
+    out.mesh.tows.resize(tows.size());
+    std::vector<std::vector<std::size_t>> placeOf(tows.size());  // input triangle -> its place in the tow's mesh
+    detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
+        const TowMesh& mesh = in.tows[t];
+        TowMesh& m = out.mesh.tows[t];
+        m.name = mesh.name;
+        placeOf[t].assign(mesh.triangles.size(), SIZE_MAX);
+        for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
+            if (removed[t][k]) continue;
+            placeOf[t][k] = m.triangles.size();
+            m.triangles.push_back(mesh.triangles[k]);
+            m.region.push_back(region[t][k]);
+            m.face.push_back(mesh.face[k]);
+            m.fibreDirection.push_back(mesh.fibreDirection[k]);
+        }
+        for (const auto& [tri, id, direction] : inserted[t]) {  // another tow's surface (or cap): this tow's side
+            m.triangles.push_back(tri);
+            m.region.push_back(id);
+            m.face.push_back(TowFace::Side);
+            m.fibreDirection.push_back(direction);
+        }
+        // Its nodes on its own surface, with their (u,v).
+        std::vector<std::size_t> used;
+        used.reserve(3 * m.triangles.size());
+        for (const Triangle& tri : m.triangles) used.insert(used.end(), tri.begin(), tri.end());
+        std::sort(used.begin(), used.end());
+        used.erase(std::unique(used.begin(), used.end()), used.end());
+        auto at = mesh.parameters.begin();
+        for (std::size_t n : used) {
+            while (at != mesh.parameters.end() && at->first < n) ++at;
+            if (at != mesh.parameters.end() && at->first == n) m.parameters.push_back(*at);
+        }
+    });
+    // A region's triangles by their place in the primary's final mesh (it keeps them all).
+    for (ConnectedRegion& r : out.mesh.regions)
+        for (std::size_t& k : r.triangles) k = placeOf[r.primary][k];
+    // Every tow must still be closed (a tube open at its two ends without caps), oriented and
+    // 2-manifold; anything else is a defect, never written out.
+    std::vector<std::size_t> badEdges(tows.size(), 0);
+    detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
+        TowResolution& r = out.tows[t];
+        const auto& triangles = out.mesh.tows[t].triangles;
+        // Its own mesh's volume: closed by its caps, or open at its two ends (closed by fans);
+        // either way checked with the mesh after the swap below.
+        r.volumeBefore = uv.capped[t] ? detail::signedVolume(N, in.tows[t].triangles) : detail::closedVolume(N, in.tows[t].triangles);
+        const detail::SurfaceFigures f = detail::surfaceFigures(N, triangles);
+        r.volumeAfter = f.volume;
+        r.area = f.area;
+        r.boundaryLoops = f.boundaryLoops;
+        badEdges[t] = f.badEdges;
+        r.pieces = detail::connectedPieces(triangles);
+        if (t < meshed.tows.size()) r.meshSize = meshed.tows[t].meshSize;
+    });
+    for (std::size_t t = 0; t < tows.size(); ++t)
+        if (badEdges[t] != 0 || out.tows[t].boundaryLoops != (uv.capped[t] ? 0u : 2u))
+            failures.push_back({t, detail::notClosedMessage(uv.capped[t], badEdges[t], out.tows[t].boundaryLoops)});
+    if (!failures.empty()) return failures;
+    // The loops resolved, and the triple points whose three pairs were: a node of all three
+    // tows' meshes.
+    for (std::size_t k : shared) out.mesh.loops.push_back(in.loops[k]);
+    std::map<std::size_t, std::set<std::size_t>> towsAt;  // triple node -> the tows using it
+    for (const TriplePoint& p : in.triplePoints) towsAt[p.node];
+    for (std::size_t t = 0; t < tows.size() && !towsAt.empty(); ++t)
+        for (const Triangle& tri : out.mesh.tows[t].triangles)
+            for (std::size_t n : tri)
+                if (const auto it = towsAt.find(n); it != towsAt.end()) it->second.insert(t);
+    for (const TriplePoint& p : in.triplePoints) {
+        const std::set<std::size_t>& at = towsAt[p.node];
+        if (at.count(p.tows[0]) && at.count(p.tows[1]) && at.count(p.tows[2])) out.mesh.triplePoints.push_back(p);
+    }
+    out.mesh.nodes = N;
+    return failures;
+}
+
+}  // namespace
+
+ResolveResult connectRegions(const std::vector<TowSurface>& tows, ResolveResult meshed, const ResolveOptions& options)
+{
+    const Clock::time_point t0 = Clock::now();
+    const Parametric uv = readParametric(tows, meshed);
+    detail::sayStage(options, "connecting " + std::to_string(meshed.mesh.loops.size()) + " regions");
+    // A tow that is not closed after the swap costs the tow pairs with loops on it: their loops
+    // are left out of the regions (their nodes stay in the meshes) and the rest is connected again.
+    std::vector<char> active(meshed.mesh.loops.size(), 1);
+    std::vector<UnresolvedPair> unresolved;
+    for (;;) {
+        ResolveResult out;
+        const std::vector<TowFailure> failures = connect(tows, meshed, uv, active, options, out);
+        if (failures.empty()) {
+            detail::keepUsedNodes(out.mesh);
+            out.quality = detail::meshQuality(out.mesh);
+            out.quality.facesOverBounds = meshed.quality.facesOverBounds;
+            out.intersections = std::move(meshed.intersections);
+            out.skippedLoops = std::move(meshed.skippedLoops);
+            out.unresolved = std::move(meshed.unresolved);
+            out.unresolved.insert(out.unresolved.end(), unresolved.begin(), unresolved.end());
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"  // ResolveResult::skipped, until 0.3
+            out.skipped = std::move(meshed.skipped);
+#pragma GCC diagnostic pop
+            out.meshRounds = meshed.meshRounds;
+            out.timings = meshed.timings;
+            out.timings.regions = msSince(t0);
+            return out;
+        }
+        std::size_t left = 0;
+        for (const TowFailure& f : failures) {
+            std::set<TowPair> pairs;
+            for (std::size_t k = 0; k < active.size(); ++k) {
+                const IntersectionLoop& l = meshed.intersections.loops[meshed.mesh.loops[k].loop];
+                if (!active[k] || (l.towA() != f.tow && l.towB() != f.tow)) continue;
+                active[k] = 0;
+                pairs.emplace(l.towA(), l.towB());
+            }
+            if (pairs.empty()) throw Error(ErrorCode::Internal, f.message, "tow '" + tows[f.tow].name() + "'");
+            for (const TowPair& p : pairs) {
+                ++left;
+                unresolved.push_back({p.first, p.second, UnresolvedPair::Reason::RegionFailed,
+                                      "tow '" + tows[f.tow].name() + "' could not be connected with the loops of tows '" +
+                                          tows[p.first].name() + "' and '" + tows[p.second].name() + "': " + f.message});
+            }
+        }
+        detail::sayStage(options, "connecting again without the " + std::to_string(left) + " tow pair(s) on " +
+                                      std::to_string(failures.size()) + " tow(s) whose regions failed");
+    }
+}
+
+TOWGEOM_END_NAMESPACE
