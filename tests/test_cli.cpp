@@ -148,7 +148,7 @@ TEST_CASE("towgeom generate writes a textile and flattens it to just touching", 
     REQUIRE(r.status == 0);
     CHECK(r.out.find("\"collisions\":{\"yarn_pairs\":0,") != std::string::npos);
     CHECK(r.out.find("\"collisions_before_flattening\":{\"yarn_pairs\":16,") != std::string::npos);
-    CHECK(r.out.find("\"crossings\":16,\"per_crossing\":[{\"warp\":\"warp_0\",\"weft\":\"weft_0\",\"x\":0,\"y\":0,") !=
+    CHECK(r.out.find("\"crossings\":16,\"per_crossing\":[{\"warp\":\"warp_0\",\"weft\":\"weft_0\",\"x\":0.0,\"y\":0.0,") !=
           std::string::npos);
     CHECK(jsonNumber(r.out, "flattened_crossings") == 16);
     CHECK(jsonNumber(r.out, "max_gap") <= 1e-4);

@@ -240,6 +240,10 @@ TEST_CASE("connectRegions: a pair whose loop is wrong on one tow is left unresol
     CHECK(openTows(r) == 0);
     // The failed tow keeps its own surface whole (its loop nodes stay in its mesh).
     CHECK(r.tows[failed].volumeAfter == Approx(r.tows[failed].volumeBefore).epsilon(1e-12));
+    // The reports list the pairs with code region_failed.
+    const std::vector<UnresolvedPairEntry> listed = unresolvedPairs(r);
+    CHECK(listed.size() == pairs);
+    for (const UnresolvedPairEntry& e : listed) CHECK(e.code == "region_failed");
 }
 
 TEST_CASE("connectRegions refuses meshes that do not fit the tows, naming the tow or loop", "[stages][connect]")
@@ -578,4 +582,51 @@ TEST_CASE("intersection loops from the host's own points: refined onto both surf
           ErrorCode::InvalidArgument);
     CHECK(codeOf([&] { intersectionLoopFromPoints(tows, 5, 2, {}, true); }) == ErrorCode::InvalidArgument);
     CHECK(codeOf([&] { intersectionLoopFromPoints(tows, 0, 4, {Point3{}, Point3{1, 0, 0}}, true); }) == ErrorCode::InvalidArgument);
+}
+
+TEST_CASE("reports: writeResolveReport and writeDetectReport give the CLI's JSON, numbers exact, bad input refused", "[stages][report]")
+{
+    const std::vector<TowSurface> tows = bundledTwill();
+    const IntersectionReport found = intersectTows(tows);
+    const ResolveResult r = resolveTextile(tows, found, atSize(0.3));
+    std::ostringstream out;
+    ResolveReportOptions written;
+    written.times.read = 1.5;  // the caller's stage; fit, write and total are left out
+    writeResolveReport(r, tows, out, written);
+    const nlohmann::json j = nlohmann::json::parse(out.str());
+    REQUIRE(j["tows"].size() == 8);
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        CHECK(j["tows"][t]["name"] == tows[t].name());
+        CHECK(j["tows"][t]["volume_after"].get<double>() == r.tows[t].volumeAfter);  // round trip, bit for bit
+        CHECK(j["tows"][t]["triangles"] == r.mesh.tows[t].triangles.size());
+    }
+    CHECK(j["regions"].size() == 16);
+    CHECK(j["loops"].size() == 16);
+    CHECK(j["unresolved"].empty());
+    CHECK(j["node_count"] == r.mesh.nodes.size());
+    CHECK(j["mesh_quality"]["min_angle_deg"].get<double>() == r.quality.minAngle);
+    CHECK(j["timings_ms"]["read"] == 1.5);
+    CHECK(!j["timings_ms"].contains("fit"));
+    CHECK(j["timings_ms"].contains("mesh"));
+
+    std::ostringstream detect;
+    DetectReportOptions spaced;
+    spaced.spacing = 0.05;
+    writeDetectReport(found, tows, detect, spaced);
+    const nlohmann::json d = nlohmann::json::parse(detect.str());
+    REQUIRE(d["loops"].size() == 16);
+    for (std::size_t k = 0; k < 16; ++k) {
+        // Resampled at 0.05: about length / 0.05 points.
+        const double expected = found.loops[k].length() / 0.05;
+        CHECK(d["loops"][k]["point_count"].get<double>() == Approx(expected).margin(2.0));
+        CHECK(d["loops"][k]["length"].get<double>() == found.loops[k].length());
+    }
+    CHECK(d["tow_pairs"] == found.towPairs);
+
+    // The result of other tows is refused, and nothing is written.
+    std::ostringstream none;
+    const std::vector<TowSurface> fewer(tows.begin(), tows.end() - 1);
+    CHECK(codeOf([&] { writeResolveReport(r, fewer, none); }) == ErrorCode::InvalidArgument);
+    CHECK(codeOf([&] { writeDetectReport(found, fewer, none); }) == ErrorCode::InvalidArgument);
+    CHECK(none.str().empty());
 }

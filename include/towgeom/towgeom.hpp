@@ -20,6 +20,7 @@
 #include "towgeom/mesh_export.hpp"
 #include "towgeom/mesh_options.hpp"
 #include "towgeom/point.hpp"
+#include "towgeom/report.hpp"
 #include "towgeom/resolve.hpp"
 #include "towgeom/mesh_tows.hpp"
 #include "towgeom/connect_regions.hpp"

@@ -7,10 +7,8 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "cli/tow_input.hpp"
-#include "cli/loop_json.hpp"
 #include "cli/progress_printer.hpp"
 #include "cli/unresolved_pairs.hpp"
-#include "core/json_writer.hpp"
 #include "towgeom/towgeom.hpp"
 
 namespace towgeom::cli {
@@ -111,30 +109,20 @@ int runDetect(int argc, char** argv, int first)
         if (const auto path = args.value("save-report")) writeIntersectionReport(report, surfaces, *path);
 
         std::ostringstream out;
-        detail::JsonWriter json(out);
-        json.beginObject();
-        writeLoopsJson(json, report, surfaces, spacing, options.threads);
-        writeFindingsJson(json, report, surfaces);
-        json.key("tow_pairs").value(report.towPairs);
-        json.key("pairs_tested").value(report.pairsTested);
-        json.key("window_pairs").value(report.windowPairs);
-        json.key("seeds").value(report.seeds);
-        json.key("walks").value(report.walks);
-        json.key("timings_ms").beginObject();
-        json.key("read").value(readMs);
-        json.key("fit").value(fitMs);
-        json.key("broad_phase").value(report.timings.broadPhase);
-        json.key("exact").value(report.timings.exact);
-        json.key("total").value(msSince(start));
-        json.endObject();
-        json.endObject();
-        std::cout << out.str() << "\n";
+        DetectReportOptions written;
+        written.spacing = spacing;
+        written.threads = options.threads;
+        written.times.read = readMs;
+        written.times.fit = fitMs;
+        written.times.total = msSince(start);
+        writeDetectReport(report, surfaces, out, written);
+        std::cout << out.str();
 
         if (!quiet)
             std::cerr << "towgeom detect: " << report.loops.size() << " intersection curves (" << report.openCount()
                       << " open) among " << report.pairsTested << " candidate tow pairs\n";
         // Warnings, not progress: printed whatever --quiet says.
-        const std::vector<UnresolvedEntry> unresolved = unresolvedPairs(report);
+        const std::vector<UnresolvedPairEntry> unresolved = unresolvedPairs(report);
         reportContacts("detect", report, surfaces);
         reportUnresolved("detect", unresolved, surfaces);
         return exitsUnresolved(unresolved, args.has("allow-open")) ? kExitUnresolved : kExitOk;

@@ -7,7 +7,7 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "cli/tow_input.hpp"
-#include "core/json_writer.hpp"
+#include "cli/json_text.hpp"
 #include "io/output_files.hpp"
 #include "towgeom/towgeom.hpp"
 
@@ -152,32 +152,28 @@ int runFit(int argc, char** argv, int first)
         };
         std::vector<Figures> figures;
         for (const TowSurface& s : surfaces) figures.push_back({s.deviation(), s.volume(), s.facetedVolume(), s.area()});
-        std::ostringstream report;
-        detail::JsonWriter json(report);
-        json.beginObject().key("tows").beginArray();
+        Json towList = Json::array();
         for (std::size_t k = 0; k < surfaces.size(); ++k) {
             const TowSurface& s = surfaces[k];
-            json.beginObject();
-            json.key("name").value(s.name());
-            json.key("mode").value(fitModeName(s.mode()));
-            json.key("sections").value(s.sectionCount());
-            json.key("points").value(s.pointsPerSection());
-            json.key("control_points").beginArray().value(s.controlPointCount(true)).value(s.controlPointCount(false)).endArray();
-            json.key("max_deviation").value(figures[k].deviation.max);
-            json.key("rms_deviation").value(figures[k].deviation.rms);
-            json.key("volume").value(figures[k].volume);
-            json.key("faceted_volume").value(figures[k].faceted);
-            json.key("area").value(figures[k].area);
-            json.key("reversed").value(s.inputReversed());
             std::size_t shifted = 0;
-            for (const std::size_t k : s.startShifts()) shifted += k != 0;
-            json.key("shifted_sections").value(shifted);
-            json.key("start_shifts").beginArray();
-            for (const std::size_t k : s.startShifts()) json.value(k);
-            json.endArray();
-            json.endObject();
+            for (const std::size_t n : s.startShifts()) shifted += n != 0;
+            Json t;
+            t["name"] = s.name();
+            t["mode"] = fitModeName(s.mode());
+            t["sections"] = s.sectionCount();
+            t["points"] = s.pointsPerSection();
+            t["control_points"] = {s.controlPointCount(true), s.controlPointCount(false)};
+            t["max_deviation"] = figures[k].deviation.max;
+            t["rms_deviation"] = figures[k].deviation.rms;
+            t["volume"] = figures[k].volume;
+            t["faceted_volume"] = figures[k].faceted;
+            t["area"] = figures[k].area;
+            t["reversed"] = s.inputReversed();
+            t["shifted_sections"] = shifted;
+            t["start_shifts"] = s.startShifts();
+            towList.push_back(std::move(t));
         }
-        json.endArray().endObject();
+        const std::string report = jsonText({{"tows", std::move(towList)}});
 
         if (outDir) {
             detail::OutputFiles files;
@@ -190,8 +186,7 @@ int runFit(int argc, char** argv, int first)
             }
             files.commit();
         }
-        std::cout << report.str();
-        std::cout << "\n";
+        std::cout << report << "\n";
         return kExitOk;
     } catch (const std::exception& e) {
         return reportError("fit", e);

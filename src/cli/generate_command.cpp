@@ -6,7 +6,7 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
-#include "core/json_writer.hpp"
+#include "cli/json_text.hpp"
 #include "towgeom/towgeom.hpp"
 
 namespace towgeom::cli {
@@ -158,34 +158,29 @@ TextileOutput parseFaceted(const std::optional<std::string>& text)
     return out;
 }
 
-void writeCollisions(detail::JsonWriter& json, const Textile& textile, const std::vector<TowStack>& stacks,
-                     const CollisionReport& report)
+Json collisionsJson(const Textile& textile, const std::vector<TowStack>& stacks, const CollisionReport& report)
 {
     const std::vector<std::size_t> perCrossing = collisionsPerCrossing(textile, stacks, report);
-    json.beginObject();
-    json.key("yarn_pairs").value(report.collisions.size());
-    json.key("triangle_pairs").value(report.trianglePairCount());
-    json.key("crossings").value(static_cast<std::size_t>(
-        std::count_if(perCrossing.begin(), perCrossing.end(), [](std::size_t n) { return n > 0; })));
-    json.key("per_crossing").beginArray();
+    Json j;
+    j["yarn_pairs"] = report.collisions.size();
+    j["triangle_pairs"] = report.trianglePairCount();
+    j["crossings"] = static_cast<std::size_t>(std::count_if(perCrossing.begin(), perCrossing.end(), [](std::size_t n) { return n > 0; }));
+    Json crossings = Json::array();
     for (std::size_t c = 0; c < perCrossing.size(); ++c) {
         if (perCrossing[c] == 0) continue;
         const Crossing& x = textile.crossings[c];
-        json.beginObject();
-        json.key("warp").value(textile.yarns[x.warp].name).key("weft").value(textile.yarns[x.weft].name);
-        json.key("x").value(x.position.x).key("y").value(x.position.y);
-        json.key("triangle_pairs").value(perCrossing[c]);
-        json.endObject();
+        crossings.push_back({{"warp", textile.yarns[x.warp].name},
+                             {"weft", textile.yarns[x.weft].name},
+                             {"x", x.position.x},
+                             {"y", x.position.y},
+                             {"triangle_pairs", perCrossing[c]}});
     }
-    json.endArray();
-    json.key("pairs").beginArray();
-    for (const YarnCollision& c : report.collisions) {
-        json.beginObject();
-        json.key("a").value(textile.yarns[c.yarnA].name).key("b").value(textile.yarns[c.yarnB].name);
-        json.key("triangle_pairs").value(c.triangles.size());
-        json.endObject();
-    }
-    json.endArray().endObject();
+    j["per_crossing"] = std::move(crossings);
+    Json pairs = Json::array();
+    for (const YarnCollision& c : report.collisions)
+        pairs.push_back({{"a", textile.yarns[c.yarnA].name}, {"b", textile.yarns[c.yarnB].name}, {"triangle_pairs", c.triangles.size()}});
+    j["pairs"] = std::move(pairs);
+    return j;
 }
 
 }  // namespace
@@ -229,30 +224,26 @@ int runGenerate(int argc, char** argv, int first)
         }
         writeTextile(textile, *out, faceted);
 
-        detail::JsonWriter json(std::cout);
-        json.beginObject();
-        json.key("weave").value(weaveKindName(options.kind));
-        json.key("yarns").beginArray();
-        for (const GeneratedYarn& y : textile.yarns) json.value(y.name);
-        json.endArray();
-        json.key("crossings").value(textile.crossings.size());
-        json.key("collisions");
-        writeCollisions(json, textile, stacksAfter, after);
+        Json j;
+        j["weave"] = weaveKindName(options.kind);
+        Json yarns = Json::array();
+        for (const GeneratedYarn& y : textile.yarns) yarns.push_back(y.name);
+        j["yarns"] = std::move(yarns);
+        j["crossings"] = textile.crossings.size();
+        j["collisions"] = collisionsJson(textile, stacksAfter, after);
         if (tau) {
-            json.key("collisions_before_flattening");
-            writeCollisions(json, textile, stacksBefore, before);
+            j["collisions_before_flattening"] = collisionsJson(textile, stacksBefore, before);
             double maxGap = 0.0;
             std::size_t flattened = 0;
             for (const CrossingResponse& r : responses) {
                 maxGap = std::max(maxGap, r.gap);
                 flattened += r.collided;
             }
-            json.key("flattened_crossings").value(flattened);
-            json.key("max_gap").value(maxGap);
+            j["flattened_crossings"] = flattened;
+            j["max_gap"] = maxGap;
         }
-        json.key("seconds").value(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-        json.endObject();
-        std::cout << "\n";
+        j["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::cout << jsonText(j) << "\n";
         return kExitOk;
     } catch (const std::exception& e) {
         return reportError("generate", e);

@@ -8,11 +8,9 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
-#include "cli/loop_json.hpp"
 #include "cli/progress_printer.hpp"
 #include "cli/tow_input.hpp"
 #include "cli/unresolved_pairs.hpp"
-#include "core/json_writer.hpp"
 #include "core/parallel.hpp"
 #include "io/output_files.hpp"
 #include "towgeom/towgeom.hpp"
@@ -117,18 +115,6 @@ Example:
   (then open resolved/*.vtk in ParaView and colour by region_id)
 )";
 
-/// The report.json code of a skipped loop's reason.
-const char* skipCode(SkippedLoop::Reason r)
-{
-    switch (r) {
-    case SkippedLoop::Reason::OpenCurve: return "open_curve";
-    case SkippedLoop::Reason::AroundBothTows: return "around_both_tows";
-    case SkippedLoop::Reason::AroundTowWithoutCaps: return "around_tow_without_caps";
-    case SkippedLoop::Reason::BandsDoNotAlternate: return "bands_do_not_alternate";
-    }
-    return "open_curve";
-}
-
 double msSince(std::chrono::steady_clock::time_point t0)
 {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -145,14 +131,6 @@ std::set<std::string> parseFormats(const std::optional<std::string>& text)
     }
     if (formats.empty()) throw UsageError("--formats needs at least one of stl, vtk, msh, inp");
     return formats;
-}
-
-const char* roleOf(const TowResolution& r)
-{
-    if (r.primaryAnywhere && r.secondaryAnywhere) return "both";
-    if (r.primaryAnywhere) return "primary";
-    if (r.secondaryAnywhere) return "secondary";
-    return "none";
 }
 
 }  // namespace
@@ -211,67 +189,7 @@ int runResolve(int argc, char** argv, int first)
 
         // Everything is computed before anything is written.
         t0 = std::chrono::steady_clock::now();
-        std::ostringstream report;
-        detail::JsonWriter json(report);
-        json.beginObject().key("tows").beginArray();
-        for (std::size_t t = 0; t < tows.size(); ++t) {
-            const TowResolution& r = result.tows[t];
-            json.beginObject();
-            json.key("name").value(tows[t].name());
-            json.key("role").value(roleOf(r));
-            json.key("volume_before").value(r.volumeBefore);
-            json.key("volume_after").value(r.volumeAfter);
-            json.key("area").value(r.area);
-            json.key("triangles").value(mesh.tows[t].triangles.size());
-            json.key("boundary_loops").value(r.boundaryLoops);
-            json.key("pieces").value(r.pieces);
-            json.key("mesh_size").value(r.meshSize);
-            json.endObject();
-        }
-        json.endArray();
-        writeLoopsJson(json, result.intersections, tows, 0.0, options.threads);
-        writeFindingsJson(json, result.intersections, tows);
-        const std::vector<UnresolvedEntry> unresolved = unresolvedPairs(result);
-        writeUnresolvedJson(json, unresolved, tows);
-        json.key("regions").beginArray();
-        for (const ConnectedRegion& g : mesh.regions) {
-            json.beginObject();
-            json.key("primary").value(tows[g.primary].name());
-            json.key("secondary").value(tows[g.secondary].name());
-            json.key("triangles").value(g.triangles.size());
-            json.key("nodes").value(g.nodes.size());
-            json.key("area").value(g.area);
-            json.key("volume_removed").value(g.volumeRemoved);
-            json.endObject();
-        }
-        json.endArray();
-        json.key("triple_points").beginArray();
-        for (const TriplePoint& p : mesh.triplePoints) {
-            json.beginObject().key("tows").beginArray();
-            for (const std::size_t t : p.tows) json.value(tows[t].name());
-            json.endArray().key("node").value(p.node);
-            const Point3& x = mesh.nodes[p.node];
-            json.key("point").beginArray().value(x.x).value(x.y).value(x.z).endArray().endObject();
-        }
-        json.endArray();
-        json.key("skipped").beginArray();
-        for (const SkippedLoop& s : result.skippedLoops) {
-            const IntersectionLoop& l = result.intersections.loops[s.loop];
-            json.beginObject().key("tow_a").value(tows[l.towA()].name()).key("tow_b").value(tows[l.towB()].name());
-            json.key("code").value(skipCode(s.reason)).key("reason").value(s.message).endObject();
-        }
-        json.endArray();
-        json.key("node_count").value(mesh.nodes.size());
-        json.key("mesh_quality").beginObject();
-        json.key("min_angle_deg").value(result.quality.minAngle);
-        json.key("angle_histogram").beginArray();
-        for (std::size_t c : result.quality.histogram) json.value(c);
-        json.endArray();
-        json.key("fraction_at_least_20").value(result.quality.fractionAtLeast(20.0));
-        json.key("triangles").value(result.quality.triangles);
-        json.key("faces_over_bounds").value(result.quality.facesOverBounds);
-        json.endObject();
-        json.key("mesh_rounds").value(result.meshRounds);
+        const std::vector<UnresolvedPairEntry> unresolved = unresolvedPairs(result);
 
         const auto path = [&](const std::string& file) { return (std::filesystem::path(*outDir) / file).string(); };
         detail::OutputFiles files;
@@ -300,13 +218,13 @@ int runResolve(int argc, char** argv, int first)
         if (formats.count("msh")) writeGmsh(mesh, files.open(path("textile.msh")));
         if (formats.count("inp")) writeAbaqus(mesh, files.open(path("textile.inp")));
         const double writeMs = msSince(t0);
-        json.key("timings_ms").beginObject();
-        json.key("read").value(readMs).key("fit").value(fitMs);
-        json.key("intersect").value(result.timings.intersect).key("mesh").value(result.timings.mesh);
-        json.key("regions").value(result.timings.regions).key("write").value(writeMs);
-        json.key("total").value(msSince(start));
-        json.endObject().endObject();
-        files.open(path("report.json")) << report.str() << "\n";
+        ResolveReportOptions written;
+        written.threads = options.threads;
+        written.times.read = readMs;
+        written.times.fit = fitMs;
+        written.times.write = writeMs;
+        written.times.total = msSince(start);
+        writeResolveReport(result, tows, files.open(path("report.json")), written);
         printer.throwIfCancelled();  // a signal while writing: nothing is committed
         files.commit();
 

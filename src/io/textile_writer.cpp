@@ -5,7 +5,8 @@
 #include <iomanip>
 #include <limits>
 
-#include "core/json_writer.hpp"
+#include <nlohmann/json.hpp>
+
 #include "io/output_files.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/stack_reader.hpp"
@@ -36,39 +37,39 @@ void writeTextile(const Textile& textile, const std::string& directory, const Te
             }
     }
     const WeaveOptions& o = textile.options;
-    detail::JsonWriter json(files.open(path("textile.json")));
-    json.beginObject();
-    json.key("weave").value(weaveKindName(o.kind));
-    json.key("parameters").beginObject();
-    json.key("warps").value(o.warps).key("wefts").value(o.wefts);
-    json.key("float_over").value(static_cast<std::size_t>(o.floatOver));
-    json.key("float_under").value(static_cast<std::size_t>(o.floatUnder));
-    json.key("step").value(static_cast<std::size_t>(o.step)).key("layers").value(o.layers);
-    json.key("spacing").value(o.spacing).key("width").value(o.width).key("height").value(o.height);
-    json.key("crimp").value(o.crimp).key("overlap").value(o.overlap);
-    json.key("section").value(sectionShapeName(o.shape));
-    json.key("points_per_section").value(o.pointsPerSection);
-    json.endObject();
-    json.key("yarns").beginArray();
-    for (std::size_t k = 0; k < stacks.size(); ++k) {
-        json.beginObject();
-        json.key("name").value(stacks[k].name);
-        json.key("role").value(yarnRoleName(textile.yarns[k].role));
-        json.key("file").value(stacks[k].name + ".stw");
-        json.key("sections").value(stacks[k].sectionCount());
-        json.key("points").value(stacks[k].pointsPerSection());
-        json.endObject();
-    }
-    json.endArray();
-    json.key("crossings").beginArray();
-    for (const Crossing& c : textile.crossings) {
-        json.beginObject();
-        json.key("warp").value(textile.yarns[c.warp].name).key("weft").value(textile.yarns[c.weft].name);
-        json.key("x").value(c.position.x).key("y").value(c.position.y);
-        json.key("warp_over").value(c.warpOver);
-        json.endObject();
-    }
-    json.endArray().endObject();
+    using Json = nlohmann::ordered_json;
+    Json j;
+    j["weave"] = weaveKindName(o.kind);
+    j["parameters"] = {{"warps", o.warps},
+                       {"wefts", o.wefts},
+                       {"float_over", static_cast<std::size_t>(o.floatOver)},
+                       {"float_under", static_cast<std::size_t>(o.floatUnder)},
+                       {"step", static_cast<std::size_t>(o.step)},
+                       {"layers", o.layers},
+                       {"spacing", o.spacing},
+                       {"width", o.width},
+                       {"height", o.height},
+                       {"crimp", o.crimp},
+                       {"overlap", o.overlap},
+                       {"section", sectionShapeName(o.shape)},
+                       {"points_per_section", o.pointsPerSection}};
+    Json yarns = Json::array();
+    for (std::size_t k = 0; k < stacks.size(); ++k)
+        yarns.push_back({{"name", stacks[k].name},
+                         {"role", yarnRoleName(textile.yarns[k].role)},
+                         {"file", stacks[k].name + ".stw"},
+                         {"sections", stacks[k].sectionCount()},
+                         {"points", stacks[k].pointsPerSection()}});
+    j["yarns"] = std::move(yarns);
+    Json crossings = Json::array();
+    for (const Crossing& c : textile.crossings)
+        crossings.push_back({{"warp", textile.yarns[c.warp].name},
+                             {"weft", textile.yarns[c.weft].name},
+                             {"x", c.position.x},
+                             {"y", c.position.y},
+                             {"warp_over", c.warpOver}});
+    j["crossings"] = std::move(crossings);
+    files.open(path("textile.json")) << j.dump(-1, ' ', false, Json::error_handler_t::replace);
     files.commit();
 }
 

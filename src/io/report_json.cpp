@@ -1,0 +1,206 @@
+// The detect and resolve reports as JSON (nlohmann-json, keys in the order written).
+#include <algorithm>
+#include <ostream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/parallel.hpp"
+#include "towgeom/error.hpp"
+#include "towgeom/report.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+/// The name of tow @p t, checked against @p tows.
+const std::string& towName(const std::vector<TowSurface>& tows, std::size_t t)
+{
+    if (t >= tows.size())
+        throw Error(ErrorCode::InvalidArgument,
+                    "tow index " + std::to_string(t) + " is not one of the " + std::to_string(tows.size()) + " tows given");
+    return tows[t].name();
+}
+
+/// "loops": per loop its tows, closedness, length, enclosed areas, distance and points.
+Json loopsJson(const IntersectionReport& report, const std::vector<TowSurface>& tows, double spacing, std::size_t threads)
+{
+    for (const IntersectionLoop& l : report.loops) {
+        towName(tows, l.towA());
+        towName(tows, l.towB());
+    }
+    // The per-loop figures (areas cost a quadrature each) on all threads, then the JSON.
+    struct LoopFigures {
+        double areaA = 0.0, areaB = 0.0;
+        std::vector<LoopPoint> points;
+    };
+    std::vector<LoopFigures> figures(report.loops.size());
+    detail::parallelFor(report.loops.size(), detail::workerCount(threads), [&](std::size_t k) {
+        const IntersectionLoop& l = report.loops[k];
+        figures[k] = {l.enclosedArea(LoopSide::A), l.enclosedArea(LoopSide::B), spacing > 0.0 ? l.resample(spacing) : l.points()};
+    });
+    Json loops = Json::array();
+    for (std::size_t k = 0; k < report.loops.size(); ++k) {
+        const IntersectionLoop& l = report.loops[k];
+        Json j;
+        j["tow_a"] = tows[l.towA()].name();
+        j["tow_b"] = tows[l.towB()].name();
+        j["closed"] = l.closed();
+        if (!l.closed()) j["open_reason"] = l.openReason();
+        j["length"] = l.length();
+        j["area_a"] = figures[k].areaA;
+        j["area_b"] = figures[k].areaB;
+        j["max_distance"] = std::max(l.maxDistance(LoopSide::A), l.maxDistance(LoopSide::B));
+        const std::vector<LoopPoint>& pts = figures[k].points;
+        j["point_count"] = pts.size();
+        Json points = Json::array();
+        for (const LoopPoint& p : pts) points.push_back({p.point.x, p.point.y, p.point.z});
+        j["points"] = std::move(points);
+        loops.push_back(std::move(j));
+    }
+    return loops;
+}
+
+/// "findings": pairs that meet without an intersection curve.
+Json findingsJson(const IntersectionReport& report, const std::vector<TowSurface>& tows)
+{
+    Json findings = Json::array();
+    for (const PairFinding& f : report.findings) {
+        const char* kind = f.kind == PairFinding::Kind::Nested ? "nested" : f.kind == PairFinding::Kind::Contact ? "contact" : "touching";
+        findings.push_back({{"tow_a", towName(tows, f.towA)}, {"tow_b", towName(tows, f.towB)}, {"kind", kind}, {"message", f.message}});
+    }
+    return findings;
+}
+
+void putTime(Json& timings, const char* key, double ms)
+{
+    if (ms >= 0.0) timings[key] = ms;
+}
+
+/// @p j on @p out, compact, with a final newline; an invalid UTF-8 byte in a name or message
+/// (names come from file names) becomes U+FFFD instead of an exception.
+void dump(const Json& j, std::ostream& out)
+{
+    out << j.dump(-1, ' ', false, Json::error_handler_t::replace) << "\n";
+    if (!out) throw Error(ErrorCode::WriteFailed, "could not write the report");
+}
+
+const char* roleOf(const TowResolution& r)
+{
+    if (r.primaryAnywhere && r.secondaryAnywhere) return "both";
+    if (r.primaryAnywhere) return "primary";
+    if (r.secondaryAnywhere) return "secondary";
+    return "none";
+}
+
+/// The report code of a skipped loop's reason.
+const char* skipCode(SkippedLoop::Reason r)
+{
+    switch (r) {
+    case SkippedLoop::Reason::OpenCurve: return "open_curve";
+    case SkippedLoop::Reason::AroundBothTows: return "around_both_tows";
+    case SkippedLoop::Reason::AroundTowWithoutCaps: return "around_tow_without_caps";
+    case SkippedLoop::Reason::BandsDoNotAlternate: return "bands_do_not_alternate";
+    }
+    return "open_curve";
+}
+
+}  // namespace
+
+void writeDetectReport(const IntersectionReport& report, const std::vector<TowSurface>& tows, std::ostream& out,
+                       const DetectReportOptions& options)
+{
+    Json j;
+    j["loops"] = loopsJson(report, tows, options.spacing, options.threads);
+    j["findings"] = findingsJson(report, tows);
+    j["tow_pairs"] = report.towPairs;
+    j["pairs_tested"] = report.pairsTested;
+    j["window_pairs"] = report.windowPairs;
+    j["seeds"] = report.seeds;
+    j["walks"] = report.walks;
+    Json timings = Json::object();
+    putTime(timings, "read", options.times.read);
+    putTime(timings, "fit", options.times.fit);
+    timings["broad_phase"] = report.timings.broadPhase;
+    timings["exact"] = report.timings.exact;
+    putTime(timings, "total", options.times.total);
+    j["timings_ms"] = std::move(timings);
+    dump(j, out);
+}
+
+void writeResolveReport(const ResolveResult& result, const std::vector<TowSurface>& tows, std::ostream& out,
+                        const ResolveReportOptions& options)
+{
+    const TextileMesh& mesh = result.mesh;
+    if (result.tows.size() != tows.size() || mesh.tows.size() != tows.size())
+        throw Error(ErrorCode::InvalidArgument, "the result is of " + std::to_string(result.tows.size()) + " tows, not " +
+                                                    std::to_string(tows.size()));
+    Json j;
+    Json towList = Json::array();
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        const TowResolution& r = result.tows[t];
+        towList.push_back({{"name", tows[t].name()},
+                           {"role", roleOf(r)},
+                           {"volume_before", r.volumeBefore},
+                           {"volume_after", r.volumeAfter},
+                           {"area", r.area},
+                           {"triangles", mesh.tows[t].triangles.size()},
+                           {"boundary_loops", r.boundaryLoops},
+                           {"pieces", r.pieces},
+                           {"mesh_size", r.meshSize}});
+    }
+    j["tows"] = std::move(towList);
+    j["loops"] = loopsJson(result.intersections, tows, 0.0, options.threads);
+    j["findings"] = findingsJson(result.intersections, tows);
+    Json unresolved = Json::array();
+    for (const UnresolvedPairEntry& p : unresolvedPairs(result))
+        unresolved.push_back({{"tow_a", towName(tows, p.towA)}, {"tow_b", towName(tows, p.towB)}, {"reason", p.code}, {"message", p.message}});
+    j["unresolved"] = std::move(unresolved);
+    Json regions = Json::array();
+    for (const ConnectedRegion& g : mesh.regions)
+        regions.push_back({{"primary", towName(tows, g.primary)},
+                           {"secondary", towName(tows, g.secondary)},
+                           {"triangles", g.triangles.size()},
+                           {"nodes", g.nodes.size()},
+                           {"area", g.area},
+                           {"volume_removed", g.volumeRemoved}});
+    j["regions"] = std::move(regions);
+    Json triple = Json::array();
+    for (const TriplePoint& p : mesh.triplePoints) {
+        if (p.node >= mesh.nodes.size()) throw Error(ErrorCode::InvalidArgument, "a triple point's node is out of range");
+        const Point3& x = mesh.nodes[p.node];
+        triple.push_back({{"tows", {towName(tows, p.tows[0]), towName(tows, p.tows[1]), towName(tows, p.tows[2])}},
+                          {"node", p.node},
+                          {"point", {x.x, x.y, x.z}}});
+    }
+    j["triple_points"] = std::move(triple);
+    Json skipped = Json::array();
+    for (const SkippedLoop& s : result.skippedLoops) {
+        if (s.loop >= result.intersections.loops.size()) throw Error(ErrorCode::InvalidArgument, "a skipped loop is not in the report");
+        const IntersectionLoop& l = result.intersections.loops[s.loop];
+        skipped.push_back({{"tow_a", towName(tows, l.towA())}, {"tow_b", towName(tows, l.towB())}, {"code", skipCode(s.reason)}, {"reason", s.message}});
+    }
+    j["skipped"] = std::move(skipped);
+    j["node_count"] = mesh.nodes.size();
+    const MeshQuality& q = result.quality;
+    j["mesh_quality"] = {{"min_angle_deg", q.minAngle},
+                         {"angle_histogram", q.histogram},
+                         {"fraction_at_least_20", q.fractionAtLeast(20.0)},
+                         {"triangles", q.triangles},
+                         {"faces_over_bounds", q.facesOverBounds}};
+    j["mesh_rounds"] = result.meshRounds;
+    Json timings = Json::object();
+    putTime(timings, "read", options.times.read);
+    putTime(timings, "fit", options.times.fit);
+    timings["intersect"] = result.timings.intersect;
+    timings["mesh"] = result.timings.mesh;
+    timings["regions"] = result.timings.regions;
+    putTime(timings, "write", options.times.write);
+    putTime(timings, "total", options.times.total);
+    j["timings_ms"] = std::move(timings);
+    dump(j, out);
+}
+
+TOWGEOM_END_NAMESPACE
