@@ -14,7 +14,11 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <map>
+#include <set>
 #include <sstream>
+#include <string>
+#include <vector>
 #include <sys/wait.h>
 
 namespace fs = std::filesystem;
@@ -121,6 +125,49 @@ TEST_CASE("towgeom help texts teach every subcommand", "[cli]")
     for (const char* word : {"--mode", "--tolerance", "--out", "start_shifts", "Exit status", "Example"})
         CHECK(fit.out.find(word) != std::string::npos);
     CHECK(cli("--version").out.find(TOWGEOM_VERSION_STRING) != std::string::npos);
+}
+
+TEST_CASE("every subcommand's --help documents exactly the options its parser (CLI11) takes", "[cli]")
+{
+    // The options each --help lists (a line starting with --NAME), per command.
+    const std::vector<std::string> commands{"fit", "detect", "resolve", "generate"};
+    std::map<std::string, std::set<std::string>> documented;
+    std::set<std::string> all;
+    for (const std::string& c : commands) {
+        const Run help = cli(c + " --help");
+        REQUIRE(help.status == 0);
+        CHECK(cli(c + " -h").out == help.out);
+        std::istringstream lines(help.out);
+        for (std::string line; std::getline(lines, line);) {
+            std::smatch m;
+            if (std::regex_search(line, m, std::regex("^  (?:-h, )?--([a-z-]+)"))) {
+                documented[c].insert(m[1]);
+                all.insert(m[1]);
+            }
+        }
+        CHECK(documented[c].count("help") == 1);
+        CHECK(documented[c].size() >= 6);
+    }
+    for (const std::string& c : commands)
+        for (const std::string& name : all) {
+            // Given with a value that cannot be a file: a documented option is never "not expected"
+            // (it may still be refused for its value, or for missing inputs), an undocumented one is.
+            const Run r = cli(c + " --" + name + "=zz_not_a_value --quiet");
+            const bool refusedAsUnknown = r.err.find("not expected") != std::string::npos;
+            INFO(c << " --" << name << ": " << r.err);
+            CHECK(refusedAsUnknown == (documented[c].count(name) == 0));
+            CHECK(r.status != 0);
+        }
+    // The same errors for every subcommand: a value missing, a value given to a flag.
+    for (const std::string& c : commands) {
+        const Run missing = cli(c + " --out");
+        CHECK(missing.status == 2);
+        CHECK(missing.err.find("--out") != std::string::npos);
+        CHECK(missing.err.find("see towgeom " + c + " --help") != std::string::npos);
+        const Run flagValue = cli(c + " --quiet=3");
+        CHECK(flagValue.status == 2);
+        CHECK(flagValue.err.find("see towgeom " + c + " --help") != std::string::npos);
+    }
 }
 
 TEST_CASE("usage errors exit 2 with one line on stderr", "[cli]")

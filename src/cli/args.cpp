@@ -2,44 +2,42 @@
 
 #include <charconv>
 #include <cmath>
+#include <iterator>
+
+#include <CLI/CLI.hpp>
 
 namespace towgeom::cli {
 
 Args::Args(int argc, char** argv, int first, const std::vector<OptionSpec>& spec)
 {
-    bool optionsEnded = false;
-    for (int i = first; i < argc; ++i) {
-        const std::string arg = argv[i];
-        if (optionsEnded || arg.size() < 2 || arg[0] != '-') {
-            positional_.push_back(arg);
-            continue;
-        }
-        if (arg == "--") {
-            optionsEnded = true;
-            continue;
-        }
-        std::string name = arg.substr(arg[1] == '-' ? 2 : 1);
-        std::optional<std::string> inlineValue;
-        if (const auto eq = name.find('='); eq != std::string::npos) {
-            inlineValue = name.substr(eq + 1);
-            name = name.substr(0, eq);
-        }
-        if (name == "h") name = "help";
-        const OptionSpec* found = nullptr;
-        for (const OptionSpec& s : spec)
-            if (s.name == name) found = &s;
-        if (!found) throw UsageError("unknown option '" + arg + "'");
-        if (!found->takesValue) {
-            if (inlineValue) throw UsageError("option --" + name + " takes no value");
-            values_[name].push_back("");
-            continue;
-        }
-        if (!inlineValue) {
-            if (i + 1 >= argc) throw UsageError("option --" + name + " needs a value");
-            inlineValue = argv[++i];
-        }
-        values_[name].push_back(*inlineValue);
+    // CLI11 does the parsing, the same for every subcommand: unknown options, missing values,
+    // values given to flags and `--` are its errors and rules. A value option takes exactly one
+    // value per occurrence (all occurrences kept: value() refuses a repeat, values() takes them).
+    CLI::App app;
+    app.set_help_flag();  // -h/--help is one of the spec's flags: each command prints its own help
+    app.allow_extras(false);
+    app.add_option("inputs", positional_);
+    std::map<std::string, bool> flags;
+    for (const OptionSpec& s : spec) {
+        const std::string names = s.name == "help" ? "-h,--help" : "--" + s.name;
+        if (s.takesValue)
+            app.add_option(names, values_[s.name])
+                ->expected(1)
+                ->allow_extra_args(false)
+                ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+        else
+            app.add_flag(names, flags[s.name])->disable_flag_override();
     }
+    std::vector<const char*> args{"towgeom"};
+    for (int i = first; i < argc; ++i) args.push_back(argv[i]);
+    try {
+        app.parse(static_cast<int>(args.size()), args.data());
+    } catch (const CLI::ParseError& e) {
+        throw UsageError(e.what());
+    }
+    for (auto it = values_.begin(); it != values_.end();) it = it->second.empty() ? values_.erase(it) : std::next(it);
+    for (const auto& [name, given] : flags)
+        if (given) values_[name].push_back("");
 }
 
 std::optional<std::string> Args::value(const std::string& name) const

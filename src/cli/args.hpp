@@ -1,5 +1,5 @@
-// A small command-line parser for the towgeom subcommands: --name VALUE, --name=VALUE, flags,
-// repeatable options and positional arguments.
+// The towgeom subcommands' command lines, parsed by CLI11: --name VALUE, --name=VALUE, flags,
+// repeatable options and positional arguments, with the same errors for every subcommand.
 #pragma once
 
 #include <cstddef>
@@ -23,7 +23,8 @@ struct OptionSpec {
 
 class Args {
 public:
-    /// Parses argv[first..argc); throws UsageError for unknown options or missing values.
+    /// Parses argv[first..argc) with CLI11; throws UsageError (CLI11's message) for unknown
+    /// options, missing values or a value given to a flag. The spec's "help" is -h and --help.
     Args(int argc, char** argv, int first, const std::vector<OptionSpec>& spec);
 
     bool has(const std::string& name) const { return values_.count(name) != 0; }
