@@ -8,6 +8,8 @@
 #include <towgeom/error.hpp>
 #include <towgeom/stack_reader.hpp>
 #include <towgeom/intersection_loop.hpp>
+#include <towgeom/connect_regions.hpp>
+#include <towgeom/mesh_tows.hpp>
 #include <towgeom/resolve.hpp>
 #include <towgeom/textile_mesh.hpp>
 #include <towgeom/tow_intersection.hpp>
@@ -692,4 +694,71 @@ TEST_CASE("surfaces tangent at a saddle inside the overlap: a figure-8 as two cl
         CHECK(fine.quality.facesOverBounds <= 8);
         CHECK(fine.quality.minAngle > 5.0);
     }
+}
+
+namespace {
+
+/// Moves the polygon of meshed loop @p k on its tow @p side half way round that tow (its nodes'
+/// (u,v) there), so that the tow's triangles inside it are not the ones the loop bounds: that
+/// tow cannot close after the swap.
+void spoilLoop(ResolveResult& meshed, std::size_t k, const std::vector<TowSurface>& tows, LoopSide side)
+{
+    const MeshedLoop& ml = meshed.mesh.loops.at(k);
+    const IntersectionLoop& loop = meshed.intersections.loops[ml.loop];
+    const std::size_t t = side == LoopSide::A ? loop.towA() : loop.towB();
+    const ParameterRange range = tows[t].parameterRange();
+    for (auto& [node, uv] : meshed.mesh.tows[t].parameters)
+        if (std::find(ml.nodes.begin(), ml.nodes.end(), node) != ml.nodes.end())
+            uv.v = range.vMin + std::fmod(uv.v - range.vMin + 0.5 * range.vPeriod(), range.vPeriod());
+}
+
+}  // namespace
+
+TEST_CASE("connectRegions: two tows failing in one pass, one pair between them, are both left out (RegionFailed)",
+          "[resolve][connect]")
+{
+    // w and y do not meet; x crosses both: pairs (w,x) and (x,y), ranked w > x > y.
+    const std::vector<TowSurface> tows = fit({testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, sampling(41, 48), "w"),
+                                             testing::tubeAlongY(0.4, 0.82, sampling(41, 48), "x"),
+                                             testing::tubeAlongX(0.4, 4.0, 0.0, 1.2, 1.52, sampling(41, 48), "y")});
+    ResolveOptions o;
+    o.mesh.relativeEdgeLength = 0.2;
+    ResolveResult meshed = meshTows(tows, intersectTows(tows), o);
+    REQUIRE(meshed.mesh.loops.size() == 2);
+    // Each loop spoiled on its secondary: x fails for (w,x), y for (x,y) -- y's only pair is with x.
+    for (std::size_t k = 0; k < 2; ++k) spoilLoop(meshed, k, tows, LoopSide::B);
+    const ResolveResult r = connectRegions(tows, meshed, o);
+    REQUIRE(r.unresolved.size() == 2);
+    for (const UnresolvedPair& u : r.unresolved) CHECK(u.reason == UnresolvedPair::Reason::RegionFailed);
+    CHECK(r.mesh.regions.empty());
+    CHECK(r.mesh.loops.empty());
+    for (std::size_t t = 0; t < 3; ++t) {
+        CHECK(r.tows[t].boundaryLoops == 0);
+        CHECK(r.tows[t].volumeAfter == r.tows[t].volumeBefore);  // nothing swapped
+    }
+}
+
+TEST_CASE("connectRegions: triple points of pairs left out are not reported", "[resolve][connect][triple]")
+{
+    const std::vector<TowSurface> tows = fit(threeTowsAtAPoint(0.3, 0.41));
+    ResolveOptions o;
+    const ResolveResult meshed = meshTows(tows, intersectTows(tows), o);
+    REQUIRE(meshed.mesh.loops.size() == 3);
+    REQUIRE(meshed.mesh.triplePoints.size() == 2);
+    const ResolveResult whole = connectRegions(tows, meshed, o);
+    CHECK(whole.mesh.triplePoints.size() == 2);
+    // The loop of (x, w) spoiled on w: w fails, its pairs (x,w) and (y,w) are left out; the
+    // loops of the three pairs no longer cross anywhere resolved.
+    ResolveResult spoiled = meshed;
+    std::size_t xw = 3;
+    for (std::size_t k = 0; k < 3; ++k) {
+        const IntersectionLoop& l = meshed.intersections.loops[meshed.mesh.loops[k].loop];
+        if (l.towA() == 0 && l.towB() == 2) xw = k;
+    }
+    REQUIRE(xw < 3);
+    spoilLoop(spoiled, xw, tows, LoopSide::B);
+    const ResolveResult r = connectRegions(tows, spoiled, o);
+    CHECK(r.unresolved.size() == 2);
+    CHECK(r.mesh.regions.size() == 1);
+    CHECK(r.mesh.triplePoints.empty());
 }

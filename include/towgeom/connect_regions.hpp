@@ -11,7 +11,11 @@
 
 TOWGEOM_BEGIN_NAMESPACE
 
-/// @ingroup resolution
+/// @defgroup regions Connecting regions (stage 3)
+/// @brief connectRegions(): the tows' meshes classified by their loops and made compatible by
+/// the rank rule (ConnectedRegion), on meshTows()'s result or the host's own.
+/// @{
+
 /// The third stage of resolveTextile(): makes every tow itself minus the tows ranked above it
 /// (ResolveOptions::primaryPatterns), on the meshes of @p meshed (meshTows()'s result for
 /// @p tows, or the same data built by the host: each tow's closed mesh, TowMesh::parameters for
@@ -45,5 +49,7 @@ TOWGEOM_BEGIN_NAMESPACE
 /// naming the tow or loop; (Internal) for a tow that is not closed with no loop on it; (Cancelled).
 TOWGEOM_EXPORT ResolveResult connectRegions(const std::vector<TowSurface>& tows, ResolveResult meshed,
                                             const ResolveOptions& options = {});
+
+/// @}
 
 TOWGEOM_END_NAMESPACE

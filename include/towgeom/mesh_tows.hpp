@@ -12,7 +12,11 @@
 
 TOWGEOM_BEGIN_NAMESPACE
 
-/// @ingroup resolution
+/// @defgroup tow_meshes Meshing every tow (stage 2)
+/// @brief meshTows(): each tow's own closed mesh with the intersection loops as shared
+/// constraints, before any region is swapped (after intersectTows(), before connectRegions()).
+/// @{
+
 /// The second stage of resolveTextile(): every tow meshed in its (u,v) rectangle with the closed
 /// loops of @p report as constraints (ParametricMesher: loop nodes shared by both tows of a loop,
 /// seam nodes by both sides of the seam), in rounds until no tow asks for another node on a loop
@@ -40,5 +44,7 @@ TOWGEOM_BEGIN_NAMESPACE
 /// @throws towgeom::Error as resolveTextile(tows, report, options).
 TOWGEOM_EXPORT ResolveResult meshTows(const std::vector<TowSurface>& tows, const IntersectionReport& report,
                                       const ResolveOptions& options = {});
+
+/// @}
 
 TOWGEOM_END_NAMESPACE

@@ -100,9 +100,11 @@ struct UnresolvedPair {
         /// or of another loop's fixed node, where it would make slivers), or meets it while the third
         /// pair has no resolved loop. Of two such pairs the later one (by tow indices) is left out.
         LoopsMeet,
-        /// Tow A or B was not a closed surface after its regions were swapped in (connectRegions()):
-        /// every pair with loops on that tow was left out of the regions and the rest connected
-        /// again; the pair's loop nodes stay in both meshes (since 0.2).
+        /// connectRegions() could not connect tow A or B with the pair's loops: the tow was not a
+        /// closed surface after its regions were swapped in, a triangle inside an odd number of
+        /// its loops had no region, or its loops around it did not cut it into bands alternately
+        /// inside and outside the other tow. Every pair with loops on that tow was left out of the
+        /// regions and the rest connected again; the pair's loop nodes stay in both meshes.
         RegionFailed
     };
     std::size_t towA = 0;  ///< lower tow index

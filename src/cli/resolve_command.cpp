@@ -60,8 +60,9 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                   tow, or the point lies at a seam; or meets it while the third pair has no
                   resolved loop there; the later pair is left out), mesh_failed (a tow could not be
                   meshed with the pair's loops: its pairs are left out, the rest resolved),
-                  region_failed (a tow was not closed after its regions were swapped in: its
-                  pairs get no region, their loop nodes stay in the meshes)
+                  region_failed (a tow could not be connected with its loops, e.g. it was not
+                  closed after the swap: its pairs get no region, their loop nodes stay in
+                  the meshes)
   skipped         every loop not resolved, with its code (open_curve, around_both_tows,
                   around_tow_without_caps, bands_do_not_alternate) and the reason as a sentence
   volume_removed  the volume of the two tows' overlap inside the region's loop: what the

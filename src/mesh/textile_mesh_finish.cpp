@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <map>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "mesh/mesh_measures.hpp"
@@ -44,6 +47,37 @@ void keepUsedNodes(TextileMesh& mesh)
     triple.erase(std::remove_if(triple.begin(), triple.end(), [&](const TriplePoint& p) { return !used(p.node); }), triple.end());
     for (TriplePoint& p : triple) p.node = renumber[p.node];
     mesh.nodes = std::move(kept);
+}
+
+void keepResolvedTriplePoints(TextileMesh& mesh, const std::vector<IntersectionLoop>& loops)
+{
+    if (mesh.triplePoints.empty()) return;
+    // Per triple node: the tow pairs with a loop through it, and the tows whose meshes use it.
+    std::map<std::size_t, std::set<std::pair<std::size_t, std::size_t>>> pairsAt;
+    std::map<std::size_t, std::set<std::size_t>> towsAt;
+    for (const TriplePoint& p : mesh.triplePoints) {
+        pairsAt[p.node];
+        towsAt[p.node];
+    }
+    for (const MeshedLoop& l : mesh.loops) {
+        if (l.loop >= loops.size()) continue;
+        for (std::size_t n : l.nodes)
+            if (const auto it = pairsAt.find(n); it != pairsAt.end()) it->second.emplace(loops[l.loop].towA(), loops[l.loop].towB());
+    }
+    for (std::size_t t = 0; t < mesh.tows.size(); ++t)
+        for (const std::array<std::size_t, 3>& tri : mesh.tows[t].triangles)
+            for (std::size_t n : tri)
+                if (const auto it = towsAt.find(n); it != towsAt.end()) it->second.insert(t);
+    auto& triple = mesh.triplePoints;
+    triple.erase(std::remove_if(triple.begin(), triple.end(),
+                                [&](const TriplePoint& p) {
+                                    const auto& pairs = pairsAt[p.node];
+                                    const auto& at = towsAt[p.node];
+                                    const auto [a, b, c] = p.tows;
+                                    return !(pairs.count({a, b}) && pairs.count({a, c}) && pairs.count({b, c}) && at.count(a) &&
+                                             at.count(b) && at.count(c));
+                                }),
+                 triple.end());
 }
 
 MeshQuality meshQuality(const TextileMesh& mesh)

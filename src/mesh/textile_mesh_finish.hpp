@@ -3,6 +3,9 @@
 // the triangles' quality.
 #pragma once
 
+#include <vector>
+
+#include "towgeom/intersection_loop.hpp"
 #include "towgeom/resolve.hpp"
 #include "towgeom/textile_mesh.hpp"
 #include "towgeom/export.hpp"
@@ -15,6 +18,12 @@ namespace detail {
 /// loopNodes lose their unused nodes (parameters and region nodes sorted by the new numbers);
 /// a triple point whose node is unused is dropped.
 void keepUsedNodes(TextileMesh& mesh);
+
+/// Keeps the triple points of @p mesh whose three tow pairs each have a loop in
+/// TextileMesh::loops through the point's node (@p loops: the intersection report's, for the
+/// pairs) and whose node all three tows' meshes use: where a pair was left out, its loops'
+/// nodes may stay in the meshes, but no three resolved loops cross there.
+void keepResolvedTriplePoints(TextileMesh& mesh, const std::vector<IntersectionLoop>& loops);
 
 /// The smallest angles of @p mesh's distinct triangles (a region's copy in its secondary is not
 /// counted again); facesOverBounds is left 0.

@@ -320,6 +320,7 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
     });
     for (const SharedLoop& s : shared) out.loops.push_back({s.loop, s.nodes});
     out.triplePoints = triples.points;
+    keepResolvedTriplePoints(out, loops);  // not those of a pair left out since (LoopsMeet)
     keepUsedNodes(out);
     // Every tow's own mesh must be closed (a tube open at its two ends without caps), oriented
     // and 2-manifold before any region is made of it.

@@ -101,9 +101,11 @@ Parametric readParametric(const std::vector<TowSurface>& tows, const ResolveResu
     }
     for (const TriplePoint& t : mesh.triplePoints)
         if (t.node >= n) throw badInput("a triple point's node is out of range", "");
+    std::vector<char> listed(loops.size(), 0);
     for (std::size_t k = 0; k < mesh.loops.size(); ++k) {
         const MeshedLoop& ml = mesh.loops[k];
         const std::string where = "loop " + std::to_string(ml.loop);
+        if (ml.loop < loops.size() && listed[ml.loop]++) throw badInput("the loop is listed twice", where);
         if (ml.loop >= loops.size() || !loops[ml.loop].closed()) throw badInput("not a closed loop of the intersection report", where);
         if (ml.nodes.size() < 3) throw badInput("a loop needs at least 3 nodes", where);
         const IntersectionLoop& l = loops[ml.loop];
@@ -450,19 +452,10 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
         if (badEdges[t] != 0 || out.tows[t].boundaryLoops != (uv.capped[t] ? 0u : 2u))
             failures.push_back({t, detail::notClosedMessage(uv.capped[t], badEdges[t], out.tows[t].boundaryLoops)});
     if (!failures.empty()) return failures;
-    // The loops resolved, and the triple points whose three pairs were: a node of all three
-    // tows' meshes.
+    // The loops resolved, and the triple points where three of them cross.
     for (std::size_t k : shared) out.mesh.loops.push_back(in.loops[k]);
-    std::map<std::size_t, std::set<std::size_t>> towsAt;  // triple node -> the tows using it
-    for (const TriplePoint& p : in.triplePoints) towsAt[p.node];
-    for (std::size_t t = 0; t < tows.size() && !towsAt.empty(); ++t)
-        for (const Triangle& tri : out.mesh.tows[t].triangles)
-            for (std::size_t n : tri)
-                if (const auto it = towsAt.find(n); it != towsAt.end()) it->second.insert(t);
-    for (const TriplePoint& p : in.triplePoints) {
-        const std::set<std::size_t>& at = towsAt[p.node];
-        if (at.count(p.tows[0]) && at.count(p.tows[1]) && at.count(p.tows[2])) out.mesh.triplePoints.push_back(p);
-    }
+    out.mesh.triplePoints = in.triplePoints;
+    detail::keepResolvedTriplePoints(out.mesh, loops);
     out.mesh.nodes = N;
     return failures;
 }
@@ -498,23 +491,29 @@ ResolveResult connectRegions(const std::vector<TowSurface>& tows, ResolveResult 
             out.timings.regions = msSince(t0);
             return out;
         }
-        std::size_t left = 0;
-        for (const TowFailure& f : failures) {
-            std::set<TowPair> pairs;
+        // Each failed tow's pairs, all taken before any loop is switched off: a pair between
+        // two failed tows is left out once, and belongs to both.
+        std::vector<std::set<TowPair>> pairsOf(failures.size());
+        for (std::size_t i = 0; i < failures.size(); ++i)
             for (std::size_t k = 0; k < active.size(); ++k) {
                 const IntersectionLoop& l = meshed.intersections.loops[meshed.mesh.loops[k].loop];
-                if (!active[k] || (l.towA() != f.tow && l.towB() != f.tow)) continue;
-                active[k] = 0;
-                pairs.emplace(l.towA(), l.towB());
+                if (active[k] && (l.towA() == failures[i].tow || l.towB() == failures[i].tow)) pairsOf[i].emplace(l.towA(), l.towB());
             }
-            if (pairs.empty()) throw Error(ErrorCode::Internal, f.message, "tow '" + tows[f.tow].name() + "'");
-            for (const TowPair& p : pairs) {
-                ++left;
-                unresolved.push_back({p.first, p.second, UnresolvedPair::Reason::RegionFailed,
-                                      "tow '" + tows[f.tow].name() + "' could not be connected with the loops of tows '" +
-                                          tows[p.first].name() + "' and '" + tows[p.second].name() + "': " + f.message});
-            }
+        std::set<TowPair> leftOut;
+        for (std::size_t i = 0; i < failures.size(); ++i) {
+            const TowFailure& f = failures[i];
+            if (pairsOf[i].empty()) throw Error(ErrorCode::Internal, f.message, "tow '" + tows[f.tow].name() + "'");
+            for (const TowPair& p : pairsOf[i])
+                if (leftOut.insert(p).second)
+                    unresolved.push_back({p.first, p.second, UnresolvedPair::Reason::RegionFailed,
+                                          "tow '" + tows[f.tow].name() + "' could not be connected with the loops of tows '" +
+                                              tows[p.first].name() + "' and '" + tows[p.second].name() + "': " + f.message});
         }
+        for (std::size_t k = 0; k < active.size(); ++k) {
+            const IntersectionLoop& l = meshed.intersections.loops[meshed.mesh.loops[k].loop];
+            if (leftOut.count({l.towA(), l.towB()})) active[k] = 0;
+        }
+        const std::size_t left = leftOut.size();
         detail::sayStage(options, "connecting again without the " + std::to_string(left) + " tow pair(s) on " +
                                       std::to_string(failures.size()) + " tow(s) whose regions failed");
     }
