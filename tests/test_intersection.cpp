@@ -277,7 +277,9 @@ TEST_CASE("a tow that ends inside another gives an open curve, not a loop", "[in
     CHECK(l.openKind() == IntersectionLoop::OpenKind::ReachesEndOfA);
     // The same through a report written and read back.
     std::stringstream json;
-    writeIntersectionReport(IntersectionReport{loops}, {x, y}, json);
+    IntersectionReport one;
+    one.loops = loops;
+    writeIntersectionReport(one, {x, y}, json);
     CHECK(readIntersectionReport(json, {x, y}).loops.front().openKind() == IntersectionLoop::OpenKind::ReachesEndOfA);
     // Both ends on the x-tube's end section u = 1, the curve between them on both cylinders.
     // Observed 8.3e-12 and 1.3e-11 short of u = 1 (was a margin of 1e-9).

@@ -82,6 +82,12 @@ IntersectionLoop movedLoop(const IntersectionLoop& loop, const TowSurface& a, co
     for (LoopPoint& p : d->points) p.point = move(p.point);
     d->cumulative = f.cumulative;
     for (double& c : d->cumulative) c *= lengthScale;
+    if (f.areas->done)  // the areas already computed, scaled: not integrated again
+        std::call_once(d->areas->once, [&] {
+            d->areas->a = f.areas->a * lengthScale * lengthScale;
+            d->areas->b = f.areas->b * lengthScale * lengthScale;
+            d->areas->done = true;
+        });
     return IntersectionLoop(std::move(d));
 }
 
@@ -205,11 +211,12 @@ bool IntersectionLoop::windsAround(LoopSide side) const
     return std::abs(sideOf(pts.back(), side).v - sideOf(pts.front(), side).v) > 0.5 * period;
 }
 
-double IntersectionLoop::enclosedArea(LoopSide side) const
+namespace {
+
+/// The area on tow @p side enclosed by the closed loop @p pts (walk order, the first point
+/// repeated one turn on) whose chords' exact midpoints are @p mids.
+double areaOnSide(const TowSurface& s, const std::vector<LoopPoint>& pts, const std::vector<LoopPoint>& mids, LoopSide side)
 {
-    if (!data_->closed || data_->points.size() < 3 || windsAround(side)) return std::numeric_limits<double>::quiet_NaN();
-    const TowSurface& s = side == LoopSide::A ? data_->a : data_->b;
-    const std::vector<LoopPoint> pts = walkOrder(*data_);
     double u0 = 1e300;
     for (const LoopPoint& p : pts) u0 = std::min(u0, sideOf(p, side).u);
     // Green: area = | closed integral of F dv |, F(u, v) = integral from u0 to u of |S_u x S_v|(s, v) ds.
@@ -232,13 +239,12 @@ double IntersectionLoop::enclosedArea(LoopSide side) const
     };
     // Each chord is replaced by the parabola in (u, v) through its ends and the exact curve
     // point in its middle, so the polygon's chord error does not enter the area.
-    const detail::SurfacePair sp = detail::surfacePairOf(data_->a, data_->b);
     static const double tx[3] = {0.1127016653792583, 0.5, 0.8872983346207417};
     static const double tw[3] = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
     double area = 0.0;
     for (std::size_t k = 0; k + 1 < pts.size(); ++k) {
         const UV a = sideOf(pts[k], side), b = sideOf(pts[k + 1], side);
-        const UV m = sideOf(exactOnChord(sp, pts[k], pts[k + 1], 0.5, data_->tolerance), side);
+        const UV m = sideOf(mids[k], side);
         double seg = 0.0;
         for (int q = 0; q < 3; ++q) {
             const double t = tx[q];
@@ -252,6 +258,31 @@ double IntersectionLoop::enclosedArea(LoopSide side) const
         area += seg;
     }
     return std::abs(area);
+}
+
+}  // namespace
+
+double IntersectionLoop::enclosedArea(LoopSide side) const
+{
+    const Data& d = *data_;
+    // Both tows' areas at once (the chords' exact midpoints serve both), once per loop.
+    std::call_once(d.areas->once, [&] {
+        constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+        const bool aWinds = windsAround(LoopSide::A), bWinds = windsAround(LoopSide::B);
+        if (!d.closed || d.points.size() < 3 || (aWinds && bWinds)) {
+            d.areas->a = d.areas->b = nan;
+            return;
+        }
+        const std::vector<LoopPoint> pts = walkOrder(d);
+        const detail::SurfacePair sp = detail::surfacePairOf(d.a, d.b);
+        std::vector<LoopPoint> mids;
+        mids.reserve(pts.size());
+        for (std::size_t k = 0; k + 1 < pts.size(); ++k) mids.push_back(exactOnChord(sp, pts[k], pts[k + 1], 0.5, d.tolerance));
+        d.areas->a = aWinds ? nan : areaOnSide(d.a, pts, mids, LoopSide::A);
+        d.areas->b = bWinds ? nan : areaOnSide(d.b, pts, mids, LoopSide::B);
+        d.areas->done = true;
+    });
+    return side == LoopSide::A ? d.areas->a : d.areas->b;
 }
 
 LoopPoint IntersectionLoop::at(double s) const

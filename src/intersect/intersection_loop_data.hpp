@@ -1,6 +1,9 @@
 // The data behind an IntersectionLoop.
 #pragma once
 
+#include <atomic>
+#include <memory>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,6 +17,12 @@ TOWGEOM_BEGIN_NAMESPACE
 
 struct IntersectionLoop::Data {
     Data(TowSurface surfaceA, TowSurface surfaceB) : a(std::move(surfaceA)), b(std::move(surfaceB)) {}
+    /// enclosedArea() on both tows, computed once (on first use, by one thread) for this loop.
+    struct Areas {
+        std::once_flag once;
+        std::atomic<bool> done{false};  ///< a and b are set
+        double a = 0.0, b = 0.0;        ///< NaN where the loop encloses no area on that tow
+    };
     std::size_t towA = 0, towB = 1;
     TowSurface a, b;
     bool closed = false;
@@ -22,6 +31,7 @@ struct IntersectionLoop::Data {
     std::vector<double> cumulative;  ///< arc length at each point (closed: plus the closing segment)
     double tolerance = 1e-7;         ///< the point tolerance the loop was computed with
     double maxDistanceA = 0.0, maxDistanceB = 0.0;
+    std::unique_ptr<Areas> areas = std::make_unique<Areas>();
 };
 
 namespace detail {
