@@ -127,7 +127,7 @@ TEST_CASE("towgeom help texts teach every subcommand", "[cli]")
     CHECK(cli("--version").out.find(TOWGEOM_VERSION_STRING) != std::string::npos);
 }
 
-TEST_CASE("every subcommand's --help documents exactly the options its parser (CLI11) takes", "[cli]")
+TEST_CASE("every subcommand takes each option its --help lists and refuses the other commands' options (CLI11)", "[cli]")
 {
     // The options each --help lists (a line starting with --NAME), per command.
     const std::vector<std::string> commands{"fit", "detect", "resolve", "generate"};
@@ -158,16 +158,25 @@ TEST_CASE("every subcommand's --help documents exactly the options its parser (C
             CHECK(refusedAsUnknown == (documented[c].count(name) == 0));
             CHECK(r.status != 0);
         }
-    // The same errors for every subcommand: a value missing, a value given to a flag.
+    // The same errors for every subcommand: a value missing, any value given to a flag.
+    const std::map<std::string, std::string> valueOption{{"fit", "--out"}, {"detect", "--tolerance"}, {"resolve", "--out"}, {"generate", "--out"}};
     for (const std::string& c : commands) {
-        const Run missing = cli(c + " --out");
+        const Run missing = cli(c + " " + valueOption.at(c));
         CHECK(missing.status == 2);
-        CHECK(missing.err.find("--out") != std::string::npos);
+        CHECK(missing.err.find(valueOption.at(c) + ": 1 required") != std::string::npos);
         CHECK(missing.err.find("see towgeom " + c + " --help") != std::string::npos);
-        const Run flagValue = cli(c + " --quiet=3");
-        CHECK(flagValue.status == 2);
-        CHECK(flagValue.err.find("see towgeom " + c + " --help") != std::string::npos);
+        for (const char* value : {"3", "true", ""}) {
+            const Run flagValue = cli(c + " --quiet=" + value);
+            CHECK(flagValue.status == 2);
+            CHECK(flagValue.err.find("option --quiet takes no value (see towgeom " + c + " --help)") != std::string::npos);
+        }
     }
+    // An input's name is taken as it is, also after `--` or in brackets (not a CLI11 list).
+    const Run bracketed = cli("fit --quiet '[a.stw,b.stw]'");
+    CHECK(bracketed.status == 2);
+    CHECK(bracketed.err.find("[a.stw,b.stw]: no such file") != std::string::npos);
+    const Run dashed = cli("fit --quiet -- -x.stw");
+    CHECK(dashed.err.find("-x.stw: no such file") != std::string::npos);
 }
 
 TEST_CASE("usage errors exit 2 with one line on stderr", "[cli]")

@@ -27,7 +27,7 @@ struct UnresolvedPairEntry {
     std::size_t towB = 0;  ///< the higher tow index
     /// Why, as the reports' code: `open_curve` (a curve runs into a tow's end or stops where the
     /// surfaces are tangent), `winds_around` (a loop goes around a tow without caps, or around
-    /// both tows), `nested` (one tow inside the other), `identical_or_touching` (surfaces that
+    /// both tows, or a pair's loops around a tow do not cut it into alternating bands), `nested` (one tow inside the other), `identical_or_touching` (surfaces that
     /// coincide or touch, no curve), `loops_meet`, `mesh_failed` or `region_failed`
     /// (UnresolvedPair::Reason).
     std::string code;
@@ -42,6 +42,7 @@ TOWGEOM_EXPORT std::vector<UnresolvedPairEntry> unresolvedPairs(const Intersecti
 /// The pairs of resolveTextile()'s result that were not resolved: a skipped loop (once per pair
 /// and reason), a pair left out (ResolveResult::unresolved) or one of the report's findings;
 /// sorted by pair.
+/// @throws towgeom::Error (InvalidArgument) when a skipped loop is not in the result's report.
 TOWGEOM_EXPORT std::vector<UnresolvedPairEntry> unresolvedPairs(const ResolveResult& result);
 
 /// The caller's own stages, in milliseconds, written with the library's in "timings_ms" (a
@@ -72,7 +73,8 @@ struct DetectReportOptions {
 /// std::ofstream out("loops.json");
 /// towgeom::writeDetectReport(r, tows, out);
 /// @endcode
-/// @throws towgeom::Error (InvalidArgument) when a loop or finding names a tow index not in @p tows.
+/// @throws towgeom::Error (InvalidArgument) when a loop or finding names a tow index not in @p tows
+/// (nothing is written then); (WriteFailed) when @p out fails.
 TOWGEOM_EXPORT void writeDetectReport(const IntersectionReport& report, const std::vector<TowSurface>& tows, std::ostream& out,
                                       const DetectReportOptions& options = {});
 
@@ -95,7 +97,7 @@ struct ResolveReportOptions {
 /// towgeom::writeResolveReport(r, tows, out);
 /// @endcode
 /// @throws towgeom::Error (InvalidArgument) when @p result is not of @p tows (tow count, or a
-/// tow index out of range).
+/// tow index out of range; nothing is written then); (WriteFailed) when @p out fails.
 TOWGEOM_EXPORT void writeResolveReport(const ResolveResult& result, const std::vector<TowSurface>& tows, std::ostream& out,
                                        const ResolveReportOptions& options = {});
 

@@ -10,13 +10,13 @@ namespace towgeom::cli {
 
 Args::Args(int argc, char** argv, int first, const std::vector<OptionSpec>& spec)
 {
-    // CLI11 does the parsing, the same for every subcommand: unknown options, missing values,
-    // values given to flags and `--` are its errors and rules. A value option takes exactly one
-    // value per occurrence (all occurrences kept: value() refuses a repeat, values() takes them).
+    // CLI11 does the parsing, the same for every subcommand: unknown options, missing values and
+    // repeated values are its rules. A value option takes exactly one value per occurrence (all
+    // occurrences kept: value() refuses a repeat, values() takes them). Arguments after `--` and
+    // the arguments CLI11 leaves (none starting with '-') are the inputs, taken verbatim.
     CLI::App app;
     app.set_help_flag();  // -h/--help is one of the spec's flags: each command prints its own help
-    app.allow_extras(false);
-    app.add_option("inputs", positional_);
+    app.allow_extras(true);
     std::map<std::string, bool> flags;
     for (const OptionSpec& s : spec) {
         const std::string names = s.name == "help" ? "-h,--help" : "--" + s.name;
@@ -26,15 +26,29 @@ Args::Args(int argc, char** argv, int first, const std::vector<OptionSpec>& spec
                 ->allow_extra_args(false)
                 ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
         else
-            app.add_flag(names, flags[s.name])->disable_flag_override();
+            app.add_flag(names, flags[s.name]);
     }
+    int end = first;
+    while (end < argc && std::string(argv[end]) != "--") ++end;
     std::vector<const char*> args{"towgeom"};
-    for (int i = first; i < argc; ++i) args.push_back(argv[i]);
+    for (int i = first; i < end; ++i) {
+        const std::string arg = argv[i];
+        // A flag takes no value, not even an empty one or "true".
+        const auto eq = arg.find('=');
+        if (arg.rfind("--", 0) == 0 && eq != std::string::npos && flags.count(arg.substr(2, eq - 2)))
+            throw UsageError("option " + arg.substr(0, eq) + " takes no value");
+        args.push_back(argv[i]);
+    }
     try {
         app.parse(static_cast<int>(args.size()), args.data());
     } catch (const CLI::ParseError& e) {
         throw UsageError(e.what());
     }
+    for (const std::string& r : app.remaining()) {
+        if (r.size() >= 2 && r[0] == '-') throw UsageError("The following argument was not expected: " + r);
+        positional_.push_back(r);
+    }
+    for (int i = end + 1; i < argc; ++i) positional_.push_back(argv[i]);
     for (auto it = values_.begin(); it != values_.end();) it = it->second.empty() ? values_.erase(it) : std::next(it);
     for (const auto& [name, given] : flags)
         if (given) values_[name].push_back("");

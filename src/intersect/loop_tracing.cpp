@@ -450,16 +450,18 @@ void consolidateCurve(const SurfacePair& surfaces, TracedCurve& curve, const Tra
     const Domain d = domainOf(surfaces);
     const bool closed = curve.closed;
     std::vector<PointOn2> chain = std::move(curve.points);
+    // The walk's points (on both surfaces within the point tolerance, far below the chordal
+    // one) are much denser than needed: keep only those the chordal tolerance asks for, refine
+    // those onto both surfaces, then densify where a chord strays from the curve.
+    const auto coincide = [&](const PointOn2& p, const PointOn2& q) { return distance(p.point, q.point) <= 1e-3 * tolerances.closing; };
+    if (closed && chain.size() > 1 && distance(chain.back().point, chain.front().point) <= tolerances.point) chain.pop_back();
+    chain = closed ? decimateClosed(chain, 0.5 * tolerances.chordal) : decimate(chain, 0.5 * tolerances.chordal);
     refineAll(surfaces, chain, tolerances.point);
     // Drop points that coincide with their predecessor (piece junctions).
     std::vector<PointOn2> clean;
     for (const PointOn2& p : chain)
-        if (clean.empty() || distance(clean.back().point, p.point) > 1e-3 * tolerances.closing) clean.push_back(p);
-    if (closed && clean.size() > 1 && distance(clean.back().point, clean.front().point) <= 1e-3 * tolerances.closing)
-        clean.pop_back();
-    // The walk's points are much denser than needed: keep only those the chordal tolerance
-    // asks for, then densify where a chord strays from the curve.
-    clean = closed ? decimateClosed(clean, 0.5 * tolerances.chordal) : decimate(clean, 0.5 * tolerances.chordal);
+        if (clean.empty() || !coincide(clean.back(), p)) clean.push_back(p);
+    if (closed && clean.size() > 1 && coincide(clean.back(), clean.front())) clean.pop_back();
     std::vector<PointOn2> dense;
     if (!clean.empty()) dense.push_back(clean.front());
     const std::size_t segments = clean.empty() ? 0 : closed ? clean.size() : clean.size() - 1;

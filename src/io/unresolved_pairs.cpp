@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "towgeom/error.hpp"
 #include "towgeom/report.hpp"
 #include "towgeom/export.hpp"
 
@@ -62,7 +63,8 @@ std::vector<UnresolvedPairEntry> unresolvedPairs(const ResolveResult& result)
 {
     std::vector<UnresolvedPairEntry> pairs;
     for (const SkippedLoop& s : result.skippedLoops) {
-        if (s.loop >= result.intersections.loops.size()) continue;
+        if (s.loop >= result.intersections.loops.size())
+            throw Error(ErrorCode::InvalidArgument, "skipped loop " + std::to_string(s.loop) + " is not in the result's report");
         const IntersectionLoop& l = result.intersections.loops[s.loop];
         if (s.reason == SkippedLoop::Reason::OpenCurve)
             addOnce(pairs, {l.towA(), l.towB(), "open_curve", "open intersection curve: " + l.openReason()});
