@@ -66,6 +66,16 @@ struct SeamJump {
     double second = 0.0;    ///< largest relative jump of d2S/du2, d2S/dv2, d2S/dudv
 };
 
+/// @defgroup surfaces Fitting tow surfaces (stage 1)
+/// @brief TowSurface::fit(): each tow's stack of sections as an exact periodic B-spline
+/// surface, the input of every later stage.
+///
+/// @code
+/// const towgeom::TowSurface tow = towgeom::TowSurface::fit(towgeom::readStackFile("warp_0.stw"));
+/// std::cout << tow.name() << ": volume " << tow.volume() << ", largest deviation " << tow.deviation().max << "\n";
+/// @endcode
+/// @{
+
 /// One tow as an immutable bicubic B-spline surface S(u,v) fitted to a TowStack.
 ///
 /// **Parameterisation.** u runs along the tow over [0, 1]: section i of the input sits at
@@ -197,5 +207,7 @@ private:
     explicit TowSurface(std::shared_ptr<const Impl> impl);
     std::shared_ptr<const Impl> impl_;
 };
+
+/// @}
 
 TOWGEOM_END_NAMESPACE
