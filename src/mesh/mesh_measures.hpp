@@ -1,6 +1,6 @@
 // Volumes and checks of triangle meshes over a global node list, without copying them (the
 // resolve reports' figures). closedVolume() does not check the mesh: resolve checks every tow
-// with nonManifoldEdges() and its boundary loop count; the public enclosedVolume() checks and
+// with surfaceFigures() (bad edges and boundary loops); the public enclosedVolume() checks and
 // measures any TriangleMesh with CGAL.
 #pragma once
 
@@ -19,9 +19,6 @@ namespace detail {
 /// positive volume), by the divergence theorem.
 double signedVolume(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles);
 
-/// The edges of @p triangles that make them no oriented 2-manifold: used by more than two
-/// triangles, twice in the same direction, or joining a node to itself.
-std::size_t nonManifoldEdges(const std::vector<std::array<std::size_t, 3>>& triangles);
 
 /// The number of connected pieces of @p triangles (triangles joined through shared nodes).
 std::size_t connectedPieces(const std::vector<std::array<std::size_t, 3>>& triangles);
@@ -40,7 +37,9 @@ struct SurfaceFigures {
     double volume = 0.0;            ///< closedVolume()
     double area = 0.0;              ///< the triangles' area
     std::size_t boundaryLoops = 0;  ///< boundary loops
-    std::size_t badEdges = 0;       ///< nonManifoldEdges()
+    /// Edges that make the mesh no oriented 2-manifold: used by more than two triangles, twice in
+    /// the same direction, or joining a node to itself.
+    std::size_t badEdges = 0;
 };
 
 /// The SurfaceFigures of @p triangles over @p nodes.
@@ -53,7 +52,7 @@ double triangleArea(const std::vector<Point3>& nodes, const std::array<std::size
 double smallestAngle(const std::vector<Point3>& nodes, const std::array<std::size_t, 3>& t);
 
 /// Why a tow's mesh that should be closed (@p caps; else a tube open at its two ends) is not:
-/// a sentence with its @p badEdges (nonManifoldEdges()) and @p boundaryLoops.
+/// a sentence with its @p badEdges (SurfaceFigures::badEdges) and @p boundaryLoops.
 std::string notClosedMessage(bool caps, std::size_t badEdges, std::size_t boundaryLoops);
 
 }  // namespace detail

@@ -182,8 +182,6 @@ std::size_t connectedPieces(const std::vector<std::array<std::size_t, 3>>& trian
     return roots;
 }
 
-std::size_t nonManifoldEdges(const std::vector<std::array<std::size_t, 3>>& triangles) { return edgeUse(triangles).bad; }
-
 double closedVolume(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles,
                     std::size_t* loopCount)
 {
