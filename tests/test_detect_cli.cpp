@@ -117,20 +117,41 @@ TEST_CASE("towgeom detect exits 3 naming the pair when a curve is open", "[cli][
     fs::remove_all(dir);
     testing::Sampling s;
     s.points = 48;
-    const std::string files = write(dir, testing::tubeAlongX(0.5, 2.0, 0.0, 0.0, 0.0, s, "short")) +
-                              write(dir, testing::tubeAlongY(0.5, 0.7, s, "crossing"));
+    // Neighbours overlapping along their whole length and ending in the same planes: their
+    // curves reach both tows' ends at once (cap against cap), and stay open.
+    const std::string files = write(dir, testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "left")) +
+                              write(dir, testing::tubeAlongX(0.5, 4.0, 0.0, 0.9, 0.0, s, "right"));
     const Run r = cli("detect" + files + " --quiet");
     CHECK(r.status == 3);
-    CHECK(count(r.out, "\"closed\":false") == 1);
+    CHECK(count(r.out, "\"closed\":false") == 2);
     CHECK(r.out.find("\"open_reason\":\"the curve reaches an end of the first tow\"") != std::string::npos);
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-    CHECK(r.err.find("'short' and 'crossing'") != std::string::npos);
+    CHECK(r.err.find("'left' and 'right'") != std::string::npos);
     CHECK(r.err.find("[open_curve]") != std::string::npos);
     const Run allowed = cli("detect" + files + " --quiet --allow-open");
     CHECK(allowed.status == 0);
     CHECK(allowed.err == r.err);  // still named: a warning, not progress
     // The same report apart from the timings.
     CHECK(allowed.out.substr(0, allowed.out.find("\"timings_ms\"")) == r.out.substr(0, r.out.find("\"timings_ms\"")));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("towgeom detect closes a curve across the end cap of a tow ending inside another", "[cli][intersection][caps]")
+{
+    const fs::path dir = fs::temp_directory_path() / ("towgeom_detect_cap_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    testing::Sampling s;
+    s.points = 48;
+    const std::string files = write(dir, testing::tubeAlongX(0.5, 2.0, 0.0, 0.0, 0.0, s, "short")) +
+                              write(dir, testing::tubeAlongY(0.5, 0.7, s, "crossing"));
+    const Run r = cli("detect" + files + " --quiet");
+    CHECK(r.status == 3);  // found, not yet resolvable: named
+    CHECK(count(r.out, "\"closed\":false") == 0);
+    CHECK(count(r.out, "\"closed\":true") == 1);
+    CHECK(r.err == "towgeom detect: unresolved tow pair 'short' and 'crossing': the intersection loop of tows 'short' and "
+                   "'crossing' runs across the end cap of tow 'short' (a tow ends inside the other): found, not yet meshed "
+                   "[crosses_cap]\n");
+    CHECK(cli("detect" + files + " --quiet --allow-open").status == 0);
     fs::remove_all(dir);
 }
 

@@ -264,29 +264,58 @@ TEST_CASE("a tube passing through another: loops that go around it", "[intersect
     CHECK(around == 2);
 }
 
-TEST_CASE("a tow that ends inside another gives an open curve, not a loop", "[intersection][open]")
+TEST_CASE("a tow that ends inside another: its curve closes across the tow's end cap", "[intersection][caps]")
 {
-    // The x-tube stops at x = 2, in the middle of the y-tube it dips into.
+    // The x-tube (radius 0.5) stops at x = 2, in the middle of the y-tube (axis x = 2, z = 0.7)
+    // it dips into: the plane x = 2 cuts the y-tube along z = 0.2, a chord of the x-tube's end cap.
     const TowSurface x = TowSurface::fit(testing::tubeAlongX(0.5, 2.0, 0.0, 0.0, 0.0, sampling(0.0), "short"));
     const TowSurface y = TowSurface::fit(testing::tubeAlongY(0.5, 0.7, sampling(0.0), "y"));
     const std::vector<IntersectionLoop> loops = intersectPair(x, y);
     REQUIRE(loops.size() == 1);
     const IntersectionLoop& l = loops.front();
-    CHECK_FALSE(l.closed());
-    CHECK(l.openReason().find("end of the first tow") != std::string::npos);
-    CHECK(l.openKind() == IntersectionLoop::OpenKind::ReachesEndOfA);
+    REQUIRE(l.closed());
+    CHECK(l.openKind() == IntersectionLoop::OpenKind::None);
+    // Two points exactly on the cap's rim; between them the curve runs across the cap (u beyond
+    // the tube's end, its chart) along the chord.
+    CHECK(std::count_if(l.points().begin(), l.points().end(), [](const LoopPoint& p) { return std::abs(p.onA.u - 1.0) < 1e-9; }) == 2);
+    std::size_t onCap = 0;
+    double reach = 0.0;
+    for (const LoopPoint& p : l.resample(0.02)) {
+        if (p.onA.u <= 1.0) continue;
+        ++onCap;
+        CHECK(p.point.x == Approx(2.0).margin(1e-9));
+        CHECK(p.point.z == Approx(0.2).margin(1e-9));
+        reach = std::max(reach, std::abs(p.point.y));
+    }
+    CHECK(onCap >= 30);
+    CHECK(reach == Approx(std::sqrt(0.25 - 0.04)).margin(0.03));
+    // The areas against a direct integration over each tube's angle and axis: the x-tube's side
+    // inside the y-tube plus the cap's segment above z = 0.2; the y-tube inside the x-tube (x <= 2).
+    const double segment = 0.25 * std::acos(0.4) - 0.2 * std::sqrt(0.21);
+    const int n = 2000;
+    const double pi = 3.14159265358979323846;
+    double sideA = 0.0, sideB = 0.0;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const double t = 2.0 * pi * (j + 0.5) / n;
+            const double xa = 1.4 + 0.6 * (i + 0.5) / n;  // the x-tube's side near its end
+            if ((xa - 2.0) * (xa - 2.0) + (0.5 * std::cos(t) - 0.7) * (0.5 * std::cos(t) - 0.7) < 0.25) sideA += 0.5 * (2.0 * pi / n) * (0.6 / n);
+            const double yb = -0.5 + 1.0 * (i + 0.5) / n;  // the y-tube where |y| < 0.5
+            const double xb = 2.0 + 0.5 * std::sin(t), zb = 0.7 + 0.5 * std::cos(t);
+            if (xb <= 2.0 && yb * yb + zb * zb < 0.25) sideB += 0.5 * (2.0 * pi / n) * (1.0 / n);
+        }
+    CHECK(l.enclosedArea(LoopSide::A) == Approx(sideA + segment).epsilon(2e-3));
+    CHECK(l.enclosedArea(LoopSide::B) == Approx(sideB).epsilon(2e-3));
+    CHECK(l.maxDistance(LoopSide::A) <= l.tolerance());
+    CHECK(l.maxDistance(LoopSide::B) <= l.tolerance());
     // The same through a report written and read back.
     std::stringstream json;
     IntersectionReport one;
     one.loops = loops;
     writeIntersectionReport(one, {x, y}, json);
-    CHECK(readIntersectionReport(json, {x, y}).loops.front().openKind() == IntersectionLoop::OpenKind::ReachesEndOfA);
-    // Both ends on the x-tube's end section u = 1, the curve between them on both cylinders.
-    // Observed 8.3e-12 and 1.3e-11 short of u = 1 (was a margin of 1e-9).
-    CHECK(l.points().front().onA.u == Approx(1.0).margin(3e-11));
-    CHECK(l.points().back().onA.u == Approx(1.0).margin(3e-11));
-    CHECK(std::isnan(l.enclosedArea(LoopSide::A)));
-    checkOnCylinders(l, 0.5, 0.5, 0.7);
+    const IntersectionLoop back = readIntersectionReport(json, {x, y}).loops.front();
+    CHECK(back.closed());
+    CHECK(back.points().size() == l.points().size());
 }
 
 TEST_CASE("resampled loop points are exact and evenly spaced", "[intersection]")

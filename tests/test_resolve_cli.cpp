@@ -233,7 +233,8 @@ TEST_CASE("towgeom resolve skips and names an open curve (exit 3), refuses bad u
     testing::Sampling s;
     s.points = 48;
     std::string files;
-    for (const TowStack& t : {testing::tubeAlongX(0.5, 2.0, 0.0, 0.0, 0.0, s, "short"), testing::tubeAlongY(0.5, 0.7, s, "crossing")}) {
+    // Neighbours overlapping along their whole length and ending in the same planes: open curves.
+    for (const TowStack& t : {testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "short"), testing::tubeAlongX(0.5, 4.0, 0.0, 0.9, 0.0, s, "crossing")}) {
         std::ofstream o(dir / (t.name + ".stw"));
         writeStack(o, t);
         files += " '" + (dir / (t.name + ".stw")).string() + "'";
@@ -245,6 +246,21 @@ TEST_CASE("towgeom resolve skips and names an open curve (exit 3), refuses bad u
     CHECK(report.find("\"skipped\":[{\"tow_a\":\"short\",\"tow_b\":\"crossing\",\"code\":\"open_curve\",\"reason\":\"open curve:") != std::string::npos);
     CHECK(count(report, "\"boundary_loops\":0") == 2);
     checkClosed(dir / "out", {"short", "crossing"});
+    // A tow ending inside another: its loop closes across the cap; skipped (crosses_cap) for now.
+    {
+        std::string ends;
+        for (const TowStack& t : {testing::tubeAlongX(0.5, 2.0, 0.0, 0.0, 0.0, s, "stub"), testing::tubeAlongY(0.5, 0.7, s, "across")}) {
+            std::ofstream o(dir / (t.name + ".stw"));
+            writeStack(o, t);
+            ends += " '" + (dir / (t.name + ".stw")).string() + "'";
+        }
+        const Run c = cli("resolve" + ends + " --out '" + (dir / "capped").string() + "' --quiet");
+        CHECK(c.status == 3);
+        CHECK(c.err.find("[crosses_cap]") != std::string::npos);
+        const std::string capReport = testing::slurp(dir / "capped" / "report.json");
+        CHECK(capReport.find("\"code\":\"crosses_cap\"") != std::string::npos);
+        checkClosed(dir / "capped", {"stub", "across"});
+    }
     const Run allowed = cli("resolve" + files + " --out '" + (dir / "out2").string() + "' --quiet --allow-open");
     CHECK(allowed.status == 0);
     CHECK(allowed.err == r.err);  // still named: a warning, not progress

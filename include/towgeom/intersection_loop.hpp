@@ -19,6 +19,13 @@ enum class LoopSide { A, B };
 
 /// A point of an intersection curve with its parameters on both tows. v is unwrapped: it
 /// changes continuously along a loop and may lie beyond the period [vMin, vMax).
+///
+/// Tows are closed solids: a curve that runs into a tow's end continues across that tow's end
+/// cap (the planar end section). A point on a cap has a u beyond the tube's range: for the
+/// first end u < uMin, for the last u > uMax, and the point is c + rho (S(uEnd, v) - c), c the
+/// cap's centre and rho (0 at c, 1 on the rim) growing linearly from the cap's centre out to
+/// the rim, where u = uMin (or uMax) and the tube continues. So (u,v) stay continuous along a
+/// curve across a cap; IntersectionLoop::crossesCap() says whether a loop does.
 struct LoopPoint {
     Point3 point;  ///< in 3D: the mean of S_A(onA) and S_B(onB), which differ by at most the tolerance
     UV onA;        ///< on tow A
@@ -28,10 +35,11 @@ struct LoopPoint {
 /// One interpenetration region of two tows: the curve where their surfaces cross, consolidated
 /// into one piece (pieces split at either tow's periodic seam are joined, duplicates dropped).
 ///
-/// A closed loop bounds the region where the tows overlap. An open one (closed() false) is a
-/// curve that cannot be closed: it runs into a tow's end (openReason() says which), or the
-/// surface-surface walk could not continue. Open curves are reported, never dropped or forced
-/// shut.
+/// A closed loop bounds the region where the tows overlap, on the tows as closed solids: a curve
+/// that runs into a tow's end continues across that tow's end cap (crossesCap()). An open one
+/// (closed() false) is a curve that cannot be closed: both tows end inside each other there
+/// (cap against cap), or the surface-surface walk could not continue. Open curves are reported,
+/// never dropped or forced shut.
 ///
 /// points() are exact intersection points (refined by Newton's method onto both surfaces),
 /// dense enough that the curve stays within the chordal tolerance of the polyline through them.
@@ -67,6 +75,9 @@ public:
     };
     /// Why the curve is open, typed; OpenKind::None when closed(). openReason() says it in words.
     OpenKind openKind() const;
+    /// True when part of the curve runs across an end cap of tow @p side (a point with u beyond
+    /// that tow's tube, see LoopPoint): the tow ends inside the other there.
+    bool crossesCap(LoopSide side) const;
 
     /// The dense exact points of the curve, in order.
     const std::vector<LoopPoint>& points() const;

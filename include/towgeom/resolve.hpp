@@ -127,7 +127,10 @@ struct SkippedLoop {
         AroundTowWithoutCaps,
         /// The pair's loops go around one of the tows but do not cut it into bands alternately
         /// inside and outside the other.
-        BandsDoNotAlternate
+        BandsDoNotAlternate,
+        /// The loop runs across a tow's end cap (IntersectionLoop::crossesCap()): found and
+        /// reported, not yet meshed.
+        CrossesCap
     };
     std::size_t loop = 0;              ///< index in ResolveResult::intersections.loops
     Reason reason = Reason::OpenCurve;  ///< why

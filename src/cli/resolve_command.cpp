@@ -51,7 +51,9 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
   pieces          connected pieces of the tow's mesh: more than 1 where tows ranked above it
                   pass through it and cut it
   unresolved      tow pairs that meet but were not resolved (their meshes still overlap), once
-                  per pair and reason: open_curve (a curve runs into a tow's end), winds_around
+                  per pair and reason: open_curve (a curve stops: both tows end there, cap
+                  against cap, or tangent surfaces), crosses_cap (a loop runs across a tow's
+                  end cap where it ends inside the other: found, not yet meshed), winds_around
                   (a loop goes around a tow, one passing through the other, with --no-caps;
                   or around both tows), nested (one tow
                   inside the other), identical_or_touching (surfaces coincide or touch, no curve),
@@ -63,8 +65,9 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                   region_failed (a tow could not be connected with its loops, e.g. it was not
                   closed after the swap: its pairs get no region, their loop nodes stay in
                   the meshes)
-  skipped         every loop not resolved, with its code (open_curve, around_both_tows,
-                  around_tow_without_caps, bands_do_not_alternate) and the reason as a sentence
+  skipped         every loop not resolved, with its code (open_curve, crosses_cap,
+                  around_both_tows, around_tow_without_caps, bands_do_not_alternate) and the
+                  reason as a sentence
   volume_removed  the volume of the two tows' overlap inside the region's loop: what the
                   secondary lost there when no third tow overlaps them there
   triple_points   points where three tows' surfaces meet (node: the global node number)
@@ -97,8 +100,9 @@ Options:
                      refinement along loops)
   --no-caps          leave every tow a tube open at its two ends (default: each tow closed by
                      its two end caps, meshes of its end sections: a closed surface)
-  --allow-open       exit 0 even when an intersection curve is open (it is never resolved,
-                     and still named on stderr); other unresolved pairs still exit 3
+  --allow-open       exit 0 even when an intersection curve is open or a loop crosses a tow's
+                     end cap (neither is resolved; both still named on stderr); other
+                     unresolved pairs still exit 3
   --threads N        worker threads (default: all hardware threads)
   --quiet            no progress lines on stderr (warnings are always printed: unresolved
                      pairs, the mesh quality note)

@@ -23,7 +23,7 @@ void reportUnresolved(const char* command, const std::vector<UnresolvedPairEntry
 bool exitsUnresolved(const std::vector<UnresolvedPairEntry>& pairs, bool allowOpen)
 {
     return std::any_of(pairs.begin(), pairs.end(),
-                       [&](const UnresolvedPairEntry& p) { return !allowOpen || p.code != "open_curve"; });
+                       [&](const UnresolvedPairEntry& p) { return !allowOpen || (p.code != "open_curve" && p.code != "crosses_cap"); });
 }
 
 }  // namespace towgeom::cli

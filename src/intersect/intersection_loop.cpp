@@ -38,6 +38,31 @@ SurfacePair surfacePairOf(const TowSurface& a, const TowSurface& b)
     return s;
 }
 
+SurfacePair closedPairOf(const TowSurface& a, const TowSurface& b)
+{
+    SurfacePair s = surfacePairOf(a, b);
+    s.capsA = &a.impl().caps;
+    s.capsB = &b.impl().caps;
+    return s;
+}
+
+Point3 closedPoint(const TowSurface& t, double u, double v)
+{
+    const TowCaps& caps = t.impl().caps;
+    if (!caps.capAt(u)) return t.point(u, v);
+    const GeomAdaptor_Surface tube(t.impl().surface);
+    return chartPoint(tube, caps, u, v);
+}
+
+std::string crossesCapMessage(const IntersectionLoop& l)
+{
+    const std::string a = l.surfaceA().name(), b = l.surfaceB().name();
+    const std::string which = l.crossesCap(LoopSide::A) ? (l.crossesCap(LoopSide::B) ? "'" + a + "' and '" + b + "'" : "'" + a + "'")
+                                                        : "'" + b + "'";
+    return "the intersection loop of tows '" + a + "' and '" + b + "' runs across the end cap of tow " + which +
+           " (a tow ends inside the other): found, not yet meshed";
+}
+
 IntersectionLoop makeLoop(std::size_t towA, std::size_t towB, const TowSurface& a, const TowSurface& b,
                           const std::vector<PointOn2>& points, bool closed, const std::string& openReason,
                           double tolerance)
@@ -51,8 +76,8 @@ IntersectionLoop makeLoop(std::size_t towA, std::size_t towB, const TowSurface& 
     d->points.reserve(points.size());
     for (const PointOn2& p : points) {
         d->points.push_back({p.point, {p.ua, p.va}, {p.ub, p.vb}});
-        d->maxDistanceA = std::max(d->maxDistanceA, distance(p.point, a.point(p.ua, p.va)));
-        d->maxDistanceB = std::max(d->maxDistanceB, distance(p.point, b.point(p.ub, p.vb)));
+        d->maxDistanceA = std::max(d->maxDistanceA, distance(p.point, closedPoint(a, p.ua, p.va)));
+        d->maxDistanceB = std::max(d->maxDistanceB, distance(p.point, closedPoint(b, p.ub, p.vb)));
     }
     d->cumulative.assign(1, 0.0);
     const std::size_t n = d->points.size();
@@ -142,6 +167,7 @@ LoopPoint exactOnChord(const detail::SurfacePair& sp, const LoopPoint& p, const 
 {
     const LoopPoint guess = mix(p, q, t);
     detail::PointOn2 x = toPointOn2(guess);
+    detail::capGuess(sp, toPointOn2(p), toPointOn2(q), x);
     detail::PointCondition c;
     c.kind = detail::PointCondition::Kind::Plane;
     c.origin = guess.point;
@@ -164,7 +190,7 @@ LoopPoint pointAt(const IntersectionLoop::Data& d, const std::vector<LoopPoint>&
     const double t = len > 0.0 ? std::clamp((target - d.cumulative[k]) / len, 0.0, 1.0) : 0.0;
     if (t == 0.0) return pts[k];
     if (t == 1.0) return pts[k + 1];
-    const detail::SurfacePair sp = detail::surfacePairOf(d.a, d.b);
+    const detail::SurfacePair sp = detail::closedPairOf(d.a, d.b);
     return detail::guarded("", "IntersectionLoop::at", [&] { return exactOnChord(sp, pts[k], pts[k + 1], t, d.tolerance); });
 }
 
@@ -187,6 +213,16 @@ IntersectionLoop::OpenKind IntersectionLoop::openKind() const
     return kind;
 }
 const std::vector<LoopPoint>& IntersectionLoop::points() const { return data_->points; }
+
+bool IntersectionLoop::crossesCap(LoopSide side) const
+{
+    const ParameterRange r = (side == LoopSide::A ? data_->a : data_->b).parameterRange();
+    const double eps = 1e-9 * (r.uMax - r.uMin);
+    return std::any_of(data_->points.begin(), data_->points.end(), [&](const LoopPoint& p) {
+        const double u = sideOf(p, side).u;
+        return u < r.uMin - eps || u > r.uMax + eps;
+    });
+}
 double IntersectionLoop::length() const { return data_->cumulative.back(); }
 double IntersectionLoop::tolerance() const { return data_->tolerance; }
 
@@ -225,17 +261,27 @@ double areaOnSide(const TowSurface& s, const std::vector<LoopPoint>& pts, const 
     static const double gw[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
                                  0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
     GeomAdaptor_Surface surface(s.impl().surface);  // cached per span: fast for nearby points
-    const auto F = [&](double u, double v) {
-        double sum = 0.0;
-        const double h = 0.5 * (u - u0);
+    const detail::TowCaps& caps = s.impl().caps;
+    // Gauss on [lo, hi]: the integrand is smooth on the tube and on each cap, kinked at the rims.
+    const auto gaussOn = [&](double lo, double hi, double v) {
+        const double h = 0.5 * (hi - lo);
         if (h == 0.0) return 0.0;
+        double sum = 0.0;
         for (int k = 0; k < 8; ++k) {
             gp_Pnt p;
             gp_Vec du, dv;
-            surface.D1(u0 + h * (1.0 + gx[k]), v, p, du, dv);
+            detail::chartD1(surface, caps, lo + h * (1.0 + gx[k]), v, p, du, dv);
             sum += gw[k] * du.Crossed(dv).Magnitude();
         }
         return h * sum;
+    };
+    const auto F = [&](double u, double v) {
+        // From u0 to u, split at the tube's ends.
+        const double lo = std::min(u0, u), hi = std::max(u0, u);
+        double sum = 0.0;
+        const double cuts[4] = {lo, std::clamp(caps.uMin, lo, hi), std::clamp(caps.uMax, lo, hi), hi};
+        for (int k = 0; k < 3; ++k) sum += gaussOn(cuts[k], cuts[k + 1], v);
+        return u >= u0 ? sum : -sum;
     };
     // Each chord is replaced by the parabola in (u, v) through its ends and the exact curve
     // point in its middle, so the polygon's chord error does not enter the area.
@@ -274,7 +320,7 @@ double IntersectionLoop::enclosedArea(LoopSide side) const
             return;
         }
         const std::vector<LoopPoint> pts = walkOrder(d);
-        const detail::SurfacePair sp = detail::surfacePairOf(d.a, d.b);
+        const detail::SurfacePair sp = detail::closedPairOf(d.a, d.b);
         std::vector<LoopPoint> mids;
         mids.reserve(pts.size());
         for (std::size_t k = 0; k + 1 < pts.size(); ++k) mids.push_back(exactOnChord(sp, pts[k], pts[k + 1], 0.5, d.tolerance));
@@ -322,7 +368,7 @@ std::vector<std::vector<UV>> IntersectionLoop::clippedUvCurves(LoopSide side) co
     const double period = r.vPeriod();
     const std::vector<LoopPoint> pts = d.closed ? walkOrder(d) : d.points;
     if (pts.size() < 2) return {uvCurve(side)};
-    const detail::SurfacePair sp = detail::surfacePairOf(d.a, d.b);
+    const detail::SurfacePair sp = detail::closedPairOf(d.a, d.b);
 
     // 1. Every chord that crosses a seam value gets the exact curve point on the seam.
     std::vector<UV> uv{sideOf(pts.front(), side)};
@@ -334,6 +380,7 @@ std::vector<std::vector<UV>> IntersectionLoop::clippedUvCurves(LoopSide side) co
             if (seam <= lo) continue;
             const double t = (seam - v0) / (v1 - v0);
             detail::PointOn2 x = toPointOn2(mix(pts[k - 1], pts[k], t));
+            detail::capGuess(sp, toPointOn2(pts[k - 1]), toPointOn2(pts[k]), x);
             detail::PointCondition c;
             c.kind = side == LoopSide::A ? detail::PointCondition::Kind::FixVA : detail::PointCondition::Kind::FixVB;
             c.value = seam;

@@ -36,8 +36,18 @@ struct IntersectionLoop::Data {
 
 namespace detail {
 
-/// The two surfaces of a loop in kernel form.
+/// The two surfaces of a loop in kernel form (the tubes only).
 SurfacePair surfacePairOf(const TowSurface& a, const TowSurface& b);
+
+/// The two closed tows in kernel form: tubes and end caps (SurfacePair::capsA, capsB).
+SurfacePair closedPairOf(const TowSurface& a, const TowSurface& b);
+
+/// The sentence saying that loop @p l runs across a tow's end cap (not yet meshed).
+std::string crossesCapMessage(const IntersectionLoop& l);
+
+/// The point of tow @p t's closed chart at (u, v): its surface, or its end cap for u beyond the
+/// tube's range (cap_chart.hpp).
+Point3 closedPoint(const TowSurface& t, double u, double v);
 
 /// Builds a loop from traced points: fills the arc lengths and distances.
 IntersectionLoop makeLoop(std::size_t towA, std::size_t towB, const TowSurface& a, const TowSurface& b,

@@ -21,23 +21,32 @@ struct Eval {
     gp_Vec dua, dva, dub, dvb;
 };
 
+/// One side: on its cap when the pair has caps and u lies beyond the tube's end.
+void evaluateSide(const Handle(Geom_BSplineSurface)& surface, const Handle(GeomAdaptor_Surface)& cached, const TowCaps* caps,
+                  double u, double v, gp_Pnt& p, gp_Vec& du, gp_Vec& dv)
+{
+    if (caps && !cached.IsNull() && caps->capAt(u))
+        chartD1(*cached, *caps, u, v, p, du, dv);
+    else if (!cached.IsNull())
+        cached->D1(u, v, p, du, dv);
+    else
+        surface->D1(u, v, p, du, dv);
+}
+
 Eval evaluate(const SurfacePair& s, const PointOn2& x)
 {
     Eval e;
-    if (!s.evalA.IsNull() && !s.evalB.IsNull()) {
-        s.evalA->D1(x.ua, x.va, e.pa, e.dua, e.dva);
-        s.evalB->D1(x.ub, x.vb, e.pb, e.dub, e.dvb);
-    } else {
-        s.a->D1(x.ua, x.va, e.pa, e.dua, e.dva);
-        s.b->D1(x.ub, x.vb, e.pb, e.dub, e.dvb);
-    }
+    evaluateSide(s.a, s.evalA, s.capsA, x.ua, x.va, e.pa, e.dua, e.dva);
+    evaluateSide(s.b, s.evalB, s.capsB, x.ub, x.vb, e.pb, e.dub, e.dvb);
     return e;
 }
 
 bool inside(const SurfacePair& s, const PointOn2& x)
 {
     const double ea = 1e-9 * (s.uMaxA - s.uMinA), eb = 1e-9 * (s.uMaxB - s.uMinB);
-    return x.ua >= s.uMinA - ea && x.ua <= s.uMaxA + ea && x.ub >= s.uMinB - eb && x.ub <= s.uMaxB + eb;
+    const double loA = s.capsA ? s.capsA->uLow() : s.uMinA, hiA = s.capsA ? s.capsA->uHigh() : s.uMaxA;
+    const double loB = s.capsB ? s.capsB->uLow() : s.uMinB, hiB = s.capsB ? s.capsB->uHigh() : s.uMaxB;
+    return x.ua >= loA - ea && x.ua <= hiA + ea && x.ub >= loB - eb && x.ub <= hiB + eb;
 }
 
 }  // namespace
@@ -170,6 +179,34 @@ bool refineTriplePoint(const SurfacePair& ab, const SurfacePair& ac, PointOn3& x
     x.gap = gap;
     x.point = fromOcct(gp_Pnt((e.p[0].XYZ() + e.p[1].XYZ() + e.p[2].XYZ()) / 3.0));
     return true;
+}
+
+double capGuess(const SurfacePair& s, const PointOn2& a, const PointOn2& b, PointOn2& m)
+{
+    double turn = 0.0;
+    const auto side = [&](const TowCaps* caps, const Handle(GeomAdaptor_Surface)& tube, double ua, double ub, double va, double vb,
+                          double& u, double& v) {
+        if (!caps || tube.IsNull()) return;
+        const double eps = 1e-9 * (caps->uMax - caps->uMin);
+        const auto rimOf = [&](double x) -> const CapChart* {
+            if (const CapChart* c = caps->capAt(x)) return c;
+            if (std::abs(x - caps->uMin) <= eps && caps->start.valid) return &caps->start;
+            if (std::abs(x - caps->uMax) <= eps && caps->end.valid) return &caps->end;
+            return nullptr;
+        };
+        const CapChart *ca = rimOf(ua), *cb = rimOf(ub);
+        const CapChart* cap = caps->capAt(ua) ? ca : caps->capAt(ub) ? cb : ca == cb ? ca : nullptr;
+        double cu = 0.0, cv = 0.0;
+        if (!cap) return;
+        turn = std::max(turn, std::abs(vb - va) / (cap->v.back() - cap->v.front()));
+        if (capParameters(*tube, *cap, toOcct(m.point), v, cu, cv)) {
+            u = cu;
+            v = cv;
+        }
+    };
+    side(s.capsA, s.evalA, a.ua, b.ua, a.va, b.va, m.ua, m.va);
+    side(s.capsB, s.evalB, a.ub, b.ub, a.vb, b.vb, m.ub, m.vb);
+    return turn;
 }
 
 bool refineNearest(const SurfacePair& s, PointOn2& x, double tolerance)

@@ -7,6 +7,7 @@
 
 #include <array>
 
+#include "surface/cap_chart.hpp"
 #include "towgeom/point.hpp"
 #include "towgeom/export.hpp"
 
@@ -44,6 +45,10 @@ struct SurfacePair {
     Handle(GeomAdaptor_Surface) evalA;
     Handle(GeomAdaptor_Surface) evalB;
     double uMinA = 0.0, uMaxA = 1.0, uMinB = 0.0, uMaxB = 1.0;
+    /// When set, a u beyond a tow's end is a point on its end cap (cap_chart.hpp): the pair is
+    /// the two closed tows, and refinement may cross the rim. Null: the tubes only.
+    const TowCaps* capsA = nullptr;
+    const TowCaps* capsB = nullptr;
 };
 
 /// The unit tangent of the intersection curve at @p x: the normalised cross product of the two
@@ -69,6 +74,13 @@ struct PointOn3 {
 /// iteration does not converge, becomes singular (two of the curves tangent there) or leaves a
 /// tow's ends.
 bool refineTriplePoint(const SurfacePair& ab, const SurfacePair& ac, PointOn3& x, double tolerance);
+
+/// For a guess @p m between two curve points @p a and @p b (their (u,v) mixed): where the chord
+/// lies on a tow's end cap (an end on the cap, or both ends on its rim), that tow's (u,v) of
+/// @p m are taken from its 3D point by the cap's chart instead (mixed (u,v) of two rim points
+/// would lie on the rim, not on the cap between them). No change without caps. Returns the
+/// chord's turn about the cap's centre, as a fraction of a period (0 when not on a cap).
+double capGuess(const SurfacePair& s, const PointOn2& a, const PointOn2& b, PointOn2& m);
 
 /// refineOnIntersection() with the plane through x.point normal to the curve's tangent: the
 /// intersection point nearest a good guess.

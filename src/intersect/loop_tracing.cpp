@@ -249,7 +249,10 @@ void densify(const SurfacePair& s, const TraceTolerances& tol, std::vector<Point
         m.ub = 0.5 * (a.ub + b.ub);
         m.vb = 0.5 * (a.vb + b.vb);
         m.point = 0.5 * (a.point + b.point);
-        if (refineNearest(s, m, tol.point) && distance(m.point, 0.5 * (a.point + b.point)) > tol.chordal) {
+        // On a cap a straight chord is a curve in (u,v): chords there turn at most 1/64 of a
+        // period about its centre, so that (u,v) polygons of the loop follow it.
+        const double turn = capGuess(s, a, b, m);
+        if (refineNearest(s, m, tol.point) && (distance(m.point, 0.5 * (a.point + b.point)) > tol.chordal || turn > 1.0 / 64.0)) {
             densify(s, tol, out, a, m, depth + 1);
             densify(s, tol, out, m, b, depth + 1);
             return;

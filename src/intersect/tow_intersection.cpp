@@ -10,6 +10,7 @@
 #include "core/parallel.hpp"
 #include "core/progress_report.hpp"
 #include "intersect/broad_phase.hpp"
+#include "intersect/cap_crossing.hpp"
 #include "intersect/containment.hpp"
 #include "intersect/intersection_loop_data.hpp"
 #include "intersect/loop_tracing.hpp"
@@ -83,7 +84,10 @@ PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::ve
         }
     }
     detail::joinOpenCurves(surfaces, curves, tol);
-    for (detail::TracedCurve& t : curves) detail::consolidateCurve(surfaces, t, tol);
+    // Tows are closed solids: curves into a tow's end continue across its cap.
+    detail::closeAcrossCaps(a, b, curves, tol);
+    const detail::SurfacePair closedPair = detail::closedPairOf(a, b);
+    for (detail::TracedCurve& t : curves) detail::consolidateCurve(closedPair, t, tol);
     std::size_t slivers = 0;
     for (const detail::TracedCurve& t : curves) {
         IntersectionLoop loop = detail::makeLoop(c.a, c.b, a, b, t.points, t.closed, t.openReason, tol.point);
@@ -92,7 +96,7 @@ PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::ve
         // not an interpenetration.
         if (loop.closed() && !loop.windsAround(LoopSide::A) && !loop.windsAround(LoopSide::B)) {
             const double thin = 0.5 * loop.length() * kContactWidth * size;
-            if (!(loop.enclosedArea(LoopSide::A) > thin) || !(loop.enclosedArea(LoopSide::B) > thin)) {
+                    if (!(loop.enclosedArea(LoopSide::A) > thin) || !(loop.enclosedArea(LoopSide::B) > thin)) {
                 ++slivers;
                 continue;
             }

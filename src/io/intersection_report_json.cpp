@@ -17,6 +17,7 @@
 #include "intersect/textile_frame.hpp"
 #include "io/input_file.hpp"
 #include "io/output_files.hpp"
+#include "surface/tow_surface_impl.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
 
@@ -223,22 +224,24 @@ private:
             if (!p.is_array() || p.size() != 8) fail(at + " is not [x, y, z, uA, vA, uB, vB, s]");
             double x[8];
             for (std::size_t i = 0; i < 8; ++i) x[i] = number(p[i], at);
-            const auto inU = [](double u, const ParameterRange& r) {
+            // u beyond the tube's range lies on an end cap (LoopPoint), up to its centre.
+            const auto inU = [](double u, const ParameterRange& r, const TowSurface& t) {
                 const double slack = 1e-9 * (r.uMax - r.uMin);
-                return u >= r.uMin - slack && u <= r.uMax + slack;
+                const detail::TowCaps& caps = t.impl().caps;
+                return u >= caps.uLow() - slack && u <= caps.uHigh() + slack;
             };
             // v is unwrapped along a loop (it may go round the tow a few times), never far.
             const auto nearV = [](double v, const ParameterRange& r) {
                 return v >= r.vMin - kVPeriods * r.vPeriod() && v <= r.vMax + kVPeriods * r.vPeriod();
             };
-            if (!inU(x[3], ra) || !inU(x[5], rb)) fail(at + ": u lies off the tow's parameter range");
+            if (!inU(x[3], ra, tows_[a]) || !inU(x[5], rb, tows_[b])) fail(at + ": u lies off the tow's parameter range and its caps");
             if (!nearV(x[4], ra) || !nearV(x[6], rb)) fail(at + ": v lies more than 100 periods off the tow's");
             if (k == 0 && x[7] != 0.0) fail(at + ": the arc length s of the first point is not 0");
             if (k > 0) checkStep(d->points.back().point, {x[0], x[1], x[2]}, x[7] - d->cumulative.back(), at);
             d->points.push_back({{x[0], x[1], x[2]}, {x[3], x[4]}, {x[5], x[6]}});
             d->cumulative.push_back(x[7]);
-            d->maxDistanceA = std::max(d->maxDistanceA, distance(d->points.back().point, tows_[a].point(x[3], x[4])));
-            d->maxDistanceB = std::max(d->maxDistanceB, distance(d->points.back().point, tows_[b].point(x[5], x[6])));
+            d->maxDistanceA = std::max(d->maxDistanceA, distance(d->points.back().point, detail::closedPoint(tows_[a], x[3], x[4])));
+            d->maxDistanceB = std::max(d->maxDistanceB, distance(d->points.back().point, detail::closedPoint(tows_[b], x[5], x[6])));
         }
         const double length = number(field(l, "length", where), where + " length");
         if (d->closed) {

@@ -103,6 +103,7 @@ const char* skipCode(SkippedLoop::Reason r)
     case SkippedLoop::Reason::AroundBothTows: return "around_both_tows";
     case SkippedLoop::Reason::AroundTowWithoutCaps: return "around_tow_without_caps";
     case SkippedLoop::Reason::BandsDoNotAlternate: return "bands_do_not_alternate";
+    case SkippedLoop::Reason::CrossesCap: return "crosses_cap";
     }
     return "open_curve";
 }

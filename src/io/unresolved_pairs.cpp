@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "intersect/intersection_loop_data.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/report.hpp"
 #include "towgeom/export.hpp"
@@ -53,7 +54,10 @@ std::vector<UnresolvedPairEntry> unresolvedPairs(const IntersectionReport& repor
 {
     std::vector<UnresolvedPairEntry> pairs;
     for (const IntersectionLoop& l : report.loops)
-        if (!l.closed()) addOnce(pairs, {l.towA(), l.towB(), "open_curve", "open intersection curve: " + l.openReason()});
+        if (!l.closed())
+            addOnce(pairs, {l.towA(), l.towB(), "open_curve", "open intersection curve: " + l.openReason()});
+        else if (l.crossesCap(LoopSide::A) || l.crossesCap(LoopSide::B))
+            addOnce(pairs, {l.towA(), l.towB(), "crosses_cap", detail::crossesCapMessage(l)});
     addFindings(report, pairs);
     sortByPair(pairs);
     return pairs;
@@ -68,6 +72,8 @@ std::vector<UnresolvedPairEntry> unresolvedPairs(const ResolveResult& result)
         const IntersectionLoop& l = result.intersections.loops[s.loop];
         if (s.reason == SkippedLoop::Reason::OpenCurve)
             addOnce(pairs, {l.towA(), l.towB(), "open_curve", "open intersection curve: " + l.openReason()});
+        else if (s.reason == SkippedLoop::Reason::CrossesCap)
+            addOnce(pairs, {l.towA(), l.towB(), "crosses_cap", s.message});
         else
             addOnce(pairs, {l.towA(), l.towB(), "winds_around", s.message});
     }

@@ -40,6 +40,7 @@ LoopPoint seamPoint(const SurfacePair& sp, const LoopPoint& p, const LoopPoint& 
 {
     const double v0 = sideOf(p, side).v, v1 = sideOf(q, side).v;
     PointOn2 x = onChord(p, q, (seam - v0) / (v1 - v0));
+    capGuess(sp, onChord(p, q, 0.0), onChord(p, q, 1.0), x);
     PointCondition c;
     c.kind = side == LoopSide::A ? PointCondition::Kind::FixVA : PointCondition::Kind::FixVB;
     c.value = seam;
@@ -116,7 +117,7 @@ SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, d
                           std::vector<Point3>& globalNodes)
 {
     const std::vector<LoopPoint> base = nodesAlong(loop, spacing);
-    const SurfacePair sp = surfacePairOf(loop.surfaceA(), loop.surfaceB());
+    const SurfacePair sp = closedPairOf(loop.surfaceA(), loop.surfaceB());
     SharedLoop shared;
     shared.loop = loopIndex;
     const std::size_t n = base.size();
@@ -220,12 +221,14 @@ bool splitChord(const IntersectionLoop& loop, SharedLoop& shared, std::size_t a,
     }
     if (i == n) return false;
     const auto [p, q] = chordEnds(loop, shared, i);
+    const SurfacePair sp = closedPairOf(loop.surfaceA(), loop.surfaceB());
     PointOn2 x = onChord(p, q, t);
+    capGuess(sp, onChord(p, q, 0.0), onChord(p, q, 1.0), x);
     PointCondition c;
     c.kind = PointCondition::Kind::Plane;
     c.origin = x.point;
     c.normal = q.point - p.point;
-    refineOnIntersection(surfacePairOf(loop.surfaceA(), loop.surfaceB()), x, c, loop.tolerance());
+    refineOnIntersection(sp, x, c, loop.tolerance());
     // The new node must lie in the chord's period cell on both tows: the chord does not cross a
     // seam (seam crossings are nodes), but the curve may dip across one between two nodes (a loop
     // touching a seam); such a node would fall outside the tow's rectangle. Such a chord stays.

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "core/parallel.hpp"
+#include "intersect/intersection_loop_data.hpp"
 #include "core/progress_report.hpp"
 #include "mesh/end_caps.hpp"
 #include "mesh/loop_nodes.hpp"
@@ -146,6 +147,8 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
         using Why = SkippedLoop::Reason;
         if (!l.closed())
             result.skippedLoops.push_back({i, Why::OpenCurve, "open curve: " + l.openReason()});
+        else if (l.crossesCap(LoopSide::A) || l.crossesCap(LoopSide::B))
+            result.skippedLoops.push_back({i, Why::CrossesCap, detail::crossesCapMessage(l)});
         else if (l.windsAround(LoopSide::A) && l.windsAround(LoopSide::B))
             result.skippedLoops.push_back({i, Why::AroundBothTows, "the loop goes around both tows '" + l.surfaceA().name() +
                                                                        "' and '" + l.surfaceB().name() + "'"});

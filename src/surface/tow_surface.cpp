@@ -39,6 +39,7 @@ void setUnitFrame(TowSurface::Impl& tow)
         for (const Point3& p : section) box.add(p);
     tow.unitFrame = Frame::around(box, tow.towSize);
     tow.unit = surfaceInFrame(tow.surface, tow.unitFrame);
+    tow.caps = capChartsOf(tow.surface);
 }
 
 TowSurface inFrame(const TowSurface& tow, const Frame& frame)
@@ -49,6 +50,7 @@ TowSurface inFrame(const TowSurface& tow, const Frame& frame)
         for (Point3& p : section) p = frame.toFrame(p);
     moved->towSize = frame.lengthToFrame(t.towSize);
     moved->surface = surfaceInFrame(t.surface, frame);
+    moved->caps = capChartsOf(moved->surface);
     // The unit surface stays as it is; only the map to it changes (scales are powers of two).
     moved->unitFrame.origin = frame.toFrame(t.unitFrame.origin);
     moved->unitFrame.scale = t.unitFrame.scale / frame.scale;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "surface/cap_chart.hpp"
 #include "surface/frame.hpp"
 #include "towgeom/tow_surface.hpp"
 #include "towgeom/export.hpp"
@@ -27,6 +28,8 @@ struct TowSurface::Impl {
     // underflow depends on the user's units.
     detail::Frame unitFrame;
     Handle(Geom_BSplineSurface) unit;
+    // The end caps as the continuation of the surface's (u,v) space (see cap_chart.hpp).
+    detail::TowCaps caps;
 };
 
 namespace detail {
