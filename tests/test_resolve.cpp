@@ -445,3 +445,32 @@ TEST_CASE("the minimum angle asked for is the one the mesher refines to", "[reso
     CHECK(q20.fractionAtLeast(20) >= 0.99);
     CHECK(q30.fractionAtLeast(25) >= 0.99);
 }
+
+TEST_CASE("a tow ending inside another: its loop across the cap is found and skipped (crosses_cap), the rest meshed", "[resolve][caps]")
+{
+    // The x-tube ends at x = 2 inside the y-tube (axis x = 2, z = d). For d = 0.7 the cap's part
+    // inside the y-tube is a segment off its centre; for d = 0.3 it holds the centre, and the
+    // loop goes once around the x-tube in its closed chart (tube and cap).
+    for (const double d : {0.7, 0.3}) {
+        DYNAMIC_SECTION("d = " << d)
+        {
+            const std::vector<TowSurface> tows{TowSurface::fit(testing::tubeAlongX(0.5, 2.0, 0.0, 0.0, 0.0, sampling(0.0, 41, 48), "stub")),
+                                               TowSurface::fit(testing::tubeAlongY(0.5, d, sampling(0.0, 41, 48), "y"))};
+            const IntersectionReport report = intersectTows(tows);
+            REQUIRE(report.loops.size() == 1);
+            const IntersectionLoop& l = report.loops.front();
+            CHECK(l.closed());
+            CHECK(l.crossesCap(LoopSide::A));
+            CHECK_FALSE(l.crossesCap(LoopSide::B));
+            CHECK(l.windsAround(LoopSide::A) == (d < 0.5));
+            CHECK_FALSE(l.windsAround(LoopSide::B));
+            ResolveOptions o;
+            o.mesh.edgeLength = 0.1;
+            const ResolveResult r = resolveTextile(tows, report, o);
+            REQUIRE(r.skippedLoops.size() == 1);
+            CHECK(r.skippedLoops.front().reason == SkippedLoop::Reason::CrossesCap);
+            CHECK(r.mesh.regions.empty());
+            for (const TowResolution& t : r.tows) CHECK(t.boundaryLoops == 0);
+        }
+    }
+}

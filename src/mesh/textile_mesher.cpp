@@ -133,7 +133,8 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
         for (std::size_t i = 0; i < loops.size(); ++i) {
             const IntersectionLoop& l = loops[i];
             if (!options.mesh.caps || !l.closed() || excluded.count({l.towA(), l.towB()}) ||
-                (l.windsAround(LoopSide::A) && l.windsAround(LoopSide::B)))
+                (l.windsAround(LoopSide::A) && l.windsAround(LoopSide::B)) || l.crossesCap(LoopSide::A) ||
+                l.crossesCap(LoopSide::B))
                 continue;
             if (l.windsAround(LoopSide::A)) winding[{l.towA(), l.towB()}].push_back(i);
             if (l.windsAround(LoopSide::B)) winding[{l.towB(), l.towA()}].push_back(i);
