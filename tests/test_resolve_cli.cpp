@@ -246,7 +246,8 @@ TEST_CASE("towgeom resolve skips and names an open curve (exit 3), refuses bad u
     CHECK(report.find("\"skipped\":[{\"tow_a\":\"short\",\"tow_b\":\"crossing\",\"code\":\"open_curve\",\"reason\":\"open curve:") != std::string::npos);
     CHECK(count(report, "\"boundary_loops\":0") == 2);
     checkClosed(dir / "out", {"short", "crossing"});
-    // A tow ending inside another: its loop closes across the cap; skipped (crosses_cap) for now.
+    // A tow ending inside another: its loop closes across the cap and is resolved; without caps
+    // it is skipped (crosses_cap).
     {
         std::string ends;
         for (const TowStack& t : {testing::tubeAlongX(0.5, 2.0, 0.0, 0.0, 0.0, s, "stub"), testing::tubeAlongY(0.5, 0.7, s, "across")}) {
@@ -255,11 +256,15 @@ TEST_CASE("towgeom resolve skips and names an open curve (exit 3), refuses bad u
             ends += " '" + (dir / (t.name + ".stw")).string() + "'";
         }
         const Run c = cli("resolve" + ends + " --out '" + (dir / "capped").string() + "' --quiet");
-        CHECK(c.status == 3);
-        CHECK(c.err.find("[crosses_cap]") != std::string::npos);
-        const std::string capReport = testing::slurp(dir / "capped" / "report.json");
-        CHECK(capReport.find("\"code\":\"crosses_cap\"") != std::string::npos);
+        INFO(c.err);
+        CHECK(c.status == 0);
+        CHECK(c.err.empty());
+        CHECK(count(testing::slurp(dir / "capped" / "report.json"), "\"volume_removed\"") == 1);
         checkClosed(dir / "capped", {"stub", "across"});
+        const Run open = cli("resolve" + ends + " --out '" + (dir / "uncapped").string() + "' --quiet --no-caps");
+        CHECK(open.status == 3);
+        CHECK(open.err.find("[crosses_cap]") != std::string::npos);
+        CHECK(testing::slurp(dir / "uncapped" / "report.json").find("\"code\":\"crosses_cap\"") != std::string::npos);
     }
     const Run allowed = cli("resolve" + files + " --out '" + (dir / "out2").string() + "' --quiet --allow-open");
     CHECK(allowed.status == 0);

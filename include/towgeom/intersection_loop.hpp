@@ -25,7 +25,8 @@ enum class LoopSide { A, B };
 /// first end u < uMin, for the last u > uMax, and the point is c + rho (S(uEnd, v) - c), c the
 /// cap's centre and rho (0 at c, 1 on the rim) growing linearly from the cap's centre out to
 /// the rim, where u = uMin (or uMax) and the tube continues. So (u,v) stay continuous along a
-/// curve across a cap; IntersectionLoop::crossesCap() says whether a loop does.
+/// curve across a cap; IntersectionLoop::crossesCap() says whether a loop does, and
+/// TowSurface::pointOnClosed() evaluates such (u,v).
 struct LoopPoint {
     Point3 point;  ///< in 3D: the mean of S_A(onA) and S_B(onB), which differ by at most the tolerance
     UV onA;        ///< on tow A

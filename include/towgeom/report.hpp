@@ -27,7 +27,7 @@ struct UnresolvedPairEntry {
     std::size_t towB = 0;  ///< the higher tow index
     /// Why, as the reports' code: `open_curve` (a curve stops: both tows end there, cap against
     /// cap, or the surfaces are tangent), `crosses_cap` (a loop runs across a tow's end cap,
-    /// IntersectionLoop::crossesCap(): found, not yet meshed), `winds_around` (a loop goes around a tow without caps, or around
+    /// IntersectionLoop::crossesCap(), and the tows are meshed without caps), `winds_around` (a loop goes around a tow without caps, or around
     /// both tows, or a pair's loops around a tow do not cut it into alternating bands), `nested` (one tow inside the other), `identical_or_touching` (surfaces that
     /// coincide or touch, no curve), `loops_meet`, `mesh_failed` or `region_failed`
     /// (UnresolvedPair::Reason).
@@ -35,8 +35,7 @@ struct UnresolvedPairEntry {
     std::string message;  ///< a sentence saying what was found
 };
 
-/// The pairs intersectTows() found but cannot be resolved: an open curve or a loop across a
-/// tow's end cap (once per pair), one
+/// The pairs intersectTows() found but cannot be resolved: an open curve (once per pair), one
 /// tow inside the other, or surfaces that coincide or touch; sorted by pair. Pairs that only
 /// touch along a line (PairFinding::Kind::Contact) are not listed: nothing interpenetrates.
 TOWGEOM_EXPORT std::vector<UnresolvedPairEntry> unresolvedPairs(const IntersectionReport& report);

@@ -128,8 +128,8 @@ struct SkippedLoop {
         /// The pair's loops go around one of the tows but do not cut it into bands alternately
         /// inside and outside the other.
         BandsDoNotAlternate,
-        /// The loop runs across a tow's end cap (IntersectionLoop::crossesCap()): found and
-        /// reported, not yet meshed.
+        /// The loop runs across a tow's end cap (IntersectionLoop::crossesCap()), which is
+        /// resolved only when the tows are closed by their caps (MeshOptions::caps).
         CrossesCap
     };
     std::size_t loop = 0;              ///< index in ResolveResult::intersections.loops

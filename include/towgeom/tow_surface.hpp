@@ -159,6 +159,11 @@ public:
     /// S(u,v). u must lie in [uMin, uMax] (to 1e-9 of the range); v is wrapped into the period.
     /// @throws towgeom::Error (InvalidArgument) for u outside the range or non-finite input.
     Point3 point(double u, double v) const;
+    /// A point of the closed tow (tube and end caps): point(u,v) for u in [uMin, uMax]; for u
+    /// beyond the tube's ends a point of its first or last end cap in the cap's chart (see
+    /// LoopPoint), as intersection loops give them.
+    /// @throws towgeom::Error (InvalidArgument) for u beyond a cap's centre or non-finite input.
+    Point3 pointOnClosed(double u, double v) const;
     /// S and its first derivatives at (u,v); same domain rules as point().
     SurfaceDerivatives derivatives(double u, double v) const;
     /// S and its first and second derivatives at (u,v); same domain rules as point().

@@ -50,9 +50,8 @@ Options:
                       with its (u,v) on both tows; written whole or not at all), for
                       'towgeom resolve --report FILE' with the same tows in the same order:
                       one intersection, many meshes
-  --allow-open        exit 0 even when a curve is open or a loop crosses a tow's end cap
-                      (still named on stderr and reported in the JSON); nested, identical or
-                      touching tows still exit 3
+  --allow-open        exit 0 even when a curve is open (still named on stderr and reported in
+                      the JSON); nested, identical or touching tows still exit 3
   --threads N         worker threads for reading, fitting and intersecting (default: all
                       hardware threads)
   --quiet             no progress lines on stderr (warnings are always printed)
@@ -63,10 +62,9 @@ Tows are closed solids: a curve that runs into a tow's end continues across that
 tows end inside each other (cap against cap) or the walk cannot go on.
 
 Exit status: 0 every curve is closed and no tows overlap without one; 3 a tow pair is
-unresolved: a curve is open or a loop crosses a tow's end cap, which resolve does not mesh yet
-(unless --allow-open), or two tows overlap with no curve (one inside the other, identical or
-touching). One stderr line per such pair, also with --quiet:
-  towgeom detect: unresolved tow pair 'a' and 'b': MESSAGE [open_curve|crosses_cap|nested|identical_or_touching]
+unresolved: a curve is open (unless --allow-open), or two tows overlap with no curve (one inside
+the other, identical or touching). One stderr line per such pair, also with --quiet:
+  towgeom detect: unresolved tow pair 'a' and 'b': MESSAGE [open_curve|nested|identical_or_touching]
 and the JSON is printed all the same. 2 invalid input or usage (one line on stderr naming file
 and line); 1 internal failure; 130 stopped by Ctrl-C or SIGTERM (nothing printed or written).
 

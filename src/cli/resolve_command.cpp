@@ -53,7 +53,7 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
   unresolved      tow pairs that meet but were not resolved (their meshes still overlap), once
                   per pair and reason: open_curve (a curve stops: both tows end there, cap
                   against cap, or tangent surfaces), crosses_cap (a loop runs across a tow's
-                  end cap where it ends inside the other: found, not yet meshed), winds_around
+                  end cap where it ends inside the other, with --no-caps), winds_around
                   (a loop goes around a tow, one passing through the other, with --no-caps;
                   or around both tows), nested (one tow
                   inside the other), identical_or_touching (surfaces coincide or touch, no curve),
@@ -100,9 +100,9 @@ Options:
                      refinement along loops)
   --no-caps          leave every tow a tube open at its two ends (default: each tow closed by
                      its two end caps, meshes of its end sections: a closed surface)
-  --allow-open       exit 0 even when an intersection curve is open or a loop crosses a tow's
-                     end cap (neither is resolved; both still named on stderr); other
-                     unresolved pairs still exit 3
+  --allow-open       exit 0 even when an intersection curve is open (or, with --no-caps, a
+                     loop crosses a tow's end cap): never resolved, still named on stderr;
+                     other unresolved pairs still exit 3
   --threads N        worker threads (default: all hardware threads)
   --quiet            no progress lines on stderr (warnings are always printed: unresolved
                      pairs, the mesh quality note)

@@ -108,10 +108,13 @@ std::vector<TracedCurve> capRuns(const SurfacePair& closed, const TowSurface& ow
             otherU(x, side) = q.X();
             otherV(x, side) = std::isnan(vOther) ? q.Y() : q.Y() + otherPeriod * std::round((vOther - q.Y()) / otherPeriod);
             x.point = fromOcct(p);
+            // The section reaches the other tow's own end on this cap (both tows end there, cap
+            // against cap): this line is not followed, the curves into it stay open.
+            if ((q.X() <= otherMin + otherEps || q.X() >= otherMax - otherEps) && cap.contains(u)) {
+                pts.clear();
+                break;
+            }
             if (!refineNearest(closed, x, tol.point)) continue;
-            // The plane meets the other tow at its own end (both tows end there, cap against
-            // cap): not followed, the curves into this cap stay open.
-            if (std::abs(otherU(x, side) - otherMin) <= otherEps || std::abs(otherU(x, side) - otherMax) <= otherEps) return {};
             vOwn = ownV(x, side);
             vOther = otherV(x, side);
             pts.push_back(x);
@@ -153,10 +156,13 @@ std::vector<TracedCurve> capRuns(const SurfacePair& closed, const TowSurface& ow
                 run.points.push_back(pts[k]);
             } else if (!run.points.empty()) {
                 PointOn2 r;
-                if (!past || closedLine) {
-                    if (rimCrossing(closed, side, cap, pts[prev], pts[k], tol.point, r)) run.points.push_back(r);
-                }
                 run.openReason = side == LoopSide::A ? open_reason::kEndOfB : open_reason::kEndOfA;
+                if (!past || closedLine) {
+                    if (rimCrossing(closed, side, cap, pts[prev], pts[k], tol.point, r))
+                        run.points.push_back(r);
+                    else
+                        run.openReason = open_reason::kWalkStops;  // the rim point not found
+                }
                 if (run.points.size() >= 2) runs.push_back(std::move(run));
                 run = TracedCurve{};
             }

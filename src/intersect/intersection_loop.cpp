@@ -60,7 +60,18 @@ std::string crossesCapMessage(const IntersectionLoop& l)
     const std::string which = l.crossesCap(LoopSide::A) ? (l.crossesCap(LoopSide::B) ? "'" + a + "' and '" + b + "'" : "'" + a + "'")
                                                         : "'" + b + "'";
     return "the intersection loop of tows '" + a + "' and '" + b + "' runs across the end cap of tow " + which +
-           " (a tow ends inside the other): found, not yet meshed";
+           " (a tow ends inside the other), resolved only with end caps (MeshOptions::caps)";
+}
+
+SurfaceDerivatives closedDerivatives(const TowSurface& t, double u, double v)
+{
+    const TowCaps& caps = t.impl().caps;
+    if (!caps.capAt(u)) return t.derivatives(u, v);
+    const GeomAdaptor_Surface tube(t.impl().surface);
+    gp_Pnt p;
+    gp_Vec du, dv;
+    chartD1(tube, caps, u, v, p, du, dv);
+    return {fromOcct(p), fromOcct(du), fromOcct(dv)};
 }
 
 IntersectionLoop makeLoop(std::size_t towA, std::size_t towB, const TowSurface& a, const TowSurface& b,

@@ -42,12 +42,15 @@ SurfacePair surfacePairOf(const TowSurface& a, const TowSurface& b);
 /// The two closed tows in kernel form: tubes and end caps (SurfacePair::capsA, capsB).
 SurfacePair closedPairOf(const TowSurface& a, const TowSurface& b);
 
-/// The sentence saying that loop @p l runs across a tow's end cap (not yet meshed).
+/// The sentence saying that loop @p l runs across a tow's end cap (skipped without caps).
 std::string crossesCapMessage(const IntersectionLoop& l);
 
 /// The point of tow @p t's closed chart at (u, v): its surface, or its end cap for u beyond the
 /// tube's range (cap_chart.hpp).
 Point3 closedPoint(const TowSurface& t, double u, double v);
+
+/// closedPoint() with its first derivatives: S_u x S_v points out of the tow on the caps too.
+SurfaceDerivatives closedDerivatives(const TowSurface& t, double u, double v);
 
 /// Builds a loop from traced points: fills the arc lengths and distances.
 IntersectionLoop makeLoop(std::size_t towA, std::size_t towB, const TowSurface& a, const TowSurface& b,

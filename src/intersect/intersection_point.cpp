@@ -202,6 +202,16 @@ double capGuess(const SurfacePair& s, const PointOn2& a, const PointOn2& b, Poin
         if (capParameters(*tube, *cap, toOcct(m.point), v, cu, cv)) {
             u = cu;
             v = cv;
+            return;
+        }
+        // At the cap's centre (a chord through it), where v is undefined: a point a little
+        // along the chord instead.
+        const Vector3 along = b.point - a.point;
+        const Point3 off = m.point + 1e-3 * along;
+        if (capParameters(*tube, *cap, toOcct(off), v, cu, cv)) {
+            m.point = off;
+            u = cu;
+            v = cv;
         }
     };
     side(s.capsA, s.evalA, a.ua, b.ua, a.va, b.va, m.ua, m.va);

@@ -54,10 +54,7 @@ std::vector<UnresolvedPairEntry> unresolvedPairs(const IntersectionReport& repor
 {
     std::vector<UnresolvedPairEntry> pairs;
     for (const IntersectionLoop& l : report.loops)
-        if (!l.closed())
-            addOnce(pairs, {l.towA(), l.towB(), "open_curve", "open intersection curve: " + l.openReason()});
-        else if (l.crossesCap(LoopSide::A) || l.crossesCap(LoopSide::B))
-            addOnce(pairs, {l.towA(), l.towB(), "crosses_cap", detail::crossesCapMessage(l)});
+        if (!l.closed()) addOnce(pairs, {l.towA(), l.towB(), "open_curve", "open intersection curve: " + l.openReason()});
     addFindings(report, pairs);
     sortByPair(pairs);
     return pairs;

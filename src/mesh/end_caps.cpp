@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <queue>
 
 #include "mesh/constraint_keeping_mesher.hpp"
@@ -54,7 +55,7 @@ void markInside(CDT& cdt)
 }  // namespace
 
 CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>& loop, double h, double minAngle,
-                std::size_t firstNewNode, const std::string& where)
+                std::size_t firstNewNode, const std::string& where, const std::vector<CapConstraint>& paths)
 {
     // The plane: Newell's normal (along the loop's right-hand turn) through the centroid.
     Point3 c;
@@ -84,6 +85,25 @@ CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>
     for (std::size_t k = 0; k < vs.size(); ++k) cdt.insert_constraint(vs[k], vs[(k + 1) % vs.size()]);
     if (cdt.number_of_vertices() != loop.size())
         throw Error(ErrorCode::SelfIntersectingSection, "two nodes of the end of the tow's mesh coincide in its plane", where);
+    // Loop pieces on the cap: their rim nodes are the boundary's vertices, the others new ones.
+    std::map<std::size_t, CDT::Vertex_handle> vertexOf;
+    for (std::size_t k = 0; k < loop.size(); ++k) vertexOf[loop[k]] = vs[k];
+    for (const CapConstraint& path : paths) {
+        std::vector<CDT::Vertex_handle> line;
+        for (std::size_t node : path.nodes) {
+            auto it = vertexOf.find(node);
+            if (it == vertexOf.end()) {
+                const CDT::Vertex_handle v = cdt.insert(K::Point_2(dot(nodes[node] - c, e1), dot(nodes[node] - c, e2)));
+                if (v->info().node >= 0 && static_cast<std::size_t>(v->info().node) != node)
+                    throw Error(ErrorCode::Internal, "two intersection-loop nodes fall on the same point of the tow's end cap", where);
+                v->info().node = static_cast<long>(node);
+                it = vertexOf.emplace(node, v).first;
+            }
+            line.push_back(it->second);
+        }
+        for (std::size_t k = 0; k + 1 < line.size(); ++k) cdt.insert_constraint(line[k], line[k + 1]);
+        if (path.closed && line.size() > 2) cdt.insert_constraint(line.back(), line.front());
+    }
     markInside(cdt);
     const double a = std::clamp(minAngle, 1.0, 30.0) * 3.14159265358979323846 / 180.0;
     refineKeepingConstraints(cdt, CGAL::Delaunay_mesh_size_criteria_2<CDT>(std::sin(a) * std::sin(a), h), false);
@@ -105,7 +125,8 @@ CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>
 /// (meshCap(), at the tow's mesh size); @p face gets each triangle's part (TowFace::Start or End
 /// by the nearer of the tow's first and last sections). The caps' nodes are appended to @p nodes.
 void closeEnds(const std::vector<TowSurface>& tows, const std::vector<double>& towH, double minAngle, std::size_t threads,
-               std::vector<ParametricMesh>& meshes, std::vector<std::vector<TowFace>>& face, std::vector<Point3>& nodes)
+               std::vector<ParametricMesh>& meshes, std::vector<std::vector<TowFace>>& face, std::vector<Point3>& nodes,
+               const std::vector<std::vector<CapConstraint>>& capPaths, std::vector<std::string>* failed)
 {
     constexpr std::size_t kLocal = std::size_t(1) << 60;  // marks a cap's own new nodes
     std::vector<std::vector<std::pair<CapMesh, TowFace>>> caps(tows.size());
@@ -128,9 +149,17 @@ void closeEnds(const std::vector<TowSurface>& tows, const std::vector<double>& t
         const bool firstIsStart = distance(c[0], first) + distance(c[1], last) <= distance(c[0], last) + distance(c[1], first);
         for (std::size_t e = 0; e < 2; ++e) {
             const TowFace f = (e == 0) == firstIsStart ? TowFace::Start : TowFace::End;
+            std::vector<CapConstraint> paths;
+            if (t < capPaths.size())
+                for (const CapConstraint& p : capPaths[t])
+                    if ((p.end < 0) == (f == TowFace::Start)) paths.push_back(p);
             try {
-                caps[t].emplace_back(meshCap(nodes, ends[e], towH[t], minAngle, kLocal, "tow '" + tows[t].name() + "'"), f);
+                caps[t].emplace_back(meshCap(nodes, ends[e], towH[t], minAngle, kLocal, "tow '" + tows[t].name() + "'", paths), f);
             } catch (const Error& x) {
+                if (failed && !paths.empty()) {  // with loop pieces on it: the caller leaves those loops out
+                    (*failed)[t] = std::string(f == TowFace::Start ? "start" : "end") + " cap: " + x.message();
+                    return;
+                }
                 throw Error(ErrorCode::InvalidArgument,
                             std::string("its ") + (f == TowFace::Start ? "start" : "end") + " cap cannot be meshed: " + x.message() +
                                 " (the tube's end nodes, about h apart, make no simple polygon of a section this concave "

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/loop_nodes.hpp"
 #include "mesh/parametric_mesher.hpp"
 #include "towgeom/point.hpp"
 #include "towgeom/textile_mesh.hpp"
@@ -32,16 +33,22 @@ struct CapMesh {
 /// @throws Error (SelfIntersectingSection) naming @p where when the loop is no simple polygon in
 /// its plane (resolveTextile() turns it into InvalidArgument: the mesh size is too coarse for
 /// the section).
+/// @p paths are loop pieces on the cap (global nodes, projected into its plane): constraints of
+/// the mesh, their ends nodes of @p loop or closed.
 CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>& loop, double h, double minAngle,
-                std::size_t firstNewNode, const std::string& where);
+                std::size_t firstNewNode, const std::string& where, const std::vector<CapConstraint>& paths = {});
 
 /// Closes every tow's tube mesh (@p meshes, open at their two ends) by its two end caps
 /// (meshCap(), at the tow's mesh size @p towH); @p face gets each triangle's part
 /// (TowFace::Start or End by the nearer of the tow's first and last sections). The caps' nodes
-/// are appended to @p nodes.
+/// are appended to @p nodes. @p capPaths, if given, holds per tow the loop pieces on its caps
+/// (CapConstraint::end -1 the first end's, +1 the last's), constraints of those caps' meshes.
+/// A cap with loop pieces that cannot be meshed is noted in @p failed (one entry per tow, if
+/// given) and that tow's caps are left out; the tow's mesh is then not closed.
 /// @throws Error (InvalidArgument) naming the tow and end whose cap cannot be meshed.
 void closeEnds(const std::vector<TowSurface>& tows, const std::vector<double>& towH, double minAngle, std::size_t threads,
-               std::vector<ParametricMesh>& meshes, std::vector<std::vector<TowFace>>& face, std::vector<Point3>& nodes);
+               std::vector<ParametricMesh>& meshes, std::vector<std::vector<TowFace>>& face, std::vector<Point3>& nodes,
+               const std::vector<std::vector<CapConstraint>>& capPaths = {}, std::vector<std::string>* failed = nullptr);
 
 }  // namespace detail
 TOWGEOM_END_NAMESPACE

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "intersect/intersection_loop_data.hpp"
 #include "intersect/intersection_point.hpp"
@@ -24,6 +25,24 @@ double periodOf(const IntersectionLoop& loop, LoopSide side)
 double vMinOf(const IntersectionLoop& loop, LoopSide side)
 {
     return (side == LoopSide::A ? loop.surfaceA() : loop.surfaceB()).parameterRange().vMin;
+}
+
+UV& sideRef(LoopPoint& p, LoopSide side) { return side == LoopSide::A ? p.onA : p.onB; }
+
+const ParameterRange& rangeOf(const IntersectionLoop& loop, LoopSide side, ParameterRange& keep)
+{
+    keep = (side == LoopSide::A ? loop.surfaceA() : loop.surfaceB()).parameterRange();
+    return keep;
+}
+
+/// Where u lies on tow @p side: -1 on its first cap, +1 on its last, 0 on the tube (its rims
+/// included, within 1e-9 of the u range).
+int capOf(const IntersectionLoop& loop, LoopSide side, double u)
+{
+    ParameterRange r;
+    rangeOf(loop, side, r);
+    const double eps = 1e-9 * (r.uMax - r.uMin);
+    return u < r.uMin - eps ? -1 : u > r.uMax + eps ? 1 : 0;
 }
 
 /// The point at fraction @p t of the chord [p, q], in 3D and on both tows (v unwrapped).
@@ -60,12 +79,20 @@ constexpr double kMaxChordBend = 0.05;
 /// within kMaxChordBend of the chord: loop nodes follow the curve's turns at any spacing.
 std::vector<LoopPoint> nodesAlong(const IntersectionLoop& loop, double spacing)
 {
-    const std::vector<LoopPoint> even = loop.resample(spacing);
-    const std::size_t n = loop.closed() ? even.size() : even.size() - 1;  // chords
     std::vector<LoopPoint> out;
     constexpr int kMaxDepth = 8;
+    // The exact point at arc-length fraction s; s beyond 1 (past the first point of a closed
+    // loop) one turn on in v.
+    const auto pointAt = [&](double s) {
+        if (s <= 1.0) return loop.at(s);
+        LoopPoint p = loop.at(s - 1.0);
+        const LoopPoint first = loop.at(0.0), last = loop.at(1.0);
+        p.onA.v += last.onA.v - first.onA.v;
+        p.onB.v += last.onB.v - first.onB.v;
+        return p;
+    };
     const auto refine = [&](auto&& self, const LoopPoint& p, const LoopPoint& q, double s0, double s1, int depth) -> void {
-        const LoopPoint mid = loop.at(0.5 * (s0 + s1));
+        const LoopPoint mid = pointAt(0.5 * (s0 + s1));
         const Point3 chordMid = 0.5 * (p.point + q.point);
         if (depth < kMaxDepth && distance(mid.point, chordMid) > kMaxChordBend * distance(p.point, q.point)) {
             self(self, p, mid, s0, 0.5 * (s0 + s1), depth + 1);
@@ -73,13 +100,51 @@ std::vector<LoopPoint> nodesAlong(const IntersectionLoop& loop, double spacing)
             self(self, mid, q, 0.5 * (s0 + s1), s1, depth + 1);
         }
     };
-    for (std::size_t k = 0; k < n; ++k) {
-        out.push_back(even[k]);
-        const double s0 = static_cast<double>(k) / static_cast<double>(n), s1 = static_cast<double>(k + 1) / static_cast<double>(n);
-        // The closing chord's end is the first point one turn on (loop.at(1)).
-        refine(refine, even[k], k + 1 < even.size() ? even[k + 1] : loop.at(1.0), s0, s1, 0);
+    // Where the loop crosses a tow's rim it turns a corner (from the tube onto the cap): those
+    // points are nodes, and the loop is resampled between them, so no chord spans a corner.
+    std::vector<double> corners;
+    const IntersectionLoop::Data& d = loop.data();
+    if (loop.closed() && (loop.crossesCap(LoopSide::A) || loop.crossesCap(LoopSide::B)) && d.cumulative.back() > 0.0)
+        for (std::size_t k = 0; k < d.points.size(); ++k)
+            for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+                const double u = sideOf(d.points[k], side).u;
+                const int here = capOf(loop, side, u);
+                const int before = capOf(loop, side, sideOf(d.points[(k + d.points.size() - 1) % d.points.size()], side).u);
+                const int after = capOf(loop, side, sideOf(d.points[(k + 1) % d.points.size()], side).u);
+                if (here == 0 && (before != 0) != (after != 0)) {
+                    corners.push_back(d.cumulative[k] / d.cumulative.back());
+                    break;
+                }
+            }
+    if (corners.empty()) {
+        const std::vector<LoopPoint> even = loop.resample(spacing);
+        const std::size_t n = loop.closed() ? even.size() : even.size() - 1;  // chords
+        for (std::size_t k = 0; k < n; ++k) {
+            out.push_back(even[k]);
+            const double s0 = static_cast<double>(k) / static_cast<double>(n), s1 = static_cast<double>(k + 1) / static_cast<double>(n);
+            // The closing chord's end is the first point one turn on (loop.at(1)).
+            refine(refine, even[k], k + 1 < even.size() ? even[k + 1] : loop.at(1.0), s0, s1, 0);
+        }
+        if (!loop.closed()) out.push_back(even.back());
+        return out;
     }
-    if (!loop.closed()) out.push_back(even.back());
+    // Each piece between two corners (the last one ending at the first corner one turn on):
+    // evenly at the spacing in arc length, at least one chord; s beyond 1 wraps around.
+    const double length = loop.length();
+    for (std::size_t c = 0; c < corners.size(); ++c) {
+        const double s0 = corners[c], s1 = c + 1 < corners.size() ? corners[c + 1] : corners[0] + 1.0;
+        const std::size_t m = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil((s1 - s0) * length / spacing)));
+        LoopPoint p = pointAt(s0);
+        for (std::size_t k = 0; k < m; ++k) {
+            const double a = s0 + (s1 - s0) * static_cast<double>(k) / static_cast<double>(m);
+            const double b = s0 + (s1 - s0) * static_cast<double>(k + 1) / static_cast<double>(m);
+            const LoopPoint q = pointAt(b);
+            out.push_back(p);
+            refine(refine, p, q, a, b, 0);
+            p = q;
+        }
+    }
+    // v continuous from the first node on (the pieces past the wrap are one turn on already).
     return out;
 }
 
@@ -149,6 +214,26 @@ SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, d
                 found.push_back({(seam - v0) / (v1 - v0), seamPoint(sp, p, q, side, seam, loop.tolerance()), side});
             }
         }
+        // Where the chord crosses a tow's rim (one end on its cap, the other on its tube): the
+        // exact point on the rim, u exactly the tube's end there.
+        for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+            const double u0 = sideOf(p, side).u, u1 = sideOf(q, side).u;
+            const int c0 = capOf(loop, side, u0), c1 = capOf(loop, side, u1);
+            if (c0 == c1) continue;
+            ParameterRange r;
+            rangeOf(loop, side, r);
+            const double rim = (c0 != 0 ? c0 : c1) < 0 ? r.uMin : r.uMax;
+            const double t = std::clamp((rim - u0) / (u1 - u0), 0.0, 1.0);
+            PointOn2 x = onChord(p, q, t);
+            (side == LoopSide::A ? x.ua : x.ub) = rim;
+            PointCondition c;
+            c.kind = side == LoopSide::A ? PointCondition::Kind::FixUA : PointCondition::Kind::FixUB;
+            c.value = rim;
+            refineOnIntersection(sp, x, c, loop.tolerance());  // on failure the interpolated point stays
+            LoopPoint at{x.point, {x.ua, x.va}, {x.ub, x.vb}};
+            sideRef(at, side).u = rim;
+            found.push_back({t, at, side});
+        }
         std::sort(found.begin(), found.end(), [](const Crossing& a, const Crossing& b) { return a.t < b.t; });
         // Both tows' seams crossed at one point (a loop through where the seams meet): one node,
         // exactly on both seams.
@@ -198,6 +283,34 @@ SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, d
     for (std::size_t k = 0; k < n; ++k) {
         shared.points.push_back(points[k]);
         shared.points.insert(shared.points.end(), inserted[k].begin(), inserted[k].end());
+    }
+    // Nodes within rounding of a rim are on it; two rim nodes in a row get the curve's point
+    // between them, so that every piece between rims (on the tube or on a cap) has a node of
+    // its own that says which it is.
+    for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+        ParameterRange r;
+        rangeOf(loop, side, r);
+        const double eps = 1e-9 * (r.uMax - r.uMin);
+        for (LoopPoint& q : shared.points) {
+            UV& uv = sideRef(q, side);
+            if (std::abs(uv.u - r.uMin) <= eps) uv.u = r.uMin;
+            if (std::abs(uv.u - r.uMax) <= eps) uv.u = r.uMax;
+        }
+        const auto atRim = [&](const LoopPoint& q) { return sideOf(q, side).u == r.uMin || sideOf(q, side).u == r.uMax; };
+        for (std::size_t k = 0; k < shared.points.size() && shared.points.size() > 1; ++k) {
+            const std::size_t m = shared.points.size();
+            LoopPoint a = shared.points[k], b = shared.points[(k + 1) % m];
+            if (!atRim(a) || !atRim(b) || sideOf(a, side).u != sideOf(b, side).u) continue;
+            if (k + 1 == m) {
+                b.onA.v += periodOf(loop, LoopSide::A) * std::round((a.onA.v - b.onA.v) / periodOf(loop, LoopSide::A));
+                b.onB.v += periodOf(loop, LoopSide::B) * std::round((a.onB.v - b.onB.v) / periodOf(loop, LoopSide::B));
+            }
+            PointOn2 x = onChord(a, b, 0.5);
+            capGuess(sp, onChord(a, b, 0.0), onChord(a, b, 1.0), x);
+            if (!refineNearest(sp, x, loop.tolerance())) continue;
+            shared.points.insert(shared.points.begin() + static_cast<std::ptrdiff_t>(k) + 1, LoopPoint{x.point, {x.ua, x.va}, {x.ub, x.vb}});
+            ++k;
+        }
     }
     // A first point that lies exactly on a seam is a seam node as it is.
     for (const LoopPoint& p : shared.points) {
@@ -299,6 +412,48 @@ std::vector<UV> loopPolygon(const SharedLoop& shared, LoopSide side)
     return uv;
 }
 
+namespace {
+
+/// Shifts each piece into the tow's rectangle by the period cell of its first chord's midpoint.
+void shiftIntoRectangle(std::vector<LoopConstraint>& pieces, double vMin, double period)
+{
+    for (LoopConstraint& c : pieces) {
+        if (c.uv.size() < 2) continue;
+        const double mid = 0.5 * (c.uv[0].v + c.uv[1].v);
+        const double shift = period * std::floor((mid - vMin) / period);
+        for (UV& q : c.uv) q.v = std::clamp(q.v - shift, vMin, vMin + period);
+    }
+    pieces.erase(std::remove_if(pieces.begin(), pieces.end(), [](const LoopConstraint& c) { return c.uv.size() < 2; }),
+                 pieces.end());
+}
+
+/// The loop on tow @p side walked once from node @p start, cut at every node @p cut says; v
+/// continuous across the closing chord (one period on for a loop that winds around the tow).
+std::vector<LoopConstraint> cutAt(const std::vector<UV>& uv, const std::vector<std::size_t>& nodes, std::size_t start, double period,
+                                  const std::function<bool(const UV&)>& cut)
+{
+    const std::size_t n = uv.size();
+    const double offset = period * std::round((uv[n - 1].v - uv[0].v) / period);
+    std::vector<LoopConstraint> pieces;
+    LoopConstraint current;
+    for (std::size_t step = 0; step <= n; ++step) {
+        const std::size_t k = (start + step) % n;
+        UV p = uv[k];
+        if (start + step >= n) p.v += offset;  // past the closing chord
+        current.uv.push_back(p);
+        current.nodes.push_back(nodes[k]);
+        if (step > 0 && cut(uv[k])) {
+            pieces.push_back(std::move(current));
+            current = LoopConstraint{};
+            current.uv.push_back(p);
+            current.nodes.push_back(nodes[k]);
+        }
+    }
+    return pieces;
+}
+
+}  // namespace
+
 std::vector<LoopConstraint> constraintsOn(const SharedLoop& shared, const IntersectionLoop& loop, LoopSide side)
 {
     const double period = periodOf(loop, side), vMin = vMinOf(loop, side);
@@ -314,6 +469,25 @@ std::vector<LoopConstraint> constraintsOn(const SharedLoop& shared, const Inters
         const double r = (v - vMin) / period;
         return r == std::round(r);
     };
+    ParameterRange range;
+    rangeOf(loop, side, range);
+    const auto atRim = [&](const UV& p) { return p.u == range.uMin || p.u == range.uMax; };
+    // A loop across a cap: only its pieces on the tube, from rim (or seam) to rim (or seam).
+    if (loop.crossesCap(side)) {
+        std::size_t start = n;
+        for (std::size_t k = 0; k < n && start == n; ++k)
+            if (atRim(uv[k])) start = k;
+        if (start == n) return {};  // wholly on a cap
+        std::vector<LoopConstraint> pieces =
+            cutAt(uv, shared.nodes, start, period, [&](const UV& p) { return atRim(p) || onSeam(p.v); });
+        pieces.erase(std::remove_if(pieces.begin(), pieces.end(),
+                                    [&](const LoopConstraint& c) {
+                                        return std::any_of(c.uv.begin(), c.uv.end(), [&](const UV& p) { return capOf(loop, side, p.u) != 0; });
+                                    }),
+                     pieces.end());
+        shiftIntoRectangle(pieces, vMin, period);
+        return pieces;
+    }
     // Start at a seam node if there is one, so every piece runs from seam to seam.
     std::size_t start = n;
     for (std::size_t k = 0; k < n && start == n; ++k)
@@ -328,34 +502,32 @@ std::vector<LoopConstraint> constraintsOn(const SharedLoop& shared, const Inters
         }
         return {c};
     }
-    // The loop walked once from that seam node back to it, v continuous across the closing
-    // chord (one period on for a loop that winds around the tow).
-    const double offset = period * std::round((uv[n - 1].v - uv[0].v) / period);
-    std::vector<LoopConstraint> pieces;
-    LoopConstraint current;
-    for (std::size_t step = 0; step <= n; ++step) {
-        const std::size_t k = (start + step) % n;
-        UV p = uv[k];
-        if (start + step >= n) p.v += offset;  // past the closing chord
-        current.uv.push_back(p);
-        current.nodes.push_back(shared.nodes[k]);
-        if (step > 0 && onSeam(uv[k].v)) {
-            pieces.push_back(std::move(current));
-            current = LoopConstraint{};
-            current.uv.push_back(p);
-            current.nodes.push_back(shared.nodes[k]);
-        }
-    }
-    // Shift each piece into the rectangle by the cell of its first chord's midpoint.
-    for (LoopConstraint& c : pieces) {
-        if (c.uv.size() < 2) continue;
-        const double mid = 0.5 * (c.uv[0].v + c.uv[1].v);
-        const double shift = period * std::floor((mid - vMin) / period);
-        for (UV& q : c.uv) q.v = std::clamp(q.v - shift, vMin, vMin + period);
-    }
-    pieces.erase(std::remove_if(pieces.begin(), pieces.end(), [](const LoopConstraint& c) { return c.uv.size() < 2; }),
-                 pieces.end());
+    // The loop walked once from that seam node back to it, cut at every seam node.
+    std::vector<LoopConstraint> pieces = cutAt(uv, shared.nodes, start, period, [&](const UV& p) { return onSeam(p.v); });
+    shiftIntoRectangle(pieces, vMin, period);
     return pieces;
+}
+
+std::vector<CapConstraint> capConstraintsOn(const SharedLoop& shared, const IntersectionLoop& loop, LoopSide side)
+{
+    if (!loop.crossesCap(side)) return {};
+    const std::vector<UV> uv = loopPolygon(shared, side);
+    const std::size_t n = uv.size();
+    ParameterRange range;
+    rangeOf(loop, side, range);
+    const auto atRim = [&](const UV& p) { return p.u == range.uMin || p.u == range.uMax; };
+    std::size_t start = n;
+    for (std::size_t k = 0; k < n && start == n; ++k)
+        if (atRim(uv[k])) start = k;
+    if (start == n) return {{capOf(loop, side, uv[0].u), shared.nodes, true}};  // wholly on a cap
+    std::vector<CapConstraint> out;
+    for (const LoopConstraint& c : cutAt(uv, shared.nodes, start, periodOf(loop, side), atRim)) {
+        int end = 0;
+        for (const UV& p : c.uv)
+            if (capOf(loop, side, p.u) != 0) end = capOf(loop, side, p.u);
+        if (end != 0) out.push_back({end, c.nodes, false});
+    }
+    return out;
 }
 
 }  // namespace detail

@@ -58,7 +58,20 @@ bool joinTouchingLoops(SharedLoop& a, const IntersectionLoop& la, SharedLoop& b,
                        std::vector<Point3>& globalNodes);
 
 /// The pieces of @p shared on tow @p side, cut at that tow's seam and shifted into its rectangle.
+/// For a loop across the tow's end caps only its pieces on the tube, from rim to rim (rim nodes
+/// lie exactly on u = uMin or uMax).
 std::vector<LoopConstraint> constraintsOn(const SharedLoop& shared, const IntersectionLoop& loop, LoopSide side);
+
+/// A piece of a loop on one of a tow's end caps: its global nodes in order, from rim node to rim
+/// node (or closed, a loop wholly on the cap).
+struct CapConstraint {
+    int end = -1;                    ///< -1 the first end's cap (u < uMin), +1 the last's
+    std::vector<std::size_t> nodes;  ///< global nodes
+    bool closed = false;
+};
+
+/// The pieces of @p shared on tow @p side's end caps (none unless the loop crosses a cap there).
+std::vector<CapConstraint> capConstraintsOn(const SharedLoop& shared, const IntersectionLoop& loop, LoopSide side);
 
 /// The loop's polygon on tow @p side in unwrapped (u,v), for point-in-polygon tests.
 std::vector<UV> loopPolygon(const SharedLoop& shared, LoopSide side);

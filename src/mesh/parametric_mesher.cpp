@@ -213,7 +213,15 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
         for (std::size_t k = 0; k < c.uv.size(); ++k)
             if (c.uv[k].v == m.range.vMin || c.uv[k].v == m.range.vMax) seamX.push_back(m.toXY(c.uv[k]).x());
     const std::vector<double> xs = stations(lx, 0.5 * h, seamX);
-    const std::vector<double> ys = stations(ly, 0.5 * h, {});
+    // Loop nodes on the tow's ends (a loop across an end cap) are stations of those ends, so
+    // that no station lies a hair's breadth from one.
+    std::vector<double> startY, endY;
+    for (const LoopConstraint& c : constraints)
+        for (const UV& p : c.uv) {
+            if (p.u == m.range.uMin) startY.push_back(m.toXY(p).y());
+            if (p.u == m.range.uMax) endY.push_back(m.toXY(p).y());
+        }
+    const std::vector<double> ys = stations(ly, 0.5 * h, startY), ysEnd = stations(ly, 0.5 * h, endY);
     const auto polyline = [&](const std::vector<K::Point_2>& pts) {
         for (std::size_t k = 0; k + 1 < pts.size(); ++k) m.cdt.insert_constraint(pts[k], pts[k + 1]);
     };
@@ -222,10 +230,8 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
         bottom.emplace_back(x, 0.0);
         top.emplace_back(x, ly);
     }
-    for (double y : ys) {
-        left.emplace_back(0.0, y);
-        right.emplace_back(lx, y);
-    }
+    for (double y : ys) left.emplace_back(0.0, y);
+    for (double y : ysEnd) right.emplace_back(lx, y);
     polyline(bottom);
     polyline(top);
     polyline(left);

@@ -133,8 +133,7 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
         for (std::size_t i = 0; i < loops.size(); ++i) {
             const IntersectionLoop& l = loops[i];
             if (!options.mesh.caps || !l.closed() || excluded.count({l.towA(), l.towB()}) ||
-                (l.windsAround(LoopSide::A) && l.windsAround(LoopSide::B)) || l.crossesCap(LoopSide::A) ||
-                l.crossesCap(LoopSide::B))
+                (l.windsAround(LoopSide::A) && l.windsAround(LoopSide::B)))
                 continue;
             if (l.windsAround(LoopSide::A)) winding[{l.towA(), l.towB()}].push_back(i);
             if (l.windsAround(LoopSide::B)) winding[{l.towB(), l.towA()}].push_back(i);
@@ -148,7 +147,7 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
         using Why = SkippedLoop::Reason;
         if (!l.closed())
             result.skippedLoops.push_back({i, Why::OpenCurve, "open curve: " + l.openReason()});
-        else if (l.crossesCap(LoopSide::A) || l.crossesCap(LoopSide::B))
+        else if ((l.crossesCap(LoopSide::A) || l.crossesCap(LoopSide::B)) && !options.mesh.caps)
             result.skippedLoops.push_back({i, Why::CrossesCap, detail::crossesCapMessage(l)});
         else if (l.windsAround(LoopSide::A) && l.windsAround(LoopSide::B))
             result.skippedLoops.push_back({i, Why::AroundBothTows, "the loop goes around both tows '" + l.surfaceA().name() +
@@ -244,8 +243,13 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
             sharedOf.emplace(node, k);
             const LoopPoint& p = s.points[static_cast<std::size_t>(std::find(s.nodes.begin(), s.nodes.end(), node) - s.nodes.begin())];
             const IntersectionLoop& l = loops[s.loop];
-            splits[l.towA()].push_back({a, b, node, p.onA});
-            splits[l.towB()].push_back({a, b, node, p.onB});
+            // A node on a tow's cap is not in its tube's mesh: the cap takes it when meshed.
+            const auto onTube = [](const TowSurface& t, const UV& uv) {
+                const ParameterRange r = t.parameterRange();
+                return uv.u >= r.uMin && uv.u <= r.uMax;
+            };
+            if (onTube(tows[l.towA()], p.onA)) splits[l.towA()].push_back({a, b, node, p.onA});
+            if (onTube(tows[l.towB()], p.onB)) splits[l.towB()].push_back({a, b, node, p.onB});
         }
         std::vector<std::size_t> busy;
         for (std::size_t t = 0; t < tows.size(); ++t)
@@ -301,7 +305,19 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
     // its end caps before the regions are made, so that a cap inside another tow is shared too.
     std::vector<std::vector<TowFace>> faceOf(tows.size());
     for (std::size_t t = 0; t < tows.size(); ++t) faceOf[t].assign(meshes[t].triangles.size(), TowFace::Side);
-    if (options.mesh.caps) closeEnds(tows, towH, options.mesh.minAngle, threads, meshes, faceOf, nodes);
+    if (options.mesh.caps) {
+        std::vector<std::vector<CapConstraint>> capPaths(tows.size());  // loop pieces on each tow's caps
+        for (const SharedLoop& s : shared) {
+            const IntersectionLoop& l = loops[s.loop];
+            for (const LoopSide side : {LoopSide::A, LoopSide::B})
+                for (CapConstraint& c : capConstraintsOn(s, l, side)) capPaths[side == LoopSide::A ? l.towA() : l.towB()].push_back(std::move(c));
+        }
+        std::vector<std::string> capFailed(tows.size());
+        closeEnds(tows, towH, options.mesh.minAngle, threads, meshes, faceOf, nodes, capPaths, &capFailed);
+        for (std::size_t t = 0; t < tows.size(); ++t)
+            if (!capFailed[t].empty()) failures.run(t, [&] { throw Error(ErrorCode::Internal, capFailed[t]); });
+        failures.throwAll();
+    }
     for (std::size_t t = 0; t < tows.size(); ++t) appendCapDirections(tows[t], faceOf[t], fibre[t]);
 
     // The stage's result: every tow's own closed mesh over the global nodes, each of its nodes on

@@ -19,6 +19,8 @@
 #include "mesh/textile_mesh_finish.hpp"
 #include "region/connected_region.hpp"
 #include "region/winding_loops.hpp"
+#include "surface/occt_convert.hpp"
+#include "surface/tow_surface_impl.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
 
@@ -68,11 +70,40 @@ Error badInput(const std::string& what, const std::string& context)
 
 /// What the classification reads from meshTows()'s result, in (u,v): every loop's node polygon
 /// on both its tows (v unwrapped), every side triangle's centroid (NaN on caps).
+/// A cap triangle of a tow with loops across its caps, for classifying it in the cap's plane:
+/// its centroid P and the rim point Q radially beyond it (in the cap's plane, about the chart's
+/// centre), and Q's (u,v) a hair inside the tube, where the loops' (u,v) polygons are exact
+/// enough (unlike near the chart's centre, where v is undefined).
+struct CapProbe {
+    int end = 0;  ///< -1 the first end's cap, +1 the last's; 0 none (not a cap triangle, or no loops)
+    double px = 0.0, py = 0.0, qx = 0.0, qy = 0.0;
+    UV rim;
+};
+
 struct Parametric {
     std::vector<std::array<std::vector<UV>, 2>> polygon;  ///< per TextileMesh::loops entry, on tow A and B
-    std::vector<std::vector<UV>> centroid;                 ///< per tow, per triangle
+    std::vector<std::vector<UV>> centroid;                 ///< per tow, per triangle (NaN on caps)
+    std::vector<std::vector<CapProbe>> probe;              ///< per tow, per triangle (tows with loops across caps)
     std::vector<bool> capped;                              ///< per tow: closed by its caps
 };
+
+/// @p p in the plane of @p cap (about its centre).
+std::array<double, 2> inCapPlane(const detail::CapChart& cap, const Point3& p)
+{
+    const gp_XYZ q = detail::toOcct(p).XYZ() - cap.centre;
+    return {q.Dot(cap.e1), q.Dot(cap.e2)};
+}
+
+/// True when the segments [a, b] and [c, d] cross (in the plane).
+bool segmentsCross(const std::array<double, 2>& a, const std::array<double, 2>& b, const std::array<double, 2>& c,
+                   const std::array<double, 2>& d)
+{
+    const auto orient = [](const std::array<double, 2>& p, const std::array<double, 2>& q, const std::array<double, 2>& r) {
+        const double x = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+        return x > 0.0 ? 1 : x < 0.0 ? -1 : 0;
+    };
+    return orient(a, b, c) * orient(a, b, d) < 0 && orient(c, d, a) * orient(c, d, b) < 0;
+}
 
 /// Checks that @p meshed is meshTows()'s result for @p tows (sizes, names, node indices, the
 /// loops' and side triangles' nodes with (u,v) on their tows) and reads it in (u,v).
@@ -86,6 +117,7 @@ Parametric readParametric(const std::vector<TowSurface>& tows, const ResolveResu
     const std::size_t n = mesh.nodes.size();
     Parametric p;
     p.centroid.resize(tows.size());
+    p.probe.resize(tows.size());
     p.capped.assign(tows.size(), false);
     for (std::size_t t = 0; t < tows.size(); ++t) {
         const TowMesh& m = mesh.tows[t];
@@ -133,11 +165,34 @@ Parametric readParametric(const std::vector<TowSurface>& tows, const ResolveResu
         const double period = tows[t].parameterRange().vPeriod();
         for (const NodeUV& e : m.parameters) at[e.first] = &e.second;
         p.centroid[t].assign(k, UV{std::nan(""), std::nan("")});
+        // Cap triangles of a tow with loops across its caps get a probe (CapProbe).
+        const bool capLoops = std::any_of(mesh.loops.begin(), mesh.loops.end(), [&](const MeshedLoop& ml) {
+            const IntersectionLoop& l = loops[ml.loop];
+            return (l.towA() == t && l.crossesCap(LoopSide::A)) || (l.towB() == t && l.crossesCap(LoopSide::B));
+        });
+        const GeomAdaptor_Surface tube(tows[t].impl().surface);
+        const detail::TowCaps& caps = tows[t].impl().caps;
+        const ParameterRange range = tows[t].parameterRange();
+        if (capLoops) p.probe[t].assign(k, CapProbe{});
         for (std::size_t i = 0; i < k; ++i) {
             const Triangle& tri = m.triangles[i];
             if (tri[0] >= n || tri[1] >= n || tri[2] >= n) throw badInput("a triangle's node is out of range", where);
             if (m.face[i] != TowFace::Side) {
                 p.capped[t] = true;
+                if (!capLoops) continue;
+                const detail::CapChart& cap = m.face[i] == TowFace::Start ? caps.start : caps.end;
+                double u = 0.0, v = 0.0;
+                const Point3 c = (1.0 / 3.0) * (mesh.nodes[tri[0]] + mesh.nodes[tri[1]] + mesh.nodes[tri[2]]);
+                if (!detail::capParameters(tube, cap, detail::toOcct(c), range.vMin, u, v)) continue;
+                CapProbe& q = p.probe[t][i];
+                q.end = m.face[i] == TowFace::Start ? -1 : 1;
+                const std::array<double, 2> pc = inCapPlane(cap, c), rim = inCapPlane(cap, tows[t].point(cap.uRim, v));
+                q.px = pc[0];
+                q.py = pc[1];
+                q.qx = rim[0];
+                q.qy = rim[1];
+                const double inward = 1e-7 * (range.uMax - range.uMin);
+                q.rim = {q.end < 0 ? range.uMin + inward : range.uMax - inward, v};
                 continue;
             }
             const UV *a = at[tri[0]], *b = at[tri[1]], *c = at[tri[2]];
@@ -205,6 +260,35 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
                 inside[a].push_back(b);
             }
         }
+    // Each active loop's chords on the caps of its tows, in the caps' planes: per (loop, side),
+    // the chords on the first and on the last cap.
+    using Chord = std::array<std::array<double, 2>, 2>;
+    std::vector<std::array<std::array<std::vector<Chord>, 2>, 2>> capChords(shared.size());
+    for (std::size_t k = 0; k < shared.size(); ++k)
+        for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+            const IntersectionLoop& l = loopOf(k);
+            if (!l.crossesCap(side)) continue;
+            const std::size_t t = side == LoopSide::A ? l.towA() : l.towB();
+            const detail::TowCaps& caps = tows[t].impl().caps;
+            const std::vector<UV>& poly = polygonOf(k, side);
+            const std::vector<std::size_t>& nodes = in.loops[shared[k]].nodes;
+            for (std::size_t i = 0; i < nodes.size(); ++i) {
+                const std::size_t j = (i + 1) % nodes.size();
+                const int end = poly[i].u < caps.uMin || poly[j].u < caps.uMin ? 0 : poly[i].u > caps.uMax || poly[j].u > caps.uMax ? 1 : -1;
+                if (end < 0) continue;
+                const detail::CapChart& cap = end == 0 ? caps.start : caps.end;
+                capChords[k][side == LoopSide::A ? 0 : 1][static_cast<std::size_t>(end)].push_back({inCapPlane(cap, N[nodes[i]]), inCapPlane(cap, N[nodes[j]])});
+            }
+        }
+    // The number of loop @p k's chords on the cap of probe @p q that the segment from @p from
+    // to @p to crosses.
+    const auto crossings = [&](std::size_t k, LoopSide side, const CapProbe& q, const std::array<double, 2>& from,
+                               const std::array<double, 2>& to) {
+        std::size_t c = 0;
+        for (const Chord& ch : capChords[k][side == LoopSide::A ? 0 : 1][q.end < 0 ? 0 : 1])
+            if (segmentsCross(from, to, ch[0], ch[1])) ++c;
+        return c;
+    };
     // Per tow, (triangle, loop) for every loop whose inside holds the triangle, by triangle.
     std::vector<std::vector<std::pair<std::size_t, std::size_t>>> hits(tows.size());
     detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
@@ -215,6 +299,15 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
                 if ((side == LoopSide::A ? l.towA() : l.towB()) != t || l.windsAround(side)) continue;  // bands: below
                 for (std::size_t tri : detail::trianglesInside(uv.centroid[t], polygonOf(k, side), period(t)))
                     hits[t].emplace_back(tri, k);
+                if (!l.crossesCap(side)) continue;
+                // Cap triangles: inside where the rim point beyond them is, unless an odd number
+                // of the loop's chords on the cap lie between.
+                for (std::size_t tri = 0; tri < uv.probe[t].size(); ++tri) {
+                    const CapProbe& q = uv.probe[t][tri];
+                    if (q.end == 0) continue;
+                    const bool rimInside = detail::insideLoop(polygonOf(k, side), q.rim, period(t));
+                    if (rimInside != (crossings(k, side, q, {q.px, q.py}, {q.qx, q.qy}) % 2 == 1)) hits[t].emplace_back(tri, k);
+                }
             }
         std::sort(hits[t].begin(), hits[t].end());
     });
@@ -307,10 +400,19 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
             for (const TowBands& b : bandsOn[t]) {
                 const std::size_t n = b.loops.size();
                 std::size_t passed = 0;
-                if (mesh.face[tri] == TowFace::End)
+                const CapProbe* q = uv.probe[t].empty() ? nullptr : &uv.probe[t][tri];
+                if (mesh.face[tri] == TowFace::Side) {
+                    passed = detail::loopsBefore(b.polygons, uv.centroid[t][tri], std::min(uMin, tows[t].impl().caps.uLow()), period(t));
+                } else if (q && q->end != 0) {
+                    // On a cap with loops across it: from the cap's centre (before every loop on
+                    // the first cap, after every loop on the last), each loop's chords crossed.
+                    for (const std::size_t k : b.loops) {
+                        const LoopSide side = loopOf(k).towA() == t ? LoopSide::A : LoopSide::B;
+                        passed += ((q->end > 0 ? 1 : 0) + crossings(k, side, *q, {0.0, 0.0}, {q->px, q->py})) % 2;
+                    }
+                } else if (mesh.face[tri] == TowFace::End) {
                     passed = n;
-                else if (mesh.face[tri] == TowFace::Side)
-                    passed = detail::loopsBefore(b.polygons, uv.centroid[t][tri], uMin, period(t));
+                }
                 if (b.bands.startInside == (passed % 2 == 1)) continue;  // outside o there
                 const std::size_t bounding = b.loops[passed > 0 ? std::min(passed, n) - 1 : 0];
                 auto [it, added] = within.try_emplace(b.other, 1, bounding);

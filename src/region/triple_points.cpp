@@ -233,6 +233,8 @@ std::vector<std::size_t> loopsOn(const std::vector<IntersectionLoop>& loops, con
 
 bool samePair(const IntersectionLoop& a, const IntersectionLoop& b) { return a.towA() == b.towA() && a.towB() == b.towB(); }
 
+bool acrossCap(const IntersectionLoop& l) { return l.crossesCap(LoopSide::A) || l.crossesCap(LoopSide::B); }
+
 }  // namespace
 
 TripleJoin joinAtTriplePoints(const std::vector<TowSurface>& tows, const std::vector<IntersectionLoop>& loops,
@@ -246,7 +248,9 @@ TripleJoin joinAtTriplePoints(const std::vector<TowSurface>& tows, const std::ve
         const std::vector<std::size_t> on = loopsOn(loops, shared, t);
         for (std::size_t a = 0; a < on.size(); ++a)
             for (std::size_t b = a + 1; b < on.size(); ++b)
-                if (!samePair(loops[shared[on[a]].loop], loops[shared[on[b]].loop])) joiner.find(t, on[a], on[b], found);
+                if (!samePair(loops[shared[on[a]].loop], loops[shared[on[b]].loop]) && !acrossCap(loops[shared[on[a]].loop]) &&
+                    !acrossCap(loops[shared[on[b]].loop]))  // triple points on caps are not looked for
+                    joiner.find(t, on[a], on[b], found);
     }
     TripleJoin out;
     std::set<std::size_t> tripleNodes;

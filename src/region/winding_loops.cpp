@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "intersect/intersection_loop_data.hpp"
 #include "towgeom/export.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
@@ -24,8 +25,13 @@ int exitsAlongU(const std::vector<TowSurface>& tows, std::size_t t, std::size_t 
     double sum = 0.0, total = 0.0;
     for (std::size_t k = 0; k < pts.size(); k += step) {
         const UV a = onTow(pts[k], l, t), b = onTow(pts[k], l, o);
-        const Vector3 du = tows[t].derivatives(a.u, a.v).du;
-        const double s = dot(du, tows[o].normal(b.u, b.v)) / norm(du);
+        // On the closed tows (a loop may run across a cap): going along t is outward on its
+        // first cap, inward on its last.
+        const Vector3 du = closedDerivatives(tows[t], a.u, a.v).du;
+        const SurfaceDerivatives db = closedDerivatives(tows[o], b.u, b.v);
+        const Vector3 n = cross(db.du, db.dv);
+        if (!(norm(du) > 0.0) || !(norm(n) > 0.0)) continue;
+        const double s = dot(du, n) / (norm(du) * norm(n));
         sum += s;
         total += std::abs(s);
     }

@@ -59,6 +59,18 @@ TowSurface inFrame(const TowSurface& tow, const Frame& frame)
 
 }  // namespace detail
 
+Point3 TowSurface::pointOnClosed(double u, double v) const
+{
+    const detail::TowCaps& caps = impl_->caps;
+    if (u >= caps.uMin && u <= caps.uMax) return point(u, v);
+    const double eps = 1e-9 * (caps.uMax - caps.uMin);
+    if (!std::isfinite(u) || !std::isfinite(v) || u < caps.uLow() - eps || u > caps.uHigh() + eps)
+        throw Error(ErrorCode::InvalidArgument, "parameter u = " + std::to_string(u) + " lies beyond the tow's end caps",
+                    "tow '" + impl_->name + "'");
+    const GeomAdaptor_Surface tube(impl_->surface);
+    return detail::chartPoint(tube, caps, std::clamp(u, caps.uLow(), caps.uHigh()), v);
+}
+
 TowSurface TowSurface::fit(const TowStack& stack, const FitOptions& options)
 {
     if (options.mode == FitMode::Approximate &&
