@@ -502,3 +502,43 @@ TEST_CASE("a tow ending inside another: its loop runs across the cap, both ranks
                 }
             }
 }
+
+TEST_CASE("a thin tow entering another through its end cap only: found and resolved, both ranks", "[resolve][caps]")
+{
+    // The fat x-tube (radius 0.5, x from 0 to 2); the thin one (radius 0.1, axis y = 0.2, z = 0,
+    // x from 1.5 to 3) crosses no part of the fat tube's side: it enters through the fat tube's
+    // end cap and ends inside it. The loop is a circle on the cap, around the thin tube.
+    const std::vector<TowStack> stacks{testing::tubeAlongX(0.5, 2.0, 0.0, 0.0, 0.0, sampling(0.0, 41, 48), "fat"),
+                                       testing::tubeAlongX(0.1, 1.5, 1.5, 0.2, 0.0, sampling(0.0, 31, 32), "thin")};
+    const std::vector<TowSurface> tows = fit(stacks);
+    const IntersectionReport report = intersectTows(tows);
+    REQUIRE(report.loops.size() == 1);
+    const IntersectionLoop& l = report.loops.front();
+    CHECK(l.closed());
+    CHECK(l.crossesCap(LoopSide::A));
+    CHECK_FALSE(l.crossesCap(LoopSide::B));
+    CHECK_FALSE(l.windsAround(LoopSide::A));
+    CHECK(l.windsAround(LoopSide::B));
+    for (const LoopPoint& p : l.points()) {
+        CHECK(p.point.x == Approx(2.0).margin(1e-9));
+        CHECK(std::hypot(p.point.y - 0.2, p.point.z) == Approx(0.1).margin(2e-3));  // the thin tube's section
+    }
+    for (const bool fatFirst : {true, false}) {
+        DYNAMIC_SECTION((fatFirst ? "the fat tube" : "the thin tube") << " ranked first")
+        {
+            ResolveOptions o;
+            o.mesh.edgeLength = 0.03;
+            o.primaryPatterns = {fatFirst ? "fat" : "thin"};
+            const ResolveResult r = resolveTextile(tows, report, o);
+            CHECK(r.skippedLoops.empty());
+            for (const UnresolvedPair& u : r.unresolved) FAIL_CHECK(u.message);
+            CHECK(r.mesh.regions.size() == 1);
+            for (const TowResolution& t : r.tows) CHECK(t.boundaryLoops == 0);
+            CHECK(testing::crossingPairsBetweenTows(r.mesh) == 0);
+            const std::size_t primary = fatFirst ? 0 : 1, secondary = 1 - primary;
+            const double overlap = testing::intersectionVolume(facetedTube(stacks[0], true), facetedTube(stacks[1], true));
+            CHECK(r.tows[primary].volumeAfter == Approx(r.tows[primary].volumeBefore).epsilon(1e-12));
+            CHECK(r.tows[secondary].volumeBefore - r.tows[secondary].volumeAfter == Approx(overlap).epsilon(0.02));
+        }
+    }
+}

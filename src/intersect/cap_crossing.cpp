@@ -171,6 +171,40 @@ std::vector<TracedCurve> capRuns(const SurfacePair& closed, const TowSurface& ow
     return runs;
 }
 
+/// Does @p other's surface cross the plane of @p cap within its disc (radius @p r about the
+/// centre, with a margin)? Checked on the tow's input points (the surface interpolates them): a
+/// sign change of the distance to the plane between neighbours next to the disc. Cheap; it finds
+/// a tow that pierces the cap without touching the tube next to it.
+bool pierces(const TowSurface& other, const CapChart& cap, double r)
+{
+    if (!reaches(other, cap, 1.5 * r)) return false;
+    // The plane must cut the other tow's box.
+    const BoundingBox box = other.boundingBox();
+    bool below = false, above = false;
+    for (int k = 0; k < 8; ++k) {
+        const gp_XYZ corner((k & 1) ? box.max.x : box.min.x, (k & 2) ? box.max.y : box.min.y, (k & 4) ? box.max.z : box.min.z);
+        ((corner - cap.centre).Dot(cap.normal) > 0.0 ? above : below) = true;
+    }
+    if (!above || !below) return false;
+    const std::vector<std::vector<Point3>>& sections = other.sections();
+    const auto side = [&](const Point3& p) { return (toOcct(p).XYZ() - cap.centre).Dot(cap.normal) > 0.0; };
+    const auto near = [&](const Point3& p) {
+        const gp_XYZ q = toOcct(p).XYZ() - cap.centre;
+        return std::hypot(q.Dot(cap.e1), q.Dot(cap.e2)) <= 1.5 * r;
+    };
+    for (std::size_t i = 0; i < sections.size(); ++i)
+        for (std::size_t j = 0; j < sections[i].size(); ++j) {
+            const Point3& p = sections[i][j];
+            const Point3& around = sections[i][(j + 1) % sections[i].size()];
+            if (side(p) != side(around) && (near(p) || near(around))) return true;
+            if (i + 1 < sections.size() && j < sections[i + 1].size()) {
+                const Point3& along = sections[i + 1][j];
+                if (side(p) != side(along) && (near(p) || near(along))) return true;
+            }
+        }
+    return false;
+}
+
 /// Shifts @p piece's v on both tows by whole periods so that it starts next to @p ref.
 void alignPiece(std::vector<PointOn2>& piece, const PointOn2& ref, double periodA, double periodB)
 {
@@ -193,14 +227,17 @@ void closeAcrossCaps(const TowSurface& a, const TowSurface& b, std::vector<Trace
     for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
         const TowCaps& caps = side == LoopSide::A ? capsA : capsB;
         for (const CapChart* cap : {&caps.start, &caps.end}) {
-            // Only caps that an open curve runs into (a tow piercing a cap without touching the
-            // tube next to it is not looked for).
+            // Caps that an open curve runs into, or that the other tow's surface crosses.
             const double eps = 1e-9 * (caps.uMax - caps.uMin);
             const bool reached = std::any_of(curves.begin(), curves.end(), [&](const TracedCurve& c) {
                 return !c.closed && !c.points.empty() &&
                        (std::abs(ownU(c.points.front(), side) - cap->uRim) <= eps || std::abs(ownU(c.points.back(), side) - cap->uRim) <= eps);
             });
-            if (!cap->valid || !reached) continue;
+            if (!cap->valid) continue;
+            if (!reached) {
+                const GeomAdaptor_Surface tube((side == LoopSide::A ? a : b).impl().surface);
+                if (!pierces(side == LoopSide::A ? b : a, *cap, rimRadius(tube, *cap))) continue;
+            }
             try {
                 std::vector<TracedCurve> runs =
                     side == LoopSide::A ? capRuns(closed, a, b, side, *cap, tol) : capRuns(closed, b, a, side, *cap, tol);
