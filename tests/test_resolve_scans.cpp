@@ -10,6 +10,7 @@
 #include <towgeom/intersection_loop.hpp>
 #include <towgeom/connect_regions.hpp>
 #include <towgeom/mesh_tows.hpp>
+#include <towgeom/report.hpp>
 #include <towgeom/resolve.hpp>
 #include <towgeom/textile_mesh.hpp>
 #include <towgeom/tow_intersection.hpp>
@@ -761,4 +762,58 @@ TEST_CASE("connectRegions: triple points of pairs left out are not reported", "[
     CHECK(r.unresolved.size() == 2);
     CHECK(r.mesh.regions.size() == 1);
     CHECK(r.mesh.triplePoints.empty());
+}
+
+TEST_CASE("pressed layers with tows cut short inside others: curves across caps resolved, the rest named", "[resolve][scan][pressed][caps]")
+{
+    // The pressed weave of the sweep above, with its binders cut at 55 % of their length and one
+    // warp of each layer starting at 40 % of its length: their ends lie inside or across other
+    // tows, as where a scan's binder pieces end inside the volume.
+    std::vector<TowStack> stacks = pressedOrthogonal(3, 2);
+    std::size_t cut = 0;
+    for (TowStack& s : stacks) {
+        const std::size_t m = s.sections.size();
+        if (s.name.rfind("binder", 0) == 0) {
+            s.sections.resize(m * 55 / 100);
+            ++cut;
+        } else if (s.name.rfind("warp", 0) == 0 && s.name.back() == '1') {
+            s.sections.erase(s.sections.begin(), s.sections.begin() + static_cast<std::ptrdiff_t>(m * 40 / 100));
+            ++cut;
+        }
+    }
+    REQUIRE(cut >= 4);
+    const std::vector<TowSurface> tows = fit(stacks);
+    const IntersectionReport report = intersectTows(tows);
+    const auto acrossCap = [](const IntersectionLoop& l) { return l.closed() && (l.crossesCap(LoopSide::A) || l.crossesCap(LoopSide::B)); };
+    const std::size_t acrossCaps = static_cast<std::size_t>(std::count_if(report.loops.begin(), report.loops.end(), acrossCap));
+    WARN(report.loops.size() << " loops, " << acrossCaps << " closed across a cap, " << report.openCount() << " open");
+    // Observed 41 loops, 6 closed across a cap, 4 open (curves into the cut warps' first caps
+    // whose cap pieces were not joined: see the notes); never more.
+    CHECK(acrossCaps >= 6);
+    CHECK(report.openCount() <= 4);
+    for (const double h : {0.4, 0.15}) {
+        INFO("relative mesh size " << h);
+        ResolveOptions o;
+        o.mesh.relativeEdgeLength = h;
+        const ResolveResult res = resolveTextile(tows, report, o);
+        checkClosed(res);
+        // Every pair whose meshes still cross is named; the loops across caps of the pairs not
+        // named are resolved.
+        const std::vector<UnresolvedPairEntry> named = unresolvedPairs(res);
+        const auto isNamed = [&](std::size_t a, std::size_t b) {
+            return std::any_of(named.begin(), named.end(), [&](const UnresolvedPairEntry& e) {
+                return std::minmax(e.towA, e.towB) == std::minmax(a, b);
+            });
+        };
+        for (std::size_t i = 0; i < tows.size(); ++i)
+            for (std::size_t j = i + 1; j < tows.size(); ++j)
+                if (crossings(res, i, j) > 0) CHECK(isNamed(i, j));
+        std::size_t resolvedAcross = 0;
+        for (const IntersectionLoop& l : report.loops)
+            if (acrossCap(l) && !isNamed(l.towA(), l.towB())) ++resolvedAcross;
+        WARN("relative mesh size " << h << ": " << named.size() << " pairs named, " << resolvedAcross << " loops across caps resolved");
+        // Observed: at 0.4, 4 pairs named and 2 loops across caps resolved; at 0.15 a weft is not
+        // closed after the swap and its 15 pairs are named (notes).
+        if (h == 0.4) CHECK(resolvedAcross >= 2);
+    }
 }

@@ -121,6 +121,19 @@ std::vector<TracedCurve> capRuns(const SurfacePair& closed, const TowSurface& ow
             in.push_back(cap.contains(ownU(x, side)) ? 1 : 0);
         }
         if (pts.size() < 3) continue;
+        // A section line that ends at the other tow's seam (OCCT splits it there): its end
+        // exactly on the seam, so that it meets the next line's start.
+        const ParameterRange otherRange = other.parameterRange();
+        for (PointOn2* end : {&pts.front(), &pts.back()}) {
+            const double r = (otherV(*end, side) - otherRange.vMin) / otherPeriod;
+            if (std::abs(r - std::round(r)) > 1e-6) continue;
+            PointOn2 x = *end;
+            PointCondition c;
+            c.kind = side == LoopSide::A ? PointCondition::Kind::FixVB : PointCondition::Kind::FixVA;
+            c.value = otherRange.vMin + otherPeriod * std::round(r);
+            otherV(x, side) = c.value;
+            if (refineOnIntersection(closed, x, c, tol.point)) *end = x;
+        }
         const double step = length / n;
         const bool closedLine = distance(pts.front().point, pts.back().point) <= 2.0 * step;
         if (closedLine && distance(pts.front().point, pts.back().point) <= 1e-3 * step) {
@@ -241,6 +254,18 @@ void closeAcrossCaps(const TowSurface& a, const TowSurface& b, std::vector<Trace
             try {
                 std::vector<TracedCurve> runs =
                     side == LoopSide::A ? capRuns(closed, a, b, side, *cap, tol) : capRuns(closed, b, a, side, *cap, tol);
+                // A cap no curve runs into: only loops wholly on it, clear of its rim (a tow
+                // ending on this cap's rim, or touching it there, is no piercing).
+                if (!reached) {
+                    const double clear = 1e-6 * std::abs(cap->uRim - cap->uPole);
+                    runs.erase(std::remove_if(runs.begin(), runs.end(),
+                                              [&](const TracedCurve& r) {
+                                                  return !r.closed || std::any_of(r.points.begin(), r.points.end(), [&](const PointOn2& p) {
+                                                             return std::abs(ownU(p, side) - cap->uRim) <= clear;
+                                                         });
+                                              }),
+                               runs.end());
+                }
                 for (TracedCurve& r : runs) curves.push_back(std::move(r));
             } catch (const Standard_Failure&) {
                 // OCCT could not intersect the cap's plane: the curves into this cap stay open.

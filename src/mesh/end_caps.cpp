@@ -93,7 +93,13 @@ CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>
         for (std::size_t node : path.nodes) {
             auto it = vertexOf.find(node);
             if (it == vertexOf.end()) {
-                const CDT::Vertex_handle v = cdt.insert(K::Point_2(dot(nodes[node] - c, e1), dot(nodes[node] - c, e2)));
+                const K::Point_2 at(dot(nodes[node] - c, e1), dot(nodes[node] - c, e2));
+                // A loop node on the cap must lie inside the tube's end polygon: one on or
+                // beyond it (a loop grazing the rim, between two rim nodes with no end node
+                // between them) would make triangles outside the cap.
+                if (CGAL::bounded_side_2(polygon.begin(), polygon.end(), at, K()) != CGAL::ON_BOUNDED_SIDE)
+                    throw Error(ErrorCode::Internal, "an intersection-loop node on the tow's end cap lies on or beyond its rim polygon", where);
+                const CDT::Vertex_handle v = cdt.insert(at);
                 if (v->info().node >= 0 && static_cast<std::size_t>(v->info().node) != node)
                     throw Error(ErrorCode::Internal, "two intersection-loop nodes fall on the same point of the tow's end cap", where);
                 v->info().node = static_cast<long>(node);

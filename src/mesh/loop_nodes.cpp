@@ -6,6 +6,7 @@
 
 #include "intersect/intersection_loop_data.hpp"
 #include "intersect/intersection_point.hpp"
+#include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
@@ -307,7 +308,9 @@ SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, d
             }
             PointOn2 x = onChord(a, b, 0.5);
             capGuess(sp, onChord(a, b, 0.0), onChord(a, b, 1.0), x);
-            if (!refineNearest(sp, x, loop.tolerance())) continue;
+            if (!refineNearest(sp, x, loop.tolerance()))
+                throw Error(ErrorCode::Internal, "the curve between two nodes on a tow's rim could not be found (a loop grazing the rim)",
+                            "tows '" + loop.surfaceA().name() + "' and '" + loop.surfaceB().name() + "'");
             shared.points.insert(shared.points.begin() + static_cast<std::ptrdiff_t>(k) + 1, LoopPoint{x.point, {x.ua, x.va}, {x.ub, x.vb}});
             ++k;
         }

@@ -91,6 +91,12 @@ public:
             failures_[tow] = std::move(f);
         }
     }
+    /// A failure of tow @p tow that costs only the tow pairs @p pairs.
+    void fail(std::size_t tow, const std::string& message, std::set<TowPair> pairs)
+    {
+        if (!failures_[tow]) failures_[tow] = std::make_unique<TowMeshFailure>(TowMeshFailure{tow, message, {}});
+        failures_[tow]->pairs.insert(pairs.begin(), pairs.end());
+    }
     /// Throws every failure so far (TowMeshFailures), if any.
     void throwAll() const
     {
@@ -142,6 +148,7 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
             if (!windingBands(tows, to.first, to.second, loops, list)) disagree.insert(std::minmax(to.first, to.second));
     }
     std::vector<SharedLoop> shared;
+    std::set<TowPair> loopFailed;
     for (std::size_t i = 0; i < loops.size(); ++i) {
         const IntersectionLoop& l = loops[i];
         using Why = SkippedLoop::Reason;
@@ -162,9 +169,22 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
                                            "the loops of tows '" + l.surfaceA().name() + "' and '" + l.surfaceB().name() +
                                                "' go around one of them but do not cut it into bands alternately inside and "
                                                "outside the other"});
-        else if (!excluded.count({l.towA(), l.towB()}))
-            shared.push_back(shareLoopNodes(l, i, spacingOf(l), nodes));
+        else if (!excluded.count({l.towA(), l.towB()})) {
+            try {
+                shared.push_back(shareLoopNodes(l, i, spacingOf(l), nodes));
+            } catch (const Error& e) {
+                if (e.code() == ErrorCode::Cancelled) throw;
+                if (loopFailed.emplace(l.towA(), l.towB()).second)
+                    result.unresolved.push_back({l.towA(), l.towB(), UnresolvedPair::Reason::MeshFailed,
+                                                 "the loop nodes of tows '" + l.surfaceA().name() + "' and '" + l.surfaceB().name() +
+                                                     "' could not be placed: " + e.message()});
+            }
+        }
     }
+    // A pair one of whose loops got no nodes is left out whole.
+    shared.erase(std::remove_if(shared.begin(), shared.end(),
+                                [&](const SharedLoop& s) { return loopFailed.count({loops[s.loop].towA(), loops[s.loop].towB()}) > 0; }),
+                 shared.end());
     // Lobes of a figure-8 (one pair's loops touching where the surfaces are tangent) meet in one
     // node; loops of different pairs that cross meet in triple points, or the later pair is left
     // out.
@@ -314,8 +334,16 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
         }
         std::vector<std::string> capFailed(tows.size());
         closeEnds(tows, towH, options.mesh.minAngle, threads, meshes, faceOf, nodes, capPaths, &capFailed);
-        for (std::size_t t = 0; t < tows.size(); ++t)
-            if (!capFailed[t].empty()) failures.run(t, [&] { throw Error(ErrorCode::Internal, capFailed[t]); });
+        // A cap that could not be meshed with loop pieces on it costs the pairs of those loops.
+        for (std::size_t t = 0; t < tows.size(); ++t) {
+            if (capFailed[t].empty()) continue;
+            std::set<TowPair> pairs;
+            for (const SharedLoop& s : shared) {
+                const IntersectionLoop& l = loops[s.loop];
+                if ((l.towA() == t && l.crossesCap(LoopSide::A)) || (l.towB() == t && l.crossesCap(LoopSide::B))) pairs.emplace(l.towA(), l.towB());
+            }
+            failures.fail(t, capFailed[t], pairs);
+        }
         failures.throwAll();
     }
     for (std::size_t t = 0; t < tows.size(); ++t) appendCapDirections(tows[t], faceOf[t], fibre[t]);
