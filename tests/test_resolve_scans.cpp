@@ -766,18 +766,22 @@ TEST_CASE("connectRegions: triple points of pairs left out are not reported", "[
 
 TEST_CASE("pressed layers with tows cut short inside others: curves across caps resolved, the rest named", "[resolve][scan][pressed][caps]")
 {
-    // The pressed weave of the sweep above, with its binders cut at 55 % of their length and one
-    // warp of each layer starting at 40 % of its length: their ends lie inside or across other
-    // tows, as where a scan's binder pieces end inside the volume.
+    // The pressed weave of the sweep above, with its binders cut at 57 % of their length and one
+    // warp of each layer starting at about 41 % of its length: their ends lie inside or across
+    // other tows, as where a scan's binder pieces end inside the volume.
     std::vector<TowStack> stacks = pressedOrthogonal(3, 2);
     std::size_t cut = 0;
     for (TowStack& s : stacks) {
         const std::size_t m = s.sections.size();
         if (s.name.rfind("binder", 0) == 0) {
-            s.sections.resize(m * 55 / 100);
+            s.sections.resize(m * 57 / 100);
             ++cut;
         } else if (s.name.rfind("warp", 0) == 0 && s.name.back() == '1') {
             s.sections.erase(s.sections.begin(), s.sections.begin() + static_cast<std::ptrdiff_t>(m * 40 / 100));
+            // The cut between two sections (not at the generator's regular stations, where the
+            // cap's plane would be tangent to a weft's edge).
+            for (std::size_t j = 0; j < s.sections[0].size(); ++j)
+                s.sections[0][j] = 0.63 * s.sections[0][j] + 0.37 * s.sections[1][j];
             ++cut;
         }
     }
@@ -787,10 +791,9 @@ TEST_CASE("pressed layers with tows cut short inside others: curves across caps 
     const auto acrossCap = [](const IntersectionLoop& l) { return l.closed() && (l.crossesCap(LoopSide::A) || l.crossesCap(LoopSide::B)); };
     const std::size_t acrossCaps = static_cast<std::size_t>(std::count_if(report.loops.begin(), report.loops.end(), acrossCap));
     WARN(report.loops.size() << " loops, " << acrossCaps << " closed across a cap, " << report.openCount() << " open");
-    // Observed 41 loops, 6 closed across a cap, 4 open (curves into the cut warps' first caps
-    // whose cap pieces were not joined: see the notes); never more.
-    CHECK(acrossCaps >= 6);
-    CHECK(report.openCount() <= 4);
+    // Observed 37 loops, 5 of them across a cap.
+    CHECK(acrossCaps >= 5);
+    CHECK(report.openCount() == 0);
     for (const double h : {0.4, 0.15}) {
         INFO("relative mesh size " << h);
         ResolveOptions o;
@@ -812,8 +815,29 @@ TEST_CASE("pressed layers with tows cut short inside others: curves across caps 
         for (const IntersectionLoop& l : report.loops)
             if (acrossCap(l) && !isNamed(l.towA(), l.towB())) ++resolvedAcross;
         WARN("relative mesh size " << h << ": " << named.size() << " pairs named, " << resolvedAcross << " loops across caps resolved");
-        // Observed: at 0.4, 4 pairs named and 2 loops across caps resolved; at 0.15 a weft is not
-        // closed after the swap and its 15 pairs are named (notes).
-        if (h == 0.4) CHECK(resolvedAcross >= 2);
+        // Observed: at 0.15 every pair resolved; at 0.4 (coarse: a few triangles across a cap)
+        // two wefts are not closed after the swap and their 11 pairs are named (notes).
+        if (h == 0.15) {
+            CHECK(named.empty());
+            CHECK(resolvedAcross == acrossCaps);
+            CHECK(testing::crossingPairsBetweenTows(res.mesh) == 0);
+            // Each tow keeps its volume minus the tows ranked above it (input order) that it
+            // meets (CGAL corefinement of the closed faceted tows), within 2 %.
+            double worst = 0.0;
+            for (std::size_t t = 0; t < tows.size(); ++t) {
+                std::vector<TriangleMesh> above;
+                for (std::size_t a = 0; a < t; ++a)
+                    if (tows[a].boundingBox().overlaps(tows[t].boundingBox())) above.push_back(facetedTube(stacks[a], true));
+                const TriangleMesh own = facetedTube(stacks[t], true);
+                const double kept = above.empty() ? testing::closedMeshVolume(own) : testing::differenceVolume(own, above);
+                // The faceted input lies inside the fitted surface: its own volume's shortfall
+                // (about 2 % on the thin binders) is allowed on top.
+                const double faceting = std::abs(res.tows[t].volumeBefore - testing::closedMeshVolume(own));
+                INFO("tow " << tows[t].name() << " keeps " << res.tows[t].volumeAfter << ", CGAL " << kept << ", faceting " << faceting);
+                CHECK(std::abs(res.tows[t].volumeAfter - kept) <= 0.02 * kept + faceting);
+                worst = std::max(worst, (std::abs(res.tows[t].volumeAfter - kept) - faceting) / kept);
+            }
+            WARN("largest relative difference of a kept volume from CGAL's, beyond the faceting: " << 100.0 * worst << " %");
+        }
     }
 }
