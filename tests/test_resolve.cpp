@@ -542,3 +542,23 @@ TEST_CASE("a thin tow entering another through its end cap only: found and resol
         }
     }
 }
+
+TEST_CASE("a tow grazing another's end: resolved, or named, never overlapping silently", "[resolve][caps]")
+{
+    // The y-tube (axis z = 0.999) just touches the top of the stub's end (radius 0.5): its cap
+    // piece is a sliver along the rim.
+    const std::vector<TowSurface> tows = fit({testing::tubeAlongX(0.5, 2.0, 0.0, 0.0, 0.0, sampling(0.0, 41, 48), "stub"),
+                                             testing::tubeAlongY(0.5, 0.999, sampling(0.0, 41, 48), "y")});
+    for (const double h : {0.2, 0.1}) {
+        INFO("mesh size " << h);
+        ResolveOptions o;
+        o.mesh.edgeLength = h;
+        try {
+            const ResolveResult r = resolveTextile(tows, o);
+            for (const TowResolution& t : r.tows) CHECK(t.boundaryLoops == 0);
+            if (testing::crossingPairsBetweenTows(r.mesh) > 0) CHECK_FALSE((r.unresolved.empty() && r.skippedLoops.empty()));
+        } catch (const Error& e) {
+            FAIL_CHECK("resolveTextile threw: " << e.what());
+        }
+    }
+}

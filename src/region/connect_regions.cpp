@@ -71,13 +71,14 @@ Error badInput(const std::string& what, const std::string& context)
 /// What the classification reads from meshTows()'s result, in (u,v): every loop's node polygon
 /// on both its tows (v unwrapped), every side triangle's centroid (NaN on caps).
 /// A cap triangle of a tow with loops across its caps, for classifying it in the cap's plane:
-/// its centroid P and the rim point Q radially beyond it (in the cap's plane, about the chart's
-/// centre), and Q's (u,v) a hair inside the tube, where the loops' (u,v) polygons are exact
-/// enough (unlike near the chart's centre, where v is undefined).
+/// its centroid P, the point Q radially beyond it (about the chart's centre) on the tube's end
+/// polygon, and the side triangle on that edge: the triangle lies inside a loop where that side
+/// triangle does, unless an odd number of the loop's chords on the cap lie between P and Q. So
+/// cap and side agree at the rim whatever the loop's (u,v) polygon does near the cap's centre.
 struct CapProbe {
     int end = 0;  ///< -1 the first end's cap, +1 the last's; 0 none (not a cap triangle, or no loops)
     double px = 0.0, py = 0.0, qx = 0.0, qy = 0.0;
-    UV rim;
+    std::size_t rimTriangle = SIZE_MAX;  ///< the side triangle on the rim edge through Q
 };
 
 struct Parametric {
@@ -186,19 +187,59 @@ Parametric readParametric(const std::vector<TowSurface>& tows, const ResolveResu
                 if (!detail::capParameters(tube, cap, detail::toOcct(c), range.vMin, u, v)) continue;
                 CapProbe& q = p.probe[t][i];
                 q.end = m.face[i] == TowFace::Start ? -1 : 1;
-                const std::array<double, 2> pc = inCapPlane(cap, c), rim = inCapPlane(cap, tows[t].point(cap.uRim, v));
+                const std::array<double, 2> pc = inCapPlane(cap, c);
                 q.px = pc[0];
                 q.py = pc[1];
-                q.qx = rim[0];
-                q.qy = rim[1];
-                const double inward = 1e-7 * (range.uMax - range.uMin);
-                q.rim = {q.end < 0 ? range.uMin + inward : range.uMax - inward, v};
                 continue;
             }
             const UV *a = at[tri[0]], *b = at[tri[1]], *c = at[tri[2]];
             if (!a || !b || !c) throw badInput("a side triangle's node has no (u,v) on the tow", where);
             const double vb = vNear(b->v, a->v, period), vc = vNear(c->v, a->v, period);
             p.centroid[t][i] = {(a->u + b->u + c->u) / 3.0, (a->v + vb + vc) / 3.0};
+        }
+        // Each cap probe's Q and rim triangle: the side triangles' edges on the tube's ends,
+        // found by the polar angle about the cap's centre.
+        if (capLoops) {
+            struct RimEdge {
+                std::array<double, 2> a, b;
+                std::size_t triangle;
+            };
+            std::array<std::vector<RimEdge>, 2> rims;  // first end, last end
+            for (std::size_t i = 0; i < k; ++i) {
+                if (m.face[i] != TowFace::Side) continue;
+                const Triangle& tri = m.triangles[i];
+                for (int e = 0; e < 3; ++e) {
+                    const UV *a = at[tri[static_cast<std::size_t>(e)]], *b = at[tri[static_cast<std::size_t>((e + 1) % 3)]];
+                    for (const int end : {0, 1}) {
+                        const double u = end == 0 ? range.uMin : range.uMax;
+                        if (!a || !b || a->u != u || b->u != u) continue;
+                        const detail::CapChart& cap = end == 0 ? caps.start : caps.end;
+                        rims[static_cast<std::size_t>(end)].push_back(
+                            {inCapPlane(cap, mesh.nodes[tri[static_cast<std::size_t>(e)]]), inCapPlane(cap, mesh.nodes[tri[static_cast<std::size_t>((e + 1) % 3)]]), i});
+                    }
+                }
+            }
+            for (CapProbe& q : p.probe[t]) {
+                if (q.end == 0) continue;
+                // The rim edge the ray from the centre through P crosses, and where.
+                const double dx = q.px, dy = q.py;
+                bool found = false;
+                for (const RimEdge& r : rims[q.end < 0 ? 0 : 1]) {
+                    const double ex = r.b[0] - r.a[0], ey = r.b[1] - r.a[1];
+                    const double den = dx * ey - dy * ex;
+                    if (den == 0.0) continue;
+                    const double s = (r.a[0] * ey - r.a[1] * ex) / den;         // along the ray
+                    const double w = (r.a[0] * dy - r.a[1] * dx) / den;         // along the edge
+                    if (s > 0.0 && w >= 0.0 && w <= 1.0) {
+                        q.qx = s * dx;
+                        q.qy = s * dy;
+                        q.rimTriangle = r.triangle;
+                        found = true;
+                        break;
+                    }
+                }
+                if (!found) q.end = 0;  // unclassified: left as the other cap triangles
+            }
         }
         for (const NodeUV& e : m.parameters) at[e.first] = nullptr;
     }
@@ -300,15 +341,24 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
                 for (std::size_t tri : detail::trianglesInside(uv.centroid[t], polygonOf(k, side), period(t)))
                     hits[t].emplace_back(tri, k);
                 if (!l.crossesCap(side)) continue;
-                // Cap triangles: inside where the rim point beyond them is, unless an odd number
-                // of the loop's chords on the cap lie between.
+            }
+        std::sort(hits[t].begin(), hits[t].end());
+        // Cap triangles (CapProbe): inside a loop where the side triangle at the rim beyond them
+        // is, unless an odd number of the loop's chords on the cap lie between.
+        if (uv.probe[t].empty()) return;
+        std::vector<std::pair<std::size_t, std::size_t>> capHits;
+        for (std::size_t k = 0; k < shared.size(); ++k)
+            for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+                const IntersectionLoop& l = loopOf(k);
+                if ((side == LoopSide::A ? l.towA() : l.towB()) != t || l.windsAround(side) || !l.crossesCap(side)) continue;
                 for (std::size_t tri = 0; tri < uv.probe[t].size(); ++tri) {
                     const CapProbe& q = uv.probe[t][tri];
                     if (q.end == 0) continue;
-                    const bool rimInside = detail::insideLoop(polygonOf(k, side), q.rim, period(t));
-                    if (rimInside != (crossings(k, side, q, {q.px, q.py}, {q.qx, q.qy}) % 2 == 1)) hits[t].emplace_back(tri, k);
+                    const bool rimInside = std::binary_search(hits[t].begin(), hits[t].end(), std::make_pair(q.rimTriangle, k));
+                    if (rimInside != (crossings(k, side, q, {q.px, q.py}, {q.qx, q.qy}) % 2 == 1)) capHits.emplace_back(tri, k);
                 }
             }
+        hits[t].insert(hits[t].end(), capHits.begin(), capHits.end());
         std::sort(hits[t].begin(), hits[t].end());
     });
     // One region per loop of even depth, primary the higher-ranked tow of its pair.
