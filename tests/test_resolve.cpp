@@ -446,6 +446,33 @@ TEST_CASE("the minimum angle asked for is the one the mesher refines to", "[reso
     CHECK(q30.fractionAtLeast(25) >= 0.99);
 }
 
+namespace {
+
+/// Two tows resolved with @p primaryPattern first: one region, nothing skipped or unresolved,
+/// closed, no crossing triangle pair; the primary keeps its volume and the secondary loses the
+/// overlap of the closed faceted tows (CGAL corefinement) within 2 %.
+ResolveResult checkTwoResolved(const std::vector<TowSurface>& tows, const std::vector<TowStack>& stacks, const IntersectionReport& report,
+                               double h, const std::string& primaryPattern)
+{
+    ResolveOptions o;
+    o.mesh.edgeLength = h;
+    o.primaryPatterns = {primaryPattern};
+    const ResolveResult r = resolveTextile(tows, report, o);
+    CHECK(r.skippedLoops.empty());
+    for (const UnresolvedPair& u : r.unresolved) FAIL_CHECK(u.message);
+    CHECK(r.mesh.regions.size() == 1);
+    for (const TowResolution& t : r.tows) CHECK(t.boundaryLoops == 0);
+    CHECK(testing::crossingPairsBetweenTows(r.mesh) == 0);
+    const std::size_t primary = tows[0].name() == primaryPattern ? 0 : 1, secondary = 1 - primary;
+    const double overlap = testing::intersectionVolume(facetedTube(stacks[0], true), facetedTube(stacks[1], true));
+    CHECK(r.tows[primary].volumeAfter == Approx(r.tows[primary].volumeBefore).epsilon(1e-12));
+    CHECK(r.tows[secondary].volumeBefore - r.tows[secondary].volumeAfter == Approx(overlap).epsilon(0.02));
+    if (!r.mesh.regions.empty()) CHECK(r.mesh.regions.front().volumeRemoved == Approx(overlap).epsilon(0.02));
+    return r;
+}
+
+}  // namespace
+
 TEST_CASE("a tow ending inside another: its loop runs across the cap, both ranks resolved exactly", "[resolve][caps]")
 {
     // The stub (radius 0.5 along x) ends at x = 2 inside the y-tube (axis x = 2, z = d): with its
@@ -480,25 +507,7 @@ TEST_CASE("a tow ending inside another: its loop runs across the cap, both ranks
                         CHECK(distance(tows[s].pointOnClosed(a.u, a.v), p.point) <= l.tolerance());
                         CHECK(distance(tows[1 - s].point(b.u, b.v), p.point) <= l.tolerance());
                     }
-                    ResolveOptions o;
-                    o.mesh.edgeLength = 0.05;
-                    o.primaryPatterns = {stubFirst ? "stub" : "y"};
-                    const ResolveResult r = resolveTextile(tows, report, o);
-                    CHECK(r.skippedLoops.empty());
-                    for (const UnresolvedPair& u : r.unresolved) FAIL_CHECK(u.message);
-                    REQUIRE(r.mesh.regions.size() == 1);
-                    for (const TowResolution& t : r.tows) CHECK(t.boundaryLoops == 0);
-                    CHECK(testing::crossingPairsBetweenTows(r.mesh) == 0);
-                    // The primary keeps its volume, the secondary loses the overlap (CGAL
-                    // corefinement of the closed faceted tows) within 2 %.
-                    const std::size_t primary = stubFirst ? s : 1 - s, secondary = 1 - primary;
-                    const double overlap = testing::intersectionVolume(facetedTube(stacks[0], true), facetedTube(stacks[1], true));
-                    CHECK(r.tows[primary].volumeAfter == Approx(r.tows[primary].volumeBefore).epsilon(1e-12));
-                    CHECK(r.tows[secondary].volumeBefore - r.tows[secondary].volumeAfter == Approx(overlap).epsilon(0.02));
-                    CHECK(r.mesh.regions.front().volumeRemoved == Approx(overlap).epsilon(0.02));
-                    WARN((firstEnd ? "first end" : "last end") << ", d = " << d << ", " << (stubFirst ? "stub" : "y")
-                                                               << " first: overlap (CGAL) " << overlap << ", secondary lost "
-                                                               << r.tows[secondary].volumeBefore - r.tows[secondary].volumeAfter);
+                    checkTwoResolved(tows, stacks, report, 0.05, stubFirst ? "stub" : "y");
                 }
             }
 }
@@ -526,19 +535,7 @@ TEST_CASE("a thin tow entering another through its end cap only: found and resol
     for (const bool fatFirst : {true, false}) {
         DYNAMIC_SECTION((fatFirst ? "the fat tube" : "the thin tube") << " ranked first")
         {
-            ResolveOptions o;
-            o.mesh.edgeLength = 0.03;
-            o.primaryPatterns = {fatFirst ? "fat" : "thin"};
-            const ResolveResult r = resolveTextile(tows, report, o);
-            CHECK(r.skippedLoops.empty());
-            for (const UnresolvedPair& u : r.unresolved) FAIL_CHECK(u.message);
-            CHECK(r.mesh.regions.size() == 1);
-            for (const TowResolution& t : r.tows) CHECK(t.boundaryLoops == 0);
-            CHECK(testing::crossingPairsBetweenTows(r.mesh) == 0);
-            const std::size_t primary = fatFirst ? 0 : 1, secondary = 1 - primary;
-            const double overlap = testing::intersectionVolume(facetedTube(stacks[0], true), facetedTube(stacks[1], true));
-            CHECK(r.tows[primary].volumeAfter == Approx(r.tows[primary].volumeBefore).epsilon(1e-12));
-            CHECK(r.tows[secondary].volumeBefore - r.tows[secondary].volumeAfter == Approx(overlap).epsilon(0.02));
+            checkTwoResolved(tows, stacks, report, 0.03, fatFirst ? "fat" : "thin");
         }
     }
 }
