@@ -221,24 +221,23 @@ Parametric readParametric(const std::vector<TowSurface>& tows, const ResolveResu
             }
             for (CapProbe& q : p.probe[t]) {
                 if (q.end == 0) continue;
-                // The rim edge the ray from the centre through P crosses, and where.
+                // The rim edge the ray from the centre through P crosses first beyond P, and where.
                 const double dx = q.px, dy = q.py;
-                bool found = false;
+                double nearest = 1e300;
                 for (const RimEdge& r : rims[q.end < 0 ? 0 : 1]) {
                     const double ex = r.b[0] - r.a[0], ey = r.b[1] - r.a[1];
                     const double den = dx * ey - dy * ex;
                     if (den == 0.0) continue;
-                    const double s = (r.a[0] * ey - r.a[1] * ex) / den;         // along the ray
-                    const double w = (r.a[0] * dy - r.a[1] * dx) / den;         // along the edge
-                    if (s > 0.0 && w >= 0.0 && w <= 1.0) {
+                    const double s = (r.a[0] * ey - r.a[1] * ex) / den;  // along the ray (P at 1)
+                    const double w = (r.a[0] * dy - r.a[1] * dx) / den;  // along the edge
+                    if (s >= 1.0 && s < nearest && w >= 0.0 && w <= 1.0) {
+                        nearest = s;
                         q.qx = s * dx;
                         q.qy = s * dy;
                         q.rimTriangle = r.triangle;
-                        found = true;
-                        break;
                     }
                 }
-                if (!found) q.end = 0;  // unclassified: left as the other cap triangles
+                if (nearest == 1e300) q.end = 0;  // unclassified: left as the other cap triangles
             }
         }
         for (const NodeUV& e : m.parameters) at[e.first] = nullptr;
