@@ -38,9 +38,10 @@ struct TowMesh {
     /// the cap's end section (its mean over v).
     std::vector<Vector3> fibreDirection;
     /// Every node of this tow's mesh that lies on its own surface with its (u,v) there (v in
-    /// [vMin, vMax)), sorted by node: its own nodes and its loops' nodes, not the nodes inside
-    /// its caps nor those of another tow's surface it took (a loop node, on both surfaces, has
-    /// its (u,v) on each tow in that tow's list).
+    /// [vMin, vMax)), sorted by node: its own nodes and its loops' nodes, not the caps' own
+    /// nodes nor those of another tow's surface it took (a loop node, on both surfaces, has its
+    /// (u,v) on each tow in that tow's list). A loop node on an end cap (a loop across the cap)
+    /// has u beyond the tube's range, in the cap's chart: TowSurface::pointOnClosed().
     std::vector<std::pair<std::size_t, UV>> parameters;
 };
 
