@@ -200,20 +200,21 @@ bool pierces(const TowSurface& other, const CapChart& cap, double r)
     }
     if (!above || !below) return false;
     const std::vector<std::vector<Point3>>& sections = other.sections();
-    const auto side = [&](const Point3& p) { return (toOcct(p).XYZ() - cap.centre).Dot(cap.normal) > 0.0; };
-    const auto near = [&](const Point3& p) {
-        const gp_XYZ q = toOcct(p).XYZ() - cap.centre;
-        return std::hypot(q.Dot(cap.e1), q.Dot(cap.e2)) <= 1.5 * r;
+    const auto height = [&](const Point3& p) { return (toOcct(p).XYZ() - cap.centre).Dot(cap.normal); };
+    // Where the segment [p, q] crosses the plane, if it does: near the disc?
+    const auto crossesNear = [&](const Point3& p, const Point3& q) {
+        const double hp = height(p), hq = height(q);
+        if ((hp > 0.0) == (hq > 0.0)) return false;
+        const double t = hp / (hp - hq);
+        const gp_XYZ x = toOcct(p + t * (q - p)).XYZ() - cap.centre;
+        // The surface between two input points strays from their chord; a margin covers it.
+        return std::hypot(x.Dot(cap.e1), x.Dot(cap.e2)) <= 1.5 * r;
     };
     for (std::size_t i = 0; i < sections.size(); ++i)
         for (std::size_t j = 0; j < sections[i].size(); ++j) {
             const Point3& p = sections[i][j];
-            const Point3& around = sections[i][(j + 1) % sections[i].size()];
-            if (side(p) != side(around) && (near(p) || near(around))) return true;
-            if (i + 1 < sections.size() && j < sections[i + 1].size()) {
-                const Point3& along = sections[i + 1][j];
-                if (side(p) != side(along) && (near(p) || near(along))) return true;
-            }
+            if (crossesNear(p, sections[i][(j + 1) % sections[i].size()])) return true;
+            if (i + 1 < sections.size() && j < sections[i + 1].size() && crossesNear(p, sections[i + 1][j])) return true;
         }
     return false;
 }

@@ -342,7 +342,10 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
                 const IntersectionLoop& l = loops[s.loop];
                 if ((l.towA() == t && l.crossesCap(LoopSide::A)) || (l.towB() == t && l.crossesCap(LoopSide::B))) pairs.emplace(l.towA(), l.towB());
             }
-            failures.fail(t, capFailed[t], pairs);
+            if (pairs.empty())  // no loop across that cap: every pair with loops on the tow
+                failures.run(t, [&] { throw Error(ErrorCode::Internal, capFailed[t]); });
+            else
+                failures.fail(t, capFailed[t], pairs);
         }
         failures.throwAll();
     }

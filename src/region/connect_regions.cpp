@@ -230,14 +230,15 @@ Parametric readParametric(const std::vector<TowSurface>& tows, const ResolveResu
                     if (den == 0.0) continue;
                     const double s = (r.a[0] * ey - r.a[1] * ex) / den;  // along the ray (P at 1)
                     const double w = (r.a[0] * dy - r.a[1] * dx) / den;  // along the edge
-                    if (s >= 1.0 && s < nearest && w >= 0.0 && w <= 1.0) {
+                    if (s >= 1.0 && s < nearest && w >= -1e-9 && w <= 1.0 + 1e-9) {
                         nearest = s;
-                        q.qx = s * dx;
-                        q.qy = s * dy;
+                        // Q: the edge's midpoint (P lies in the triangle of the centre and this
+                        // edge, so [P, Q] stays on the cap), never a rim node shared by two edges.
+                        q.qx = 0.5 * (r.a[0] + r.b[0]);
+                        q.qy = 0.5 * (r.a[1] + r.b[1]);
                         q.rimTriangle = r.triangle;
                     }
                 }
-                if (nearest == 1e300) q.end = 0;  // unclassified: left as the other cap triangles
             }
         }
         for (const NodeUV& e : m.parameters) at[e.first] = nullptr;
@@ -352,7 +353,7 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
                 if ((side == LoopSide::A ? l.towA() : l.towB()) != t || l.windsAround(side) || !l.crossesCap(side)) continue;
                 for (std::size_t tri = 0; tri < uv.probe[t].size(); ++tri) {
                     const CapProbe& q = uv.probe[t][tri];
-                    if (q.end == 0) continue;
+                    if (q.end == 0 || q.rimTriangle == SIZE_MAX) continue;  // (then the swap's check names the pair)
                     const bool rimInside = std::binary_search(hits[t].begin(), hits[t].end(), std::make_pair(q.rimTriangle, k));
                     if (rimInside != (crossings(k, side, q, {q.px, q.py}, {q.qx, q.qy}) % 2 == 1)) capHits.emplace_back(tri, k);
                 }
