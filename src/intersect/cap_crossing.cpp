@@ -34,10 +34,9 @@ double rimRadius(const GeomAdaptor_Surface& tube, const CapChart& cap)
     return r;
 }
 
-/// Does @p other's box reach the cap's disc (radius @p r about its centre)?
-bool reaches(const TowSurface& other, const CapChart& cap, double r)
+/// Does the box @p b (of the other tow) reach the cap's disc (radius @p r about its centre)?
+bool reaches(const BoundingBox& b, const CapChart& cap, double r)
 {
-    const BoundingBox b = other.boundingBox();
     const Point3 c = fromOcct(gp_Pnt(cap.centre));
     return c.x + r >= b.min.x && c.x - r <= b.max.x && c.y + r >= b.min.y && c.y - r <= b.max.y && c.z + r >= b.min.z &&
            c.z - r <= b.max.z;
@@ -74,7 +73,7 @@ std::vector<TracedCurve> capRuns(const SurfacePair& closed, const TowSurface& ow
 {
     const GeomAdaptor_Surface ownTube(own.impl().surface);
     const double radius = rimRadius(ownTube, cap);
-    if (!(radius > 0.0) || !reaches(other, cap, 1.5 * radius)) return {};
+    if (!(radius > 0.0) || !reaches(other.boundingBox(), cap, 1.5 * radius)) return {};
     const double half = 2.0 * radius;
     Handle(Geom_Plane) plane = new Geom_Plane(gp_Pnt(cap.centre), gp_Dir(cap.normal));
     Handle(Geom_RectangularTrimmedSurface) patch = new Geom_RectangularTrimmedSurface(plane, -half, half, -half, half);
@@ -190,9 +189,9 @@ std::vector<TracedCurve> capRuns(const SurfacePair& closed, const TowSurface& ow
 /// a tow that pierces the cap without touching the tube next to it.
 bool pierces(const TowSurface& other, const CapChart& cap, double r)
 {
-    if (!reaches(other, cap, 1.5 * r)) return false;
-    // The plane must cut the other tow's box.
     const BoundingBox box = other.boundingBox();
+    if (!reaches(box, cap, 1.5 * r)) return false;
+    // The plane must cut the other tow's box.
     bool below = false, above = false;
     for (int k = 0; k < 8; ++k) {
         const gp_XYZ corner((k & 1) ? box.max.x : box.min.x, (k & 2) ? box.max.y : box.min.y, (k & 4) ? box.max.z : box.min.z);
@@ -219,18 +218,6 @@ bool pierces(const TowSurface& other, const CapChart& cap, double r)
     return false;
 }
 
-/// Shifts @p piece's v on both tows by whole periods so that it starts next to @p ref.
-void alignPiece(std::vector<PointOn2>& piece, const PointOn2& ref, double periodA, double periodB)
-{
-    if (piece.empty()) return;
-    const double sa = periodA * std::round((ref.va - piece.front().va) / periodA);
-    const double sb = periodB * std::round((ref.vb - piece.front().vb) / periodB);
-    for (PointOn2& p : piece) {
-        p.va += sa;
-        p.vb += sb;
-    }
-}
-
 }  // namespace
 
 void closeAcrossCaps(const TowSurface& a, const TowSurface& b, std::vector<TracedCurve>& curves, const TraceTolerances& tol)
@@ -242,12 +229,12 @@ void closeAcrossCaps(const TowSurface& a, const TowSurface& b, std::vector<Trace
         const TowCaps& caps = side == LoopSide::A ? capsA : capsB;
         for (const CapChart* cap : {&caps.start, &caps.end}) {
             // Caps that an open curve runs into, or that the other tow's surface crosses.
+            if (!cap->valid) continue;
             const double eps = 1e-9 * (caps.uMax - caps.uMin);
             const bool reached = std::any_of(curves.begin(), curves.end(), [&](const TracedCurve& c) {
                 return !c.closed && !c.points.empty() &&
                        (std::abs(ownU(c.points.front(), side) - cap->uRim) <= eps || std::abs(ownU(c.points.back(), side) - cap->uRim) <= eps);
             });
-            if (!cap->valid) continue;
             if (!reached) {
                 const GeomAdaptor_Surface tube((side == LoopSide::A ? a : b).impl().surface);
                 if (!pierces(side == LoopSide::A ? b : a, *cap, rimRadius(tube, *cap))) continue;
@@ -295,7 +282,7 @@ void closeAcrossCaps(const TowSurface& a, const TowSurface& b, std::vector<Trace
                     std::reverse(d.points.begin(), d.points.end());
                 if (distance(c.points.back().point, d.points.front().point) > join || !onCapOrRim(d.points.front())) continue;
                 std::vector<PointOn2> tail = d.points;
-                alignPiece(tail, c.points.back(), periodA, periodB);
+                alignPeriods(tail, c.points.back(), periodA, periodB);
                 c.points.insert(c.points.end(), tail.begin() + 1, tail.end());
                 c.openReason = d.openReason;
                 curves.erase(curves.begin() + static_cast<std::ptrdiff_t>(j));

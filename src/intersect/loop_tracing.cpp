@@ -55,16 +55,7 @@ std::string endReason(const Domain& d, const PointOn2& p)
 }
 
 /// Shifts the v of every point of @p piece by whole periods so the piece starts next to @p ref.
-void alignTo(std::vector<PointOn2>& piece, const PointOn2& ref, const Domain& d)
-{
-    if (piece.empty()) return;
-    const double sa = d.periodA * std::round((ref.va - piece.front().va) / d.periodA);
-    const double sb = d.periodB * std::round((ref.vb - piece.front().vb) / d.periodB);
-    for (PointOn2& p : piece) {
-        p.va += sa;
-        p.vb += sb;
-    }
-}
+void alignTo(std::vector<PointOn2>& piece, const PointOn2& ref, const Domain& d) { alignPeriods(piece, ref, d.periodA, d.periodB); }
 
 /// Makes v continuous along @p piece (no jumps of more than half a period).
 void unwrap(std::vector<PointOn2>& piece, const Domain& d)
@@ -346,6 +337,17 @@ bool CurveProximity::within(const Point3& p, double d) const
             if (segmentDistance(p, q[k].point, q[(k + 1) % q.size()].point) <= d) return true;
     }
     return false;
+}
+
+void alignPeriods(std::vector<PointOn2>& piece, const PointOn2& ref, double periodA, double periodB)
+{
+    if (piece.empty()) return;
+    const double sa = periodA * std::round((ref.va - piece.front().va) / periodA);
+    const double sb = periodB * std::round((ref.vb - piece.front().vb) / periodB);
+    for (PointOn2& p : piece) {
+        p.va += sa;
+        p.vb += sb;
+    }
 }
 
 double distanceToCurve(const TracedCurve& curve, const Point3& p)

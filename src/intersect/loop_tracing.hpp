@@ -55,6 +55,10 @@ void consolidateCurve(const SurfacePair& surfaces, TracedCurve& curve, const Tra
 /// Call before consolidateCurve().
 void joinOpenCurves(const SurfacePair& surfaces, std::vector<TracedCurve>& curves, const TraceTolerances& tolerances);
 
+/// Shifts the v of every point of @p piece on both tows by whole periods (@p periodA,
+/// @p periodB) so that the piece starts next to @p ref.
+void alignPeriods(std::vector<PointOn2>& piece, const PointOn2& ref, double periodA, double periodB);
+
 /// The distance from @p p to the polyline of @p curve (closing segment included when closed).
 double distanceToCurve(const TracedCurve& curve, const Point3& p);
 

@@ -30,18 +30,16 @@ double vMinOf(const IntersectionLoop& loop, LoopSide side)
 
 UV& sideRef(LoopPoint& p, LoopSide side) { return side == LoopSide::A ? p.onA : p.onB; }
 
-const ParameterRange& rangeOf(const IntersectionLoop& loop, LoopSide side, ParameterRange& keep)
+ParameterRange rangeOf(const IntersectionLoop& loop, LoopSide side)
 {
-    keep = (side == LoopSide::A ? loop.surfaceA() : loop.surfaceB()).parameterRange();
-    return keep;
+    return (side == LoopSide::A ? loop.surfaceA() : loop.surfaceB()).parameterRange();
 }
 
 /// Where u lies on tow @p side: -1 on its first cap, +1 on its last, 0 on the tube (its rims
 /// included, within 1e-9 of the u range).
 int capOf(const IntersectionLoop& loop, LoopSide side, double u)
 {
-    ParameterRange r;
-    rangeOf(loop, side, r);
+    const ParameterRange r = rangeOf(loop, side);
     const double eps = 1e-9 * (r.uMax - r.uMin);
     return u < r.uMin - eps ? -1 : u > r.uMax + eps ? 1 : 0;
 }
@@ -221,8 +219,7 @@ SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, d
             const double u0 = sideOf(p, side).u, u1 = sideOf(q, side).u;
             const int c0 = capOf(loop, side, u0), c1 = capOf(loop, side, u1);
             if (c0 == c1) continue;
-            ParameterRange r;
-            rangeOf(loop, side, r);
+            const ParameterRange r = rangeOf(loop, side);
             const double rim = (c0 != 0 ? c0 : c1) < 0 ? r.uMin : r.uMax;
             const double t = std::clamp((rim - u0) / (u1 - u0), 0.0, 1.0);
             PointOn2 x = onChord(p, q, t);
@@ -289,8 +286,7 @@ SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, d
     // between them, so that every piece between rims (on the tube or on a cap) has a node of
     // its own that says which it is.
     for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
-        ParameterRange r;
-        rangeOf(loop, side, r);
+        const ParameterRange r = rangeOf(loop, side);
         const double eps = 1e-9 * (r.uMax - r.uMin);
         for (LoopPoint& q : shared.points) {
             UV& uv = sideRef(q, side);
@@ -472,8 +468,7 @@ std::vector<LoopConstraint> constraintsOn(const SharedLoop& shared, const Inters
         const double r = (v - vMin) / period;
         return r == std::round(r);
     };
-    ParameterRange range;
-    rangeOf(loop, side, range);
+    const ParameterRange range = rangeOf(loop, side);
     const auto atRim = [&](const UV& p) { return p.u == range.uMin || p.u == range.uMax; };
     // A loop across a cap: only its pieces on the tube, from rim (or seam) to rim (or seam).
     if (loop.crossesCap(side)) {
@@ -516,8 +511,7 @@ std::vector<CapConstraint> capConstraintsOn(const SharedLoop& shared, const Inte
     if (!loop.crossesCap(side)) return {};
     const std::vector<UV> uv = loopPolygon(shared, side);
     const std::size_t n = uv.size();
-    ParameterRange range;
-    rangeOf(loop, side, range);
+    const ParameterRange range = rangeOf(loop, side);
     const auto atRim = [&](const UV& p) { return p.u == range.uMin || p.u == range.uMax; };
     std::size_t start = n;
     for (std::size_t k = 0; k < n && start == n; ++k)

@@ -340,7 +340,6 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
                 if ((side == LoopSide::A ? l.towA() : l.towB()) != t || l.windsAround(side)) continue;  // bands: below
                 for (std::size_t tri : detail::trianglesInside(uv.centroid[t], polygonOf(k, side), period(t)))
                     hits[t].emplace_back(tri, k);
-                if (!l.crossesCap(side)) continue;
             }
         std::sort(hits[t].begin(), hits[t].end());
         // Cap triangles (CapProbe): inside a loop where the side triangle at the rim beyond them
