@@ -539,18 +539,40 @@ const TowStack& named(const std::vector<TowStack>& stacks, const std::string& na
 
 }  // namespace
 
-TEST_CASE("pressed tows touching along a line are a contact finding, not a loop", "[intersection][scan][contact]")
+TEST_CASE("a shallow loop that leaves through the top of a seam is traced once around, not out and back", "[intersection][scan][seam]")
 {
-    // binder_3 lies on weft_L0_7: the walk runs out along the touching line and back, a "closed"
-    // curve 0.64 long enclosing 2e-12 (1e-12 on the other tow). Before, resolve meshed it and the
-    // weft was not a tube.
+    // binder_3 lies on weft_L0_7: their fitted surfaces cross shallowly over a wide patch (the
+    // faceted tubes do not cross at all), a loop 0.45 long that crosses the binder's seam
+    // twice. The walk from the seed reaches the seam going up in v; it used to be continued
+    // from the same side of the seam, retraced its own way back and came back as a "closed"
+    // curve enclosing 2e-12, reported as a line contact: the overlap was lost.
     const std::vector<TowStack> all = pressedOrthogonal();
-    const IntersectionReport r = intersectTows(fit({named(all, "binder_3"), named(all, "weft_L0_7")}));
-    CHECK(r.loops.empty());
-    REQUIRE(r.findings.size() == 1);
-    CHECK(r.findings[0].kind == PairFinding::Kind::Contact);
-    CHECK(r.findings[0].message ==
-          "1 closed intersection curve(s) enclose no area (thinner than 1e-4 of the tow size): the surfaces touch along a line there");
+    const std::vector<TowSurface> tows = fit({named(all, "binder_3"), named(all, "weft_L0_7")});
+    const IntersectionReport r = intersectTows(tows);
+    CHECK(r.findings.empty());
+    REQUIRE(r.loops.size() == 1);
+    const IntersectionLoop& l = r.loops[0];
+    CHECK(l.closed());
+    CHECK(l.length() == Approx(0.4549).epsilon(1e-3));
+    // Independent of the (u,v) quadrature: the loop polygon's vector area, a lower bound of the
+    // area of any surface it bounds (a curve run out and back has none), close to both areas
+    // for a patch this flat.
+    Point3 c;
+    const std::vector<LoopPoint>& pts = l.points();
+    for (const LoopPoint& p : pts) c = c + p.point;
+    c = (1.0 / static_cast<double>(pts.size())) * c;
+    Vector3 twice;
+    for (std::size_t k = 0; k < pts.size(); ++k) twice = twice + cross(pts[k].point - c, pts[(k + 1) % pts.size()].point - c);
+    const double vectorArea = 0.5 * norm(twice);
+    INFO("vector area " << vectorArea << ", areas " << l.enclosedArea(LoopSide::A) << ", " << l.enclosedArea(LoopSide::B));
+    CHECK(vectorArea > 5e-3);
+    CHECK(vectorArea <= l.enclosedArea(LoopSide::A) * (1.0 + 1e-6));
+    CHECK(vectorArea <= l.enclosedArea(LoopSide::B) * (1.0 + 1e-6));
+    // And resolved: no crossing triangles, both tows closed.
+    const ResolveResult res = resolveTextile(tows, ResolveOptions{});
+    CHECK(res.unresolved.empty());
+    CHECK(testing::crossingPairsBetweenTows(res.mesh) == 0);
+    checkClosed(res);
 }
 
 TEST_CASE("pressed layers resolve at 6 mesh sizes from the largest accepted to a tenth of it", "[resolve][scan][pressed][sweep]")

@@ -170,16 +170,22 @@ struct Tracer {
             }
             return {};
         };
-        // Across a seam: the same point with v on the other side of the period.
+        // Across a seam: the same point with v on the other side of the period. The walk takes
+        // v in [first, first + period]: a chain that reached the seam going up in v goes on from
+        // first, one going down from first + period (v is unwrapped along the chain, so the
+        // direction, not the value, tells the side).
         const bool seamA = atSeam(end.va, d.vFirstA, d.periodA), seamB = atSeam(end.vb, d.vFirstB, d.periodB);
         if (seamA || seamB) {
             PointOn2 start = end;
-            const auto flip = [](double v, double first, double period) {
+            const auto across = [](double v, double before, double first, double period) {
+                if (v != before) return v > before ? first : first + period;
+                // Along the seam: either side (the walk runs along it).
                 const double w = v - period * std::floor((v - first) / period + 0.5);  // nearest seam value
                 return std::abs(w - first) < 0.5 * period ? first + period : first;
             };
-            if (seamA) start.va = flip(end.va, d.vFirstA, d.periodA);
-            if (seamB) start.vb = flip(end.vb, d.vFirstB, d.periodB);
+            const PointOn2& before = chain.size() >= 2 ? chain[chain.size() - 2] : end;
+            if (seamA) start.va = across(end.va, before.va, d.vFirstA, d.periodA);
+            if (seamB) start.vb = across(end.vb, before.vb, d.vFirstB, d.periodB);
             std::vector<PointOn2> piece = orient(walker.walk(start));
             if (!piece.empty() && distance(piece.front().point, end.point) <= tol.closing) return piece;
         }
