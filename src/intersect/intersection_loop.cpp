@@ -295,24 +295,20 @@ double areaOnSide(const TowSurface& s, const std::vector<LoopPoint>& pts, const 
         return u >= u0 ? sum : -sum;
     };
     // Each chord is replaced by the parabola in (u, v) through its ends and the exact curve
-    // point in its middle, so the polygon's chord error does not enter the area.
-    static const double tx[3] = {0.1127016653792583, 0.5, 0.8872983346207417};
-    static const double tw[3] = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
+    // point in its middle, so the polygon's chord error does not enter the area; Simpson's rule
+    // on it (exact for cubics; the chords are short) shares F at the points between chords.
+    std::vector<double> atPoint(pts.size());
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+        const UV p = sideOf(pts[k], side);
+        atPoint[k] = F(p.u, p.v);
+    }
     double area = 0.0;
     for (std::size_t k = 0; k + 1 < pts.size(); ++k) {
         const UV a = sideOf(pts[k], side), b = sideOf(pts[k + 1], side);
         const UV m = sideOf(mids[k], side);
-        double seg = 0.0;
-        for (int q = 0; q < 3; ++q) {
-            const double t = tx[q];
-            // Lagrange basis on t = 0, 1/2, 1 and its derivative.
-            const double l0 = 2.0 * (t - 0.5) * (t - 1.0), l1 = -4.0 * t * (t - 1.0), l2 = 2.0 * t * (t - 0.5);
-            const double d0 = 4.0 * t - 3.0, d1 = 4.0 - 8.0 * t, d2 = 4.0 * t - 1.0;
-            const double u = l0 * a.u + l1 * m.u + l2 * b.u, v = l0 * a.v + l1 * m.v + l2 * b.v;
-            const double dv = d0 * a.v + d1 * m.v + d2 * b.v;
-            seg += tw[q] * F(u, v) * dv;
-        }
-        area += seg;
+        // dv/dt of the parabola at t = 0, 1/2, 1.
+        const double dv0 = -3.0 * a.v + 4.0 * m.v - b.v, dvm = b.v - a.v, dv1 = a.v - 4.0 * m.v + 3.0 * b.v;
+        area += (atPoint[k] * dv0 + 4.0 * F(m.u, m.v) * dvm + atPoint[k + 1] * dv1) / 6.0;
     }
     return std::abs(area);
 }

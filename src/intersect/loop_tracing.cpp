@@ -101,6 +101,30 @@ bool stepPast(const SurfacePair& s, const PointOn2& end, const PointOn2& before,
 
 double bridgeDistance(const std::vector<PointOn2>& pts, const TraceTolerances& tol);
 
+/// Puts @p end exactly on a tow's end when it lies within the closing distance of it: OCCT's
+/// walk stops at a boundary only to its own precision (e.g. 1.4e-9 of the u range short),
+/// while the checks downstream (atTowEnd(), the caps) take the end's u as it is.
+void snapToTowEnd(const SurfacePair& s, const Domain& d, PointOn2& end, const TraceTolerances& tol)
+{
+    if (atTowEnd(d, end)) return;
+    const auto snapOn = [&](const Handle(Geom_BSplineSurface)& surf, double u, double v, double uMin, double uMax, PointCondition::Kind kind) {
+        const double uEnd = u - uMin < uMax - u ? uMin : uMax;
+        gp_Pnt p;
+        gp_Vec su, sv;
+        surf->D1(u, v, p, su, sv);
+        if (!(std::abs(uEnd - u) * su.Magnitude() <= tol.closing)) return false;
+        PointCondition c;
+        c.kind = kind;
+        c.value = uEnd;
+        PointOn2 x = end;
+        if (!refineOnIntersection(s, x, c, tol.point) || distance(x.point, end.point) > 2.0 * tol.closing) return false;
+        end = x;
+        return true;
+    };
+    if (!snapOn(s.a, end.ua, end.va, d.uMinA, d.uMaxA, PointCondition::Kind::FixUA))
+        snapOn(s.b, end.ub, end.vb, d.uMinB, d.uMaxB, PointCondition::Kind::FixUB);
+}
+
 /// The first index from @p from on where @p chain comes back to its first point (within a few
 /// of its steps) running the same way as it left it and then retraces its start; chain.size() if
 /// it does not.
@@ -206,6 +230,7 @@ struct Tracer {
     bool extend(std::vector<PointOn2>& chain, std::string& reason) const
     {
         for (int k = 0; k < kMaxPieces; ++k) {
+            snapToTowEnd(s, d, chain.back(), tol);
             std::vector<PointOn2> next = continueChain(chain, reason);
             if (next.empty()) return false;
             const std::size_t before = chain.size();
@@ -398,6 +423,31 @@ void joinOpenCurves(const SurfacePair& surfaces, std::vector<TracedCurve>& curve
                 joined = true;
             }
     }
+}
+
+void dropDuplicateCurves(std::vector<TracedCurve>& curves, const TraceTolerances& tolerances)
+{
+    const double within = 2.0 * tolerances.chordal + tolerances.closing;
+    const auto runsAlong = [&](const TracedCurve& c, const CurveProximity& other) {
+        return std::all_of(c.points.begin(), c.points.end(), [&](const PointOn2& p) { return other.within(p.point, within); });
+    };
+    std::vector<char> dropped(curves.size(), 0);
+    std::vector<CurveProximity> proximity;
+    proximity.reserve(curves.size());
+    for (const TracedCurve& c : curves) proximity.emplace_back(c);
+    for (std::size_t i = 0; i < curves.size(); ++i)
+        for (std::size_t j = i + 1; j < curves.size() && !dropped[i]; ++j) {
+            if (dropped[j]) continue;
+            if (runsAlong(curves[j], proximity[i])) dropped[j] = 1;       // j is (part of) i
+            else if (runsAlong(curves[i], proximity[j])) dropped[i] = 1;  // i is part of j
+        }
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < curves.size(); ++k)
+        if (!dropped[k]) {
+            if (kept != k) curves[kept] = std::move(curves[k]);
+            ++kept;
+        }
+    curves.resize(kept);
 }
 
 bool openKindOf(const std::string& reason, IntersectionLoop::OpenKind& kind)

@@ -55,6 +55,12 @@ void consolidateCurve(const SurfacePair& surfaces, TracedCurve& curve, const Tra
 /// Call before consolidateCurve().
 void joinOpenCurves(const SurfacePair& surfaces, std::vector<TracedCurve>& curves, const TraceTolerances& tolerances);
 
+/// Drops every curve that runs along another (all its points within twice the chordal
+/// tolerance of the other's polyline): the same loop traced from two seeds, where the walks'
+/// points strayed too far apart for the checks before tracing to see it. Call after
+/// consolidateCurve(), on curves exact to the point tolerance.
+void dropDuplicateCurves(std::vector<TracedCurve>& curves, const TraceTolerances& tolerances);
+
 /// Shifts the v of every point of @p piece on both tows by whole periods (@p periodA,
 /// @p periodB) so that the piece starts next to @p ref.
 void alignPeriods(std::vector<PointOn2>& piece, const PointOn2& ref, double periodA, double periodB);

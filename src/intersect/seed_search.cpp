@@ -26,24 +26,51 @@ struct Facet {
     UV uv[3];
 };
 
-std::vector<Facet> facetsIn(const SurfaceGrid& g, const UWindow& w)
+/// The rows of @p g's grid that window @p w covers: [first, last].
+std::pair<std::size_t, std::size_t> rowsOf(const SurfaceGrid& g, const UWindow& w)
 {
-    std::vector<Facet> facets;
-    const std::size_t m = g.u.size(), n = g.v.size();
+    const std::size_t m = g.u.size();
     const auto lo = std::upper_bound(g.u.begin(), g.u.end(), w.uMin);
     const std::size_t first = lo == g.u.begin() ? 0 : static_cast<std::size_t>(lo - g.u.begin()) - 1;
-    for (std::size_t i = first; i + 1 < m && g.u[i] < w.uMax; ++i)
+    std::size_t last = first;
+    while (last + 1 < m && g.u[last] < w.uMax) ++last;
+    return {first, last};
+}
+
+/// The box of the grid points of rows [first, last] (the box of the facets between them).
+CGAL::Bbox_3 boxOfRows(const SurfaceGrid& g, std::pair<std::size_t, std::size_t> rows)
+{
+    const std::size_t n = g.v.size();
+    CGAL::Bbox_3 box;
+    for (std::size_t k = rows.first * n; k < (rows.second + 1) * n && k < g.points.size(); ++k) {
+        const Point3& q = g.points[k];
+        box += CGAL::Bbox_3(q.x, q.y, q.z, q.x, q.y, q.z);
+    }
+    return box;
+}
+
+/// The facets between rows [first, last] of @p g that reach into @p other (the other window's
+/// box): most of a window, the far side of each tow, drops out before any triangle is made.
+std::vector<Facet> facetsIn(const SurfaceGrid& g, std::pair<std::size_t, std::size_t> rows, const CGAL::Bbox_3& other)
+{
+    std::vector<Facet> facets;
+    const std::size_t n = g.v.size();
+    const auto reaches = [&](const Point3& p, const Point3& q, const Point3& r) {
+        return std::max({p.x, q.x, r.x}) >= other.xmin() && std::min({p.x, q.x, r.x}) <= other.xmax() &&
+               std::max({p.y, q.y, r.y}) >= other.ymin() && std::min({p.y, q.y, r.y}) <= other.ymax() &&
+               std::max({p.z, q.z, r.z}) >= other.zmin() && std::min({p.z, q.z, r.z}) <= other.zmax();
+    };
+    const auto pt = [](const Point3& q) { return Point(q.x, q.y, q.z); };
+    for (std::size_t i = rows.first; i < rows.second; ++i)
         for (std::size_t j = 0; j < n; ++j) {
             const std::size_t jn = (j + 1) % n;
             const double vj = g.v[j], vn = j + 1 < n ? g.v[jn] : g.v[0] + g.period;
-            const auto pt = [&](std::size_t r, std::size_t c) {
-                const Point3& q = g.points[r * n + c];
-                return Point(q.x, q.y, q.z);
-            };
-            facets.push_back({Triangle(pt(i, j), pt(i + 1, j), pt(i + 1, jn)),
-                              {{g.u[i], vj}, {g.u[i + 1], vj}, {g.u[i + 1], vn}}});
-            facets.push_back({Triangle(pt(i, j), pt(i + 1, jn), pt(i, jn)),
-                              {{g.u[i], vj}, {g.u[i + 1], vn}, {g.u[i], vn}}});
+            const Point3 &p00 = g.points[i * n + j], &p10 = g.points[(i + 1) * n + j], &p11 = g.points[(i + 1) * n + jn],
+                         &p01 = g.points[i * n + jn];
+            if (reaches(p00, p10, p11))
+                facets.push_back({Triangle(pt(p00), pt(p10), pt(p11)), {{g.u[i], vj}, {g.u[i + 1], vj}, {g.u[i + 1], vn}}});
+            if (reaches(p00, p11, p01))
+                facets.push_back({Triangle(pt(p00), pt(p11), pt(p01)), {{g.u[i], vj}, {g.u[i + 1], vn}, {g.u[i], vn}}});
         }
     return facets;
 }
@@ -118,17 +145,13 @@ SurfaceGrid sampleGrid(const TowSurface& tow)
 
 std::vector<Seed> findSeeds(const SurfaceGrid& a, const SurfaceGrid& b, const WindowPair& window)
 {
-    const std::vector<Facet> fa = facetsIn(a, window.a), fb = facetsIn(b, window.b);
-    // Only facets that reach into the other window's box can cross it: most of a window (the
-    // far side of each tow) drops out before the box intersection.
-    CGAL::Bbox_3 boxA, boxB;
-    for (const Facet& f : fa) boxA += f.triangle.bbox();
-    for (const Facet& f : fb) boxB += f.triangle.bbox();
+    const auto rowsA = rowsOf(a, window.a), rowsB = rowsOf(b, window.b);
+    const std::vector<Facet> fa = facetsIn(a, rowsA, boxOfRows(b, rowsB)), fb = facetsIn(b, rowsB, boxOfRows(a, rowsA));
     std::vector<Box> ba, bb;
-    for (std::size_t k = 0; k < fa.size(); ++k)
-        if (CGAL::do_overlap(fa[k].triangle.bbox(), boxB)) ba.emplace_back(fa[k].triangle.bbox(), k);
-    for (std::size_t k = 0; k < fb.size(); ++k)
-        if (CGAL::do_overlap(fb[k].triangle.bbox(), boxA)) bb.emplace_back(fb[k].triangle.bbox(), k);
+    ba.reserve(fa.size());
+    bb.reserve(fb.size());
+    for (std::size_t k = 0; k < fa.size(); ++k) ba.emplace_back(fa[k].triangle.bbox(), k);
+    for (std::size_t k = 0; k < fb.size(); ++k) bb.emplace_back(fb[k].triangle.bbox(), k);
     std::vector<std::pair<std::size_t, std::size_t>> hits;
     CGAL::box_intersection_d(ba.begin(), ba.end(), bb.begin(), bb.end(), [&](const Box& x, const Box& y) {
         if (CGAL::do_intersect(fa[x.handle()].triangle, fb[y.handle()].triangle)) hits.emplace_back(x.handle(), y.handle());

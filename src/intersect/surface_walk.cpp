@@ -13,13 +13,14 @@
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
 
-SurfaceWalker::SurfaceWalker(const SurfacePair& surfaces, double tolerance)
+SurfaceWalker::SurfaceWalker(const SurfacePair& surfaces, double tolerance, double maxStep)
     : a_(new GeomAdaptor_Surface(surfaces.a)),
       b_(new GeomAdaptor_Surface(surfaces.b)),
       domainA_(new Adaptor3d_TopolTool(a_)),
       domainB_(new Adaptor3d_TopolTool(b_)),
       tolerance_(tolerance),
-      uvMaxStep_(IntPatch_Intersection::DefineUVMaxStep(a_, domainA_, b_, domainB_))
+      // OCCT's choice (kFineWalkStep, or ten times finer near a surface's singular point), scaled.
+      uvMaxStep_(maxStep * (IntPatch_Intersection::DefineUVMaxStep(a_, domainA_, b_, domainB_) / kFineWalkStep))
 {
 }
 

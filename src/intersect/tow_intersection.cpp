@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <mutex>
 
 #include "core/parallel.hpp"
@@ -88,18 +89,50 @@ PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::ve
     detail::closeAcrossCaps(a, b, curves, tol);
     const detail::SurfacePair closedPair = detail::closedPairOf(a, b);
     for (detail::TracedCurve& t : curves) detail::consolidateCurve(closedPair, t, tol);
+    detail::dropDuplicateCurves(curves, tol);
+    // A closed curve that encloses (almost) nothing: it runs out along a line where the surfaces
+    // touch and back. Thinner on average than 1e-4 of the tow size, it is a contact, not an
+    // interpenetration.
+    const auto isSliver = [&](const IntersectionLoop& loop) {
+        if (!loop.closed() || loop.windsAround(LoopSide::A) || loop.windsAround(LoopSide::B)) return false;
+        const double thin = 0.5 * loop.length() * kContactWidth * size;
+        return !(loop.enclosedArea(LoopSide::A) > thin) || !(loop.enclosedArea(LoopSide::B) > thin);
+    };
+    const ParameterRange ra = a.parameterRange(), rb = b.parameterRange();
+    const auto onTubes = [&](const detail::TracedCurve& t) {
+        return std::all_of(t.points.begin(), t.points.end(), [&](const detail::PointOn2& p) {
+            return p.ua >= ra.uMin && p.ua <= ra.uMax && p.ub >= rb.uMin && p.ub <= rb.uMax;
+        });
+    };
+    std::unique_ptr<detail::SurfaceWalker> fine;  // made when a coarse walk needs checking
+    proximity.clear();
+    for (const detail::TracedCurve& t : curves) proximity.emplace_back(t);
     std::size_t slivers = 0;
-    for (const detail::TracedCurve& t : curves) {
+    for (std::size_t k = 0; k < curves.size(); ++k) {
+        const detail::TracedCurve& t = curves[k];
         IntersectionLoop loop = detail::makeLoop(c.a, c.b, a, b, t.points, t.closed, t.openReason, tol.point);
-        // A closed curve that encloses (almost) nothing: it runs out along a line where the
-        // surfaces touch and back. Thinner on average than 1e-4 of the tow size, it is a contact,
-        // not an interpenetration.
-        if (loop.closed() && !loop.windsAround(LoopSide::A) && !loop.windsAround(LoopSide::B)) {
-            const double thin = 0.5 * loop.length() * kContactWidth * size;
-                    if (!(loop.enclosedArea(LoopSide::A) > thin) || !(loop.enclosedArea(LoopSide::B) > thin)) {
-                ++slivers;
-                continue;
+        if (isSliver(loop) && onTubes(t)) {
+            // Where the surfaces are nearly tangent a walk with coarse steps can turn back and
+            // retrace its way: walk again with OCCT's own, finer step.
+            if (!fine) fine = std::make_unique<detail::SurfaceWalker>(surfaces, tol.point, detail::kFineWalkStep);
+            ++result.walks;
+            detail::TracedCurve again = detail::traceCurve(surfaces, *fine, t.points[t.points.size() / 2], tol);
+            if (again.closed) {
+                detail::consolidateCurve(closedPair, again, tol);
+                IntersectionLoop retraced = detail::makeLoop(c.a, c.b, a, b, again.points, true, "", tol.point);
+                if (!isSliver(retraced)) {
+                    // The loop another seed traced already, or a loop found only now.
+                    bool traced = false;
+                    for (std::size_t j = 0; j < curves.size() && !traced; ++j)
+                        traced = j != k && proximity[j].within(again.points[again.points.size() / 2].point, 2.0 * tol.chordal + tol.closing);
+                    if (traced) continue;
+                    loop = std::move(retraced);
+                }
             }
+        }
+        if (isSliver(loop)) {
+            ++slivers;
+            continue;
         }
         result.loops.push_back(std::move(loop));
     }
