@@ -22,10 +22,15 @@ TOWGEOM_EXPORT void writeGmsh(const TextileMesh& mesh, const std::string& path);
 /// writeGmsh() to the stream @p out.
 TOWGEOM_EXPORT void writeGmsh(const TextileMesh& mesh, std::ostream& out);
 
-/// Writes @p mesh as an Abaqus input file: *NODE (1-based global numbering), *ELEMENT TYPE=S3 per
-/// tow with ELSET=TOW_NAME (element numbers consecutive over the tows in order), and per
-/// connected region *ELSET REGION_k (both tows' copies) and *NSET REGION_k (its nodes), and per
-/// tow with end caps *ELSET CAPS_NAME. Written to a temporary name and renamed.
+/// Writes @p mesh as an Abaqus (and CalculiX) input file, every triangle once: *NODE (1-based
+/// global numbering, each coordinate in at most 20 characters: its shortest exact text, or
+/// rounded to the 13-14 significant digits that fit, as CalculiX reads only 20); *ELEMENT
+/// TYPE=S3 blocks with ELSET=OWN_NAME per tow (the triangles it has alone: tube outside regions,
+/// end caps) and ELSET=SHARED (the regions' triangles, in their primary's orientation); per
+/// connected region *ELSET REGION_k (its triangles) and *NSET REGION_k (its nodes); per tow
+/// with end caps *ELSET CAPS_NAME; per tow *ELSET TOW_NAME (its closed surface: OWN_NAME and its
+/// REGION_k sets, by name); and *ELSET TEXTILE (every element). Names are upper-cased by
+/// CalculiX. Written to a temporary name and renamed.
 /// @throws towgeom::Error (WriteFailed) naming @p path.
 TOWGEOM_EXPORT void writeAbaqus(const TextileMesh& mesh, const std::string& path);
 

@@ -23,7 +23,8 @@ using VtkIntegerFields = std::vector<std::pair<std::string, std::vector<long>>>;
 
 /// Writes @p mesh to @p out as legacy ASCII VTK POLYDATA titled @p title, with point normals when
 /// the mesh has them, @p cellData per triangle and @p pointData per vertex (each field as long as
-/// the triangles or vertices).
+/// the triangles or vertices), each set as one FIELD block (arrays of type int) that legacy
+/// readers read whole by default.
 /// @throws towgeom::Error (InvalidArgument) if a field's length does not match.
 TOWGEOM_EXPORT void writeVtk(const TriangleMesh& mesh, std::ostream& out, const std::string& title, const VtkIntegerFields& cellData = {},
               const VtkIntegerFields& pointData = {});

@@ -2,6 +2,7 @@
 #include "towgeom/mesh_export.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <iomanip>
 #include <limits>
@@ -39,8 +40,8 @@ void writeGmsh(const TextileMesh& mesh, std::ostream& out)
     out << std::setprecision(std::numeric_limits<double>::max_digits10);
     // Surface entities: each tow's tube triangles outside regions, then each region's triangles
     // once (the primary's copy), in both tows' physical groups, then each tow's end caps.
-    // Physical groups: tows 1..T, regions T+1..T+R, then CAPS_NAME per tow with caps. Gmsh reads a triangle given twice as a duplicate element, so the secondary's
-    // reversed copy is not repeated here (the .inp keeps both copies for tie constraints).
+    // Physical groups: tows 1..T, regions T+1..T+R, then CAPS_NAME per tow with caps. Each triangle is written once (the
+    // secondary's reversed copy of a region is the same element).
     struct Entity {
         std::vector<std::array<std::size_t, 3>> triangles;
         std::vector<std::size_t> physical;
@@ -132,33 +133,65 @@ void writeGmsh(const TextileMesh& mesh, std::ostream& out)
 
 void writeAbaqus(const TextileMesh& mesh, std::ostream& out)
 {
-    out << std::setprecision(std::numeric_limits<double>::max_digits10);
+    // Every triangle once: each tow's own (tube outside regions, caps) under OWN_NAME, the
+    // regions' under SHARED in their primary's orientation (REGION_k lists region k's); TOW_NAME,
+    // the tow's closed surface, and TEXTILE, every element, are sets of those sets.
+    constexpr std::size_t kField = 20;  // CalculiX reads at most 20 characters of a number
     out << "*HEADING\ntowgeom: compatible tow surface meshes (" << mesh.tows.size() << " tows, " << mesh.regions.size()
-        << " connected regions)\n";
-    std::vector<std::vector<std::size_t>> regionElements(mesh.regions.size()), capElements(mesh.tows.size());
+        << " connected regions), every triangle once\n";
+    std::vector<std::vector<std::size_t>> capElements(mesh.tows.size()), regionElements(mesh.regions.size());
+    std::vector<std::string> owns(mesh.tows.size());  // OWN_ set per tow, empty if it has none
     {
         NumberWriter w(out);
         w.text("*NODE").end();
         for (std::size_t k = 0; k < mesh.nodes.size(); ++k)
-            w.number(k + 1).text(", ").number(mesh.nodes[k].x).text(", ").number(mesh.nodes[k].y).text(", ").number(mesh.nodes[k].z).end();
+            w.number(k + 1).text(", ").fitted(mesh.nodes[k].x, kField).text(", ").fitted(mesh.nodes[k].y, kField).text(", ").fitted(mesh.nodes[k].z, kField).end();
         std::size_t id = 0;
+        const auto element = [&](const std::array<std::size_t, 3>& t) {
+            w.number(++id).text(", ").number(t[0] + 1).text(", ").number(t[1] + 1).text(", ").number(t[2] + 1).end();
+        };
         for (std::size_t tow = 0; tow < mesh.tows.size(); ++tow) {
             const TowMesh& m = mesh.tows[tow];
-            w.text("*ELEMENT, TYPE=S3, ELSET=").text(label("TOW_", m.name).c_str()).end();
+            bool any = false;
             for (std::size_t k = 0; k < m.triangles.size(); ++k) {
-                const auto& t = m.triangles[k];
-                w.number(++id).text(", ").number(t[0] + 1).text(", ").number(t[1] + 1).text(", ").number(t[2] + 1).end();
-                if (m.region[k] >= 0) regionElements[static_cast<std::size_t>(m.region[k])].push_back(id);
+                if (m.region[k] >= 0) continue;
+                if (!any) {
+                    owns[tow] = label("OWN_", m.name);
+                    w.text("*ELEMENT, TYPE=S3, ELSET=").text(owns[tow].c_str()).end();
+                    any = true;
+                }
+                element(m.triangles[k]);
                 if (isCap(m, k)) capElements[tow].push_back(id);
+            }
+        }
+        // Region triangles, each once even where regions share one (three tows at a point).
+        std::map<std::pair<std::size_t, std::size_t>, std::size_t> written;  // (primary, triangle) -> element
+        bool any = false;
+        for (std::size_t r = 0; r < mesh.regions.size(); ++r) {
+            const ConnectedRegion& g = mesh.regions[r];
+            for (std::size_t k : g.triangles) {
+                const auto [at, added] = written.emplace(std::make_pair(g.primary, k), id + 1);
+                if (added) {
+                    if (!any) w.text("*ELEMENT, TYPE=S3, ELSET=SHARED").end();
+                    any = true;
+                    element(mesh.tows[g.primary].triangles[k]);
+                }
+                regionElements[r].push_back(at->second);
             }
         }
     }
     const auto list = [&](const std::vector<std::size_t>& ids, std::size_t offset) {
         for (std::size_t k = 0; k < ids.size(); ++k) out << ids[k] + offset << (k % 16 == 15 || k + 1 == ids.size() ? "\n" : ", ");
     };
+    const auto names = [&](const std::vector<std::string>& sets) {
+        for (std::size_t k = 0; k < sets.size(); ++k) out << sets[k] << (k % 8 == 7 || k + 1 == sets.size() ? "\n" : ", ");
+    };
+    // Sets are defined before any set that names them.
     for (std::size_t r = 0; r < mesh.regions.size(); ++r) {
-        out << "*ELSET, ELSET=REGION_" << r + 1 << '\n';
-        list(regionElements[r], 0);
+        if (!regionElements[r].empty()) {
+            out << "*ELSET, ELSET=REGION_" << r + 1 << '\n';
+            list(regionElements[r], 0);
+        }
         out << "*NSET, NSET=REGION_" << r + 1 << '\n';
         list(mesh.regions[r].nodes, 1);
     }
@@ -166,6 +199,24 @@ void writeAbaqus(const TextileMesh& mesh, std::ostream& out)
         if (capElements[t].empty()) continue;
         out << "*ELSET, ELSET=" << label("CAPS_", mesh.tows[t].name) << '\n';
         list(capElements[t], 0);
+    }
+    std::vector<std::string> all;
+    for (std::size_t t = 0; t < mesh.tows.size(); ++t) {
+        std::vector<std::string> sets;
+        if (!owns[t].empty()) sets.push_back(owns[t]);
+        for (std::size_t r = 0; r < mesh.regions.size(); ++r)
+            if (!regionElements[r].empty() && (mesh.regions[r].primary == t || mesh.regions[r].secondary == t))
+                sets.push_back("REGION_" + std::to_string(r + 1));
+        if (!owns[t].empty()) all.push_back(owns[t]);
+        if (sets.empty()) continue;
+        out << "*ELSET, ELSET=" << label("TOW_", mesh.tows[t].name) << '\n';
+        names(sets);
+    }
+    if (std::any_of(regionElements.begin(), regionElements.end(), [](const std::vector<std::size_t>& e) { return !e.empty(); }))
+        all.push_back("SHARED");
+    if (!all.empty()) {
+        out << "*ELSET, ELSET=TEXTILE\n";
+        names(all);
     }
 }
 

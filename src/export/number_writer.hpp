@@ -31,6 +31,18 @@ public:
         buffer_.append(digits, r.ptr);
         return *this;
     }
+    /// @p x in at most @p width characters: its shortest exact text when that fits (almost
+    /// always), else rounded to as many significant digits as fit (at least 13 for widths >= 20).
+    /// Abaqus and CalculiX read at most 20 characters of a number.
+    NumberWriter& fitted(double x, std::size_t width)
+    {
+        char digits[32];
+        auto r = std::to_chars(digits, digits + sizeof digits, x);
+        for (int precision = 17; static_cast<std::size_t>(r.ptr - digits) > width && precision > 1; --precision)
+            r = std::to_chars(digits, digits + sizeof digits, x, std::chars_format::general, precision);
+        buffer_.append(digits, r.ptr);
+        return *this;
+    }
     NumberWriter& end()
     {
         buffer_ += '\n';

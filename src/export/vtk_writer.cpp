@@ -14,6 +14,10 @@ TOWGEOM_BEGIN_NAMESPACE
 void writeVtk(const TriangleMesh& mesh, std::ostream& out, const std::string& title, const VtkIntegerFields& cellData,
               const VtkIntegerFields& pointData)
 {
+    for (const VtkIntegerFields* fs : {&cellData, &pointData})
+        for (const auto& [name, values] : *fs)
+            if (name.empty() || name.find_first_of(" \t\r\n") != std::string::npos)
+                throw Error(ErrorCode::InvalidArgument, "VTK field name '" + name + "' is empty or holds white space");
     for (const auto& [name, values] : cellData)
         if (values.size() != mesh.triangles.size())
             throw Error(ErrorCode::InvalidArgument, "VTK cell field '" + name + "' has " + std::to_string(values.size()) +
@@ -37,14 +41,20 @@ void writeVtk(const TriangleMesh& mesh, std::ostream& out, const std::string& ti
         w.text("NORMALS normals double").end();
         for (const Vector3& n : mesh.normals) w.number(n.x).text(" ").number(n.y).text(" ").number(n.z).end();
     }
-    const auto scalars = [&](const std::string& name, const std::vector<long>& values) {
-        w.text("SCALARS ").text(name.c_str()).text(" int 1").end().text("LOOKUP_TABLE default").end();
-        for (long v : values) w.number(v).end();
+    // Integer fields as one FIELD block per section: a legacy reader (VTK's vtkPolyDataReader,
+    // ParaView, VisIt) reads every array of a FIELD, but by default only the first of several
+    // SCALARS blocks (a second field, e.g. region_id, did not show).
+    const auto fields = [&](const VtkIntegerFields& fs) {
+        w.text("FIELD FieldData ").number(fs.size()).end();
+        for (const auto& [name, values] : fs) {
+            w.text(name.c_str()).text(" 1 ").number(values.size()).text(" int").end();
+            for (long v : values) w.number(v).end();
+        }
     };
-    for (const auto& [name, values] : pointData) scalars(name, values);
+    if (!pointData.empty()) fields(pointData);
     if (!cellData.empty()) {
         w.text("CELL_DATA ").number(mesh.triangles.size()).end();
-        for (const auto& [name, values] : cellData) scalars(name, values);
+        fields(cellData);
     }
 }
 
