@@ -33,6 +33,7 @@
 #include "towgeom/tow_surface.hpp"
 #include "towgeom/triangle_mesh.hpp"
 #include "towgeom/version.hpp"
+#include "towgeom/volume_mesh.hpp"
 #include "towgeom/vtk_writer.hpp"
 #include "towgeom/weave.hpp"
 #include "towgeom/yarn_path.hpp"
