@@ -30,6 +30,34 @@ std::string label(const std::string& prefix, const std::string& name)
     return s;
 }
 
+std::string upper(std::string s)
+{
+    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+}
+
+/// The tows' names as set names take them (label() after a prefix of up to 5 characters, such
+/// as CAPS_): Abaqus and CalculiX allow 80 characters and do not tell case apart, so a name
+/// that is too long, or the same as an earlier one but for case or the characters label()
+/// replaces, is cut and given the tow's number (NAME_7).
+std::vector<std::string> towLabels(const TextileMesh& mesh)
+{
+    constexpr std::size_t kLongest = 80 - 5;
+    std::vector<std::string> labels;
+    std::set<std::string> taken;  // upper-cased
+    for (std::size_t t = 0; t < mesh.tows.size(); ++t) {
+        const std::string base = label("", mesh.tows[t].name);
+        std::string l = base;
+        for (std::size_t n = t + 1; l.size() > kLongest || taken.count(upper(l)); n += mesh.tows.size()) {
+            const std::string suffix = "_" + std::to_string(n);
+            l = base.substr(0, kLongest - suffix.size()) + suffix;
+        }
+        taken.insert(upper(l));
+        labels.push_back(l);
+    }
+    return labels;
+}
+
 /// True when triangle @p k of @p m lies on one of its end caps.
 bool isCap(const TowMesh& m, std::size_t k) { return k < m.face.size() && m.face[k] != TowFace::Side; }
 
@@ -38,43 +66,55 @@ bool isCap(const TowMesh& m, std::size_t k) { return k < m.face.size() && m.face
 void writeGmsh(const TextileMesh& mesh, std::ostream& out)
 {
     out << std::setprecision(std::numeric_limits<double>::max_digits10);
-    // Surface entities: each tow's tube triangles outside regions, then each region's triangles
-    // once (the primary's copy), in both tows' physical groups, then each tow's end caps.
-    // Physical groups: tows 1..T, regions T+1..T+R, then CAPS_NAME per tow with caps. Each triangle is written once (the
-    // secondary's reversed copy of a region is the same element).
+    // Surface entities, every triangle in one: per tow its tube and its cap triangles outside
+    // regions, then per region its triangles (the primary's copy, in both tows' groups; the
+    // secondary's reversed copy is the same element), its cap triangles apart. Physical groups:
+    // tows 1..T, regions T+1..T+R, then CAPS_NAME per tow with caps.
     struct Entity {
         std::vector<std::array<std::size_t, 3>> triangles;
         std::vector<std::size_t> physical;
     };
     std::vector<Entity> entities;
     const std::size_t towCount = mesh.tows.size();
-    for (std::size_t t = 0; t < towCount; ++t) {
-        Entity e;
-        e.physical = {t + 1};
-        for (std::size_t k = 0; k < mesh.tows[t].triangles.size(); ++k)
-            if (mesh.tows[t].region[k] < 0 && !isCap(mesh.tows[t], k)) e.triangles.push_back(mesh.tows[t].triangles[k]);
+    const std::vector<std::string> names = towLabels(mesh);
+    // CAPS_NAME groups, numbered after the tows' and the regions'.
+    std::vector<std::size_t> capGroup(towCount, 0);
+    std::vector<std::pair<std::size_t, std::string>> capGroups;  // (group, name)
+    for (std::size_t t = 0; t < towCount; ++t)
+        for (std::size_t k = 0; k < mesh.tows[t].triangles.size() && capGroup[t] == 0; ++k)
+            if (isCap(mesh.tows[t], k)) {
+                capGroup[t] = towCount + mesh.regions.size() + capGroups.size() + 1;
+                capGroups.emplace_back(capGroup[t], label("CAPS_", names[t]));
+            }
+    const auto add = [&](Entity&& e) {
         if (!e.triangles.empty()) entities.push_back(std::move(e));
+    };
+    for (std::size_t t = 0; t < towCount; ++t) {
+        Entity side, caps;
+        side.physical = {t + 1};
+        caps.physical = {t + 1, capGroup[t]};
+        for (std::size_t k = 0; k < mesh.tows[t].triangles.size(); ++k)
+            if (mesh.tows[t].region[k] < 0) (isCap(mesh.tows[t], k) ? caps : side).triangles.push_back(mesh.tows[t].triangles[k]);
+        add(std::move(side));
+        add(std::move(caps));
     }
+    // A region's triangles once (the primary's copy; once even where regions share one), its
+    // cap triangles apart, also in the primary's CAPS_ group.
+    std::set<std::pair<std::size_t, std::size_t>> written;
     for (std::size_t r = 0; r < mesh.regions.size(); ++r) {
         const ConnectedRegion& g = mesh.regions[r];
-        Entity e;
-        e.physical = {g.primary + 1, g.secondary + 1, towCount + r + 1};
-        for (std::size_t k : g.triangles) e.triangles.push_back(mesh.tows[g.primary].triangles[k]);
-        if (!e.triangles.empty()) entities.push_back(std::move(e));
-    }
-    std::vector<std::pair<std::size_t, std::string>> capGroups;  // (group, name)
-    for (std::size_t t = 0; t < towCount; ++t) {
-        Entity e;
-        for (std::size_t k = 0; k < mesh.tows[t].triangles.size(); ++k)
-            if (isCap(mesh.tows[t], k)) e.triangles.push_back(mesh.tows[t].triangles[k]);
-        if (e.triangles.empty()) continue;
-        capGroups.emplace_back(towCount + mesh.regions.size() + capGroups.size() + 1, label("CAPS_", mesh.tows[t].name));
-        e.physical = {t + 1, capGroups.back().first};
-        entities.push_back(std::move(e));
+        Entity side, caps;
+        side.physical = {g.primary + 1, g.secondary + 1, towCount + r + 1};
+        caps.physical = {g.primary + 1, g.secondary + 1, towCount + r + 1, capGroup[g.primary]};
+        for (std::size_t k : g.triangles)
+            if (written.emplace(g.primary, k).second)
+                (isCap(mesh.tows[g.primary], k) ? caps : side).triangles.push_back(mesh.tows[g.primary].triangles[k]);
+        add(std::move(side));
+        add(std::move(caps));
     }
     out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
     out << "$PhysicalNames\n" << towCount + mesh.regions.size() + capGroups.size() << '\n';
-    for (std::size_t t = 0; t < towCount; ++t) out << "2 " << t + 1 << " \"" << label("TOW_", mesh.tows[t].name) << "\"\n";
+    for (std::size_t t = 0; t < towCount; ++t) out << "2 " << t + 1 << " \"" << label("TOW_", names[t]) << "\"\n";
     for (std::size_t r = 0; r < mesh.regions.size(); ++r) out << "2 " << towCount + r + 1 << " \"REGION_" << r + 1 << "\"\n";
     for (const auto& [group, name] : capGroups) out << "2 " << group << " \"" << name << "\"\n";
     out << "$EndPhysicalNames\n";
@@ -141,6 +181,7 @@ void writeAbaqus(const TextileMesh& mesh, std::ostream& out)
         << " connected regions), every triangle once\n";
     std::vector<std::vector<std::size_t>> capElements(mesh.tows.size()), regionElements(mesh.regions.size());
     std::vector<std::string> owns(mesh.tows.size());  // OWN_ set per tow, empty if it has none
+    const std::vector<std::string> names = towLabels(mesh);
     {
         NumberWriter w(out);
         w.text("*NODE").end();
@@ -156,7 +197,7 @@ void writeAbaqus(const TextileMesh& mesh, std::ostream& out)
             for (std::size_t k = 0; k < m.triangles.size(); ++k) {
                 if (m.region[k] >= 0) continue;
                 if (!any) {
-                    owns[tow] = label("OWN_", m.name);
+                    owns[tow] = label("OWN_", names[tow]);
                     w.text("*ELEMENT, TYPE=S3, ELSET=").text(owns[tow].c_str()).end();
                     any = true;
                 }
@@ -175,6 +216,7 @@ void writeAbaqus(const TextileMesh& mesh, std::ostream& out)
                     if (!any) w.text("*ELEMENT, TYPE=S3, ELSET=SHARED").end();
                     any = true;
                     element(mesh.tows[g.primary].triangles[k]);
+                    if (isCap(mesh.tows[g.primary], k)) capElements[g.primary].push_back(id);
                 }
                 regionElements[r].push_back(at->second);
             }
@@ -183,7 +225,7 @@ void writeAbaqus(const TextileMesh& mesh, std::ostream& out)
     const auto list = [&](const std::vector<std::size_t>& ids, std::size_t offset) {
         for (std::size_t k = 0; k < ids.size(); ++k) out << ids[k] + offset << (k % 16 == 15 || k + 1 == ids.size() ? "\n" : ", ");
     };
-    const auto names = [&](const std::vector<std::string>& sets) {
+    const auto setNames = [&](const std::vector<std::string>& sets) {
         for (std::size_t k = 0; k < sets.size(); ++k) out << sets[k] << (k % 8 == 7 || k + 1 == sets.size() ? "\n" : ", ");
     };
     // Sets are defined before any set that names them.
@@ -192,12 +234,14 @@ void writeAbaqus(const TextileMesh& mesh, std::ostream& out)
             out << "*ELSET, ELSET=REGION_" << r + 1 << '\n';
             list(regionElements[r], 0);
         }
+        if (mesh.regions[r].nodes.empty()) continue;
         out << "*NSET, NSET=REGION_" << r + 1 << '\n';
         list(mesh.regions[r].nodes, 1);
     }
     for (std::size_t t = 0; t < mesh.tows.size(); ++t) {
         if (capElements[t].empty()) continue;
-        out << "*ELSET, ELSET=" << label("CAPS_", mesh.tows[t].name) << '\n';
+        std::sort(capElements[t].begin(), capElements[t].end());
+        out << "*ELSET, ELSET=" << label("CAPS_", names[t]) << '\n';
         list(capElements[t], 0);
     }
     std::vector<std::string> all;
@@ -209,14 +253,14 @@ void writeAbaqus(const TextileMesh& mesh, std::ostream& out)
                 sets.push_back("REGION_" + std::to_string(r + 1));
         if (!owns[t].empty()) all.push_back(owns[t]);
         if (sets.empty()) continue;
-        out << "*ELSET, ELSET=" << label("TOW_", mesh.tows[t].name) << '\n';
-        names(sets);
+        out << "*ELSET, ELSET=" << label("TOW_", names[t]) << '\n';
+        setNames(sets);
     }
     if (std::any_of(regionElements.begin(), regionElements.end(), [](const std::vector<std::size_t>& e) { return !e.empty(); }))
         all.push_back("SHARED");
     if (!all.empty()) {
         out << "*ELSET, ELSET=TEXTILE\n";
-        names(all);
+        setNames(all);
     }
 }
 

@@ -203,13 +203,17 @@ struct Tracer {
             PointOn2 start = end;
             const auto across = [](double v, double before, double first, double period) {
                 if (v != before) return v > before ? first : first + period;
-                // Along the seam: either side (the walk runs along it).
-                const double w = v - period * std::floor((v - first) / period + 0.5);  // nearest seam value
-                return std::abs(w - first) < 0.5 * period ? first + period : first;
+                return first;  // the chain lies along the seam: either side (the walk runs along it)
             };
-            const PointOn2& before = chain.size() >= 2 ? chain[chain.size() - 2] : end;
-            if (seamA) start.va = across(end.va, before.va, d.vFirstA, d.periodA);
-            if (seamB) start.vb = across(end.vb, before.vb, d.vFirstB, d.periodB);
+            // The last point before the end that differs from it in v (points along the seam do
+            // not tell the side).
+            const auto before = [&](double PointOn2::*v, double period) {
+                for (std::size_t k = chain.size() - 1; k-- > 0;)
+                    if (std::abs(chain[k].*v - end.*v) > 1e-9 * period) return chain[k].*v;
+                return end.*v;
+            };
+            if (seamA) start.va = across(end.va, before(&PointOn2::va, d.periodA), d.vFirstA, d.periodA);
+            if (seamB) start.vb = across(end.vb, before(&PointOn2::vb, d.periodB), d.vFirstB, d.periodB);
             std::vector<PointOn2> piece = orient(walker.walk(start));
             if (!piece.empty() && distance(piece.front().point, end.point) <= tol.closing) return piece;
         }
@@ -435,11 +439,18 @@ void dropDuplicateCurves(std::vector<TracedCurve>& curves, const TraceTolerances
     std::vector<CurveProximity> proximity;
     proximity.reserve(curves.size());
     for (const TracedCurve& c : curves) proximity.emplace_back(c);
+    // Of two that run along each other, the closed one, else the one with more points.
+    const auto better = [&](std::size_t i, std::size_t j) {
+        if (curves[i].closed != curves[j].closed) return curves[i].closed;
+        return curves[i].points.size() >= curves[j].points.size();
+    };
     for (std::size_t i = 0; i < curves.size(); ++i)
         for (std::size_t j = i + 1; j < curves.size() && !dropped[i]; ++j) {
             if (dropped[j]) continue;
-            if (runsAlong(curves[j], proximity[i])) dropped[j] = 1;       // j is (part of) i
-            else if (runsAlong(curves[i], proximity[j])) dropped[i] = 1;  // i is part of j
+            const bool jAlongI = runsAlong(curves[j], proximity[i]), iAlongJ = runsAlong(curves[i], proximity[j]);
+            if (jAlongI && iAlongJ) (better(i, j) ? dropped[j] : dropped[i]) = 1;
+            else if (jAlongI) dropped[j] = 1;  // j is part of i
+            else if (iAlongJ) dropped[i] = 1;  // i is part of j
         }
     std::size_t kept = 0;
     for (std::size_t k = 0; k < curves.size(); ++k)

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <deque>
 #include <memory>
 #include <mutex>
 
@@ -104,37 +105,52 @@ PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::ve
             return p.ua >= ra.uMin && p.ua <= ra.uMax && p.ub >= rb.uMin && p.ub <= rb.uMax;
         });
     };
-    std::unique_ptr<detail::SurfaceWalker> fine;  // made when a coarse walk needs checking
+    std::vector<IntersectionLoop> loops;
+    std::vector<char> sliver, drop(curves.size(), 0);
+    for (const detail::TracedCurve& t : curves) {
+        loops.push_back(detail::makeLoop(c.a, c.b, a, b, t.points, t.closed, t.openReason, tol.point));
+        sliver.push_back(isSliver(loops.back()));
+    }
+    // Where the surfaces are nearly tangent a walk with coarse steps can turn back and retrace
+    // its way: a sliver is walked again with OCCT's own, finer step. What that gives is kept
+    // unless it runs along a loop kept already (then the sliver was that loop, traced badly).
+    std::unique_ptr<detail::SurfaceWalker> fine;  // made when a coarse walk needs it
+    std::deque<detail::TracedCurve> retraced;      // stable addresses for proximity
     proximity.clear();
-    for (const detail::TracedCurve& t : curves) proximity.emplace_back(t);
-    std::size_t slivers = 0;
+    for (std::size_t k = 0; k < curves.size(); ++k)
+        if (!sliver[k]) proximity.emplace_back(curves[k]);
+    const auto alongKept = [&](const detail::TracedCurve& t) {
+        return std::any_of(proximity.begin(), proximity.end(), [&](const detail::CurveProximity& p) {
+            return std::all_of(t.points.begin(), t.points.end(),
+                               [&](const detail::PointOn2& q) { return p.within(q.point, 2.0 * tol.chordal + tol.closing); });
+        });
+    };
     for (std::size_t k = 0; k < curves.size(); ++k) {
-        const detail::TracedCurve& t = curves[k];
-        IntersectionLoop loop = detail::makeLoop(c.a, c.b, a, b, t.points, t.closed, t.openReason, tol.point);
-        if (isSliver(loop) && onTubes(t)) {
-            // Where the surfaces are nearly tangent a walk with coarse steps can turn back and
-            // retrace its way: walk again with OCCT's own, finer step.
-            if (!fine) fine = std::make_unique<detail::SurfaceWalker>(surfaces, tol.point, detail::kFineWalkStep);
-            ++result.walks;
-            detail::TracedCurve again = detail::traceCurve(surfaces, *fine, t.points[t.points.size() / 2], tol);
-            if (again.closed) {
-                detail::consolidateCurve(closedPair, again, tol);
-                IntersectionLoop retraced = detail::makeLoop(c.a, c.b, a, b, again.points, true, "", tol.point);
-                if (!isSliver(retraced)) {
-                    // The loop another seed traced already, or a loop found only now.
-                    bool traced = false;
-                    for (std::size_t j = 0; j < curves.size() && !traced; ++j)
-                        traced = j != k && proximity[j].within(again.points[again.points.size() / 2].point, 2.0 * tol.chordal + tol.closing);
-                    if (traced) continue;
-                    loop = std::move(retraced);
-                }
-            }
+        if (!sliver[k] || !onTubes(curves[k])) continue;
+        if (!fine) fine = std::make_unique<detail::SurfaceWalker>(surfaces, tol.point, detail::kFineWalkStep);
+        ++result.walks;
+        detail::TracedCurve again = detail::traceCurve(surfaces, *fine, curves[k].points[curves[k].points.size() / 2], tol);
+        if (!again.closed) continue;
+        detail::consolidateCurve(closedPair, again, tol);
+        IntersectionLoop loop = detail::makeLoop(c.a, c.b, a, b, again.points, true, "", tol.point);
+        if (isSliver(loop)) continue;
+        sliver[k] = 0;
+        if (alongKept(again)) {
+            drop[k] = 1;
+            continue;
         }
-        if (isSliver(loop)) {
+        loops[k] = std::move(loop);
+        retraced.push_back(std::move(again));
+        proximity.emplace_back(retraced.back());
+    }
+    std::size_t slivers = 0;
+    for (std::size_t k = 0; k < loops.size(); ++k) {
+        if (drop[k]) continue;
+        if (sliver[k]) {
             ++slivers;
             continue;
         }
-        result.loops.push_back(std::move(loop));
+        result.loops.push_back(std::move(loops[k]));
     }
     if (slivers > 0)
         result.findings.push_back({c.a, c.b, PairFinding::Kind::Contact,
