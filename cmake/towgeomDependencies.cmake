@@ -13,10 +13,10 @@ find_package(nlohmann_json 3.11 REQUIRED CONFIG)
 # The OCCT toolkits towgeom links (OCCT's imported targets carry no include directories).
 set(TOWGEOM_OCCT_LIBRARIES TKernel TKMath TKG2d TKG3d TKGeomBase TKGeomAlgo)
 
-# Gmsh (libgmsh-dev) meshes the tows' volumes (src/volume). Debian ships no CMake package for it:
-# its header and library are checked here and the library is linked by name, like OCCT's.
-find_path(TOWGEOM_GMSH_INCLUDE_DIR gmsh.h)
-find_library(TOWGEOM_GMSH_LIBRARY gmsh)
-if(NOT TOWGEOM_GMSH_INCLUDE_DIR OR NOT TOWGEOM_GMSH_LIBRARY)
-  message(FATAL_ERROR "towgeom needs Gmsh's C++ API (Debian: apt-get install libgmsh-dev)")
+# Gmsh (libgmsh-dev) meshes the tows' volumes (src/volume): its C API header is needed to build;
+# the library is loaded when first used (dlopen of libgmsh.so.4.8), not linked, so programs that
+# never mesh volumes do not load its ~90 libraries.
+find_path(TOWGEOM_GMSH_INCLUDE_DIR gmshc.h)
+if(NOT TOWGEOM_GMSH_INCLUDE_DIR)
+  message(FATAL_ERROR "towgeom needs Gmsh's C API header gmshc.h (Debian: apt-get install libgmsh-dev)")
 endif()

@@ -39,7 +39,9 @@ enum class ErrorCode {
                               ///< (MeshOptions::maxTriangles); refused before it is made, the
                               ///< message gives the estimate and the limit.
     MalformedReport,          ///< A JSON report read back is malformed, or is not one of the tows given.
-    Cancelled                 ///< Progress::cancel() stopped the work; no result was made.
+    Cancelled,                ///< Progress::cancel() stopped the work; no result was made.
+    EngineUnavailable         ///< An engine loaded when first needed (Gmsh's library, for
+                              ///< meshVolumes()) could not be loaded; the message names its package.
 };
 
 /// A short, stable, machine-readable name of a code, e.g. "non_numeric".

@@ -46,7 +46,9 @@ struct TOWGEOM_EXPORT VolumeMesh {
 /// Element sizes grow from the surface mesh inwards. Gmsh is a process-wide engine: calls are
 /// serialised; Gmsh is initialised and finalised here unless the host has initialised it (then
 /// only the model made here is removed).
-/// @throws towgeom::Error (InvalidArgument) if a tow's surface is not closed (its triangles'
+/// Gmsh's library (Debian: libgmsh4.8) is loaded on the first call, not linked.
+/// @throws towgeom::Error (EngineUnavailable) if Gmsh's library cannot be loaded;
+///         (InvalidArgument) if a tow's surface is not closed (its triangles'
 ///         edges must each be shared by two of them);
 ///         (Internal) with Gmsh's message if Gmsh fails, or if it added, moved or renumbered a
 ///         surface node.

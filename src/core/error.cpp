@@ -53,6 +53,7 @@ const char* errorCodeName(ErrorCode code) noexcept
     case ErrorCode::TooLarge: return "too_large";
     case ErrorCode::MalformedReport: return "malformed_report";
     case ErrorCode::Cancelled: return "cancelled";
+    case ErrorCode::EngineUnavailable: return "engine_unavailable";
     }
     return "unknown";
 }

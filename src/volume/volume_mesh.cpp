@@ -3,16 +3,17 @@
 // volume bounded by its surfaces, meshed by HXT.
 #include "towgeom/volume_mesh.hpp"
 
-#include <gmsh.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <exception>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 
 #include "towgeom/error.hpp"
+#include "volume/gmsh_library.hpp"
 #include "towgeom/export.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
@@ -31,53 +32,65 @@ double signedVolume(const Point3& a, const Point3& b, const Point3& c, const Poi
     return dot(cross(b - a, c - a), d - a) / 6.0;
 }
 
+/// Gmsh's C API with its error flag checked (a failed call throws std::runtime_error with
+/// Gmsh's message).
+class Gmsh {
+public:
+    Gmsh() : api_(detail::gmshApi()) {}
+    const detail::GmshApi& api() const { return api_; }
+    template <class F, class... A>
+    auto call(const char* name, F f, A... args) const
+    {
+        int ierr = 0;
+        if constexpr (std::is_void_v<decltype(f(args..., &ierr))>) {
+            f(args..., &ierr);
+            detail::gmshCheck(api_, ierr, name);
+        } else {
+            auto r = f(args..., &ierr);
+            detail::gmshCheck(api_, ierr, name);
+            return r;
+        }
+    }
+
+private:
+    const detail::GmshApi& api_;
+};
+
 /// Gmsh started for one call (unless the host runs it): finalised, or the model removed, on exit.
 class GmshSession {
 public:
-    GmshSession()
+    explicit GmshSession(const Gmsh& g) : g_(g)
     {
-        // Gmsh 4.8 has no isInitialized(): uninitialised, its calls do nothing, so an option
-        // read leaves the value as it was.
+        const detail::GmshApi& api = g.api();
+        // Gmsh 4.8 has no isInitialized(): uninitialised, its calls fail, so an option read
+        // leaves the value as it was.
         double probe = -1.0;
-        try {
-            gmsh::option::getNumber("General.Terminal", probe);
-        } catch (...) {
-        }
-        hostOwned_ = probe != -1.0;
-        if (!hostOwned_) gmsh::initialize(0, nullptr, false);
-        gmsh::option::getNumber("General.Terminal", terminal_);
-        gmsh::option::setNumber("General.Terminal", 0);
-        gmsh::model::add(kModel);
+        int ierr = 0;
+        api.gmshOptionGetNumber("General.Terminal", &probe, &ierr);
+        hostOwned_ = ierr == 0 && probe != -1.0;
+        if (!hostOwned_) g.call("gmshInitialize", api.gmshInitialize, 0, nullptr, 0);
+        g.call("gmshOptionGetNumber", api.gmshOptionGetNumber, "General.Terminal", &terminal_);
+        g.call("gmshOptionSetNumber", api.gmshOptionSetNumber, "General.Terminal", 0.0);
+        g.call("gmshModelAdd", api.gmshModelAdd, kModel);
     }
     ~GmshSession()
     {
-        try {
-            gmsh::model::setCurrent(kModel);
-            gmsh::model::remove();
-            gmsh::option::setNumber("General.Terminal", terminal_);
-            if (!hostOwned_) gmsh::finalize();
-        } catch (...) {
-        }
+        const detail::GmshApi& api = g_.api();
+        int ierr = 0;
+        api.gmshModelSetCurrent(kModel, &ierr);
+        api.gmshModelRemove(&ierr);
+        api.gmshOptionSetNumber("General.Terminal", terminal_, &ierr);
+        if (!hostOwned_) api.gmshFinalize(&ierr);
     }
     GmshSession(const GmshSession&) = delete;
     GmshSession& operator=(const GmshSession&) = delete;
 
 private:
     static constexpr const char* kModel = "towgeom_volumes";
+    const Gmsh& g_;
     bool hostOwned_ = false;
     double terminal_ = 0.0;
 };
-
-/// Gmsh's last error message, for an exception it threw.
-std::string gmshError()
-{
-    std::string last;
-    try {
-        gmsh::logger::getLastError(last);
-    } catch (...) {
-    }
-    return last.empty() ? std::string("no message") : last;
-}
 
 }  // namespace
 
@@ -143,56 +156,70 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     VolumeMesh out;
     out.nodes = surfaces.nodes;
     out.surfaceNodes = surfaces.nodes.size();
+    const Gmsh g;  // loads Gmsh's library (EngineUnavailable if it cannot)
+    const detail::GmshApi& api = g.api();
     std::lock_guard<std::mutex> lock(gmshMutex());
-    GmshSession session;
     std::string where = "the tows' volumes";  // for messages
     try {
-        for (const Surface& s : patches) {
-            gmsh::model::addDiscreteEntity(2, s.tag);
+        GmshSession session(g);
+        for (Surface& s : patches) {
+            g.call("gmshModelAddDiscreteEntity", api.gmshModelAddDiscreteEntity, 2, s.tag, nullptr, std::size_t(0));
             std::vector<std::size_t> tags;
             std::vector<double> coords;
             for (std::size_t n : s.nodes) {
                 tags.push_back(n + 1);
                 coords.insert(coords.end(), {surfaces.nodes[n].x, surfaces.nodes[n].y, surfaces.nodes[n].z});
             }
-            gmsh::model::mesh::addNodes(2, s.tag, tags, coords);
-            gmsh::model::mesh::addElementsByType(s.tag, 2, {}, s.triangles);
+            g.call("gmshModelMeshAddNodes", api.gmshModelMeshAddNodes, 2, s.tag, tags.data(), tags.size(), coords.data(), coords.size(),
+                   nullptr, std::size_t(0));
+            g.call("gmshModelMeshAddElementsByType", api.gmshModelMeshAddElementsByType, s.tag, 2, nullptr, std::size_t(0),
+                   s.triangles.data(), s.triangles.size());
         }
         // Each tow a volume of the built-in kernel bounded by its discrete surfaces (Gmsh meshes
         // those; a discrete volume it leaves empty).
-        for (std::size_t v = 0; v < towCount; ++v)
-            if (!bounds[v].empty())
-                gmsh::model::geo::addVolume({gmsh::model::geo::addSurfaceLoop(bounds[v])}, static_cast<int>(v) + 1);
-        gmsh::model::geo::synchronize();
-        gmsh::option::setNumber("Mesh.Algorithm3D", 10);  // HXT
-        gmsh::option::setNumber("Mesh.Optimize", options.optimize ? 1 : 0);
-        gmsh::option::setNumber("General.NumThreads", static_cast<double>(options.threads));
-        gmsh::option::setNumber("Mesh.Renumber", 0);  // keep the surface nodes' tags (= index + 1)
-        gmsh::model::mesh::generate(3);
+        for (std::size_t v = 0; v < towCount; ++v) {
+            if (bounds[v].empty()) continue;
+            int loop = g.call("gmshModelGeoAddSurfaceLoop", api.gmshModelGeoAddSurfaceLoop, bounds[v].data(), bounds[v].size(), -1);
+            g.call("gmshModelGeoAddVolume", api.gmshModelGeoAddVolume, &loop, std::size_t(1), static_cast<int>(v) + 1);
+        }
+        g.call("gmshModelGeoSynchronize", api.gmshModelGeoSynchronize);
+        const auto option = [&](const char* name, double value) { g.call("gmshOptionSetNumber", api.gmshOptionSetNumber, name, value); };
+        option("Mesh.Algorithm3D", 10);  // HXT
+        option("Mesh.Optimize", options.optimize ? 1 : 0);
+        option("General.NumThreads", static_cast<double>(options.threads));
+        option("Mesh.Renumber", 0);  // keep the surface nodes' tags (= index + 1)
+        g.call("gmshModelMeshGenerate", api.gmshModelMeshGenerate, 3);
 
+        const auto nodesOn = [&](int dim, std::vector<std::size_t>& tags, std::vector<double>& coords) {
+            std::size_t* t = nullptr;
+            double *c = nullptr, *p = nullptr;
+            std::size_t nt = 0, nc = 0, np = 0;
+            g.call("gmshModelMeshGetNodes", api.gmshModelMeshGetNodes, &t, &nt, &c, &nc, &p, &np, dim, -1, 0, 0);
+            tags = detail::gmshTake(api, t, nt);
+            coords = detail::gmshTake(api, c, nc);
+            detail::gmshTake(api, p, np);
+        };
         // No node may have been added on a surface (the surfaces are the tows' interfaces).
         std::vector<std::size_t> tags;
-        std::vector<double> coords, params;
-        gmsh::model::mesh::getNodes(tags, coords, params, 2, -1, false, false);
+        std::vector<double> coords;
+        nodesOn(2, tags, coords);
         for (std::size_t n : tags)
             if (n > surfaces.nodes.size() || !classified[n - 1])
                 throw Error(ErrorCode::Internal, "Gmsh added a node on a tow's surface while meshing the volumes");
-        // Every node: the surface's keep their indices, Gmsh's new ones (whatever their tags:
-        // Gmsh numbers on from the largest tag it was given) are appended.
-        gmsh::model::mesh::getNodes(tags, coords, params, -1, -1, false, false);
+        // Every node: the surface's keep their indices, Gmsh's new ones are appended.
+        nodesOn(-1, tags, coords);
         std::vector<std::size_t> index;  // by Gmsh tag
         for (std::size_t k = 0; k < tags.size(); ++k) {
             const std::size_t tag = tags[k];
             if (index.size() <= tag) index.resize(tag + 1, SIZE_MAX);
-            const bool ours = tag <= surfaces.nodes.size() && classified[tag - 1];
-            if (ours) {
-                const Point3 at{coords[3 * k], coords[3 * k + 1], coords[3 * k + 2]};
+            const Point3 at{coords[3 * k], coords[3 * k + 1], coords[3 * k + 2]};
+            if (tag <= surfaces.nodes.size() && classified[tag - 1]) {
                 if (!(distance(surfaces.nodes[tag - 1], at) == 0.0))
                     throw Error(ErrorCode::Internal, "Gmsh moved or renumbered surface node " + std::to_string(tag));
                 index[tag] = tag - 1;
             } else {
                 index[tag] = out.nodes.size();
-                out.nodes.push_back({coords[3 * k], coords[3 * k + 1], coords[3 * k + 2]});
+                out.nodes.push_back(at);
             }
         }
         const auto node = [&](std::size_t tag) {
@@ -202,11 +229,13 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         for (std::size_t t = 0; t < towCount; ++t) {
             if (bounds[t].empty()) continue;
             where = "tow '" + surfaces.tows[t].name + "'";
-            std::vector<std::size_t> elements, nodes;
-            gmsh::model::mesh::getElementsByType(4, elements, nodes, static_cast<int>(t) + 1);
-            if (elements.empty()) throw Error(ErrorCode::Internal, "Gmsh made no tetrahedron");
-            for (std::size_t e = 0; e < elements.size(); ++e) {
-                std::array<std::size_t, 4> tet{node(nodes[4 * e]), node(nodes[4 * e + 1]), node(nodes[4 * e + 2]), node(nodes[4 * e + 3])};
+            std::size_t *e = nullptr, *n = nullptr, ne = 0, nn = 0;
+            g.call("gmshModelMeshGetElementsByType", api.gmshModelMeshGetElementsByType, 4, &e, &ne, &n, &nn, static_cast<int>(t) + 1,
+                   std::size_t(0), std::size_t(1));
+            const std::vector<std::size_t> elements = detail::gmshTake(api, e, ne), nodes = detail::gmshTake(api, n, nn);
+            if (elements.empty() || nodes.size() != 4 * elements.size()) throw Error(ErrorCode::Internal, "Gmsh made no tetrahedron");
+            for (std::size_t k = 0; k < elements.size(); ++k) {
+                std::array<std::size_t, 4> tet{node(nodes[4 * k]), node(nodes[4 * k + 1]), node(nodes[4 * k + 2]), node(nodes[4 * k + 3])};
                 if (signedVolume(out.nodes[tet[0]], out.nodes[tet[1]], out.nodes[tet[2]], out.nodes[tet[3]]) < 0.0) std::swap(tet[2], tet[3]);
                 out.tetrahedra.push_back(tet);
                 out.tow.push_back(t);
@@ -215,9 +244,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     } catch (const Error& e) {
         throw Error(e.code(), where + ": " + e.message());
     } catch (const std::exception& e) {
-        throw Error(ErrorCode::Internal, "Gmsh failed meshing " + where + ": " + e.what() + " (" + gmshError() + ")");
-    } catch (...) {
-        throw Error(ErrorCode::Internal, "Gmsh failed meshing " + where + ": " + gmshError());
+        throw Error(ErrorCode::Internal, "Gmsh failed meshing " + where + ": " + e.what());
     }
     return out;
 }

@@ -1,0 +1,77 @@
+#include "volume/gmsh_library.hpp"
+
+#include <dlfcn.h>
+
+#include <mutex>
+#include <stdexcept>
+
+#include "towgeom/error.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
+
+const GmshApi& gmshApi()
+{
+    static GmshApi api;
+    static std::string failure;
+    static std::once_flag once;
+    std::call_once(once, [] {
+        // The soname of Debian 12's libgmsh4.8; the development link as a fallback.
+        void* lib = nullptr;
+        std::string tried;
+        for (const char* name : {"libgmsh.so.4.8", "libgmsh.so"}) {
+            lib = dlopen(name, RTLD_NOW | RTLD_LOCAL);
+            if (lib) break;
+            const char* why = dlerror();
+            tried += std::string(tried.empty() ? "" : "; ") + (why ? why : name);
+        }
+        if (!lib) {
+            failure = "Gmsh's library could not be loaded (" + tried + "): install it (Debian: apt-get install libgmsh4.8)";
+            return;
+        }
+        const auto resolve = [&](auto& f, const char* name) {
+            f = reinterpret_cast<std::remove_reference_t<decltype(f)>>(dlsym(lib, name));
+            if (!f && failure.empty()) failure = std::string("Gmsh's library lacks the function ") + name + ": Gmsh 4.8 or later is needed";
+        };
+#define TOWGEOM_GMSH_RESOLVE(name) resolve(api.name, #name);
+        TOWGEOM_GMSH_RESOLVE(gmshInitialize)
+        TOWGEOM_GMSH_RESOLVE(gmshFinalize)
+        TOWGEOM_GMSH_RESOLVE(gmshFree)
+        TOWGEOM_GMSH_RESOLVE(gmshOptionSetNumber)
+        TOWGEOM_GMSH_RESOLVE(gmshOptionGetNumber)
+        TOWGEOM_GMSH_RESOLVE(gmshModelAdd)
+        TOWGEOM_GMSH_RESOLVE(gmshModelSetCurrent)
+        TOWGEOM_GMSH_RESOLVE(gmshModelRemove)
+        TOWGEOM_GMSH_RESOLVE(gmshModelAddDiscreteEntity)
+        TOWGEOM_GMSH_RESOLVE(gmshModelMeshAddNodes)
+        TOWGEOM_GMSH_RESOLVE(gmshModelMeshAddElementsByType)
+        TOWGEOM_GMSH_RESOLVE(gmshModelGeoAddSurfaceLoop)
+        TOWGEOM_GMSH_RESOLVE(gmshModelGeoAddVolume)
+        TOWGEOM_GMSH_RESOLVE(gmshModelGeoSynchronize)
+        TOWGEOM_GMSH_RESOLVE(gmshModelMeshGenerate)
+        TOWGEOM_GMSH_RESOLVE(gmshModelMeshGetNodes)
+        TOWGEOM_GMSH_RESOLVE(gmshModelMeshGetElementsByType)
+        TOWGEOM_GMSH_RESOLVE(gmshLoggerGetLastError)
+#undef TOWGEOM_GMSH_RESOLVE
+    });
+    if (!failure.empty()) throw Error(ErrorCode::EngineUnavailable, failure);
+    return api;
+}
+
+std::string gmshLastError(const GmshApi& api)
+{
+    char* error = nullptr;
+    int ierr = 0;
+    api.gmshLoggerGetLastError(&error, &ierr);
+    std::string message = error ? error : "";
+    if (error) api.gmshFree(error);
+    return message.empty() ? std::string("no message") : message;
+}
+
+void gmshCheck(const GmshApi& api, int ierr, const char* call)
+{
+    if (ierr != 0) throw std::runtime_error(std::string(call) + ": " + gmshLastError(api));
+}
+
+}  // namespace detail
+TOWGEOM_END_NAMESPACE
