@@ -262,6 +262,46 @@ TEST_CASE("CalculiX reads the surface .inp: numbers of at most 20 characters, ev
     fs::remove_all(out);
 }
 
+TEST_CASE("towgeom resolve --volume fills the tows with tetrahedra that Gmsh reads", "[cli][resolve][volume]")
+{
+    const fs::path out = scratch("volume");
+    const Run r = cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + out.string() + "' --volume --mesh-size 0.1 --formats vtk");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.err.find("meshing the tows' volumes") != std::string::npos);
+    const std::string report = testing::slurp(out / "report.json");
+    const double tets = jsonNumber(report, "tetrahedra");
+    CHECK(tets > 1000);
+    // Per tow, the tetrahedra fill what its closed surface bounds.
+    for (const char* name : {"warp_0", "weft_0"}) {
+        const auto at = report.find("{\"name\":\"" + std::string(name) + "\",\"tetrahedra\":");
+        REQUIRE(at != std::string::npos);
+        const double volume = jsonNumber(report.substr(at), "volume");
+        const auto tow = report.find("{\"name\":\"" + std::string(name) + "\",\"role\"");
+        REQUIRE(tow != std::string::npos);
+        CHECK(volume == Approx(jsonNumber(report.substr(tow), "volume_after")).epsilon(1e-9));
+    }
+    CHECK(jsonNumber(report.substr(report.find("\"timings_ms\"")), "volume") > 0.0);  // the stage's time
+    INFO("gmsh not found: install it (bash cmake/ensure_packages.sh, or apt-get install gmsh)");
+    REQUIRE(std::system("command -v gmsh >/dev/null 2>&1") == 0);
+    const Run g = testing::runShell("gmsh -check '" + (out / "textile_volume.msh").string() + "' 2>&1");
+    CHECK(g.status == 0);
+    CHECK(g.out.find("Error") == std::string::npos);
+    CHECK(g.out.find("Warning") == std::string::npos);
+    // A tetrahedron block per tow, as many as the report counts.
+    const std::string msh = testing::slurp(out / "textile_volume.msh");
+    CHECK(count(msh, "\n3 1 4 ") == 1);
+    CHECK(count(msh, "\n3 2 4 ") == 1);
+    std::size_t inMsh = 0;
+    for (const char* block : {"\n3 1 4 ", "\n3 2 4 "}) inMsh += std::stoul(msh.substr(msh.find(block) + 7));
+    CHECK(static_cast<double>(inMsh) == tets);
+    fs::remove_all(out);
+    const Run open = cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + out.string() + "' --volume --no-caps --quiet");
+    CHECK(open.status == 2);
+    CHECK(open.err.find("--volume needs closed tows") != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+}
+
 TEST_CASE("towgeom resolve closes every tow by its end caps, --no-caps leaves tubes", "[cli][resolve][caps]")
 {
     const fs::path out = scratch("caps");

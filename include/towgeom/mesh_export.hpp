@@ -6,6 +6,7 @@
 #include <string>
 
 #include "towgeom/textile_mesh.hpp"
+#include "towgeom/volume_mesh.hpp"
 #include "towgeom/export.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
@@ -21,6 +22,17 @@ TOWGEOM_EXPORT void writeGmsh(const TextileMesh& mesh, const std::string& path);
 
 /// writeGmsh() to the stream @p out.
 TOWGEOM_EXPORT void writeGmsh(const TextileMesh& mesh, std::ostream& out);
+
+/// writeGmsh() with the tetrahedra of @p volumes (meshVolumes() of @p mesh): a volume entity per
+/// tow (tag: the tow's number, 1-based) bounded by its surface entities (a region's entity with
+/// a negative sign for its secondary), in a physical volume TOW_NAME, its inner nodes classified
+/// on it; the surface entities and groups as without volumes.
+/// @throws towgeom::Error (InvalidArgument) if @p volumes is not of @p mesh.
+TOWGEOM_EXPORT void writeGmsh(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostream& out);
+
+/// writeGmsh(mesh, volumes, out) to @p path, written to a temporary name and renamed.
+/// @throws towgeom::Error (WriteFailed) naming @p path.
+TOWGEOM_EXPORT void writeGmsh(const TextileMesh& mesh, const VolumeMesh& volumes, const std::string& path);
 
 /// Writes @p mesh as an Abaqus (and CalculiX) input file, every triangle once: *NODE (1-based
 /// global numbering, each coordinate in at most 20 characters: its shortest exact text, or

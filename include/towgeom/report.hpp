@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "towgeom/resolve.hpp"
+#include "towgeom/volume_mesh.hpp"
 #include "towgeom/tow_intersection.hpp"
 #include "towgeom/tow_surface.hpp"
 #include "towgeom/export.hpp"
@@ -51,6 +52,7 @@ TOWGEOM_EXPORT std::vector<UnresolvedPairEntry> unresolvedPairs(const ResolveRes
 struct ReportTimes {
     double read = -1.0;   ///< reading the input files
     double fit = -1.0;    ///< fitting the surfaces
+    double volume = -1.0; ///< meshing the tows' volumes (meshVolumes())
     double write = -1.0;  ///< writing the output files
     double total = -1.0;  ///< everything
 };
@@ -83,6 +85,9 @@ TOWGEOM_EXPORT void writeDetectReport(const IntersectionReport& report, const st
 struct ResolveReportOptions {
     std::size_t threads = 0;  ///< for the loops' areas; 0: one per hardware thread
     ReportTimes times;        ///< the caller's stages
+    /// The tows' tetrahedra (meshVolumes() of the result's mesh), if made: "volume_mesh" gives
+    /// tetrahedra, nodes, inner_nodes and per tow its tetrahedra and their volume.
+    const VolumeMesh* volumes = nullptr;
 };
 
 /// Writes @p result for @p tows as `towgeom resolve` writes report.json: one JSON object with

@@ -100,6 +100,12 @@ Options:
                      refinement along loops)
   --no-caps          leave every tow a tube open at its two ends (default: each tow closed by
                      its two end caps, meshes of its end sections: a closed surface)
+  --volume           also fill every tow with tetrahedra (Gmsh's HXT, the surface triangles kept
+                     as they are: two tows' tetrahedra meet face to face on their regions) and
+                     write DIR/textile_volume.msh (a physical volume TOW_NAME per tow, the
+                     surfaces' groups as in textile.msh); report.json gains "volume_mesh".
+                     Needs Gmsh's library (Debian: libgmsh4.8). No cell, matrix or solver
+                     files yet
   --allow-open       exit 0 even when an intersection curve is open (or, with --no-caps, a
                      loop crosses a tow's end cap): never resolved, still named on stderr;
                      other unresolved pairs still exit 3
@@ -146,7 +152,7 @@ int runResolve(int argc, char** argv, int first)
         const Args args(argc, argv, first,
                         {{"help"}, {"quiet"}, {"allow-open"}, {"out", true}, {"primary", true}, {"mesh-size", true},
                          {"min-angle", true}, {"loop-spacing", true}, {"formats", true}, {"tolerance", true},
-                         {"threads", true}, {"max-triangles", true}, {"no-caps"}, {"report", true}});
+                         {"threads", true}, {"max-triangles", true}, {"no-caps"}, {"report", true}, {"volume"}});
         if (args.has("help")) {
             std::cout << kResolveHelp;
             return kExitOk;
@@ -166,6 +172,8 @@ int runResolve(int argc, char** argv, int first)
         options.intersection.tolerance = args.positive("tolerance");
         options.threads = args.threads();
         options.mesh.caps = !args.has("no-caps");
+        const bool volume = args.has("volume");
+        if (volume && !options.mesh.caps) throw UsageError("--volume needs closed tows: drop --no-caps");
         const std::set<std::string> formats = parseFormats(args.value("formats"));
         const bool quiet = args.has("quiet");
         ProgressPrinter printer("resolve", quiet);
@@ -191,6 +199,17 @@ int runResolve(int argc, char** argv, int first)
             }
         }();
         const TextileMesh& mesh = result.mesh;
+        VolumeMesh volumes;
+        double volumeMs = -1.0;
+        if (volume) {
+            t0 = std::chrono::steady_clock::now();
+            printer.update("meshing the tows' volumes (Gmsh HXT)", 0, 1);
+            VolumeMeshOptions vo;
+            vo.threads = options.threads;
+            volumes = meshVolumes(mesh, vo);
+            printer.update("meshing the tows' volumes (Gmsh HXT)", 1, 1);
+            volumeMs = msSince(t0);
+        }
 
         // Everything is computed before anything is written.
         t0 = std::chrono::steady_clock::now();
@@ -222,12 +241,15 @@ int runResolve(int argc, char** argv, int first)
         });
         if (formats.count("msh")) writeGmsh(mesh, files.open(path("textile.msh")));
         if (formats.count("inp")) writeAbaqus(mesh, files.open(path("textile.inp")));
+        if (volume) writeGmsh(mesh, volumes, files.open(path("textile_volume.msh")));
         const double writeMs = msSince(t0);
         ResolveReportOptions written;
         written.threads = options.threads;
         written.times.read = readMs;
         written.times.fit = fitMs;
         written.times.write = writeMs;
+        written.times.volume = volumeMs;
+        if (volume) written.volumes = &volumes;
         written.times.total = msSince(start);
         writeResolveReport(result, tows, files.open(path("report.json")), written);
         printer.throwIfCancelled();  // a signal while writing: nothing is committed
@@ -239,8 +261,9 @@ int runResolve(int argc, char** argv, int first)
                     std::cerr << "towgeom resolve: tow '" << tows[t].name() << "' is cut into " << result.tows[t].pieces
                               << " pieces by tows ranked above it that pass through it\n";
             std::cerr << "towgeom resolve: " << mesh.regions.size() << " connected regions, " << mesh.nodes.size() << " nodes, "
-                      << result.quality.triangles << " triangles (smallest angle " << result.quality.minAngle
-                      << " deg); files in " << *outDir << "\n";
+                      << result.quality.triangles << " triangles (smallest angle " << result.quality.minAngle << " deg)";
+            if (volume) std::cerr << ", " << volumes.tetrahedra.size() << " tetrahedra";
+            std::cerr << "; files in " << *outDir << "\n";
         }
         // Warnings, not progress: printed whatever --quiet says.
         if (options.mesh.edgeLength > 0.0)

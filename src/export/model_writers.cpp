@@ -13,6 +13,7 @@
 
 #include "export/number_writer.hpp"
 #include "io/output_files.hpp"
+#include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
@@ -63,8 +64,14 @@ bool isCap(const TowMesh& m, std::size_t k) { return k < m.face.size() && m.face
 
 }  // namespace
 
-void writeGmsh(const TextileMesh& mesh, std::ostream& out)
+namespace {
+
+/// writeGmsh() with, when @p volumes is given, a volume entity per tow holding its tetrahedra.
+void writeGmshModel(const TextileMesh& mesh, const VolumeMesh* volumes, std::ostream& out)
 {
+    if (volumes && (volumes->surfaceNodes != mesh.nodes.size() || volumes->tetrahedra.size() != volumes->tow.size()))
+        throw Error(ErrorCode::InvalidArgument, "the volume mesh is not one of this surface mesh (meshVolumes() of it)");
+    const std::vector<Point3>& nodes = volumes ? volumes->nodes : mesh.nodes;
     out << std::setprecision(std::numeric_limits<double>::max_digits10);
     // Surface entities, every triangle in one: per tow its tube and its cap triangles outside
     // regions, then per region its triangles (the primary's copy, in both tows' groups; the
@@ -73,6 +80,7 @@ void writeGmsh(const TextileMesh& mesh, std::ostream& out)
     struct Entity {
         std::vector<std::array<std::size_t, 3>> triangles;
         std::vector<std::size_t> physical;
+        std::vector<std::pair<std::size_t, int>> bounds;  // (tow, +1 outward / -1 inward)
     };
     std::vector<Entity> entities;
     const std::size_t towCount = mesh.tows.size();
@@ -93,6 +101,7 @@ void writeGmsh(const TextileMesh& mesh, std::ostream& out)
         Entity side, caps;
         side.physical = {t + 1};
         caps.physical = {t + 1, capGroup[t]};
+        side.bounds = caps.bounds = {{t, 1}};
         for (std::size_t k = 0; k < mesh.tows[t].triangles.size(); ++k)
             if (mesh.tows[t].region[k] < 0) (isCap(mesh.tows[t], k) ? caps : side).triangles.push_back(mesh.tows[t].triangles[k]);
         add(std::move(side));
@@ -106,21 +115,33 @@ void writeGmsh(const TextileMesh& mesh, std::ostream& out)
         Entity side, caps;
         side.physical = {g.primary + 1, g.secondary + 1, towCount + r + 1};
         caps.physical = {g.primary + 1, g.secondary + 1, towCount + r + 1, capGroup[g.primary]};
+        side.bounds = caps.bounds = {{g.primary, 1}, {g.secondary, -1}};
         for (std::size_t k : g.triangles)
             if (written.emplace(g.primary, k).second)
                 (isCap(mesh.tows[g.primary], k) ? caps : side).triangles.push_back(mesh.tows[g.primary].triangles[k]);
         add(std::move(side));
         add(std::move(caps));
     }
+    // Volumes (with a volume mesh): one per tow with tetrahedra, its tag the tow's number.
+    std::vector<std::vector<std::size_t>> tets(towCount);
+    if (volumes)
+        for (std::size_t k = 0; k < volumes->tetrahedra.size(); ++k) {
+            if (volumes->tow[k] >= towCount) throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a tow out of range");
+            tets[volumes->tow[k]].push_back(k);
+        }
+    std::vector<std::size_t> solids;  // tows with tetrahedra
+    for (std::size_t t = 0; t < towCount; ++t)
+        if (!tets[t].empty()) solids.push_back(t);
     out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
-    out << "$PhysicalNames\n" << towCount + mesh.regions.size() + capGroups.size() << '\n';
+    out << "$PhysicalNames\n" << towCount + mesh.regions.size() + capGroups.size() + solids.size() << '\n';
     for (std::size_t t = 0; t < towCount; ++t) out << "2 " << t + 1 << " \"" << label("TOW_", names[t]) << "\"\n";
     for (std::size_t r = 0; r < mesh.regions.size(); ++r) out << "2 " << towCount + r + 1 << " \"REGION_" << r + 1 << "\"\n";
     for (const auto& [group, name] : capGroups) out << "2 " << group << " \"" << name << "\"\n";
+    for (std::size_t t : solids) out << "3 " << t + 1 << " \"" << label("TOW_", names[t]) << "\"\n";
     out << "$EndPhysicalNames\n";
-    // Each node is classified on the first entity that uses it.
-    std::vector<std::size_t> owner(mesh.nodes.size(), 0);
-    std::vector<std::vector<std::size_t>> blocks(entities.size());
+    // Each node is classified on the first entity that uses it: surfaces first, then volumes.
+    std::vector<std::size_t> owner(nodes.size(), 0);
+    std::vector<std::vector<std::size_t>> blocks(entities.size()), solidBlocks(solids.size());
     for (std::size_t e = 0; e < entities.size(); ++e)
         for (const auto& t : entities[e].triangles)
             for (std::size_t n : t)
@@ -128,37 +149,67 @@ void writeGmsh(const TextileMesh& mesh, std::ostream& out)
                     owner[n] = e + 1;
                     blocks[e].push_back(n);
                 }
-    out << "$Entities\n0 0 " << entities.size() << " 0\n";
-    for (std::size_t e = 0; e < entities.size(); ++e) {
+    for (std::size_t v = 0; v < solids.size(); ++v)
+        for (std::size_t k : tets[solids[v]])
+            for (std::size_t n : volumes->tetrahedra[k])
+                if (owner[n] == 0) {
+                    owner[n] = entities.size() + v + 1;
+                    solidBlocks[v].push_back(n);
+                }
+    const auto box = [&](auto&& each) {
         Point3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-        for (const auto& t : entities[e].triangles)
-            for (std::size_t n : t) {
-                const Point3& p = mesh.nodes[n];
-                lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-                hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-            }
-        out << e + 1 << ' ' << lo.x << ' ' << lo.y << ' ' << lo.z << ' ' << hi.x << ' ' << hi.y << ' ' << hi.z << ' '
-            << entities[e].physical.size();
+        each([&](std::size_t n) {
+            const Point3& p = nodes[n];
+            lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+            hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+        });
+        out << lo.x << ' ' << lo.y << ' ' << lo.z << ' ' << hi.x << ' ' << hi.y << ' ' << hi.z;
+    };
+    out << "$Entities\n0 0 " << entities.size() << ' ' << solids.size() << '\n';
+    for (std::size_t e = 0; e < entities.size(); ++e) {
+        out << e + 1 << ' ';
+        box([&](auto visit) {
+            for (const auto& t : entities[e].triangles)
+                for (std::size_t n : t) visit(n);
+        });
+        out << ' ' << entities[e].physical.size();
         for (std::size_t p : entities[e].physical) out << ' ' << p;
         out << " 0\n";
+    }
+    for (std::size_t t : solids) {
+        std::vector<long> bounding;
+        for (std::size_t e = 0; e < entities.size(); ++e)
+            for (const auto& [tow, sign] : entities[e].bounds)
+                if (tow == t) bounding.push_back(sign * static_cast<long>(e + 1));
+        out << t + 1 << ' ';
+        box([&](auto visit) {
+            for (std::size_t k : tets[t])
+                for (std::size_t n : volumes->tetrahedra[k]) visit(n);
+        });
+        out << " 1 " << t + 1 << ' ' << bounding.size();
+        for (long b : bounding) out << ' ' << b;
+        out << '\n';
     }
     out << "$EndEntities\n";
     std::size_t used = 0;
     for (const auto& b : blocks) used += b.size();
-    out << "$Nodes\n" << entities.size() << ' ' << used << " 1 " << mesh.nodes.size() << '\n';
+    for (const auto& b : solidBlocks) used += b.size();
+    out << "$Nodes\n" << entities.size() + solids.size() << ' ' << used << " 1 " << nodes.size() << '\n';
     {
         NumberWriter w(out);
-        for (std::size_t e = 0; e < entities.size(); ++e) {
-            w.text("2 ").number(e + 1).text(" 0 ").number(blocks[e].size()).end();
-            for (std::size_t n : blocks[e]) w.number(n + 1).end();
-            for (std::size_t n : blocks[e])
-                w.number(mesh.nodes[n].x).text(" ").number(mesh.nodes[n].y).text(" ").number(mesh.nodes[n].z).end();
-        }
+        const auto block = [&](int dim, std::size_t tag, const std::vector<std::size_t>& ns) {
+            w.number(dim).text(" ").number(tag).text(" 0 ").number(ns.size()).end();
+            for (std::size_t n : ns) w.number(n + 1).end();
+            for (std::size_t n : ns) w.number(nodes[n].x).text(" ").number(nodes[n].y).text(" ").number(nodes[n].z).end();
+        };
+        for (std::size_t e = 0; e < entities.size(); ++e) block(2, e + 1, blocks[e]);
+        for (std::size_t v = 0; v < solids.size(); ++v) block(3, solids[v] + 1, solidBlocks[v]);
     }
     out << "$EndNodes\n";
     std::size_t elements = 0;
     for (const Entity& e : entities) elements += e.triangles.size();
-    out << "$Elements\n" << entities.size() << ' ' << elements << " 1 " << elements << '\n';
+    for (std::size_t t : solids) elements += tets[t].size();
+    out << "$Elements\n" << entities.size() + solids.size() << ' ' << elements << " 1 " << elements << '\n';
     std::size_t id = 0;
     {
         NumberWriter w(out);
@@ -167,8 +218,28 @@ void writeGmsh(const TextileMesh& mesh, std::ostream& out)
             for (const auto& t : entities[e].triangles)
                 w.number(++id).text(" ").number(t[0] + 1).text(" ").number(t[1] + 1).text(" ").number(t[2] + 1).end();
         }
+        for (std::size_t t : solids) {
+            w.text("3 ").number(t + 1).text(" 4 ").number(tets[t].size()).end();
+            for (std::size_t k : tets[t]) {
+                const auto& q = volumes->tetrahedra[k];
+                w.number(++id).text(" ").number(q[0] + 1).text(" ").number(q[1] + 1).text(" ").number(q[2] + 1).text(" ").number(q[3] + 1).end();
+            }
+        }
     }
     out << "$EndElements\n";
+}
+
+}  // namespace
+
+void writeGmsh(const TextileMesh& mesh, std::ostream& out) { writeGmshModel(mesh, nullptr, out); }
+
+void writeGmsh(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostream& out) { writeGmshModel(mesh, &volumes, out); }
+
+void writeGmsh(const TextileMesh& mesh, const VolumeMesh& volumes, const std::string& path)
+{
+    detail::OutputFiles files;
+    writeGmsh(mesh, volumes, files.open(path));
+    files.commit();
 }
 
 void writeAbaqus(const TextileMesh& mesh, std::ostream& out)

@@ -192,12 +192,30 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
                          {"triangles", q.triangles},
                          {"faces_over_bounds", q.facesOverBounds}};
     j["mesh_rounds"] = result.meshRounds;
+    if (const VolumeMesh* v = options.volumes) {
+        if (v->surfaceNodes != mesh.nodes.size() || v->tow.size() != v->tetrahedra.size())
+            throw Error(ErrorCode::InvalidArgument, "the volume mesh is not one of the result's mesh");
+        std::vector<std::size_t> count(tows.size(), 0);
+        std::vector<double> volume(tows.size(), 0.0);
+        for (std::size_t k = 0; k < v->tetrahedra.size(); ++k) {
+            if (v->tow[k] >= tows.size()) throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a tow out of range");
+            ++count[v->tow[k]];
+            volume[v->tow[k]] += v->tetrahedronVolume(k);
+        }
+        Json perTow = Json::array();
+        for (std::size_t t = 0; t < tows.size(); ++t) perTow.push_back({{"name", tows[t].name()}, {"tetrahedra", count[t]}, {"volume", volume[t]}});
+        j["volume_mesh"] = {{"tetrahedra", v->tetrahedra.size()},
+                            {"nodes", v->nodes.size()},
+                            {"inner_nodes", v->nodes.size() - v->surfaceNodes},
+                            {"tows", std::move(perTow)}};
+    }
     Json timings = Json::object();
     putTime(timings, "read", options.times.read);
     putTime(timings, "fit", options.times.fit);
     timings["intersect"] = result.timings.intersect;
     timings["mesh"] = result.timings.mesh;
     timings["regions"] = result.timings.regions;
+    putTime(timings, "volume", options.times.volume);
     putTime(timings, "write", options.times.write);
     putTime(timings, "total", options.times.total);
     j["timings_ms"] = std::move(timings);
