@@ -12,6 +12,7 @@
 #include <fstream>
 #include <regex>
 #include <set>
+#include <sstream>
 
 #include "cli_runner.hpp"
 #include "mesh_checks.hpp"
@@ -300,6 +301,55 @@ TEST_CASE("towgeom resolve --volume fills the tows with tetrahedra that Gmsh rea
     CHECK(open.status == 2);
     CHECK(open.err.find("--volume needs closed tows") != std::string::npos);
     CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("CalculiX solves the tows' tetrahedra as one structure: the tows pulled through their shared faces", "[cli][resolve][volume][ccx]")
+{
+    // warp_0 clamped at its start cap and pulled along x at its end cap; the other tows have no
+    // support at all. They move (and the system is not singular) only if their tetrahedra share
+    // nodes with warp_0's, on the regions.
+    const fs::path out = scratch("ccx_solid");
+    const Run r = cli("resolve" + twill({"warp_0", "warp_1", "weft_0", "weft_1"}) + " --out '" + out.string() +
+                      "' --volume --mesh-size 0.2 --formats inp --quiet");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    std::ofstream deck(out / "solid.inp");
+    deck << "*INCLUDE, INPUT=" << (out / "textile_volume.inp").string() << "\n*MATERIAL, NAME=TOW\n*ELASTIC\n100000., 0.3\n"
+         << "*SOLID SECTION, ELSET=TEXTILE, MATERIAL=TOW\n*STEP\n*STATIC\n*BOUNDARY\nSTART_warp_0, 1, 3, 0.\nEND_warp_0, 1, 1, 0.01\n";
+    for (const char* set : {"NODES_weft_0", "NODES_weft_1", "NODES_warp_1", "END_warp_0"}) deck << "*NODE PRINT, NSET=" << set << "\nU\n";
+    deck << "*END STEP\n";
+    deck.close();
+    INFO("ccx not found: install calculix-ccx (bash cmake/ensure_packages.sh, or apt-get install calculix-ccx)");
+    REQUIRE(std::system("command -v ccx >/dev/null 2>&1") == 0);
+    const Run c = testing::runShell("cd '" + out.string() + "' && ccx -i solid 2>&1");
+    INFO(c.out);
+    CHECK(c.status == 0);
+    CHECK(c.out.find("ERROR") == std::string::npos);
+    // Largest displacement per printed set ("displacements (vx,vy,vz) for set NAME ...", then
+    // one line per node: number, ux, uy, uz).
+    const std::string dat = testing::slurp(out / "solid.dat");
+    const auto largest = [&](const std::string& set, int component) {
+        const auto at = dat.find("for set " + set + " ");
+        if (at == std::string::npos) return -1.0;
+        std::istringstream in(dat.substr(dat.find('\n', at) + 1));
+        double worst = 0.0;
+        std::string line;
+        std::getline(in, line);  // blank
+        while (std::getline(in, line)) {
+            std::istringstream fields(line);
+            long node = 0;
+            double u[3];
+            if (!(fields >> node >> u[0] >> u[1] >> u[2])) break;
+            worst = component >= 0 ? std::max(worst, std::abs(u[component])) : std::max({worst, std::abs(u[0]), std::abs(u[1]), std::abs(u[2])});
+        }
+        return worst;
+    };
+    CHECK(largest("END_WARP_0", 0) == Approx(0.01).epsilon(1e-6));  // the imposed pull along x
+    for (const char* set : {"NODES_WEFT_0", "NODES_WEFT_1", "NODES_WARP_1"}) {
+        INFO(set);
+        CHECK(largest(set, -1) > 1e-4);  // observed 2.4e-3, 1.1e-2, 3.3e-2
+    }
+    fs::remove_all(out);
 }
 
 TEST_CASE("towgeom resolve closes every tow by its end caps, --no-caps leaves tubes", "[cli][resolve][caps]")

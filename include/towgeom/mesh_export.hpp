@@ -49,4 +49,16 @@ TOWGEOM_EXPORT void writeAbaqus(const TextileMesh& mesh, const std::string& path
 /// writeAbaqus() to the stream @p out.
 TOWGEOM_EXPORT void writeAbaqus(const TextileMesh& mesh, std::ostream& out);
 
+/// Writes the tetrahedra of @p volumes (meshVolumes() of @p mesh) as an Abaqus/CalculiX input
+/// file: *NODE (the nodes the tetrahedra use, 1-based global numbering, at most 20 characters a
+/// number), *ELEMENT TYPE=C3D4 with ELSET=TOW_NAME per tow, per tow *NSET NODES_NAME (its nodes)
+/// and START_NAME / END_NAME (the nodes of its end caps, where supports and loads go), and
+/// *ELSET TEXTILE (every element). Two tows' elements share the nodes of their regions.
+/// @throws towgeom::Error (InvalidArgument) if @p volumes is not of @p mesh.
+TOWGEOM_EXPORT void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostream& out);
+
+/// writeAbaqus(mesh, volumes, out) to @p path, written to a temporary name and renamed.
+/// @throws towgeom::Error (WriteFailed) naming @p path.
+TOWGEOM_EXPORT void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volumes, const std::string& path);
+
 TOWGEOM_END_NAMESPACE

@@ -103,7 +103,9 @@ Options:
   --volume           also fill every tow with tetrahedra (Gmsh's HXT, the surface triangles kept
                      as they are: two tows' tetrahedra meet face to face on their regions) and
                      write DIR/textile_volume.msh (a physical volume TOW_NAME per tow, the
-                     surfaces' groups as in textile.msh); report.json gains "volume_mesh".
+                     surfaces' groups as in textile.msh), with --formats ...,inp also
+                     DIR/textile_volume.inp (C3D4, ELSET TOW_NAME, NSET NODES_NAME, START_NAME,
+                     END_NAME per tow); report.json gains "volume_mesh".
                      Needs Gmsh's library (Debian: libgmsh4.8). No cell, matrix or solver
                      files yet
   --allow-open       exit 0 even when an intersection curve is open (or, with --no-caps, a
@@ -242,6 +244,7 @@ int runResolve(int argc, char** argv, int first)
         if (formats.count("msh")) writeGmsh(mesh, files.open(path("textile.msh")));
         if (formats.count("inp")) writeAbaqus(mesh, files.open(path("textile.inp")));
         if (volume) writeGmsh(mesh, volumes, files.open(path("textile_volume.msh")));
+        if (volume && formats.count("inp")) writeAbaqus(mesh, volumes, files.open(path("textile_volume.inp")));
         const double writeMs = msSince(t0);
         ResolveReportOptions written;
         written.threads = options.threads;

@@ -342,6 +342,73 @@ void writeGmsh(const TextileMesh& mesh, const std::string& path)
     files.commit();
 }
 
+void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostream& out)
+{
+    if (volumes.surfaceNodes != mesh.nodes.size() || volumes.tetrahedra.size() != volumes.tow.size())
+        throw Error(ErrorCode::InvalidArgument, "the volume mesh is not one of this surface mesh (meshVolumes() of it)");
+    constexpr std::size_t kField = 20;
+    const std::vector<std::string> names = towLabels(mesh);
+    const std::size_t towCount = mesh.tows.size();
+    std::vector<std::vector<std::size_t>> tets(towCount);
+    for (std::size_t k = 0; k < volumes.tetrahedra.size(); ++k) {
+        if (volumes.tow[k] >= towCount) throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a tow out of range");
+        tets[volumes.tow[k]].push_back(k);
+    }
+    out << "*HEADING\ntowgeom: tetrahedra of " << towCount << " tows (C3D4), conforming on their shared regions\n";
+    std::vector<char> used(volumes.nodes.size(), 0);
+    for (const auto& t : volumes.tetrahedra)
+        for (std::size_t n : t) used[n] = 1;
+    std::vector<std::string> solids;
+    {
+        NumberWriter w(out);
+        w.text("*NODE").end();
+        for (std::size_t k = 0; k < volumes.nodes.size(); ++k)
+            if (used[k])
+                w.number(k + 1).text(", ").fitted(volumes.nodes[k].x, kField).text(", ").fitted(volumes.nodes[k].y, kField).text(", ").fitted(volumes.nodes[k].z, kField).end();
+        std::size_t id = 0;
+        for (std::size_t t = 0; t < towCount; ++t) {
+            if (tets[t].empty()) continue;
+            solids.push_back(label("TOW_", names[t]));
+            w.text("*ELEMENT, TYPE=C3D4, ELSET=").text(solids.back().c_str()).end();
+            for (std::size_t k : tets[t]) {
+                const auto& q = volumes.tetrahedra[k];
+                w.number(++id).text(", ").number(q[0] + 1).text(", ").number(q[1] + 1).text(", ").number(q[2] + 1).text(", ").number(q[3] + 1).end();
+            }
+        }
+    }
+    const auto list = [&](const std::vector<std::size_t>& ids) {
+        for (std::size_t k = 0; k < ids.size(); ++k) out << ids[k] + 1 << (k % 16 == 15 || k + 1 == ids.size() ? "\n" : ", ");
+    };
+    // Node sets per tow: all its nodes, and those of each end cap (where loads and supports go).
+    for (std::size_t t = 0; t < towCount; ++t) {
+        if (tets[t].empty()) continue;
+        std::set<std::size_t> all;
+        for (std::size_t k : tets[t]) all.insert(volumes.tetrahedra[k].begin(), volumes.tetrahedra[k].end());
+        out << "*NSET, NSET=" << label("NODES_", names[t]) << '\n';
+        list(std::vector<std::size_t>(all.begin(), all.end()));
+        for (const TowFace face : {TowFace::Start, TowFace::End}) {
+            std::set<std::size_t> cap;
+            const TowMesh& m = mesh.tows[t];
+            for (std::size_t k = 0; k < m.triangles.size() && k < m.face.size(); ++k)
+                if (m.face[k] == face) cap.insert(m.triangles[k].begin(), m.triangles[k].end());
+            if (cap.empty()) continue;
+            out << "*NSET, NSET=" << label(face == TowFace::Start ? "START_" : "END_", names[t]) << '\n';
+            list(std::vector<std::size_t>(cap.begin(), cap.end()));
+        }
+    }
+    if (!solids.empty()) {
+        out << "*ELSET, ELSET=TEXTILE\n";
+        for (std::size_t k = 0; k < solids.size(); ++k) out << solids[k] << (k % 8 == 7 || k + 1 == solids.size() ? "\n" : ", ");
+    }
+}
+
+void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volumes, const std::string& path)
+{
+    detail::OutputFiles files;
+    writeAbaqus(mesh, volumes, files.open(path));
+    files.commit();
+}
+
 void writeAbaqus(const TextileMesh& mesh, const std::string& path)
 {
     detail::OutputFiles files;
