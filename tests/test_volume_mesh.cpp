@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "synthetic_tows.hpp"
+
 using namespace towgeom;
 
 namespace {
@@ -35,18 +37,16 @@ Face sorted(std::size_t a, std::size_t b, std::size_t c)
 
 }  // namespace
 
-TEST_CASE("meshVolumes: conforming tetrahedra fill each resolved tow of the twill", "[volume]")
+namespace {
+
+/// The independent checks of a volume mesh @p v of @p res: no flat or inverted tetrahedron, each
+/// tow's tetrahedra fill its closed surface's volume, every interior face shared by two
+/// tetrahedra of one tow, every surface triangle a face of one tetrahedron of each tow it bounds.
+void checkConforming(const ResolveResult& res, const VolumeMesh& v)
 {
-    ResolveOptions o;
-    o.mesh.edgeLength = 0.12;
-    const ResolveResult res = resolveTextile(twill({"warp_0", "warp_1", "weft_0", "weft_1"}), o);
-    REQUIRE(res.mesh.regions.size() == 4);
-    const VolumeMesh v = meshVolumes(res.mesh);
     REQUIRE(v.surfaceNodes == res.mesh.nodes.size());
     REQUIRE(v.tetrahedra.size() == v.tow.size());
     for (std::size_t n = 0; n < v.surfaceNodes; ++n) REQUIRE(distance(v.nodes[n], res.mesh.nodes[n]) == 0.0);
-
-    // No inverted or flat tetrahedron (relative to the size of its edges).
     std::size_t flat = 0;
     for (std::size_t k = 0; k < v.tetrahedra.size(); ++k) {
         const auto& t = v.tetrahedra[k];
@@ -56,14 +56,10 @@ TEST_CASE("meshVolumes: conforming tetrahedra fill each resolved tow of the twil
         flat += !(v.tetrahedronVolume(k) > 1e-9 * longest * longest * longest);
     }
     CHECK(flat == 0);
-
-    // Each tow's tetrahedra fill the volume its closed surface bounds.
     for (std::size_t t = 0; t < res.mesh.tows.size(); ++t) {
         INFO("tow " << res.mesh.tows[t].name);
         CHECK(v.towVolume(t) == Approx(res.tows[t].volumeAfter).epsilon(1e-9));
     }
-
-    // Faces: the surface triangles of each tow, and every tetrahedron face.
     std::map<Face, std::vector<std::size_t>> surfaceTows;  // face -> tows it bounds
     for (std::size_t t = 0; t < res.mesh.tows.size(); ++t)
         for (const auto& tri : res.mesh.tows[t].triangles) surfaceTows[sorted(tri[0], tri[1], tri[2])].push_back(t);
@@ -97,6 +93,64 @@ TEST_CASE("meshVolumes: conforming tetrahedra fill each resolved tow of the twil
     CHECK(onInterface == shared);  // each region triangle: a tetrahedron of each of its two tows
     WARN(v.tetrahedra.size() << " tetrahedra, " << v.nodes.size() - v.surfaceNodes << " inner nodes, " << shared
                              << " interface triangles");
+}
+
+}  // namespace
+
+TEST_CASE("meshVolumes: conforming tetrahedra fill each resolved tow of the twill", "[volume]")
+{
+    ResolveOptions o;
+    o.mesh.edgeLength = 0.12;
+    const ResolveResult res = resolveTextile(twill({"warp_0", "warp_1", "weft_0", "weft_1"}), o);
+    REQUIRE(res.mesh.regions.size() == 4);
+    checkConforming(res, meshVolumes(res.mesh));
+    // A further call in the process (Gmsh stays started), on one thread: as good.
+    VolumeMeshOptions one;
+    one.threads = 1;
+    checkConforming(res, meshVolumes(res.mesh, one));
+}
+
+TEST_CASE("meshVolumes: a tow cut in two by a tow ranked above it gets a volume per piece", "[volume]")
+{
+    // A thin tube through a thick one, the thick ranked first: the thin one becomes two pieces.
+    testing::Sampling s;
+    s.sections = 41;
+    s.points = 32;
+    const std::vector<TowSurface> tows{TowSurface::fit(testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "outer")),
+                                       TowSurface::fit(testing::tubeAlongY(0.1, 0.0, s, "thin"))};
+    ResolveOptions o;
+    o.mesh.edgeLength = 0.08;
+    const ResolveResult res = resolveTextile(tows, o);
+    REQUIRE(res.tows[1].pieces == 2);
+    checkConforming(res, meshVolumes(res.mesh));
+}
+
+TEST_CASE("meshVolumes refuses a triangle given twice before Gmsh sees it", "[volume]")
+{
+    ResolveOptions o;
+    o.mesh.edgeLength = 0.2;
+    ResolveResult res = resolveTextile(twill({"warp_0", "weft_0"}), o);
+    REQUIRE(res.mesh.regions.size() == 1);
+    TextileMesh twice = res.mesh;
+    twice.regions.push_back(twice.regions.front());  // its triangles in two regions
+    try {
+        meshVolumes(twice);
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::InvalidArgument);
+        CHECK(e.message().find("belongs to two regions") != std::string::npos);
+    }
+    TextileMesh doubled = res.mesh;
+    doubled.tows[0].triangles.push_back(doubled.tows[0].triangles.front());
+    doubled.tows[0].region.push_back(doubled.tows[0].region.front());
+    doubled.tows[0].face.push_back(doubled.tows[0].face.front());
+    try {
+        meshVolumes(doubled);
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::InvalidArgument);
+        CHECK(e.message().find("tow 'warp_0'") != std::string::npos);
+    }
 }
 
 TEST_CASE("meshVolumes refuses tows that are not closed", "[volume]")

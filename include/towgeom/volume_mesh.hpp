@@ -17,7 +17,10 @@ TOWGEOM_BEGIN_NAMESPACE
 struct VolumeMeshOptions {
     /// Gmsh's tetrahedral optimisation after HXT (moves and swaps interior nodes and faces only).
     bool optimize = true;
-    /// Threads for HXT; 0: as many as the machine has.
+    /// Threads for HXT; 0: as many as the machine has. The tetrahedra may differ slightly from
+    /// call to call (HXT's parallel insertion; within one process also Gmsh's state between
+    /// calls); one thread in a fresh process gives the same mesh every time. Volumes and
+    /// conformity do not change.
     std::size_t threads = 0;
 };
 
@@ -43,13 +46,16 @@ struct TOWGEOM_EXPORT VolumeMesh {
 /// Meshes the inside of every tow of @p surfaces (closed tows: MeshOptions::caps) with Gmsh's
 /// HXT tetrahedral mesher, the surface triangles kept as they are (Gmsh discrete entities, no
 /// surface remeshing), so the tetrahedra of two tows meet face to face on their shared regions.
-/// Element sizes grow from the surface mesh inwards. Gmsh is a process-wide engine: calls are
-/// serialised; Gmsh is initialised and finalised here unless the host has initialised it (then
-/// only the model made here is removed).
+/// Element sizes grow from the surface mesh inwards. A tow cut into pieces by a tow ranked above
+/// it (TowResolution::pieces) gets one volume per piece. Gmsh is a process-wide engine: calls
+/// are serialised; the first call starts Gmsh unless the host has (it then stays started for
+/// the process); each call works in a model of its own and restores the host's current model
+/// and the options it sets.
 /// Gmsh's library (Debian: libgmsh4.8) is loaded on the first call, not linked.
 /// @throws towgeom::Error (EngineUnavailable) if Gmsh's library cannot be loaded;
-///         (InvalidArgument) if a tow's surface is not closed (its triangles'
-///         edges must each be shared by two of them);
+///         (InvalidArgument) if a tow's surface is not a closed 2-manifold (every edge of its
+///         triangles shared by exactly two of them, no triangle twice) or a triangle is in two
+///         regions (Gmsh would end the process on such input);
 ///         (Internal) with Gmsh's message if Gmsh fails, or if it added, moved or renumbered a
 ///         surface node.
 TOWGEOM_EXPORT VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& options = {});

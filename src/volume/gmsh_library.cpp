@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 
 #include <mutex>
+#include <string>
 #include <stdexcept>
 
 #include "towgeom/error.hpp"
@@ -16,22 +17,19 @@ const GmshApi& gmshApi()
     static std::string failure;
     static std::once_flag once;
     std::call_once(once, [] {
-        // The soname of Debian 12's libgmsh4.8; the development link as a fallback.
-        void* lib = nullptr;
-        std::string tried;
-        for (const char* name : {"libgmsh.so.4.8", "libgmsh.so"}) {
-            lib = dlopen(name, RTLD_NOW | RTLD_LOCAL);
-            if (lib) break;
-            const char* why = dlerror();
-            tried += std::string(tried.empty() ? "" : "; ") + (why ? why : name);
-        }
+        // Only the soname of the version whose gmshc.h this was built with: the C API's
+        // signatures change between minor versions (4.9's gmshInitialize takes one more argument).
+        const std::string soname = "libgmsh.so." + std::to_string(GMSH_API_VERSION_MAJOR) + "." + std::to_string(GMSH_API_VERSION_MINOR);
+        void* lib = dlopen(soname.c_str(), RTLD_NOW | RTLD_LOCAL);
         if (!lib) {
-            failure = "Gmsh's library could not be loaded (" + tried + "): install it (Debian: apt-get install libgmsh4.8)";
+            const char* why = dlerror();
+            failure = "Gmsh's library could not be loaded (" + std::string(why ? why : soname) + "): install it (Debian 12: apt-get install libgmsh" +
+                      std::to_string(GMSH_API_VERSION_MAJOR) + "." + std::to_string(GMSH_API_VERSION_MINOR) + ")";
             return;
         }
         const auto resolve = [&](auto& f, const char* name) {
             f = reinterpret_cast<std::remove_reference_t<decltype(f)>>(dlsym(lib, name));
-            if (!f && failure.empty()) failure = std::string("Gmsh's library lacks the function ") + name + ": Gmsh 4.8 or later is needed";
+            if (!f && failure.empty()) failure = std::string("Gmsh's library ") + soname + " lacks the function " + name;
         };
 #define TOWGEOM_GMSH_RESOLVE(name) resolve(api.name, #name);
         TOWGEOM_GMSH_RESOLVE(gmshInitialize)
@@ -41,6 +39,7 @@ const GmshApi& gmshApi()
         TOWGEOM_GMSH_RESOLVE(gmshOptionGetNumber)
         TOWGEOM_GMSH_RESOLVE(gmshModelAdd)
         TOWGEOM_GMSH_RESOLVE(gmshModelSetCurrent)
+        TOWGEOM_GMSH_RESOLVE(gmshModelGetCurrent)
         TOWGEOM_GMSH_RESOLVE(gmshModelRemove)
         TOWGEOM_GMSH_RESOLVE(gmshModelAddDiscreteEntity)
         TOWGEOM_GMSH_RESOLVE(gmshModelMeshAddNodes)

@@ -25,6 +25,7 @@ struct GmshApi {
     TOWGEOM_GMSH_FUNCTION(gmshOptionGetNumber)
     TOWGEOM_GMSH_FUNCTION(gmshModelAdd)
     TOWGEOM_GMSH_FUNCTION(gmshModelSetCurrent)
+    TOWGEOM_GMSH_FUNCTION(gmshModelGetCurrent)
     TOWGEOM_GMSH_FUNCTION(gmshModelRemove)
     TOWGEOM_GMSH_FUNCTION(gmshModelAddDiscreteEntity)
     TOWGEOM_GMSH_FUNCTION(gmshModelMeshAddNodes)

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdint>
 #include <exception>
+#include <map>
+#include <set>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -56,20 +58,31 @@ private:
     const detail::GmshApi& api_;
 };
 
-/// Gmsh started for one call (unless the host runs it): finalised, or the model removed, on exit.
+/// Gmsh for one call: started on the first call in the process unless the host has started it
+/// (and then left running: finalising and starting again makes Gmsh print on every later
+/// probe), a model of towgeom's own made current, and on exit that model removed and the
+/// host's current model and the options set here restored. Callers hold gmshMutex().
 class GmshSession {
 public:
     explicit GmshSession(const Gmsh& g) : g_(g)
     {
         const detail::GmshApi& api = g.api();
-        // Gmsh 4.8 has no isInitialized(): uninitialised, its calls fail, so an option read
-        // leaves the value as it was.
-        double probe = -1.0;
+        static bool running = false;  // started here, or found started by the host
+        if (!running) {
+            // Gmsh 4.8 has no isInitialized(): uninitialised, its calls fail, so an option read
+            // leaves the value as it was.
+            double probe = -1.0;
+            int ierr = 0;
+            api.gmshOptionGetNumber("General.Terminal", &probe, &ierr);
+            if (!(ierr == 0 && probe != -1.0)) g.call("gmshInitialize", api.gmshInitialize, 0, nullptr, 0);
+            running = true;
+        }
+        char* current = nullptr;
         int ierr = 0;
-        api.gmshOptionGetNumber("General.Terminal", &probe, &ierr);
-        hostOwned_ = ierr == 0 && probe != -1.0;
-        if (!hostOwned_) g.call("gmshInitialize", api.gmshInitialize, 0, nullptr, 0);
-        g.call("gmshOptionGetNumber", api.gmshOptionGetNumber, "General.Terminal", &terminal_);
+        api.gmshModelGetCurrent(&current, &ierr);
+        if (ierr == 0 && current) hostModel_ = current;
+        if (current) api.gmshFree(current);
+        for (auto& [name, value] : saved_) g.call("gmshOptionGetNumber", api.gmshOptionGetNumber, name, &value);
         g.call("gmshOptionSetNumber", api.gmshOptionSetNumber, "General.Terminal", 0.0);
         g.call("gmshModelAdd", api.gmshModelAdd, kModel);
     }
@@ -79,8 +92,8 @@ public:
         int ierr = 0;
         api.gmshModelSetCurrent(kModel, &ierr);
         api.gmshModelRemove(&ierr);
-        api.gmshOptionSetNumber("General.Terminal", terminal_, &ierr);
-        if (!hostOwned_) api.gmshFinalize(&ierr);
+        if (!hostModel_.empty()) api.gmshModelSetCurrent(hostModel_.c_str(), &ierr);
+        for (const auto& [name, value] : saved_) api.gmshOptionSetNumber(name, value, &ierr);
     }
     GmshSession(const GmshSession&) = delete;
     GmshSession& operator=(const GmshSession&) = delete;
@@ -88,8 +101,12 @@ public:
 private:
     static constexpr const char* kModel = "towgeom_volumes";
     const Gmsh& g_;
-    bool hostOwned_ = false;
-    double terminal_ = 0.0;
+    std::string hostModel_;
+    std::pair<const char*, double> saved_[5] = {{"General.Terminal", 0.0},
+                                                {"General.NumThreads", 0.0},
+                                                {"Mesh.Algorithm3D", 0.0},
+                                                {"Mesh.Optimize", 0.0},
+                                                {"Mesh.Renumber", 0.0}};
 };
 
 }  // namespace
@@ -108,6 +125,51 @@ double VolumeMesh::towVolume(std::size_t t) const
     return v;
 }
 
+namespace {
+
+/// Tow @p t's closed surface split into shells (triangles joined across edges): the shell of
+/// each of its triangles. A tow cut through by a tow ranked above it has two or more.
+/// @throws towgeom::Error (InvalidArgument) naming the tow if its surface is not a closed
+/// 2-manifold (an edge not used by exactly two of its triangles, a triangle given twice): Gmsh's
+/// HXT ends the process on such input.
+std::vector<std::size_t> shellsOf(const TextileMesh& surfaces, std::size_t t, std::size_t& count)
+{
+    const TowMesh& m = surfaces.tows[t];
+    const auto fail = [&](const std::string& what) {
+        throw Error(ErrorCode::InvalidArgument, "tow '" + m.name + "': its surface mesh is not a closed 2-manifold (" + what +
+                                                    "): volumes need tows closed by their end caps");
+    };
+    std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> edges;
+    std::set<std::array<std::size_t, 3>> seen;
+    for (std::size_t k = 0; k < m.triangles.size(); ++k) {
+        auto key = m.triangles[k];
+        std::sort(key.begin(), key.end());
+        if (key[0] == key[1] || key[1] == key[2]) fail("a triangle repeats a node");
+        if (!seen.insert(key).second) fail("a triangle given twice");
+        for (int e = 0; e < 3; ++e) {
+            const std::size_t a = m.triangles[k][e], b = m.triangles[k][(e + 1) % 3];
+            edges[{std::min(a, b), std::max(a, b)}].push_back(k);
+        }
+    }
+    std::vector<std::size_t> parent(m.triangles.size());
+    for (std::size_t k = 0; k < parent.size(); ++k) parent[k] = k;
+    const auto root = [&](std::size_t k) {
+        while (parent[k] != k) k = parent[k] = parent[parent[k]];
+        return k;
+    };
+    for (const auto& [edge, users] : edges) {
+        if (users.size() != 2) fail(std::to_string(users.size()) + " triangles at an edge");
+        parent[root(users[0])] = root(users[1]);
+    }
+    std::vector<std::size_t> shell(m.triangles.size());
+    std::map<std::size_t, std::size_t> number;
+    for (std::size_t k = 0; k < shell.size(); ++k) shell[k] = number.emplace(root(k), number.size()).first->second;
+    count = number.size();
+    return shell;
+}
+
+}  // namespace
+
 VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& options)
 {
     const std::size_t towCount = surfaces.tows.size();
@@ -116,17 +178,33 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
             throw Error(ErrorCode::InvalidArgument, "tow '" + surfaces.tows[t].name + "': its surface mesh is not closed (" +
                                                         std::to_string(surfaces.boundaryLoopCount(t)) +
                                                         " boundary loops): volumes need tows closed by their end caps");
+    // One volume per shell of each tow (a tow cut through by one ranked above it has several).
+    std::vector<std::vector<std::size_t>> shell(towCount);
+    std::vector<std::size_t> firstVolume(towCount + 1, 0);  // volume v of tow t: firstVolume[t] + shell
+    for (std::size_t t = 0; t < towCount; ++t) {
+        std::size_t count = 0;
+        shell[t] = shellsOf(surfaces, t, count);
+        firstVolume[t + 1] = firstVolume[t] + count;
+    }
+    std::vector<std::size_t> volumeTow(firstVolume[towCount]);
+    for (std::size_t t = 0; t < towCount; ++t)
+        for (std::size_t v = firstVolume[t]; v < firstVolume[t + 1]; ++v) volumeTow[v] = t;
 
-    // Discrete surfaces: 1..T each tow's own triangles, T+1.. each region's (its primary's copy).
+    // Discrete surfaces: each shell's own triangles, then each region's (its primary's copy).
     struct Surface {
         int tag;
         std::vector<std::size_t> nodes;     // classified here: nodes no earlier surface used
         std::vector<std::size_t> triangles; // 3 node tags each
     };
     std::vector<Surface> patches;
-    std::vector<std::vector<int>> bounds(towCount);
+    std::vector<std::vector<int>> bounds(volumeTow.size());
     std::vector<char> classified(surfaces.nodes.size(), 0);
+    std::set<std::array<std::size_t, 3>> given;  // no triangle twice (regions sharing one)
     const auto add = [&](Surface& s, const std::array<std::size_t, 3>& tri) {
+        auto key = tri;
+        std::sort(key.begin(), key.end());
+        if (!given.insert(key).second)
+            throw Error(ErrorCode::InvalidArgument, "a surface triangle belongs to two regions or to a region and a tow's own surface");
         for (std::size_t n : tri) {
             if (!classified[n]) {
                 classified[n] = 1;
@@ -136,20 +214,37 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         }
     };
     for (std::size_t t = 0; t < towCount; ++t) {
-        Surface s{static_cast<int>(patches.size()) + 1, {}, {}};
         const TowMesh& m = surfaces.tows[t];
-        for (std::size_t k = 0; k < m.triangles.size(); ++k)
-            if (m.region[k] < 0) add(s, m.triangles[k]);
-        if (s.triangles.empty()) continue;
-        bounds[t].push_back(s.tag);
-        patches.push_back(std::move(s));
+        for (std::size_t v = firstVolume[t]; v < firstVolume[t + 1]; ++v) {
+            Surface s{static_cast<int>(patches.size()) + 1, {}, {}};
+            for (std::size_t k = 0; k < m.triangles.size(); ++k)
+                if (m.region[k] < 0 && firstVolume[t] + shell[t][k] == v) add(s, m.triangles[k]);
+            if (s.triangles.empty()) continue;
+            bounds[v].push_back(s.tag);
+            patches.push_back(std::move(s));
+        }
     }
-    for (const ConnectedRegion& g : surfaces.regions) {
+    for (std::size_t r = 0; r < surfaces.regions.size(); ++r) {
+        const ConnectedRegion& reg = surfaces.regions[r];
+        if (reg.primary >= towCount || reg.secondary >= towCount)
+            throw Error(ErrorCode::InvalidArgument, "region " + std::to_string(r + 1) + " names a tow out of range");
         Surface s{static_cast<int>(patches.size()) + 1, {}, {}};
-        for (std::size_t k : g.triangles) add(s, surfaces.tows[g.primary].triangles[k]);
+        const TowMesh& primary = surfaces.tows[reg.primary];
+        for (std::size_t k : reg.triangles) {
+            if (k >= primary.triangles.size()) throw Error(ErrorCode::InvalidArgument, "region " + std::to_string(r + 1) + " names a triangle out of range");
+            add(s, primary.triangles[k]);
+        }
         if (s.triangles.empty()) continue;
-        bounds[g.primary].push_back(s.tag);
-        bounds[g.secondary].push_back(-s.tag);  // the primary's orientation: inward for the secondary
+        // The shell of each tow the region bounds: that of its first triangle on each.
+        const TowMesh& secondary = surfaces.tows[reg.secondary];
+        std::size_t onSecondary = secondary.triangles.size();
+        for (std::size_t k = 0; k < secondary.triangles.size() && onSecondary == secondary.triangles.size(); ++k)
+            if (secondary.region[k] == static_cast<long>(r)) onSecondary = k;
+        if (onSecondary == secondary.triangles.size())
+            throw Error(ErrorCode::InvalidArgument, "region " + std::to_string(r + 1) + " is not on its secondary tow's surface");
+        bounds[firstVolume[reg.primary] + shell[reg.primary][reg.triangles.front()]].push_back(s.tag);
+        // The primary's orientation: inward for the secondary.
+        bounds[firstVolume[reg.secondary] + shell[reg.secondary][onSecondary]].push_back(-s.tag);
         patches.push_back(std::move(s));
     }
 
@@ -177,7 +272,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         }
         // Each tow a volume of the built-in kernel bounded by its discrete surfaces (Gmsh meshes
         // those; a discrete volume it leaves empty).
-        for (std::size_t v = 0; v < towCount; ++v) {
+        for (std::size_t v = 0; v < bounds.size(); ++v) {
             if (bounds[v].empty()) continue;
             int loop = g.call("gmshModelGeoAddSurfaceLoop", api.gmshModelGeoAddSurfaceLoop, bounds[v].data(), bounds[v].size(), -1);
             g.call("gmshModelGeoAddVolume", api.gmshModelGeoAddVolume, &loop, std::size_t(1), static_cast<int>(v) + 1);
@@ -226,14 +321,16 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
             if (tag >= index.size() || index[tag] == SIZE_MAX) throw Error(ErrorCode::Internal, "Gmsh gave a tetrahedron an unknown node");
             return index[tag];
         };
-        for (std::size_t t = 0; t < towCount; ++t) {
-            if (bounds[t].empty()) continue;
+        for (std::size_t v = 0; v < bounds.size(); ++v) {
+            if (bounds[v].empty()) continue;
+            const std::size_t t = volumeTow[v];
             where = "tow '" + surfaces.tows[t].name + "'";
             std::size_t *e = nullptr, *n = nullptr, ne = 0, nn = 0;
-            g.call("gmshModelMeshGetElementsByType", api.gmshModelMeshGetElementsByType, 4, &e, &ne, &n, &nn, static_cast<int>(t) + 1,
+            g.call("gmshModelMeshGetElementsByType", api.gmshModelMeshGetElementsByType, 4, &e, &ne, &n, &nn, static_cast<int>(v) + 1,
                    std::size_t(0), std::size_t(1));
             const std::vector<std::size_t> elements = detail::gmshTake(api, e, ne), nodes = detail::gmshTake(api, n, nn);
-            if (elements.empty() || nodes.size() != 4 * elements.size()) throw Error(ErrorCode::Internal, "Gmsh made no tetrahedron");
+            if (elements.empty() || nodes.size() != 4 * elements.size())
+                throw Error(ErrorCode::Internal, "Gmsh made no tetrahedron (" + detail::gmshLastError(api) + ")");
             for (std::size_t k = 0; k < elements.size(); ++k) {
                 std::array<std::size_t, 4> tet{node(nodes[4 * k]), node(nodes[4 * k + 1]), node(nodes[4 * k + 2]), node(nodes[4 * k + 3])};
                 if (signedVolume(out.nodes[tet[0]], out.nodes[tet[1]], out.nodes[tet[2]], out.nodes[tet[3]]) < 0.0) std::swap(tet[2], tet[3]);
