@@ -296,6 +296,11 @@ TEST_CASE("towgeom resolve --volume fills the tows with tetrahedra that Gmsh rea
     std::size_t inMsh = 0;
     for (const char* block : {"\n3 1 4 ", "\n3 2 4 "}) inMsh += std::stoul(msh.substr(msh.find(block) + 7));
     CHECK(static_cast<double>(inMsh) == tets);
+    // Each tetrahedron's fibre direction as element data (read by gmsh -check above).
+    const std::string header = "$ElementData\n1\n\"fibre_direction\"\n1\n0\n3\n0\n3\n";
+    const auto data = msh.find(header);
+    REQUIRE(data != std::string::npos);
+    CHECK(std::stoul(msh.substr(data + header.size())) == inMsh);
     fs::remove_all(out);
     const Run open = cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + out.string() + "' --volume --no-caps --quiet");
     CHECK(open.status == 2);

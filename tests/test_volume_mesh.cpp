@@ -122,7 +122,21 @@ TEST_CASE("meshVolumes: a tow cut in two by a tow ranked above it gets a volume 
     o.mesh.edgeLength = 0.08;
     const ResolveResult res = resolveTextile(tows, o);
     REQUIRE(res.tows[1].pieces == 2);
-    checkConforming(res, meshVolumes(res.mesh));
+    VolumeMesh v = meshVolumes(res.mesh);
+    checkConforming(res, v);
+    // Straight tubes: every tetrahedron's fibre direction is its tube's axis (up to the fit's
+    // error), along increasing u.
+    addFibreDirections(v, tows);
+    REQUIRE(v.fibreDirection.size() == v.tetrahedra.size());
+    double offAxis = 0.0;
+    for (std::size_t k = 0; k < v.tetrahedra.size(); ++k) {
+        const Vector3 axis = v.tow[k] == 0 ? Vector3{1, 0, 0} : Vector3{0, 1, 0};
+        offAxis = std::max(offAxis, norm(v.fibreDirection[k] - axis));
+    }
+    WARN("fibre directions: largest distance from the tube's axis " << offAxis);
+    CHECK(offAxis < 1e-6);
+    std::vector<TowSurface> one{tows[0]};
+    CHECK_THROWS_AS(addFibreDirections(v, one), Error);  // tetrahedra of tow 1, one tow given
 }
 
 TEST_CASE("meshVolumes refuses a triangle given twice before Gmsh sees it", "[volume]")

@@ -26,7 +26,9 @@ TOWGEOM_EXPORT void writeGmsh(const TextileMesh& mesh, std::ostream& out);
 /// writeGmsh() with the tetrahedra of @p volumes (meshVolumes() of @p mesh): a volume entity per
 /// tow (tag: the tow's number, 1-based) bounded by its surface entities (a region's entity with
 /// a negative sign for its secondary), in a physical volume TOW_NAME, its inner nodes classified
-/// on it; the surface entities and groups as without volumes.
+/// on it; the surface entities and groups as without volumes; and, when @p volumes has its
+/// fibre directions (addFibreDirections()), $ElementData "fibre_direction" (3 components per
+/// tetrahedron).
 /// @throws towgeom::Error (InvalidArgument) if @p volumes is not of @p mesh.
 TOWGEOM_EXPORT void writeGmsh(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostream& out);
 

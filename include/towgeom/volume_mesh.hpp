@@ -9,6 +9,7 @@
 
 #include "towgeom/point.hpp"
 #include "towgeom/textile_mesh.hpp"
+#include "towgeom/tow_surface.hpp"
 #include "towgeom/export.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
@@ -35,6 +36,9 @@ struct TOWGEOM_EXPORT VolumeMesh {
     std::vector<std::array<std::size_t, 4>> tetrahedra;
     /// For each tetrahedron, the tow it lies in (an index into TextileMesh::tows).
     std::vector<std::size_t> tow;
+    /// For each tetrahedron its fibre direction (a unit vector), once addFibreDirections() has
+    /// set them; empty before.
+    std::vector<Vector3> fibreDirection;
 
     /// The signed volume of tetrahedron @p k (meshVolumes() orders the nodes so that it is not
     /// negative).
@@ -59,5 +63,14 @@ struct TOWGEOM_EXPORT VolumeMesh {
 ///         (Internal) with Gmsh's message if Gmsh fails, or if it added, moved or renumbered a
 ///         surface node.
 TOWGEOM_EXPORT VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& options = {});
+
+/// Sets VolumeMesh::fibreDirection: for each tetrahedron, the fibre direction of its tow at the
+/// point of the tow's centreline (the polyline of its sections' centroids) nearest the
+/// tetrahedron's centroid. At each section the direction is the mean around the section of the
+/// unit tangent along the tow, dS/du / |dS/du| (the direction TowMesh::fibreDirection gives the
+/// surface triangles); between two sections it is interpolated linearly along the segment and
+/// normalised. @p tows are the tows @p volumes was made of, in the same order and units.
+/// @throws towgeom::Error (InvalidArgument) if a tetrahedron names a tow @p tows does not have.
+TOWGEOM_EXPORT void addFibreDirections(VolumeMesh& volumes, const std::vector<TowSurface>& tows);
 
 TOWGEOM_END_NAMESPACE

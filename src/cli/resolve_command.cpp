@@ -103,7 +103,9 @@ Options:
   --volume           also fill every tow with tetrahedra (Gmsh's HXT, the surface triangles kept
                      as they are: two tows' tetrahedra meet face to face on their regions) and
                      write DIR/textile_volume.msh (a physical volume TOW_NAME per tow, the
-                     surfaces' groups as in textile.msh), with --formats ...,inp also
+                     surfaces' groups as in textile.msh, each tetrahedron's fibre direction as
+                     element data "fibre_direction": its tow's tangent along its centreline
+                     nearest the tetrahedron), with --formats ...,inp also
                      DIR/textile_volume.inp (C3D4, ELSET TOW_NAME, NSET NODES_NAME, START_NAME,
                      END_NAME per tow); report.json gains "volume_mesh".
                      Needs Gmsh's library (Debian: libgmsh4.8). No cell, matrix or solver
@@ -209,6 +211,7 @@ int runResolve(int argc, char** argv, int first)
             VolumeMeshOptions vo;
             vo.threads = options.threads;
             volumes = meshVolumes(mesh, vo);
+            addFibreDirections(volumes, tows);
             printer.update("meshing the tows' volumes (Gmsh HXT)", 1, 1);
             volumeMs = msSince(t0);
         }

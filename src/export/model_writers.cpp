@@ -227,6 +227,22 @@ void writeGmshModel(const TextileMesh& mesh, const VolumeMesh* volumes, std::ost
         }
     }
     out << "$EndElements\n";
+    // The tetrahedra's fibre directions (addFibreDirections()) as a 3-component element field;
+    // the tetrahedra's element tags follow the triangles', in the order written above.
+    if (volumes && volumes->fibreDirection.size() == volumes->tetrahedra.size() && !volumes->tetrahedra.empty()) {
+        std::size_t tetCount = 0;
+        for (std::size_t t : solids) tetCount += tets[t].size();
+        out << "$ElementData\n1\n\"fibre_direction\"\n1\n0\n3\n0\n3\n" << tetCount << '\n';
+        NumberWriter w(out);
+        std::size_t tag = elements - tetCount;
+        for (std::size_t t : solids)
+            for (std::size_t k : tets[t]) {
+                const Vector3& d = volumes->fibreDirection[k];
+                w.number(++tag).text(" ").number(d.x).text(" ").number(d.y).text(" ").number(d.z).end();
+            }
+        w.flush();
+        out << "$EndElementData\n";
+    }
 }
 
 }  // namespace

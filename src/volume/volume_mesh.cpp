@@ -59,8 +59,8 @@ private:
 };
 
 /// Gmsh for one call: started on the first call in the process unless the host has started it
-/// (and then left running: finalising and starting again makes Gmsh print on every later
-/// probe), a model of towgeom's own made current, and on exit that model removed and the
+/// (and then left running until the process exits: finalising and starting again makes Gmsh
+/// print on every later probe), a model of towgeom's own made current, and on exit that model removed and the
 /// host's current model and the options set here restored. Callers hold gmshMutex().
 class GmshSession {
 public:
@@ -74,7 +74,19 @@ public:
             double probe = -1.0;
             int ierr = 0;
             api.gmshOptionGetNumber("General.Terminal", &probe, &ierr);
-            if (!(ierr == 0 && probe != -1.0)) g.call("gmshInitialize", api.gmshInitialize, 0, nullptr, 0);
+            if (!(ierr == 0 && probe != -1.0)) {
+                g.call("gmshInitialize", api.gmshInitialize, 0, nullptr, 0);
+                // Finalised at exit (frees its models), before Gmsh's own statics go: this
+                // object is made after the library was loaded, so it is destroyed first.
+                static const struct Finalizer {
+                    const detail::GmshApi* api;
+                    ~Finalizer()
+                    {
+                        int e = 0;
+                        api->gmshFinalize(&e);
+                    }
+                } finalizer{&api};
+            }
             running = true;
         }
         char* current = nullptr;
