@@ -139,7 +139,7 @@ TEST_CASE("meshVolumes: a tow cut in two by a tow ranked above it gets a volume 
     CHECK_THROWS_AS(addFibreDirections(v, one), Error);  // tetrahedra of tow 1, one tow given
 }
 
-TEST_CASE("meshVolumes refuses a triangle given twice before Gmsh sees it", "[volume]")
+TEST_CASE("meshVolumes refuses a triangle given twice or turned over before Gmsh sees it", "[volume]")
 {
     ResolveOptions o;
     o.mesh.edgeLength = 0.2;
@@ -152,7 +152,17 @@ TEST_CASE("meshVolumes refuses a triangle given twice before Gmsh sees it", "[vo
         FAIL("no error");
     } catch (const Error& e) {
         CHECK(e.code() == ErrorCode::InvalidArgument);
-        CHECK(e.message().find("belongs to two regions") != std::string::npos);
+        CHECK(e.message().find("region 2") != std::string::npos);  // its triangles are region 1's
+    }
+    TextileMesh flipped = res.mesh;
+    std::swap(flipped.tows[1].triangles.front()[0], flipped.tows[1].triangles.front()[1]);  // one triangle turned over
+    try {
+        meshVolumes(flipped);
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::InvalidArgument);
+        CHECK(e.message().find("tow 'weft_0'") != std::string::npos);
+        CHECK(e.message().find("inconsistent orientation") != std::string::npos);
     }
     TextileMesh doubled = res.mesh;
     doubled.tows[0].triangles.push_back(doubled.tows[0].triangles.front());

@@ -71,6 +71,9 @@ void writeGmshModel(const TextileMesh& mesh, const VolumeMesh* volumes, std::ost
 {
     if (volumes && (volumes->surfaceNodes != mesh.nodes.size() || volumes->tetrahedra.size() != volumes->tow.size()))
         throw Error(ErrorCode::InvalidArgument, "the volume mesh is not one of this surface mesh (meshVolumes() of it)");
+    if (volumes && !volumes->fibreDirection.empty() && volumes->fibreDirection.size() != volumes->tetrahedra.size())
+        throw Error(ErrorCode::InvalidArgument, "the volume mesh has " + std::to_string(volumes->fibreDirection.size()) +
+                                                    " fibre directions for " + std::to_string(volumes->tetrahedra.size()) + " tetrahedra");
     const std::vector<Point3>& nodes = volumes ? volumes->nodes : mesh.nodes;
     out << std::setprecision(std::numeric_limits<double>::max_digits10);
     // Surface entities, every triangle in one: per tow its tube and its cap triangles outside

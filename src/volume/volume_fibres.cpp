@@ -54,11 +54,15 @@ Centreline centrelineOf(const TowSurface& tow)
     for (std::size_t i = 0; i + 1 < c.centre.size(); ++i)
         c.segments.emplace_back(Kernel::Point_3(c.centre[i].x, c.centre[i].y, c.centre[i].z),
                                 Kernel::Point_3(c.centre[i + 1].x, c.centre[i + 1].y, c.centre[i + 1].z));
-    if (!c.segments.empty()) {
-        c.tree = std::make_unique<Tree>(c.segments.cbegin(), c.segments.cend());
-        c.tree->accelerate_distance_queries();
-    }
     return c;
+}
+
+/// The tree over @p c's segments, made once @p c is in its place (it holds iterators into them).
+void buildTree(Centreline& c)
+{
+    if (c.segments.empty()) return;
+    c.tree = std::make_unique<Tree>(c.segments.cbegin(), c.segments.cend());
+    c.tree->accelerate_distance_queries();
 }
 
 /// The direction at the point of @p c's polyline nearest @p p.
@@ -90,6 +94,7 @@ void addFibreDirections(VolumeMesh& volumes, const std::vector<TowSurface>& tows
                                                         std::to_string(tows.size()) + " given");
         if (!made[t]) {
             lines[t] = centrelineOf(tows[t]);
+            buildTree(lines[t]);
             made[t] = 1;
         }
         Point3 centroid;

@@ -82,6 +82,9 @@ public:
                     const detail::GmshApi* api;
                     ~Finalizer()
                     {
+                        // Not while another thread meshes (exit() called elsewhere meanwhile).
+                        std::unique_lock<std::mutex> l(gmshMutex(), std::try_to_lock);
+                        if (!l.owns_lock()) return;
                         int e = 0;
                         api->gmshFinalize(&e);
                     }
@@ -92,27 +95,41 @@ public:
         char* current = nullptr;
         int ierr = 0;
         api.gmshModelGetCurrent(&current, &ierr);
-        if (ierr == 0 && current) hostModel_ = current;
+        hadCurrent_ = ierr == 0 && current;  // the host's default model is named ""
+        if (hadCurrent_) hostModel_ = current;
         if (current) api.gmshFree(current);
         for (auto& [name, value] : saved_) g.call("gmshOptionGetNumber", api.gmshOptionGetNumber, name, &value);
-        g.call("gmshOptionSetNumber", api.gmshOptionSetNumber, "General.Terminal", 0.0);
-        g.call("gmshModelAdd", api.gmshModelAdd, kModel);
+        try {
+            g.call("gmshOptionSetNumber", api.gmshOptionSetNumber, "General.Terminal", 0.0);
+            g.call("gmshModelAdd", api.gmshModelAdd, kModel);
+            added_ = true;
+        } catch (...) {
+            restore();
+            throw;
+        }
     }
-    ~GmshSession()
-    {
-        const detail::GmshApi& api = g_.api();
-        int ierr = 0;
-        api.gmshModelSetCurrent(kModel, &ierr);
-        api.gmshModelRemove(&ierr);
-        if (!hostModel_.empty()) api.gmshModelSetCurrent(hostModel_.c_str(), &ierr);
-        for (const auto& [name, value] : saved_) api.gmshOptionSetNumber(name, value, &ierr);
-    }
+    ~GmshSession() { restore(); }
     GmshSession(const GmshSession&) = delete;
     GmshSession& operator=(const GmshSession&) = delete;
 
 private:
+    /// The host's state back: towgeom's model removed, the current model and the options.
+    void restore() noexcept
+    {
+        const detail::GmshApi& api = g_.api();
+        int ierr = 0;
+        if (added_) {
+            api.gmshModelSetCurrent(kModel, &ierr);
+            api.gmshModelRemove(&ierr);
+            added_ = false;
+        }
+        if (hadCurrent_) api.gmshModelSetCurrent(hostModel_.c_str(), &ierr);
+        for (const auto& [name, value] : saved_) api.gmshOptionSetNumber(name, value, &ierr);
+    }
+
     static constexpr const char* kModel = "towgeom_volumes";
     const Gmsh& g_;
+    bool hadCurrent_ = false, added_ = false;
     std::string hostModel_;
     std::pair<const char*, double> saved_[5] = {{"General.Terminal", 0.0},
                                                 {"General.NumThreads", 0.0},
@@ -153,6 +170,7 @@ std::vector<std::size_t> shellsOf(const TextileMesh& surfaces, std::size_t t, st
     };
     std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> edges;
     std::set<std::array<std::size_t, 3>> seen;
+    std::set<std::pair<std::size_t, std::size_t>> directed;
     for (std::size_t k = 0; k < m.triangles.size(); ++k) {
         auto key = m.triangles[k];
         std::sort(key.begin(), key.end());
@@ -160,6 +178,7 @@ std::vector<std::size_t> shellsOf(const TextileMesh& surfaces, std::size_t t, st
         if (!seen.insert(key).second) fail("a triangle given twice");
         for (int e = 0; e < 3; ++e) {
             const std::size_t a = m.triangles[k][e], b = m.triangles[k][(e + 1) % 3];
+            if (!directed.insert({a, b}).second) fail("two triangles run along an edge the same way: inconsistent orientation");
             edges[{std::min(a, b), std::max(a, b)}].push_back(k);
         }
     }
@@ -204,7 +223,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
 
     // Discrete surfaces: each shell's own triangles, then each region's (its primary's copy).
     struct Surface {
-        int tag;
+        int tag = 0;
         std::vector<std::size_t> nodes;     // classified here: nodes no earlier surface used
         std::vector<std::size_t> triangles; // 3 node tags each
     };
@@ -236,29 +255,43 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
             patches.push_back(std::move(s));
         }
     }
+    // A region's triangles, split by the shells they lie on (a third tow may cut a region's
+    // tows into pieces): one surface per (primary's shell, secondary's shell).
     for (std::size_t r = 0; r < surfaces.regions.size(); ++r) {
         const ConnectedRegion& reg = surfaces.regions[r];
         if (reg.primary >= towCount || reg.secondary >= towCount)
             throw Error(ErrorCode::InvalidArgument, "region " + std::to_string(r + 1) + " names a tow out of range");
-        Surface s{static_cast<int>(patches.size()) + 1, {}, {}};
         const TowMesh& primary = surfaces.tows[reg.primary];
-        for (std::size_t k : reg.triangles) {
-            if (k >= primary.triangles.size()) throw Error(ErrorCode::InvalidArgument, "region " + std::to_string(r + 1) + " names a triangle out of range");
-            add(s, primary.triangles[k]);
-        }
-        if (s.triangles.empty()) continue;
-        // The shell of each tow the region bounds: that of its first triangle on each.
         const TowMesh& secondary = surfaces.tows[reg.secondary];
-        std::size_t onSecondary = secondary.triangles.size();
-        for (std::size_t k = 0; k < secondary.triangles.size() && onSecondary == secondary.triangles.size(); ++k)
-            if (secondary.region[k] == static_cast<long>(r)) onSecondary = k;
-        if (onSecondary == secondary.triangles.size())
-            throw Error(ErrorCode::InvalidArgument, "region " + std::to_string(r + 1) + " is not on its secondary tow's surface");
-        bounds[firstVolume[reg.primary] + shell[reg.primary][reg.triangles.front()]].push_back(s.tag);
-        // The primary's orientation: inward for the secondary.
-        bounds[firstVolume[reg.secondary] + shell[reg.secondary][onSecondary]].push_back(-s.tag);
-        patches.push_back(std::move(s));
+        std::map<std::array<std::size_t, 3>, std::size_t> onSecondary;  // sorted nodes -> the secondary's triangle
+        for (std::size_t k = 0; k < secondary.triangles.size(); ++k)
+            if (secondary.region[k] == static_cast<long>(r)) {
+                auto key = secondary.triangles[k];
+                std::sort(key.begin(), key.end());
+                onSecondary.emplace(key, k);
+            }
+        std::map<std::pair<std::size_t, std::size_t>, Surface> parts;
+        for (std::size_t k : reg.triangles) {
+            if (k >= primary.triangles.size())
+                throw Error(ErrorCode::InvalidArgument, "region " + std::to_string(r + 1) + " names a triangle out of range");
+            auto key = primary.triangles[k];
+            std::sort(key.begin(), key.end());
+            const auto copy = onSecondary.find(key);
+            if (copy == onSecondary.end())
+                throw Error(ErrorCode::InvalidArgument, "region " + std::to_string(r + 1) + ": a triangle is not on its secondary tow's surface");
+            Surface& part = parts[{shell[reg.primary][k], shell[reg.secondary][copy->second]}];
+            add(part, primary.triangles[k]);
+        }
+        for (auto& [shells, part] : parts) {
+            part.tag = static_cast<int>(patches.size()) + 1;
+            bounds[firstVolume[reg.primary] + shells.first].push_back(part.tag);
+            bounds[firstVolume[reg.secondary] + shells.second].push_back(-part.tag);  // the primary's orientation: inward for the secondary
+            patches.push_back(std::move(part));
+        }
     }
+    for (std::size_t v = 0; v < bounds.size(); ++v)
+        if (bounds[v].empty())
+            throw Error(ErrorCode::Internal, "tow '" + surfaces.tows[volumeTow[v]].name + "': a piece of it has no surface");
 
     VolumeMesh out;
     out.nodes = surfaces.nodes;
