@@ -1,6 +1,7 @@
-// Tetrahedra inside the resolved tows with Gmsh: each tow's own triangles and each region's
-// triangles become discrete surfaces (the nodes and triangles as they are), each tow a discrete
-// volume bounded by its surfaces, meshed by HXT.
+// Tetrahedra inside the resolved tows with Gmsh: each shell's own triangles and each region's
+// triangles (split by the shells they lie on) become discrete surfaces (the nodes and triangles
+// as they are), each shell of a tow a volume of the built-in kernel bounded by its surfaces,
+// meshed by HXT.
 #include "towgeom/volume_mesh.hpp"
 
 
@@ -13,6 +14,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "towgeom/error.hpp"
 #include "volume/gmsh_library.hpp"
