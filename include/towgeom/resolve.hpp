@@ -5,9 +5,11 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "towgeom/cell.hpp"
 #include "towgeom/intersection_options.hpp"
 #include "towgeom/mesh_options.hpp"
 #include "towgeom/progress.hpp"
@@ -38,6 +40,9 @@ struct ResolveOptions {
     std::vector<std::string> primaryPatterns;
     /// Worker threads (intersection and meshing); 0: one per hardware thread.
     std::size_t threads = 0;
+    /// If set, every tow is clipped by this box (in the user's units) and TextileMesh::cell
+    /// holds the matrix's part of the box's faces (see Cell). Needs MeshOptions::caps.
+    std::optional<Cell> cell;
     /// Progress reports of every stage (intersecting tow pairs, meshing, connecting regions)
     /// and cancellation (checked per tow pair, per tow and between stages); may be null. Not
     /// owned: it must outlive the call. Also used for the intersection unless
@@ -130,7 +135,9 @@ struct SkippedLoop {
         BandsDoNotAlternate,
         /// The loop runs across a tow's end cap (IntersectionLoop::crossesCap()), which is
         /// resolved only when the tows are closed by their caps (MeshOptions::caps).
-        CrossesCap
+        CrossesCap,
+        /// The loop lies outside ResolveOptions::cell: the tows are clipped there.
+        OutsideCell
     };
     std::size_t loop = 0;              ///< index in ResolveResult::intersections.loops
     Reason reason = Reason::OpenCurve;  ///< why

@@ -5,10 +5,12 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "towgeom/cell.hpp"
 #include "towgeom/point.hpp"
 #include "towgeom/triangle_mesh.hpp"
 #include "towgeom/export.hpp"
@@ -43,6 +45,10 @@ struct TowMesh {
     /// (u,v) on each tow in that tow's list). A loop node on an end cap (a loop across the cap)
     /// has u beyond the tube's range, in the cap's chart: TowSurface::pointOnClosed().
     std::vector<std::pair<std::size_t, UV>> parameters;
+    /// Clipped to a cell (ResolveOptions::cell): the face whose plane cut the tow at its start
+    /// ([0]) and at its end ([1]); there the TowFace::Start or End triangles are the tow's cap
+    /// on that face, not its own end section. Empty where the end is the tow's own.
+    std::array<std::optional<CellFace>, 2> cutAt{};
 };
 
 /// Where two tows overlapped, the surface between them: the primary's (the higher-ranked tow's)
@@ -98,6 +104,8 @@ struct TOWGEOM_EXPORT TextileMesh {
     /// The loops the tows were meshed with (meshTows(): every closed loop meshed; after
     /// connectRegions(): those of the tow pairs resolved), in report order.
     std::vector<MeshedLoop> loops;
+    /// Clipped to a cell (ResolveOptions::cell): the box and the matrix's part of its faces.
+    std::optional<CellMesh> cell;
 
     /// Tow @p tow's mesh as a standalone TriangleMesh (only the nodes it uses, renumbered in
     /// the order the triangles first use them).

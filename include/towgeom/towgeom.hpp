@@ -7,6 +7,7 @@
 /// TowSurface::fit(); every failure is a towgeom::Error.
 #pragma once
 
+#include "towgeom/cell.hpp"
 #include "towgeom/collision.hpp"
 #include "towgeom/cross_section.hpp"
 #include "towgeom/curve3.hpp"

@@ -104,6 +104,7 @@ const char* skipCode(SkippedLoop::Reason r)
     case SkippedLoop::Reason::AroundTowWithoutCaps: return "around_tow_without_caps";
     case SkippedLoop::Reason::BandsDoNotAlternate: return "bands_do_not_alternate";
     case SkippedLoop::Reason::CrossesCap: return "crosses_cap";
+    case SkippedLoop::Reason::OutsideCell: return "outside_cell";
     }
     return "open_curve";
 }

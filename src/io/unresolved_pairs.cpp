@@ -67,6 +67,7 @@ std::vector<UnresolvedPairEntry> unresolvedPairs(const ResolveResult& result)
         if (s.loop >= result.intersections.loops.size())
             throw Error(ErrorCode::InvalidArgument, "skipped loop " + std::to_string(s.loop) + " is not in the result's report");
         const IntersectionLoop& l = result.intersections.loops[s.loop];
+        if (s.reason == SkippedLoop::Reason::OutsideCell) continue;  // clipped away, not unresolved
         if (s.reason == SkippedLoop::Reason::OpenCurve)
             addOnce(pairs, {l.towA(), l.towB(), "open_curve", "open intersection curve: " + l.openReason()});
         else if (s.reason == SkippedLoop::Reason::CrossesCap)

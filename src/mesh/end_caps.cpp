@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <queue>
 
 #include "mesh/constraint_keeping_mesher.hpp"
 #include "core/parallel.hpp"
@@ -21,38 +20,6 @@ namespace detail {
 using mesh2::CDT;
 using mesh2::K;
 
-namespace {
-
-/// Marks the faces inside the constraints as the domain: every face reachable from the
-/// infinite face without crossing a constraint is outside.
-void markInside(CDT& cdt)
-{
-    for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->set_in_domain(true);
-    std::queue<CDT::Face_handle> queue;
-    const CDT::Face_handle infinite = cdt.infinite_face();
-    infinite->set_in_domain(false);
-    queue.push(infinite);
-    // Every face around the infinite vertex is outside too (they are not separated from it).
-    CDT::Face_circulator fc = cdt.incident_faces(cdt.infinite_vertex()), done = fc;
-    do {
-        if (fc->is_in_domain()) {
-            fc->set_in_domain(false);
-            queue.push(fc);
-        }
-    } while (++fc != done);
-    while (!queue.empty()) {
-        const CDT::Face_handle f = queue.front();
-        queue.pop();
-        for (int k = 0; k < 3; ++k) {
-            const CDT::Face_handle n = f->neighbor(k);
-            if (!n->is_in_domain() || f->is_constrained(k)) continue;
-            n->set_in_domain(false);
-            queue.push(n);
-        }
-    }
-}
-
-}  // namespace
 
 CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>& loop, double h, double minAngle,
                 std::size_t firstNewNode, const std::string& where, const std::vector<CapConstraint>& paths)
@@ -110,7 +77,7 @@ CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>
         for (std::size_t k = 0; k + 1 < line.size(); ++k) cdt.insert_constraint(line[k], line[k + 1]);
         if (path.closed && line.size() > 2) cdt.insert_constraint(line.back(), line.front());
     }
-    markInside(cdt);
+    mesh2::markInside(cdt);
     const double a = std::clamp(minAngle, 1.0, 30.0) * 3.14159265358979323846 / 180.0;
     refineKeepingConstraints(cdt, CGAL::Delaunay_mesh_size_criteria_2<CDT>(std::sin(a) * std::sin(a), h), false);
 
@@ -132,7 +99,8 @@ CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>
 /// by the nearer of the tow's first and last sections). The caps' nodes are appended to @p nodes.
 void closeEnds(const std::vector<TowSurface>& tows, const std::vector<double>& towH, double minAngle, std::size_t threads,
                std::vector<ParametricMesh>& meshes, std::vector<std::vector<TowFace>>& face, std::vector<Point3>& nodes,
-               const std::vector<std::vector<CapConstraint>>& capPaths, std::vector<std::string>* failed)
+               const std::vector<std::vector<CapConstraint>>& capPaths, std::vector<std::string>* failed,
+               const std::vector<char>* cutNode)
 {
     constexpr std::size_t kLocal = std::size_t(1) << 60;  // marks a cap's own new nodes
     std::vector<std::vector<std::pair<CapMesh, TowFace>>> caps(tows.size());
@@ -143,17 +111,27 @@ void closeEnds(const std::vector<TowSurface>& tows, const std::vector<double>& t
             return (1.0 / static_cast<double>(points.size())) * c;
         };
         const Point3 first = centroid(tows[t].sections().front()), last = centroid(tows[t].sections().back());
-        const std::vector<std::vector<std::size_t>> ends = boundaryLoops(meshes[t].triangles);
-        if (ends.size() != 2) return;  // not a tube: reported by the check of the final mesh
-        std::array<Point3, 2> c;
-        for (std::size_t e = 0; e < 2; ++e) {
+        std::vector<std::vector<std::size_t>> ends = boundaryLoops(meshes[t].triangles);
+        if (ends.size() != 2) return;  // not a tube (or wholly outside a cell): reported by the check of the final mesh
+        // An end cut by a cell's face is closed with that face's mesh, not here.
+        if (cutNode)
+            ends.erase(std::remove_if(ends.begin(), ends.end(),
+                                      [&](const std::vector<std::size_t>& loop) {
+                                          return std::all_of(loop.begin(), loop.end(),
+                                                             [&](std::size_t n) { return n < cutNode->size() && (*cutNode)[n]; });
+                                      }),
+                       ends.end());
+        std::vector<Point3> c;
+        for (const std::vector<std::size_t>& end : ends) {
             std::vector<Point3> points;
-            for (std::size_t n : ends[e]) points.push_back(nodes[n]);
-            c[e] = centroid(points);
+            for (std::size_t n : end) points.push_back(nodes[n]);
+            c.push_back(centroid(points));
         }
-        // The two ends together: the pairing with the first and last sections that is nearer.
-        const bool firstIsStart = distance(c[0], first) + distance(c[1], last) <= distance(c[0], last) + distance(c[1], first);
-        for (std::size_t e = 0; e < 2; ++e) {
+        // The two ends together: the pairing with the first and last sections that is nearer; one
+        // end alone: the nearer section.
+        const bool firstIsStart = c.size() == 2 ? distance(c[0], first) + distance(c[1], last) <= distance(c[0], last) + distance(c[1], first)
+                                                : c.size() == 1 && distance(c[0], first) <= distance(c[0], last);
+        for (std::size_t e = 0; e < ends.size(); ++e) {
             const TowFace f = (e == 0) == firstIsStart ? TowFace::Start : TowFace::End;
             std::vector<CapConstraint> paths;
             if (t < capPaths.size())

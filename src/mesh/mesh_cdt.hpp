@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <queue>
 
 #include "mesh/surface_metric.hpp"
 #include "towgeom/export.hpp"
@@ -111,6 +112,36 @@ private:
     const SurfaceMetric* metric_;
     LocalSize localH_;
 };
+
+
+/// Marks the faces inside the constraints as the domain: every face reachable from the
+/// infinite face without crossing a constraint is outside.
+inline void markInside(CDT& cdt)
+{
+    for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->set_in_domain(true);
+    std::queue<CDT::Face_handle> queue;
+    const CDT::Face_handle infinite = cdt.infinite_face();
+    infinite->set_in_domain(false);
+    queue.push(infinite);
+    // Every face around the infinite vertex is outside too (they are not separated from it).
+    CDT::Face_circulator fc = cdt.incident_faces(cdt.infinite_vertex()), done = fc;
+    do {
+        if (fc->is_in_domain()) {
+            fc->set_in_domain(false);
+            queue.push(fc);
+        }
+    } while (++fc != done);
+    while (!queue.empty()) {
+        const CDT::Face_handle f = queue.front();
+        queue.pop();
+        for (int k = 0; k < 3; ++k) {
+            const CDT::Face_handle n = f->neighbor(k);
+            if (!n->is_in_domain() || f->is_constrained(k)) continue;
+            n->set_in_domain(false);
+            queue.push(n);
+        }
+    }
+}
 
 }  // namespace detail::mesh2
 TOWGEOM_END_NAMESPACE

@@ -26,6 +26,15 @@ void keepUsedNodes(TextileMesh& mesh)
                 }
                 n = renumber[n];
             }
+    if (mesh.cell)  // the box's nodes the tows do not use (its edges, the matrix's faces)
+        for (std::array<std::size_t, 3>& tri : mesh.cell->triangles)
+            for (std::size_t& n : tri) {
+                if (renumber[n] == SIZE_MAX) {
+                    renumber[n] = kept.size();
+                    kept.push_back(mesh.nodes[n]);
+                }
+                n = renumber[n];
+            }
     const auto used = [&](std::size_t n) { return renumber[n] != SIZE_MAX; };
     const auto renumbered = [&](std::vector<std::size_t>& list) {
         list.erase(std::remove_if(list.begin(), list.end(), [&](std::size_t n) { return !used(n); }), list.end());
@@ -42,6 +51,18 @@ void keepUsedNodes(TextileMesh& mesh)
         renumbered(g.nodes);
         renumbered(g.loopNodes);
         std::sort(g.nodes.begin(), g.nodes.end());
+    }
+    if (mesh.cell) {
+        for (auto& list : mesh.cell->faceNodes) {
+            renumbered(list);
+            std::sort(list.begin(), list.end());
+        }
+        for (auto& pairs : mesh.cell->periodicPairs) {
+            pairs.erase(std::remove_if(pairs.begin(), pairs.end(), [&](const auto& p) { return !used(p.first) || !used(p.second); }),
+                        pairs.end());
+            for (auto& p : pairs) p = {renumber[p.first], renumber[p.second]};
+            std::sort(pairs.begin(), pairs.end());
+        }
     }
     auto& triple = mesh.triplePoints;
     triple.erase(std::remove_if(triple.begin(), triple.end(), [&](const TriplePoint& p) { return !used(p.node); }), triple.end());

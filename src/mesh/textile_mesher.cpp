@@ -7,10 +7,13 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <string>
 #include <utility>
 
+#include "cell/cell_faces.hpp"
+#include "cell/tow_cuts.hpp"
 #include "core/parallel.hpp"
 #include "intersect/intersection_loop_data.hpp"
 #include "core/progress_report.hpp"
@@ -44,6 +47,48 @@ UV inPeriod(UV p, const ParameterRange& r)
     if (p.v < r.vMin) p.v += r.vPeriod();
     if (p.v >= r.vMax) p.v = r.vMin;
     return p;
+}
+
+/// Where an intersection loop lies with respect to a cell.
+enum class CellSide { Inside, Outside, Across };
+
+/// Inside: every point of @p loop at least @p margin inside @p cell; Outside: every point beyond
+/// one of its faces; else Across.
+CellSide cellSide(const IntersectionLoop& loop, const Cell& cell, double margin)
+{
+    bool allIn = true, allOut = true;
+    for (const LoopPoint& p : loop.points()) {
+        const Point3& q = p.point;
+        const bool in = q.x >= cell.min.x + margin && q.x <= cell.max.x - margin && q.y >= cell.min.y + margin &&
+                        q.y <= cell.max.y - margin && q.z >= cell.min.z + margin && q.z <= cell.max.z - margin;
+        const bool out = q.x < cell.min.x || q.x > cell.max.x || q.y < cell.min.y || q.y > cell.max.y || q.z < cell.min.z || q.z > cell.max.z;
+        allIn = allIn && in;
+        allOut = allOut && out;
+    }
+    return allIn ? CellSide::Inside : allOut ? CellSide::Outside : CellSide::Across;
+}
+
+/// Drops the triangles of tow @p t's mesh that lie beyond the cell's cuts (by their (u,v) centroids).
+void keepInCell(ParametricMesh& mesh, const CellCuts& cuts, std::size_t t)
+{
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < mesh.triangles.size(); ++k)
+        if (cuts.keeps(t, mesh.centroids[k])) {
+            mesh.triangles[kept] = mesh.triangles[k];
+            mesh.centroids[kept] = mesh.centroids[k];
+            ++kept;
+        }
+    mesh.triangles.resize(kept);
+    mesh.centroids.resize(kept);
+}
+
+/// The unit mean of @p directions (zero if they cancel).
+Vector3 meanDirection(const std::vector<Vector3>& directions)
+{
+    Vector3 sum;
+    for (const Vector3& d : directions) sum = sum + d;
+    const double n = norm(sum);
+    return n > 0.0 ? (1.0 / n) * sum : sum;
 }
 
 /// The meshes of tow @p tow could not be made with the loops of @p pairs on it.
@@ -152,7 +197,16 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
     for (std::size_t i = 0; i < loops.size(); ++i) {
         const IntersectionLoop& l = loops[i];
         using Why = SkippedLoop::Reason;
-        if (!l.closed())
+        const CellSide inCell = options.cell ? cellSide(l, *options.cell, 0.25 * std::min(towH[l.towA()], towH[l.towB()])) : CellSide::Inside;
+        if (inCell == CellSide::Outside)
+            result.skippedLoops.push_back({i, Why::OutsideCell, "the loop of tows '" + l.surfaceA().name() + "' and '" +
+                                                                    l.surfaceB().name() + "' lies outside the cell"});
+        else if (inCell == CellSide::Across && l.closed())
+            throw Error(ErrorCode::InvalidArgument, "an intersection loop of tows '" + l.surfaceA().name() + "' and '" +
+                                                        l.surfaceB().name() +
+                                                        "' crosses (or comes within a quarter of the mesh size of) a face of the "
+                                                        "cell: the cell's faces must pass where the tows do not overlap");
+        else if (!l.closed())
             result.skippedLoops.push_back({i, Why::OpenCurve, "open curve: " + l.openReason()});
         else if ((l.crossesCap(LoopSide::A) || l.crossesCap(LoopSide::B)) && !options.mesh.caps)
             result.skippedLoops.push_back({i, Why::CrossesCap, detail::crossesCapMessage(l)});
@@ -198,6 +252,9 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
         }
     const TripleJoin triples = joinAtTriplePoints(tows, loops, shared, nodes);
     dropMeetingLoops(tows, loops, shared, triples.crossing, result.unresolved);
+    // The cell's cuts of the tows: constraints of their meshes, the parts beyond them dropped.
+    std::optional<CellCuts> cuts;
+    if (options.cell) cuts = cutTows(tows, *options.cell, towH, nodes);
     constexpr std::size_t kLocal = std::size_t(1) << 60;  // marks a tow's own new nodes
     // Round 1 meshes every tow. Refinement never splits a constraint; where a triangle needs a
     // split of a loop chord or seam edge to meet the bounds, the split becomes an exact loop node
@@ -221,6 +278,9 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
                     c.insert(c.end(), pieces.begin(), pieces.end());
                 }
         }
+        if (cuts)
+            for (int end = 0; end < 2; ++end)
+                if (cuts->cuts[t][static_cast<std::size_t>(end)]) c.push_back(cuts->constraint(t, end, tows[t].parameterRange()));
         return c;
     };
     std::vector<std::vector<double>> seamU(tows.size());
@@ -297,6 +357,7 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
         throwIfCancelled(options.monitor);
         meshes[t] = meshers[t]->result(kLocal);
         meshers[t].reset();
+        if (cuts) keepInCell(meshes[t], *cuts, t);
         ownNodes[t].reserve(meshes[t].newNodes.size());
         for (const UV& p : meshes[t].newNodes) ownNodes[t].push_back(tows[t].point(p.u, p.v));
         fibre[t] = fibreDirections(tows[t], meshes[t].centroids);
@@ -311,6 +372,11 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
             uvOn[l.towB()].emplace_back(s.nodes[k], inPeriod(s.points[k].onB, tows[l.towB()].parameterRange()));
         }
     }
+    if (cuts)
+        for (std::size_t t = 0; t < tows.size(); ++t)
+            for (const auto& cut : cuts->cuts[t])
+                if (cut)
+                    for (std::size_t k = 0; k < cut->nodes.size(); ++k) uvOn[t].emplace_back(cut->nodes[k], cut->uv[k]);
     for (std::size_t t = 0; t < tows.size(); ++t) {
         const std::size_t base = nodes.size();
         for (std::size_t k = 0; k < meshes[t].newNodes.size(); ++k)
@@ -333,7 +399,8 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
                 for (CapConstraint& c : capConstraintsOn(s, l, side)) capPaths[side == LoopSide::A ? l.towA() : l.towB()].push_back(std::move(c));
         }
         std::vector<std::string> capFailed(tows.size());
-        closeEnds(tows, towH, options.mesh.minAngle, threads, meshes, faceOf, nodes, capPaths, &capFailed);
+        closeEnds(tows, towH, options.mesh.minAngle, threads, meshes, faceOf, nodes, capPaths, &capFailed,
+                  cuts ? &cuts->cutNode : nullptr);
         // A cap that could not be meshed with loop pieces on it costs the pairs of those loops.
         for (std::size_t t = 0; t < tows.size(); ++t) {
             if (capFailed[t].empty()) continue;
@@ -350,6 +417,22 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
         failures.throwAll();
     }
     for (std::size_t t = 0; t < tows.size(); ++t) appendCapDirections(tows[t], faceOf[t], fibre[t]);
+    // The cell's faces meshed around the cuts: each tow's caps there, the rest the matrix's.
+    std::optional<CellFaces> cellFaces;
+    if (cuts) {
+        cellFaces = meshCellFaces(tows, *options.cell, *cuts, *std::min_element(towH.begin(), towH.end()), options.mesh.minAngle, nodes);
+        for (std::size_t t = 0; t < tows.size(); ++t)
+            for (int end = 0; end < 2; ++end) {
+                const auto& cut = cuts->cuts[t][static_cast<std::size_t>(end)];
+                if (!cut) continue;
+                const Vector3 along = meanDirection(fibreDirections(tows[t], cut->uv));
+                for (const Triangle& tri : cellFaces->caps[t][static_cast<std::size_t>(end)]) {
+                    meshes[t].triangles.push_back(tri);
+                    faceOf[t].push_back(end == 0 ? TowFace::Start : TowFace::End);
+                    fibre[t].push_back(along);
+                }
+            }
+    }
 
     // The stage's result: every tow's own closed mesh over the global nodes, each of its nodes on
     // its surface with its (u,v) there, and the loops it was made with.
@@ -369,6 +452,12 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
         m.parameters = std::move(on);
     });
     for (const SharedLoop& s : shared) out.loops.push_back({s.loop, s.nodes});
+    if (cellFaces) {
+        out.cell = std::move(cellFaces->mesh);
+        for (std::size_t t = 0; t < tows.size(); ++t)
+            for (int end = 0; end < 2; ++end)
+                if (const auto& cut = cuts->cuts[t][static_cast<std::size_t>(end)]) out.tows[t].cutAt[static_cast<std::size_t>(end)] = cut->face;
+    }
     out.triplePoints = triples.points;
     keepResolvedTriplePoints(out, loops);  // not those of a pair left out since (LoopsMeet)
     keepUsedNodes(out);

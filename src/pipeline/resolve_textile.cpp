@@ -36,6 +36,10 @@ void checkOptions(const ResolveOptions& o)
         throw Error(ErrorCode::InvalidArgument, "minimum angle must lie in (0, 30] degrees");
     if (!nonNegative(m.loopSpacing)) throw Error(ErrorCode::InvalidArgument, "loop spacing must be >= 0 and finite");
     if (m.maxTriangles == 0) throw Error(ErrorCode::InvalidArgument, "the triangle limit must be at least 1");
+    if (o.cell) {
+        o.cell->validate();
+        if (!m.caps) throw Error(ErrorCode::InvalidArgument, "a cell needs closed tows: the end caps (MeshOptions::caps) cannot be off");
+    }
 }
 
 /// Triangles the mesher makes per equilateral triangle of side h in the same area: it keeps
@@ -117,10 +121,22 @@ std::vector<double> meshSizes(const std::vector<TowSurface>& tows, const MeshOpt
 
 /// @p result, computed on tows moved into @p frame, in the user's units; @p report (the user's)
 /// replaces the loops in the frame.
-void resultToUser(ResolveResult& result, const IntersectionReport& report, const detail::Frame& frame)
+void resultToUser(ResolveResult& result, const IntersectionReport& report, const detail::Frame& frame, const ResolveOptions& options)
 {
     result.intersections = report;
     for (Point3& p : result.mesh.nodes) p = frame.toUser(p);
+    if (result.mesh.cell && options.cell) {
+        // The user's box, and the nodes on its faces exactly on their planes.
+        CellMesh& cell = *result.mesh.cell;
+        cell.box = *options.cell;
+        for (std::size_t f = 0; f < 6; ++f) {
+            const double at = cell.box.plane(static_cast<CellFace>(f));
+            for (std::size_t n : cell.faceNodes[f]) {
+                Point3& p = result.mesh.nodes[n];
+                (f < 2 ? p.x : f < 4 ? p.y : p.z) = at;
+            }
+        }
+    }
     const double s = frame.scale;
     for (TowResolution& t : result.tows) {
         t.volumeBefore /= s * s * s;
@@ -164,6 +180,10 @@ ResolveResult meshWithPlan(const std::vector<TowSurface>& tows, const Intersecti
     for (double x : plan.towH) towHInFrame.push_back(frame.lengthToFrame(x));
     o.mesh.loopSpacing = frame.lengthToFrame(options.mesh.loopSpacing);
     o.intersection = detail::optionsInFrame(options.intersection, frame);
+    if (options.cell) {
+        o.cell->min = frame.toFrame(options.cell->min);
+        o.cell->max = frame.toFrame(options.cell->max);
+    }
     const std::vector<TowSurface> moved = detail::towsInFrame(tows, frame);
     const IntersectionReport reportInFrame = detail::reportToFrame(report, moved, frame);
     // The loops that will be meshed refine the mesh along them: checked with them now.
@@ -177,7 +197,7 @@ ResolveResult meshWithPlan(const std::vector<TowSurface>& tows, const Intersecti
                                       (*hi > *lo * (1.0 + 1e-6) ? " to " + std::to_string(*hi) : std::string()));
     }
     ResolveResult result = detail::meshTowsInFrame(moved, towHInFrame, o, reportInFrame);
-    resultToUser(result, report, frame);
+    resultToUser(result, report, frame, options);
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wdeprecated-declarations"  // ResolveResult::skipped, until 0.3
     for (const SkippedLoop& s : result.skippedLoops) result.skipped.emplace_back(s.loop, s.message);

@@ -552,6 +552,7 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
         const TowMesh& mesh = in.tows[t];
         TowMesh& m = out.mesh.tows[t];
         m.name = mesh.name;
+        m.cutAt = mesh.cutAt;
         placeOf[t].assign(mesh.triangles.size(), SIZE_MAX);
         for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
             if (removed[t][k]) continue;
@@ -600,12 +601,13 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
         if (t < meshed.tows.size()) r.meshSize = meshed.tows[t].meshSize;
     });
     for (std::size_t t = 0; t < tows.size(); ++t)
-        if (badEdges[t] != 0 || out.tows[t].boundaryLoops != (uv.capped[t] ? 0u : 2u))
+        if (badEdges[t] != 0 || out.tows[t].boundaryLoops != (uv.capped[t] || meshed.mesh.tows[t].triangles.empty() ? 0u : 2u))
             failures.push_back({t, detail::notClosedMessage(uv.capped[t], badEdges[t], out.tows[t].boundaryLoops)});
     if (!failures.empty()) return failures;
     // The loops resolved, and the triple points where three of them cross.
     for (std::size_t k : shared) out.mesh.loops.push_back(in.loops[k]);
     out.mesh.triplePoints = in.triplePoints;
+    out.mesh.cell = in.cell;
     detail::keepResolvedTriplePoints(out.mesh, loops);
     out.mesh.nodes = N;
     return failures;

@@ -1,0 +1,82 @@
+/// @file cell.hpp
+/// @brief Cell: the box a textile is clipped to for a finite-element model of its unit cell
+/// (ResolveOptions::cell), and CellMesh, what the clipped mesh holds on the box's faces.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "towgeom/point.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+
+/// A face of the cell's box.
+enum class CellFace : unsigned char {
+    XMin,  ///< x = min.x
+    XMax,  ///< x = max.x
+    YMin,  ///< y = min.y
+    YMax,  ///< y = max.y
+    ZMin,  ///< z = min.z
+    ZMax   ///< z = max.z
+};
+
+/// "xmin", "xmax", "ymin", "ymax", "zmin" or "zmax".
+TOWGEOM_EXPORT const char* cellFaceName(CellFace face) noexcept;
+
+/// An axis-aligned box in the user's units. With ResolveOptions::cell set, every tow is clipped
+/// by it: where a face's plane cuts a tow, the cut (the plane's intersection with the tow's
+/// surface, exact points at the tow's mesh size) is a constraint of the tow's mesh, the part
+/// outside is dropped and the cut is closed by a planar cap on the face; a tow wholly outside
+/// the box keeps no triangle. The box's faces are meshed around the caps (nodes shared with
+/// them): with the tows' surfaces, the closed surface of the matrix (TextileMesh::cell).
+///
+/// What is clipped: a tow that crosses a face's plane once along its length, all around (one cut
+/// around the tube), inside the face's rectangle. Refused (towgeom::Error, InvalidArgument,
+/// naming the tow or the tow pair and the face): a tow that crosses a plane more than once, runs
+/// along it or crosses an edge of the box; an intersection loop that crosses a face (two tows
+/// overlap where the face cuts them). Choose the cell's faces between crossings (for a woven
+/// unit cell: halfway between neighbouring yarns).
+struct TOWGEOM_EXPORT Cell {
+    Point3 min;  ///< lower corner
+    Point3 max;  ///< upper corner
+    /// The textile repeats with the box's size along each axis along which tows cross the box:
+    /// the cuts and the face meshes on max.x are those on min.x moved by max.x - min.x (nodes
+    /// on the two faces pair up exactly), likewise y and z. A tow cut by the min face must be
+    /// cut by the max face too, where its cut is the min face's moved (within periodTolerance).
+    bool periodic = false;
+    /// How far (relative to the tow's size) a node moved from the min face onto the max face may
+    /// lie from the tow's surface there: a larger gap means the textile does not repeat with the
+    /// box (refused).
+    double periodTolerance = 1e-3;
+
+    /// Throws towgeom::Error (InvalidArgument) unless min < max on every axis, all finite, and
+    /// periodTolerance > 0 and finite.
+    void validate() const;
+    /// The coordinate of @p face's plane.
+    double plane(CellFace face) const;
+    /// The box's volume.
+    double volume() const { return (max.x - min.x) * (max.y - min.y) * (max.z - min.z); }
+};
+
+/// What clipping to a Cell adds to a TextileMesh: the box and the matrix's part of its faces.
+struct TOWGEOM_EXPORT CellMesh {
+    Cell box;  ///< the cell, in the user's units
+    /// The box's faces minus the tows' caps on them, over TextileMesh::nodes, counter-clockwise
+    /// seen from outside the box. With every tow triangle that lies in no region and on no
+    /// cell face (TowMesh::cutAt), reversed, they make the closed surface of the matrix.
+    std::vector<std::array<std::size_t, 3>> triangles;
+    std::vector<CellFace> face;  ///< the face of each triangle
+    /// Per face (index by CellFace), every node on it (matrix and tow caps), sorted; exactly on
+    /// the face's plane.
+    std::array<std::vector<std::size_t>, 6> faceNodes;
+    /// With Cell::periodic, per axis (0 x, 1 y, 2 z): every node of the min face with its partner
+    /// on the max face, the same point moved by the box's size along the axis (exactly, in
+    /// floating point), ordered by the min face's node.
+    std::array<std::vector<std::pair<std::size_t, std::size_t>>, 3> periodicPairs;
+};
+
+TOWGEOM_END_NAMESPACE

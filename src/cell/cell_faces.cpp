@@ -1,0 +1,297 @@
+#include "cell/cell_faces.hpp"
+
+#include <CGAL/Delaunay_mesh_size_criteria_2.h>
+#include <CGAL/Polygon_2_algorithms.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <utility>
+
+#include "mesh/constraint_keeping_mesher.hpp"
+#include "mesh/mesh_cdt.hpp"
+#include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
+
+using mesh2::CDT;
+using mesh2::K;
+using Triangle = std::array<std::size_t, 3>;
+
+namespace {
+
+double coord(const Point3& p, int a) { return a == 0 ? p.x : a == 1 ? p.y : p.z; }
+double& coord(Point3& p, int a) { return a == 0 ? p.x : a == 1 ? p.y : p.z; }
+/// The face's two in-plane axes, in increasing order.
+std::array<int, 2> inPlane(int a) { return a == 0 ? std::array<int, 2>{1, 2} : a == 1 ? std::array<int, 2>{0, 2} : std::array<int, 2>{0, 1}; }
+
+/// The nodes of the box's corners and edges, made once and shared by the faces that meet there.
+class BoxEdges {
+public:
+    BoxEdges(const Cell& cell, double h, std::vector<Point3>& nodes) : cell_(cell), h_(h), nodes_(nodes) {}
+    /// The nodes along the edge parallel to axis @p e at the sides @p side of the other two axes
+    /// (side[e] ignored), in increasing coordinate e, both corners included.
+    const std::vector<std::size_t>& edge(int e, std::array<int, 3> side)
+    {
+        side[static_cast<std::size_t>(e)] = -1;
+        const std::array<int, 4> key{e, side[0], side[1], side[2]};
+        auto it = edges_.find(key);
+        if (it != edges_.end()) return it->second;
+        const double lo = coord(cell_.min, e), hi = coord(cell_.max, e);
+        const std::size_t n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil((hi - lo) / h_)));
+        std::vector<std::size_t> list;
+        for (std::size_t i = 0; i <= n; ++i) {
+            std::array<int, 3> at = side;
+            if (i == 0 || i == n) {
+                at[static_cast<std::size_t>(e)] = i == 0 ? 0 : 1;
+                list.push_back(corner(at));
+                continue;
+            }
+            Point3 p = pointAt(at);
+            coord(p, e) = lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(n);
+            list.push_back(nodes_.size());
+            nodes_.push_back(p);
+        }
+        return edges_.emplace(key, std::move(list)).first->second;
+    }
+
+private:
+    std::size_t corner(const std::array<int, 3>& side)
+    {
+        const int key = side[0] + 2 * side[1] + 4 * side[2];
+        auto it = corners_.find(key);
+        if (it != corners_.end()) return it->second;
+        nodes_.push_back(pointAt(side));
+        return corners_.emplace(key, nodes_.size() - 1).first->second;
+    }
+    Point3 pointAt(const std::array<int, 3>& side) const
+    {
+        Point3 p;
+        for (int a = 0; a < 3; ++a) coord(p, a) = side[static_cast<std::size_t>(a)] == 1 ? coord(cell_.max, a) : coord(cell_.min, a);
+        return p;
+    }
+
+    const Cell& cell_;
+    double h_;
+    std::vector<Point3>& nodes_;
+    std::map<std::array<int, 4>, std::vector<std::size_t>> edges_;
+    std::map<int, std::size_t> corners_;
+};
+
+/// A cut on a face: the tow, the end it closes, its nodes around.
+struct FaceCut {
+    std::size_t tow = 0;
+    int end = 0;
+    const std::vector<std::size_t>* nodes = nullptr;
+};
+
+/// One face meshed: triangles counter-clockwise in the face's (b, c) plane, each labelled with
+/// the index of the cut it lies in (-1: the matrix).
+struct FaceMesh {
+    std::vector<Triangle> triangles;
+    std::vector<long> cut;
+    std::vector<std::size_t> boundary;  ///< the rectangle's nodes, counter-clockwise from (min, min)
+};
+
+/// The rectangle of face (@p a, @p s) counter-clockwise in its (b, c) plane.
+std::vector<std::size_t> rectangle(BoxEdges& edges, int a, int s)
+{
+    const auto [b, c] = inPlane(a);
+    std::array<int, 3> side{};
+    side[static_cast<std::size_t>(a)] = s;
+    std::vector<std::size_t> out;
+    const auto append = [&](std::vector<std::size_t> part, bool backwards) {
+        if (backwards) std::reverse(part.begin(), part.end());
+        out.insert(out.end(), part.begin(), part.end() - 1);  // the last is the next part's first
+    };
+    side[static_cast<std::size_t>(c)] = 0;
+    append(edges.edge(b, side), false);
+    side[static_cast<std::size_t>(b)] = 1;
+    append(edges.edge(c, side), false);
+    side[static_cast<std::size_t>(c)] = 1;
+    append(edges.edge(b, side), true);
+    side[static_cast<std::size_t>(b)] = 0;
+    append(edges.edge(c, side), true);
+    return out;
+}
+
+/// Meshes the face of axis @p a at coordinate @p at: the rectangle @p boundary with @p cuts inside.
+FaceMesh meshFace(const std::vector<TowSurface>& tows, CellFace face, int a, double at, std::vector<std::size_t> boundary,
+                  const std::vector<FaceCut>& cuts, double h, double minAngle, std::vector<Point3>& nodes)
+{
+    const auto [b, c] = inPlane(a);
+    const auto flat = [&, b = b, c = c](std::size_t n) { return K::Point_2(coord(nodes[n], b), coord(nodes[n], c)); };
+    std::vector<std::vector<K::Point_2>> polygons;
+    for (const FaceCut& cut : cuts) {
+        polygons.emplace_back();
+        for (std::size_t n : *cut.nodes) polygons.back().push_back(flat(n));
+    }
+    const std::string onFace = std::string(" on the cell's face ") + cellFaceName(face);
+    for (std::size_t i = 0; i < cuts.size(); ++i) {
+        if (!CGAL::is_simple_2(polygons[i].begin(), polygons[i].end(), K()))
+            throw Error(ErrorCode::InvalidArgument, "tow '" + tows[cuts[i].tow].name() + "': its cut" + onFace +
+                                                        " is no simple polygon at its mesh size: use a smaller mesh size");
+        for (std::size_t j = 0; j < i; ++j) {
+            bool meet = CGAL::bounded_side_2(polygons[j].begin(), polygons[j].end(), polygons[i][0], K()) != CGAL::ON_UNBOUNDED_SIDE ||
+                        CGAL::bounded_side_2(polygons[i].begin(), polygons[i].end(), polygons[j][0], K()) != CGAL::ON_UNBOUNDED_SIDE;
+            for (std::size_t p = 0; p < polygons[i].size() && !meet; ++p)
+                for (std::size_t q = 0; q < polygons[j].size() && !meet; ++q)
+                    meet = CGAL::do_intersect(K::Segment_2(polygons[i][p], polygons[i][(p + 1) % polygons[i].size()]),
+                                              K::Segment_2(polygons[j][q], polygons[j][(q + 1) % polygons[j].size()]));
+            if (meet)
+                throw Error(ErrorCode::InvalidArgument,
+                            "tows '" + tows[cuts[j].tow].name() + "' and '" + tows[cuts[i].tow].name() + "' overlap" + onFace +
+                                " (their cuts meet there): the cell's faces must pass where the tows do not touch");
+        }
+    }
+    CDT cdt;
+    const auto insertLoop = [&](const std::vector<std::size_t>& loop) {
+        std::vector<CDT::Vertex_handle> vs;
+        for (std::size_t n : loop) {
+            vs.push_back(cdt.insert(flat(n)));
+            vs.back()->info().node = static_cast<long>(n);
+        }
+        for (std::size_t k = 0; k < vs.size(); ++k) cdt.insert_constraint(vs[k], vs[(k + 1) % vs.size()]);
+    };
+    insertLoop(boundary);
+    std::size_t expected = boundary.size();
+    for (const FaceCut& cut : cuts) {
+        insertLoop(*cut.nodes);
+        expected += cut.nodes->size();
+    }
+    if (cdt.number_of_vertices() != expected)
+        throw Error(ErrorCode::InvalidArgument, std::string("two nodes coincide") + onFace + ": a tow's cut touches the box's edge");
+    mesh2::markInside(cdt);
+    const double angle = std::clamp(minAngle, 1.0, 30.0) * 3.14159265358979323846 / 180.0;
+    refineKeepingConstraints(cdt, CGAL::Delaunay_mesh_size_criteria_2<CDT>(std::sin(angle) * std::sin(angle), h), false);
+    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+        if (v->info().node >= 0) continue;
+        Point3 p;
+        coord(p, a) = at;
+        coord(p, b) = v->point().x();
+        coord(p, c) = v->point().y();
+        v->info().node = static_cast<long>(nodes.size());
+        nodes.push_back(p);
+    }
+    // Each part between constraints labelled once: inside which cut, or none.
+    std::map<CDT::Face_handle, long> label;
+    FaceMesh out;
+    out.boundary = std::move(boundary);
+    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+        if (!f->is_in_domain() || label.count(f)) continue;
+        const K::Point_2 centre = CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+        long in = -1;
+        for (std::size_t i = 0; i < polygons.size() && in < 0; ++i)
+            if (CGAL::bounded_side_2(polygons[i].begin(), polygons[i].end(), centre, K()) == CGAL::ON_BOUNDED_SIDE) in = static_cast<long>(i);
+        std::vector<CDT::Face_handle> stack{f};
+        label[f] = in;
+        while (!stack.empty()) {
+            const CDT::Face_handle g = stack.back();
+            stack.pop_back();
+            for (int k = 0; k < 3; ++k) {
+                const CDT::Face_handle n = g->neighbor(k);
+                if (g->is_constrained(k) || !n->is_in_domain() || cdt.is_infinite(n) || label.count(n)) continue;
+                label[n] = in;
+                stack.push_back(n);
+            }
+        }
+    }
+    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+        if (!f->is_in_domain()) continue;
+        const long in = label.at(f);
+        out.triangles.push_back({static_cast<std::size_t>(f->vertex(0)->info().node), static_cast<std::size_t>(f->vertex(1)->info().node),
+                                 static_cast<std::size_t>(f->vertex(2)->info().node)});
+        out.cut.push_back(in);
+    }
+    return out;
+}
+
+}  // namespace
+
+CellFaces meshCellFaces(const std::vector<TowSurface>& tows, const Cell& cell, const CellCuts& cuts, double h, double minAngle,
+                        std::vector<Point3>& nodes)
+{
+    CellFaces out;
+    out.caps.resize(tows.size());
+    out.mesh.box = cell;
+    BoxEdges edges(cell, h, nodes);
+    const auto cutsOn = [&](CellFace face) {
+        std::vector<FaceCut> list;
+        for (std::size_t t = 0; t < tows.size(); ++t)
+            for (int end = 0; end < 2; ++end) {
+                const auto& cut = cuts.cuts[t][static_cast<std::size_t>(end)];
+                if (cut && cut->face == face) list.push_back({t, end, &cut->nodes});
+            }
+        return list;
+    };
+    const auto add = [&](CellFace face, const FaceMesh& m, const std::vector<FaceCut>& on, bool ccwOutward) {
+        std::vector<std::size_t>& faceNodes = out.mesh.faceNodes[static_cast<std::size_t>(face)];
+        for (std::size_t k = 0; k < m.triangles.size(); ++k) {
+            Triangle tri = m.triangles[k];
+            if (!ccwOutward) std::swap(tri[1], tri[2]);
+            faceNodes.insert(faceNodes.end(), tri.begin(), tri.end());
+            if (m.cut[k] < 0) {
+                out.mesh.triangles.push_back(tri);
+                out.mesh.face.push_back(face);
+            } else {
+                const FaceCut& cut = on[static_cast<std::size_t>(m.cut[k])];
+                out.caps[cut.tow][static_cast<std::size_t>(cut.end)].push_back(tri);
+            }
+        }
+        std::sort(faceNodes.begin(), faceNodes.end());
+        faceNodes.erase(std::unique(faceNodes.begin(), faceNodes.end()), faceNodes.end());
+    };
+    for (int a = 0; a < 3; ++a) {
+        // Counter-clockwise in (b, c) is along +a for x and z, along -a for y.
+        const bool ccwAlongA = a != 1;
+        const CellFace lo = static_cast<CellFace>(2 * a), hi = static_cast<CellFace>(2 * a + 1);
+        const std::vector<FaceCut> onLo = cutsOn(lo), onHi = cutsOn(hi);
+        const FaceMesh mLo = meshFace(tows, lo, a, coord(cell.min, a), rectangle(edges, a, 0), onLo, h, minAngle, nodes);
+        add(lo, mLo, onLo, !ccwAlongA);
+        if (!cell.periodic) {
+            add(hi, meshFace(tows, hi, a, coord(cell.max, a), rectangle(edges, a, 1), onHi, h, minAngle, nodes), onHi, ccwAlongA);
+            continue;
+        }
+        // The min face moved onto the max face: its rectangle, its cuts (the same tow's, same
+        // stations) and its own nodes moved.
+        FaceMesh mHi;
+        mHi.boundary = rectangle(edges, a, 1);
+        std::map<std::size_t, std::size_t> partner;
+        for (std::size_t k = 0; k < mLo.boundary.size(); ++k) partner[mLo.boundary[k]] = mHi.boundary[k];
+        std::vector<long> cutOf(onLo.size(), -1);
+        for (std::size_t i = 0; i < onLo.size(); ++i)
+            for (std::size_t j = 0; j < onHi.size(); ++j)
+                if (onHi[j].tow == onLo[i].tow && onHi[j].nodes->size() == onLo[i].nodes->size()) {
+                    cutOf[i] = static_cast<long>(j);
+                    for (std::size_t k = 0; k < onLo[i].nodes->size(); ++k) partner[(*onLo[i].nodes)[k]] = (*onHi[j].nodes)[k];
+                }
+        for (std::size_t i = 0; i < onLo.size(); ++i)
+            if (cutOf[i] < 0)
+                throw Error(ErrorCode::Internal, "tow '" + tows[onLo[i].tow].name() + "': its periodic cut has no partner");
+        for (std::size_t k = 0; k < mLo.triangles.size(); ++k) {
+            Triangle tri = mLo.triangles[k];
+            for (std::size_t& n : tri) {
+                auto it = partner.find(n);
+                if (it == partner.end()) {
+                    Point3 p = nodes[n];
+                    coord(p, a) = coord(cell.max, a);
+                    nodes.push_back(p);
+                    it = partner.emplace(n, nodes.size() - 1).first;
+                }
+                n = it->second;
+            }
+            mHi.triangles.push_back(tri);
+            mHi.cut.push_back(mLo.cut[k] < 0 ? -1 : cutOf[static_cast<std::size_t>(mLo.cut[k])]);
+        }
+        add(hi, mHi, onHi, ccwAlongA);
+        auto& pairs = out.mesh.periodicPairs[static_cast<std::size_t>(a)];
+        pairs.assign(partner.begin(), partner.end());
+    }
+    return out;
+}
+
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

@@ -1,0 +1,36 @@
+// The faces of a cell meshed around the tows' cuts: each face a rectangle (its edges' nodes
+// shared with the neighbouring faces) with the cut polygons on it as constraints, triangulated
+// and refined by CGAL's constrained Delaunay mesher without splitting a constraint; the triangles
+// inside a cut are that tow's cap, the others the matrix's. With a periodic cell the max faces
+// are the min faces' meshes moved by the box.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "cell/tow_cuts.hpp"
+#include "towgeom/cell.hpp"
+#include "towgeom/tow_surface.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
+
+/// The box's faces as meshed.
+struct CellFaces {
+    /// Per tow and end (0 start, 1 end), the cap on the face that cut it: triangles over global
+    /// nodes, outward from the tow (= from the box).
+    std::vector<std::array<std::vector<std::array<std::size_t, 3>>, 2>> caps;
+    /// The box (@p cell as given), the matrix's triangles, every face's nodes, periodic pairs.
+    CellMesh mesh;
+};
+
+/// Meshes the six faces of @p cell around the cuts @p cuts of @p tows at edge length @p h and
+/// smallest angle @p minAngle (degrees); new nodes are appended to @p nodes.
+/// @throws Error (InvalidArgument) naming the two tows whose cuts overlap on a face.
+CellFaces meshCellFaces(const std::vector<TowSurface>& tows, const Cell& cell, const CellCuts& cuts, double h, double minAngle,
+                        std::vector<Point3>& nodes);
+
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

@@ -1,0 +1,301 @@
+#include "cell/tow_cuts.hpp"
+
+#include <GeomAPI_IntCS.hxx>
+#include <Geom_Curve.hxx>
+#include <Geom_Plane.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "surface/tow_surface_impl.hpp"
+#include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
+
+namespace {
+
+int axisOf(CellFace f) { return static_cast<int>(f) / 2; }
+bool isMaxFace(CellFace f) { return static_cast<int>(f) % 2 == 1; }
+double coord(const gp_Pnt& p, int a) { return a == 0 ? p.X() : a == 1 ? p.Y() : p.Z(); }
+double coord(const Point3& p, int a) { return a == 0 ? p.x : a == 1 ? p.y : p.z; }
+double& coord(Point3& p, int a) { return a == 0 ? p.x : a == 1 ? p.y : p.z; }
+double coord(const gp_Vec& p, int a) { return a == 0 ? p.X() : a == 1 ? p.Y() : p.Z(); }
+
+std::string faceText(CellFace f) { return std::string("the cell's face ") + cellFaceName(f); }
+
+/// Probes around the tow when deciding whether a plane cuts it all around.
+constexpr int kProbes = 32;
+
+/// Every u in [uMin, uMax] where the isoline S(., @p v) meets the plane x_a = @p c (OCCT's
+/// curve/surface intersection, polished by Newton's method on the coordinate); @p inPlane is set
+/// when a piece of the isoline lies in the plane.
+std::vector<double> crossings(const Handle(Geom_BSplineSurface)& s, double v, int a, double c, const ParameterRange& r,
+                              bool& inPlane)
+{
+    const Handle(Geom_Curve) iso = s->VIso(v);
+    gp_Pnt origin(0.0, 0.0, 0.0);
+    origin.SetCoord(a + 1, c);
+    const Handle(Geom_Plane) plane = new Geom_Plane(origin, gp_Dir(a == 0 ? 1.0 : 0.0, a == 1 ? 1.0 : 0.0, a == 2 ? 1.0 : 0.0));
+    GeomAPI_IntCS meet(iso, plane);
+    if (!meet.IsDone()) throw Error(ErrorCode::Internal, "OCCT's curve/plane intersection failed");
+    inPlane = meet.NbSegments() > 0;
+    std::vector<double> us;
+    for (int i = 1; i <= meet.NbPoints(); ++i) {
+        double pu = 0.0, pv = 0.0, w = 0.0;
+        meet.Parameters(i, pu, pv, w);
+        for (int k = 0; k < 4; ++k) {  // Newton on x_a(S(w, v)) = c, within the range
+            gp_Pnt p;
+            gp_Vec du, dv;
+            s->D1(w, v, p, du, dv);
+            const double d = coord(du, a);
+            if (d == 0.0) break;
+            w = std::clamp(w - (coord(p, a) - c) / d, r.uMin, r.uMax);
+        }
+        if (w >= r.uMin && w <= r.uMax) us.push_back(w);
+    }
+    std::sort(us.begin(), us.end());
+    const double same = 1e-9 * (r.uMax - r.uMin);
+    us.erase(std::unique(us.begin(), us.end(), [&](double x, double y) { return y - x < same; }), us.end());
+    return us;
+}
+
+/// A face's cut of one tow before it is kept: the face, the end it closes and u per station.
+struct Candidate {
+    CellFace face;
+    int end = 0;
+    std::vector<double> u;
+};
+
+}  // namespace
+
+bool CellCuts::keeps(std::size_t tow, const UV& p) const
+{
+    if (outside[tow]) return false;
+    for (int end = 0; end < 2; ++end) {
+        const auto& cut = cuts[tow][static_cast<std::size_t>(end)];
+        if (!cut) continue;
+        const std::size_t n = cut->uv.size();
+        const double v0 = cut->uv[0].v, step = cut->uv[1].v - cut->uv[0].v, period = step * static_cast<double>(n);
+        double x = std::fmod(p.v - v0, period);
+        if (x < 0.0) x += period;
+        const double at = x / step;
+        const std::size_t k = std::min(static_cast<std::size_t>(at), n - 1);
+        const double f = at - static_cast<double>(k);
+        const double g = (1.0 - f) * cut->uv[k].u + f * cut->uv[(k + 1) % n].u;
+        if (end == 0 ? !(p.u > g) : !(p.u < g)) return false;
+    }
+    return true;
+}
+
+LoopConstraint CellCuts::constraint(std::size_t tow, int end, const ParameterRange& range) const
+{
+    const TowCut& cut = *cuts[tow][static_cast<std::size_t>(end)];
+    LoopConstraint c;
+    c.uv = cut.uv;
+    c.nodes = cut.nodes;
+    c.uv.push_back({cut.uv[0].u, range.vMax});
+    c.nodes.push_back(cut.nodes[0]);
+    return c;
+}
+
+CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const std::vector<double>& towH, std::vector<Point3>& nodes)
+{
+    CellCuts out;
+    out.outside.assign(tows.size(), 0);
+    out.cuts.resize(tows.size());
+    std::vector<std::vector<Point3>> positions(tows.size() * 2);  // per tow and end, the stations' points
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        const TowSurface& tow = tows[t];
+        const Handle(Geom_BSplineSurface)& s = tow.impl().surface;
+        const ParameterRange r = tow.parameterRange();
+        const std::string where = "tow '" + tow.name() + "'";
+        const auto refuse = [&](const std::string& what) { throw Error(ErrorCode::InvalidArgument, where + ": " + what); };
+        // The surface lies in its poles' box.
+        BoundingBox box;
+        for (int i = 1; i <= s->NbUPoles(); ++i)
+            for (int j = 1; j <= s->NbVPoles(); ++j) {
+                const gp_Pnt& p = s->Pole(i, j);
+                box.add({p.X(), p.Y(), p.Z()});
+            }
+        std::vector<Candidate> candidates;
+        bool outside = false;
+        for (int f = 0; f < 6 && !outside; ++f) {
+            const CellFace face = static_cast<CellFace>(f);
+            const int a = axisOf(face);
+            const double c = cell.plane(face), sign = isMaxFace(face) ? 1.0 : -1.0;  // outside: sign (x_a - c) > 0
+            const double lo = std::min(sign * (coord(box.min, a) - c), sign * (coord(box.max, a) - c));
+            const double hi = std::max(sign * (coord(box.min, a) - c), sign * (coord(box.max, a) - c));
+            if (hi < 0.0) continue;  // wholly inside this face's half-space
+            if (lo > 0.0) {
+                outside = true;
+                break;
+            }
+            int none = 0;
+            for (int j = 0; j < kProbes; ++j) {
+                bool inPlane = false;
+                const std::size_t count = crossings(s, r.vMin + r.vPeriod() * j / kProbes, a, c, r, inPlane).size();
+                if (inPlane || count > 1)
+                    refuse("it crosses the plane of " + faceText(face) +
+                           " more than once along its length, or runs in it: the cell's faces must cut each tow at most once, across it");
+                if (count == 0) ++none;
+            }
+            if (none == kProbes) {  // one side of the plane
+                if (sign * (coord(s->Value(0.5 * (r.uMin + r.uMax), r.vMin), a) - c) > 0.0) outside = true;
+                continue;
+            }
+            if (none != 0)
+                refuse("the plane of " + faceText(face) +
+                       " cuts it only partly (along its side, not all around): the cell's faces must cut each tow across it");
+            const int end = sign * (coord(s->Value(r.uMin, r.vMin), a) - c) > 0.0 ? 0 : 1;
+            candidates.push_back({face, end, {}});
+        }
+        if (outside) {
+            out.outside[t] = 1;
+            continue;
+        }
+        if (candidates.empty()) continue;
+        // Stations at the tow's mesh size around the first cut.
+        const int a0 = axisOf(candidates[0].face);
+        const double c0 = cell.plane(candidates[0].face);
+        double perimeter = 0.0;
+        Point3 previous;
+        for (int j = 0; j <= kProbes; ++j) {
+            bool inPlane = false;
+            const double v = r.vMin + r.vPeriod() * (j % kProbes) / kProbes;
+            const std::vector<double> us = crossings(s, v, a0, c0, r, inPlane);
+            const gp_Pnt g = s->Value(us.front(), v);
+            const Point3 p{g.X(), g.Y(), g.Z()};
+            if (j > 0) perimeter += distance(p, previous);
+            previous = p;
+        }
+        const std::size_t n = std::max<std::size_t>(8, static_cast<std::size_t>(std::ceil(perimeter / towH[t])));
+        for (Candidate& cand : candidates) {
+            for (std::size_t k = 0; k < n; ++k) {
+                bool inPlane = false;
+                const double v = r.vMin + r.vPeriod() * static_cast<double>(k) / static_cast<double>(n);
+                const std::vector<double> us = crossings(s, v, axisOf(cand.face), cell.plane(cand.face), r, inPlane);
+                if (us.size() != 1 || inPlane)
+                    refuse("the plane of " + faceText(cand.face) + " does not cut it once all around");
+                cand.u.push_back(us.front());
+            }
+        }
+        // Per end the cut that bounds the kept part: of two faces across one end, one must lie
+        // beyond the other all around (else the tow crosses the box's edge between them).
+        std::array<const Candidate*, 2> active{nullptr, nullptr};
+        for (const Candidate& cand : candidates) {
+            const Candidate*& best = active[static_cast<std::size_t>(cand.end)];
+            if (!best) {
+                best = &cand;
+                continue;
+            }
+            const auto inner = [&](double x, double y) { return cand.end == 0 ? x > y : x < y; };
+            bool allInner = true, allOuter = true;
+            for (std::size_t k = 0; k < n; ++k) {
+                if (!inner(cand.u[k], best->u[k])) allInner = false;
+                if (inner(cand.u[k], best->u[k])) allOuter = false;
+            }
+            if (allInner)
+                best = &cand;
+            else if (!allOuter)
+                refuse(std::string("it crosses the edge of the cell's box between the faces ") + cellFaceName(cand.face) + " and " +
+                       cellFaceName(best->face) + ": the cell's faces must cut each tow across it, away from the box's edges");
+        }
+        if (active[0] && active[1]) {
+            std::size_t kept = 0;
+            for (std::size_t k = 0; k < n; ++k)
+                if (active[0]->u[k] < active[1]->u[k]) ++kept;
+            if (kept == 0) {
+                out.outside[t] = 1;
+                continue;
+            }
+            if (kept != n)
+                refuse(std::string("the faces ") + cellFaceName(active[0]->face) + " and " + cellFaceName(active[1]->face) +
+                       " cut it across each other: it crosses the box's edge between them");
+        }
+        for (int end = 0; end < 2; ++end) {
+            const Candidate* cand = active[static_cast<std::size_t>(end)];
+            if (!cand) continue;
+            TowCut cut;
+            cut.face = cand->face;
+            const int a = axisOf(cand->face);
+            std::vector<Point3>& at = positions[2 * t + static_cast<std::size_t>(end)];
+            for (std::size_t k = 0; k < n; ++k) {
+                const UV uv{cand->u[k], r.vMin + r.vPeriod() * static_cast<double>(k) / static_cast<double>(n)};
+                cut.uv.push_back(uv);
+                const gp_Pnt g = s->Value(uv.u, uv.v);
+                Point3 p{g.X(), g.Y(), g.Z()};
+                coord(p, a) = cell.plane(cand->face);
+                for (int b = 0; b < 3; ++b)
+                    if (b != a && !(coord(p, b) > coord(cell.min, b) && coord(p, b) < coord(cell.max, b)))
+                        refuse("its cut by " + faceText(cand->face) +
+                               " leaves the face's rectangle: it crosses an edge of the cell's box (the cell's faces must cut each "
+                               "tow across it, away from the box's edges)");
+                at.push_back(p);
+            }
+            out.cuts[t][static_cast<std::size_t>(end)] = std::move(cut);
+        }
+    }
+    // A periodic cell: the max face's cut of a tow is its min face's cut moved by the box.
+    if (cell.periodic) {
+        for (std::size_t t = 0; t < tows.size(); ++t) {
+            if (out.outside[t]) continue;
+            for (int a = 0; a < 3; ++a) {
+                int minEnd = -1, maxEnd = -1;
+                for (int end = 0; end < 2; ++end) {
+                    const auto& cut = out.cuts[t][static_cast<std::size_t>(end)];
+                    if (cut && axisOf(cut->face) == a) (isMaxFace(cut->face) ? maxEnd : minEnd) = end;
+                }
+                if (minEnd < 0 && maxEnd < 0) continue;
+                const auto name = [&](int side) { return std::string(cellFaceName(static_cast<CellFace>(2 * a + side))); };
+                if (minEnd < 0 || maxEnd < 0)
+                    throw Error(ErrorCode::InvalidArgument,
+                                "tow '" + tows[t].name() + "': the periodic cell's face " + name(minEnd < 0 ? 1 : 0) +
+                                    " cuts it but the face " + name(minEnd < 0 ? 0 : 1) +
+                                    " does not: the textile does not repeat with the cell (or the tow ends inside it)");
+                Point3 shift;
+                coord(shift, a) = coord(cell.max, a) - coord(cell.min, a);
+                const std::vector<Point3>& from = positions[2 * t + static_cast<std::size_t>(minEnd)];
+                std::vector<Point3>& to = positions[2 * t + static_cast<std::size_t>(maxEnd)];
+                const TowCut& cut = *out.cuts[t][static_cast<std::size_t>(maxEnd)];
+                double worst = 0.0;
+                for (std::size_t k = 0; k < from.size(); ++k) {
+                    Point3 p = from[k] + shift;
+                    coord(p, a) = coord(cell.max, a);
+                    worst = std::max(worst, distance(p, tows[t].point(cut.uv[k].u, cut.uv[k].v)));
+                    to[k] = p;
+                }
+                if (worst > cell.periodTolerance * tows[t].towSize()) {
+                    std::ostringstream m;
+                    m.precision(3);
+                    m << "tow '" << tows[t].name() << "': its cut by the periodic cell's face " << name(0) << ", moved onto the face "
+                      << name(1) << ", lies " << worst << " (" << worst / tows[t].towSize()
+                      << " of the tow's size) from its surface there, over the period tolerance " << cell.periodTolerance
+                      << ": the textile does not repeat with the cell";
+                    throw Error(ErrorCode::InvalidArgument, m.str());
+                }
+            }
+        }
+    }
+    for (std::size_t t = 0; t < tows.size(); ++t)
+        for (int end = 0; end < 2; ++end) {
+            auto& cut = out.cuts[t][static_cast<std::size_t>(end)];
+            if (!cut) continue;
+            for (const Point3& p : positions[2 * t + static_cast<std::size_t>(end)]) {
+                cut->nodes.push_back(nodes.size());
+                nodes.push_back(p);
+            }
+        }
+    out.cutNode.assign(nodes.size(), 0);
+    for (const auto& ends : out.cuts)
+        for (const auto& cut : ends)
+            if (cut)
+                for (std::size_t node : cut->nodes) out.cutNode[node] = 1;
+    return out;
+}
+
+}  // namespace detail
+TOWGEOM_END_NAMESPACE
