@@ -34,7 +34,8 @@ struct TOWGEOM_EXPORT VolumeMesh {
     std::size_t surfaceNodes = 0;  ///< how many of nodes are the surface mesh's
     /// Four nodes each, ordered so that the signed volume (tetrahedronVolume()) is positive.
     std::vector<std::array<std::size_t, 4>> tetrahedra;
-    /// For each tetrahedron, the tow it lies in (an index into TextileMesh::tows).
+    /// For each tetrahedron, the tow it lies in (an index into TextileMesh::tows), or
+    /// TextileMesh::tows.size() for the matrix of a mesh clipped to a cell.
     std::vector<std::size_t> tow;
     /// For each tetrahedron its fibre direction (a unit vector), once addFibreDirections() has
     /// set them; empty before.
@@ -43,7 +44,7 @@ struct TOWGEOM_EXPORT VolumeMesh {
     /// The signed volume of tetrahedron @p k (meshVolumes() orders the nodes so that it is not
     /// negative).
     double tetrahedronVolume(std::size_t k) const;
-    /// The summed volume of the tetrahedra of tow @p t.
+    /// The summed volume of the tetrahedra of tow @p t (the matrix's: the number of tows).
     double towVolume(std::size_t t) const;
 };
 
@@ -51,7 +52,10 @@ struct TOWGEOM_EXPORT VolumeMesh {
 /// HXT tetrahedral mesher, the surface triangles kept as they are (Gmsh discrete entities, no
 /// surface remeshing), so the tetrahedra of two tows meet face to face on their shared regions.
 /// Element sizes grow from the surface mesh inwards. A tow cut into pieces by a tow ranked above
-/// it (TowResolution::pieces) gets one volume per piece. Gmsh is a process-wide engine: calls
+/// it (TowResolution::pieces) gets one volume per piece. A mesh clipped to a cell
+/// (TextileMesh::cell) gets the matrix too: the box minus the tows, bounded by the box's faces
+/// (CellMesh::triangles) and every tow triangle in no region and not on the box, its tetrahedra
+/// conforming to the tows' on those triangles. Gmsh is a process-wide engine: calls
 /// are serialised; the first call starts Gmsh unless the host has (it then stays started for
 /// the process); each call works in a model of its own and restores the host's current model
 /// and the options it sets.
@@ -69,7 +73,8 @@ TOWGEOM_EXPORT VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeM
 /// tetrahedron's centroid. At each section the direction is the mean around the section of the
 /// unit tangent along the tow, dS/du / |dS/du| (the direction TowMesh::fibreDirection gives the
 /// surface triangles); between two sections it is interpolated linearly along the segment and
-/// normalised. @p tows are the tows @p volumes was made of, in the same order and units.
+/// normalised. The matrix's tetrahedra (VolumeMesh::tow the number of tows) get the zero
+/// vector. @p tows are the tows @p volumes was made of, in the same order and units.
 /// @throws towgeom::Error (InvalidArgument) if a tetrahedron names a tow @p tows does not have.
 TOWGEOM_EXPORT void addFibreDirections(VolumeMesh& volumes, const std::vector<TowSurface>& tows);
 

@@ -1,10 +1,14 @@
 // towgeom resolve: compatible tow surface meshes sharing one surface where tows interpenetrated.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <set>
 #include <sstream>
+#include <cstdlib>
+#include <string>
+#include <vector>
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
@@ -108,8 +112,21 @@ Options:
                      nearest the tetrahedron), with --formats ...,inp also
                      DIR/textile_volume.inp (C3D4, ELSET TOW_NAME, NSET NODES_NAME, START_NAME,
                      END_NAME per tow); report.json gains "volume_mesh".
-                     Needs Gmsh's library (Debian: libgmsh4.8). No cell, matrix or solver
-                     files yet
+                     Needs Gmsh's library (Debian: libgmsh4.8). With --cell also the matrix:
+                     physical volume / ELSET MATRIX, groups / NSETs XMIN ... ZMAX of every node
+                     on each box face; report.json "volume_mesh" gains "matrix" and
+                     "fibre_volume_fraction"
+  --cell X0,Y0,Z0,X1,Y1,Z1
+                     clip every tow by this box (a unit cell for finite elements): where a face
+                     cuts a tow the tow is closed by a flat cap on the face; the faces are meshed
+                     around the caps (shared nodes) and, with --volume, the matrix is filled
+                     too. The faces must cut tows across, away from crossings and from the box's
+                     edges (else exit 2 naming the tow): for a woven cell, halfway between yarns.
+                     report.json gains "cell"
+  --periodic         with --cell: the textile repeats with the box; the max faces' meshes are
+                     the min faces' moved by the box (every node has its partner at exactly +L),
+                     refused (exit 2) where a tow's cuts on opposite faces differ by more than
+                     1e-3 of its size
   --allow-open       exit 0 even when an intersection curve is open (or, with --no-caps, a
                      loop crosses a tow's end cap): never resolved, still named on stderr;
                      other unresolved pairs still exit 3
@@ -125,10 +142,38 @@ nothing written); 1 a file could not be written or an internal failure (e.g. the
 their own check); 130 stopped by Ctrl-C or SIGTERM while computing; a failed or stopped run
 leaves DIR exactly as it was.
 
-Example:
+Examples:
   towgeom resolve examples/data/twill/*.stw --out resolved --formats stl,vtk,msh,inp
+  towgeom generate --weave twill --tows 6x6 --overlap 0.08 --out weave
+  towgeom resolve weave/*.stw --out cell --cell 0.5,0.5,-0.5,4.5,4.5,0.5 --periodic \
+      --volume --formats msh,inp      (a periodic 4x4 unit cell: tows and matrix)
   (then open resolved/*.vtk in ParaView and colour by region_id)
 )";
+
+/// --cell XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX.
+Cell parseCell(const std::string& text, bool periodic)
+{
+    std::vector<double> v;
+    std::size_t at = 0;
+    while (at <= text.size()) {
+        const std::size_t comma = std::min(text.find(',', at), text.size());
+        const std::string part = text.substr(at, comma - at);
+        char* end = nullptr;
+        const double x = std::strtod(part.c_str(), &end);
+        if (part.empty() || end != part.c_str() + part.size() || !std::isfinite(x))
+            throw UsageError("--cell takes six numbers XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX, not '" + text + "'");
+        v.push_back(x);
+        at = comma + 1;
+    }
+    if (v.size() != 6) throw UsageError("--cell takes six numbers XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX, not '" + text + "'");
+    Cell c;
+    c.min = {v[0], v[1], v[2]};
+    c.max = {v[3], v[4], v[5]};
+    c.periodic = periodic;
+    if (!(c.min.x < c.max.x && c.min.y < c.max.y && c.min.z < c.max.z))
+        throw UsageError("--cell: each minimum must lie below its maximum ('" + text + "')");
+    return c;
+}
 
 double msSince(std::chrono::steady_clock::time_point t0)
 {
@@ -156,7 +201,8 @@ int runResolve(int argc, char** argv, int first)
         const Args args(argc, argv, first,
                         {{"help"}, {"quiet"}, {"allow-open"}, {"out", true}, {"primary", true}, {"mesh-size", true},
                          {"min-angle", true}, {"loop-spacing", true}, {"formats", true}, {"tolerance", true},
-                         {"threads", true}, {"max-triangles", true}, {"no-caps"}, {"report", true}, {"volume"}});
+                         {"threads", true}, {"max-triangles", true}, {"no-caps"}, {"report", true}, {"volume"},
+                         {"cell", true}, {"periodic"}});
         if (args.has("help")) {
             std::cout << kResolveHelp;
             return kExitOk;
@@ -176,6 +222,9 @@ int runResolve(int argc, char** argv, int first)
         options.intersection.tolerance = args.positive("tolerance");
         options.threads = args.threads();
         options.mesh.caps = !args.has("no-caps");
+        if (const auto cell = args.value("cell")) options.cell = parseCell(*cell, args.has("periodic"));
+        else if (args.has("periodic")) throw UsageError("--periodic needs --cell");
+        if (options.cell && !options.mesh.caps) throw UsageError("--cell needs closed tows: drop --no-caps");
         const bool volume = args.has("volume");
         if (volume && !options.mesh.caps) throw UsageError("--volume needs closed tows: drop --no-caps");
         const std::set<std::string> formats = parseFormats(args.value("formats"));

@@ -66,6 +66,19 @@ bool isCap(const TowMesh& m, std::size_t k) { return k < m.face.size() && m.face
 
 namespace {
 
+/// The tetrahedra of @p volumes by the tow they fill, the matrix's last (index: the tow count).
+std::vector<std::vector<std::size_t>> tetrahedraBySolid(const TextileMesh& mesh, const VolumeMesh& volumes)
+{
+    const std::size_t towCount = mesh.tows.size();
+    std::vector<std::vector<std::size_t>> tets(towCount + 1);
+    for (std::size_t k = 0; k < volumes.tetrahedra.size(); ++k) {
+        if (volumes.tow[k] > towCount || (volumes.tow[k] == towCount && !mesh.cell))
+            throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a tow out of range");
+        tets[volumes.tow[k]].push_back(k);
+    }
+    return tets;
+}
+
 /// writeGmsh() with, when @p volumes is given, a volume entity per tow holding its tetrahedra.
 void writeGmshModel(const TextileMesh& mesh, const VolumeMesh* volumes, std::ostream& out)
 {
@@ -100,16 +113,44 @@ void writeGmshModel(const TextileMesh& mesh, const VolumeMesh* volumes, std::ost
     const auto add = [&](Entity&& e) {
         if (!e.triangles.empty()) entities.push_back(std::move(e));
     };
+    // Clipped to a cell: a group per box face (after the caps'), the matrix the volume after the
+    // tows' (tag towCount + 1), bounded by the box's faces and the tows' triangles not on them.
+    std::array<std::size_t, 6> faceGroup{};
+    if (mesh.cell)
+        for (std::size_t f = 0; f < 6; ++f) faceGroup[f] = towCount + mesh.regions.size() + capGroups.size() + f + 1;
+    const std::size_t matrix = towCount;
     for (std::size_t t = 0; t < towCount; ++t) {
+        const TowMesh& m = mesh.tows[t];
         Entity side, caps;
+        std::array<Entity, 2> onCell;  // its caps on the cell's faces, at its start and end
         side.physical = {t + 1};
         caps.physical = {t + 1, capGroup[t]};
         side.bounds = caps.bounds = {{t, 1}};
-        for (std::size_t k = 0; k < mesh.tows[t].triangles.size(); ++k)
-            if (mesh.tows[t].region[k] < 0) (isCap(mesh.tows[t], k) ? caps : side).triangles.push_back(mesh.tows[t].triangles[k]);
+        if (mesh.cell) side.bounds.emplace_back(matrix, -1), caps.bounds.emplace_back(matrix, -1);
+        for (std::size_t end = 0; end < 2; ++end)
+            if (m.cutAt[end]) {
+                onCell[end].physical = {t + 1, capGroup[t], faceGroup[static_cast<std::size_t>(*m.cutAt[end])]};
+                onCell[end].bounds = {{t, 1}};
+            }
+        for (std::size_t k = 0; k < m.triangles.size(); ++k) {
+            if (m.region[k] >= 0) continue;
+            const std::size_t end = k < m.face.size() && m.face[k] == TowFace::End ? 1 : 0;
+            Entity& e = !isCap(m, k) ? side : m.cutAt[end] ? onCell[end] : caps;
+            e.triangles.push_back(m.triangles[k]);
+        }
         add(std::move(side));
         add(std::move(caps));
+        for (Entity& e : onCell) add(std::move(e));
     }
+    if (mesh.cell)
+        for (std::size_t f = 0; f < 6; ++f) {
+            Entity e;
+            e.physical = {faceGroup[f]};
+            e.bounds = {{matrix, 1}};
+            for (std::size_t k = 0; k < mesh.cell->triangles.size(); ++k)
+                if (static_cast<std::size_t>(mesh.cell->face.at(k)) == f) e.triangles.push_back(mesh.cell->triangles[k]);
+            add(std::move(e));
+        }
     // A region's triangles once (the primary's copy; once even where regions share one), its
     // cap triangles apart, also in the primary's CAPS_ group.
     std::set<std::pair<std::size_t, std::size_t>> written;
@@ -126,21 +167,18 @@ void writeGmshModel(const TextileMesh& mesh, const VolumeMesh* volumes, std::ost
         add(std::move(caps));
     }
     // Volumes (with a volume mesh): one per tow with tetrahedra, its tag the tow's number.
-    std::vector<std::vector<std::size_t>> tets(towCount);
-    if (volumes)
-        for (std::size_t k = 0; k < volumes->tetrahedra.size(); ++k) {
-            if (volumes->tow[k] >= towCount) throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a tow out of range");
-            tets[volumes->tow[k]].push_back(k);
-        }
-    std::vector<std::size_t> solids;  // tows with tetrahedra
-    for (std::size_t t = 0; t < towCount; ++t)
+    const std::vector<std::vector<std::size_t>> tets = volumes ? tetrahedraBySolid(mesh, *volumes) : std::vector<std::vector<std::size_t>>(towCount + 1);
+    std::vector<std::size_t> solids;  // tows (then the matrix) with tetrahedra
+    for (std::size_t t = 0; t <= towCount; ++t)
         if (!tets[t].empty()) solids.push_back(t);
     out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
-    out << "$PhysicalNames\n" << towCount + mesh.regions.size() + capGroups.size() + solids.size() << '\n';
+    out << "$PhysicalNames\n" << towCount + mesh.regions.size() + capGroups.size() + (mesh.cell ? 6 : 0) + solids.size() << '\n';
     for (std::size_t t = 0; t < towCount; ++t) out << "2 " << t + 1 << " \"" << label("TOW_", names[t]) << "\"\n";
     for (std::size_t r = 0; r < mesh.regions.size(); ++r) out << "2 " << towCount + r + 1 << " \"REGION_" << r + 1 << "\"\n";
     for (const auto& [group, name] : capGroups) out << "2 " << group << " \"" << name << "\"\n";
-    for (std::size_t t : solids) out << "3 " << t + 1 << " \"" << label("TOW_", names[t]) << "\"\n";
+    if (mesh.cell)
+        for (std::size_t f = 0; f < 6; ++f) out << "2 " << faceGroup[f] << " \"" << upper(cellFaceName(static_cast<CellFace>(f))) << "\"\n";
+    for (std::size_t t : solids) out << "3 " << t + 1 << " \"" << (t == matrix ? std::string("MATRIX") : label("TOW_", names[t])) << "\"\n";
     out << "$EndPhysicalNames\n";
     // Each node is classified on the first entity that uses it: surfaces first, then volumes.
     std::vector<std::size_t> owner(nodes.size(), 0);
@@ -368,12 +406,9 @@ void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostrea
     constexpr std::size_t kField = 20;
     const std::vector<std::string> names = towLabels(mesh);
     const std::size_t towCount = mesh.tows.size();
-    std::vector<std::vector<std::size_t>> tets(towCount);
-    for (std::size_t k = 0; k < volumes.tetrahedra.size(); ++k) {
-        if (volumes.tow[k] >= towCount) throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a tow out of range");
-        tets[volumes.tow[k]].push_back(k);
-    }
-    out << "*HEADING\ntowgeom: tetrahedra of " << towCount << " tows (C3D4), conforming on their shared regions\n";
+    const std::vector<std::vector<std::size_t>> tets = tetrahedraBySolid(mesh, volumes);
+    out << "*HEADING\ntowgeom: tetrahedra of " << towCount << " tows" << (tets[towCount].empty() ? "" : " and the matrix")
+        << " (C3D4), conforming on their shared surfaces\n";
     std::vector<char> used(volumes.nodes.size(), 0);
     for (const auto& t : volumes.tetrahedra)
         for (std::size_t n : t) used[n] = 1;
@@ -385,9 +420,9 @@ void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostrea
             if (used[k])
                 w.number(k + 1).text(", ").fitted(volumes.nodes[k].x, kField).text(", ").fitted(volumes.nodes[k].y, kField).text(", ").fitted(volumes.nodes[k].z, kField).end();
         std::size_t id = 0;
-        for (std::size_t t = 0; t < towCount; ++t) {
+        for (std::size_t t = 0; t <= towCount; ++t) {
             if (tets[t].empty()) continue;
-            solids.push_back(label("TOW_", names[t]));
+            solids.push_back(t == towCount ? std::string("MATRIX") : label("TOW_", names[t]));
             w.text("*ELEMENT, TYPE=C3D4, ELSET=").text(solids.back().c_str()).end();
             for (std::size_t k : tets[t]) {
                 const auto& q = volumes.tetrahedra[k];
@@ -415,6 +450,14 @@ void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostrea
             list(std::vector<std::size_t>(cap.begin(), cap.end()));
         }
     }
+    // The box's faces (a mesh clipped to a cell): every node on each.
+    if (mesh.cell)
+        for (std::size_t f = 0; f < 6; ++f) {
+            if (mesh.cell->faceNodes[f].empty()) continue;
+            out << "*NSET, NSET=" << upper(cellFaceName(static_cast<CellFace>(f))) << '\n';
+            list(mesh.cell->faceNodes[f]);
+        }
+    if (!tets[towCount].empty()) solids.pop_back();  // TEXTILE: the tows only
     if (!solids.empty()) {
         out << "*ELSET, ELSET=TEXTILE\n";
         for (std::size_t k = 0; k < solids.size(); ++k) out << solids[k] << (k % 8 == 7 || k + 1 == solids.size() ? "\n" : ", ");

@@ -193,22 +193,43 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
                          {"triangles", q.triangles},
                          {"faces_over_bounds", q.facesOverBounds}};
     j["mesh_rounds"] = result.meshRounds;
+    if (mesh.cell) {
+        const Cell& c = mesh.cell->box;
+        std::size_t kept = 0;
+        for (const TowMesh& m : mesh.tows) kept += m.triangles.empty() ? 0 : 1;
+        j["cell"] = {{"min", {c.min.x, c.min.y, c.min.z}},
+                     {"max", {c.max.x, c.max.y, c.max.z}},
+                     {"periodic", c.periodic},
+                     {"volume", c.volume()},
+                     {"tows_inside", kept},
+                     {"matrix_face_triangles", mesh.cell->triangles.size()}};
+    }
     if (const VolumeMesh* v = options.volumes) {
         if (v->surfaceNodes != mesh.nodes.size() || v->tow.size() != v->tetrahedra.size())
             throw Error(ErrorCode::InvalidArgument, "the volume mesh is not one of the result's mesh");
-        std::vector<std::size_t> count(tows.size(), 0);
-        std::vector<double> volume(tows.size(), 0.0);
+        // Per tow, then the matrix (a mesh clipped to a cell).
+        std::vector<std::size_t> count(tows.size() + 1, 0);
+        std::vector<double> volume(tows.size() + 1, 0.0);
         for (std::size_t k = 0; k < v->tetrahedra.size(); ++k) {
-            if (v->tow[k] >= tows.size()) throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a tow out of range");
+            if (v->tow[k] > tows.size() || (v->tow[k] == tows.size() && !mesh.cell))
+                throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a tow out of range");
             ++count[v->tow[k]];
             volume[v->tow[k]] += v->tetrahedronVolume(k);
         }
         Json perTow = Json::array();
-        for (std::size_t t = 0; t < tows.size(); ++t) perTow.push_back({{"name", tows[t].name()}, {"tetrahedra", count[t]}, {"volume", volume[t]}});
+        double towVolume = 0.0;
+        for (std::size_t t = 0; t < tows.size(); ++t) {
+            perTow.push_back({{"name", tows[t].name()}, {"tetrahedra", count[t]}, {"volume", volume[t]}});
+            towVolume += volume[t];
+        }
         j["volume_mesh"] = {{"tetrahedra", v->tetrahedra.size()},
                             {"nodes", v->nodes.size()},
                             {"inner_nodes", v->nodes.size() - v->surfaceNodes},
                             {"tows", std::move(perTow)}};
+        if (mesh.cell) {
+            j["volume_mesh"]["matrix"] = {{"tetrahedra", count[tows.size()]}, {"volume", volume[tows.size()]}};
+            j["volume_mesh"]["fibre_volume_fraction"] = towVolume / mesh.cell->box.volume();
+        }
     }
     Json timings = Json::object();
     putTime(timings, "read", options.times.read);

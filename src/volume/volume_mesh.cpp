@@ -219,9 +219,12 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         shell[t] = shellsOf(surfaces, t, count);
         firstVolume[t + 1] = firstVolume[t] + count;
     }
-    std::vector<std::size_t> volumeTow(firstVolume[towCount]);
+    // Clipped to a cell: the matrix is one more volume, "tow" towCount.
+    const bool matrix = surfaces.cell.has_value();
+    std::vector<std::size_t> volumeTow(firstVolume[towCount] + (matrix ? 1 : 0), towCount);
     for (std::size_t t = 0; t < towCount; ++t)
         for (std::size_t v = firstVolume[t]; v < firstVolume[t + 1]; ++v) volumeTow[v] = t;
+    const auto nameOf = [&](std::size_t t) { return t < towCount ? "tow '" + surfaces.tows[t].name + "'" : std::string("the matrix"); };
 
     // Discrete surfaces: each shell's own triangles, then each region's (its primary's copy).
     struct Surface {
@@ -246,14 +249,34 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
             s.triangles.push_back(n + 1);
         }
     };
+    // Each shell's own triangles in two parts: on the cell's faces (its caps where the cell cut
+    // it), and the rest, which the matrix shares.
+    std::vector<int> matrixBounds;
     for (std::size_t t = 0; t < towCount; ++t) {
         const TowMesh& m = surfaces.tows[t];
-        for (std::size_t v = firstVolume[t]; v < firstVolume[t + 1]; ++v) {
+        const auto onCell = [&](std::size_t k) {
+            return (m.face[k] == TowFace::Start && m.cutAt[0]) || (m.face[k] == TowFace::End && m.cutAt[1]);
+        };
+        for (std::size_t v = firstVolume[t]; v < firstVolume[t + 1]; ++v)
+            for (const bool cellPart : {false, true}) {
+                Surface s{static_cast<int>(patches.size()) + 1, {}, {}};
+                for (std::size_t k = 0; k < m.triangles.size(); ++k)
+                    if (m.region[k] < 0 && firstVolume[t] + shell[t][k] == v && (k < m.face.size() && onCell(k)) == cellPart)
+                        add(s, m.triangles[k]);
+                if (s.triangles.empty()) continue;
+                bounds[v].push_back(s.tag);
+                if (!cellPart) matrixBounds.push_back(-s.tag);  // the tow's outward normal points into the matrix
+                patches.push_back(std::move(s));
+            }
+    }
+    if (matrix) {  // the box's faces minus the tows' caps, outward
+        const CellMesh& cell = *surfaces.cell;
+        for (std::size_t f = 0; f < 6; ++f) {
             Surface s{static_cast<int>(patches.size()) + 1, {}, {}};
-            for (std::size_t k = 0; k < m.triangles.size(); ++k)
-                if (m.region[k] < 0 && firstVolume[t] + shell[t][k] == v) add(s, m.triangles[k]);
+            for (std::size_t k = 0; k < cell.triangles.size(); ++k)
+                if (static_cast<std::size_t>(cell.face.at(k)) == f) add(s, cell.triangles[k]);
             if (s.triangles.empty()) continue;
-            bounds[v].push_back(s.tag);
+            matrixBounds.push_back(s.tag);
             patches.push_back(std::move(s));
         }
     }
@@ -291,9 +314,9 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
             patches.push_back(std::move(part));
         }
     }
+    if (matrix) bounds.back() = matrixBounds;
     for (std::size_t v = 0; v < bounds.size(); ++v)
-        if (bounds[v].empty())
-            throw Error(ErrorCode::Internal, "tow '" + surfaces.tows[volumeTow[v]].name + "': a piece of it has no surface");
+        if (bounds[v].empty()) throw Error(ErrorCode::Internal, nameOf(volumeTow[v]) + ": a piece of it has no surface");
 
     VolumeMesh out;
     out.nodes = surfaces.nodes;
@@ -371,7 +394,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         for (std::size_t v = 0; v < bounds.size(); ++v) {
             if (bounds[v].empty()) continue;
             const std::size_t t = volumeTow[v];
-            where = "tow '" + surfaces.tows[t].name + "'";
+            where = nameOf(t);
             std::size_t *e = nullptr, *n = nullptr, ne = 0, nn = 0;
             g.call("gmshModelMeshGetElementsByType", api.gmshModelMeshGetElementsByType, 4, &e, &ne, &n, &nn, static_cast<int>(v) + 1,
                    std::size_t(0), std::size_t(1));
