@@ -33,6 +33,27 @@ std::string twill(const std::vector<std::string>& names)
     return files;
 }
 
+/// The largest displacement (component 0..2, or -1 any) of a node printed by ccx's *NODE PRINT
+/// for set @p set in @p dat ("displacements (vx,vy,vz) for set NAME ...", then one line per node:
+/// number, ux, uy, uz); -1 if the set is not printed.
+double largestDisplacement(const std::string& dat, const std::string& set, int component)
+{
+    const auto at = dat.find("for set " + set + " ");
+    if (at == std::string::npos) return -1.0;
+    std::istringstream in(dat.substr(dat.find('\n', at) + 1));
+    double worst = 0.0;
+    std::string line;
+    std::getline(in, line);  // blank
+    while (std::getline(in, line)) {
+        std::istringstream fields(line);
+        long node = 0;
+        double u[3];
+        if (!(fields >> node >> u[0] >> u[1] >> u[2])) break;
+        worst = component >= 0 ? std::max(worst, std::abs(u[component])) : std::max({worst, std::abs(u[0]), std::abs(u[1]), std::abs(u[2])});
+    }
+    return worst;
+}
+
 fs::path scratch(const std::string& name)
 {
     const fs::path p = fs::temp_directory_path() / ("towgeom_resolve_" + name + "_" + std::to_string(::getpid()));
@@ -330,29 +351,11 @@ TEST_CASE("CalculiX solves the tows' tetrahedra as one structure: the tows pulle
     INFO(c.out);
     CHECK(c.status == 0);
     CHECK(c.out.find("ERROR") == std::string::npos);
-    // Largest displacement per printed set ("displacements (vx,vy,vz) for set NAME ...", then
-    // one line per node: number, ux, uy, uz).
     const std::string dat = testing::slurp(out / "solid.dat");
-    const auto largest = [&](const std::string& set, int component) {
-        const auto at = dat.find("for set " + set + " ");
-        if (at == std::string::npos) return -1.0;
-        std::istringstream in(dat.substr(dat.find('\n', at) + 1));
-        double worst = 0.0;
-        std::string line;
-        std::getline(in, line);  // blank
-        while (std::getline(in, line)) {
-            std::istringstream fields(line);
-            long node = 0;
-            double u[3];
-            if (!(fields >> node >> u[0] >> u[1] >> u[2])) break;
-            worst = component >= 0 ? std::max(worst, std::abs(u[component])) : std::max({worst, std::abs(u[0]), std::abs(u[1]), std::abs(u[2])});
-        }
-        return worst;
-    };
-    CHECK(largest("END_WARP_0", 0) == Approx(0.01).epsilon(1e-6));  // the imposed pull along x
+    CHECK(largestDisplacement(dat, "END_WARP_0", 0) == Approx(0.01).epsilon(1e-6));  // the imposed pull along x
     for (const char* set : {"NODES_WEFT_0", "NODES_WEFT_1", "NODES_WARP_1"}) {
         INFO(set);
-        CHECK(largest(set, -1) > 1e-4);  // observed 2.4e-3, 1.1e-2, 3.3e-2
+        CHECK(largestDisplacement(dat, set, -1) > 1e-4);  // observed 2.4e-3, 1.1e-2, 3.3e-2
     }
     fs::remove_all(out);
 }
@@ -675,4 +678,52 @@ TEST_CASE("towgeom resolve stopped by SIGTERM: exit 130, one line, nothing writt
           "towgeom resolve: stopped by a signal (Ctrl-C or SIGTERM); nothing written [cancelled]\n");
     CHECK(!fs::exists(out));
     fs::remove_all(out.string() + "_log");
+}
+
+TEST_CASE("CalculiX solves the twill's unit cell, tows in a matrix: the modulus lies between Reuss and Voigt", "[cli][resolve][volume][cell][ccx]")
+{
+    // The bundled twill clipped to its 4x4 repeat (faces halfway between yarns), tows and matrix
+    // as tetrahedra; a strain along x (XMIN held along x, XMAX moved, YMIN and ZMIN held
+    // normal to themselves), stiff tows in a soft matrix, the same Poisson ratio.
+    const fs::path out = scratch("ccx_cell");
+    const Run r = cli("resolve" + twill({"warp_0", "warp_1", "warp_2", "warp_3", "weft_0", "weft_1", "weft_2", "weft_3"}) + " --out '" +
+                      out.string() + "' --cell -0.5,-0.5,-0.5,3.5,3.5,0.5 --volume --mesh-size 0.2 --formats inp --quiet");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const std::string report = testing::slurp(out / "report.json");
+    const double f = jsonNumber(report, "fibre_volume_fraction");
+    CHECK(f > 0.15);  // 8 tows of about 0.43 in a box of 16: observed 0.21
+    CHECK(f < 0.3);
+    const double lx = 4.0, area = 4.0 * 1.0, pull = 0.004, ef = 100000.0, em = 3000.0;
+    std::ofstream deck(out / "cell.inp");
+    deck << "*INCLUDE, INPUT=" << (out / "textile_volume.inp").string() << "\n*MATERIAL, NAME=FIBRE\n*ELASTIC\n" << ef
+         << ", 0.3\n*MATERIAL, NAME=RESIN\n*ELASTIC\n" << em << ", 0.3\n*SOLID SECTION, ELSET=TEXTILE, MATERIAL=FIBRE\n"
+         << "*SOLID SECTION, ELSET=MATRIX, MATERIAL=RESIN\n*STEP\n*STATIC\n*BOUNDARY\nXMIN, 1, 1, 0.\nYMIN, 2, 2, 0.\nZMIN, 3, 3, 0.\n"
+         << "XMAX, 1, 1, " << pull << "\n*NODE PRINT, NSET=XMAX, TOTALS=ONLY\nRF\n";
+    for (const char* tow : {"warp_0", "warp_3", "weft_0", "weft_3"}) deck << "*NODE PRINT, NSET=NODES_" << tow << "\nU\n";
+    deck << "*END STEP\n";
+    deck.close();
+    INFO("ccx not found: install calculix-ccx (bash cmake/ensure_packages.sh, or apt-get install calculix-ccx)");
+    REQUIRE(std::system("command -v ccx >/dev/null 2>&1") == 0);
+    const Run c = testing::runShell("cd '" + out.string() + "' && ccx -i cell 2>&1");
+    INFO(c.out);
+    REQUIRE(c.status == 0);
+    CHECK(c.out.find("ERROR") == std::string::npos);
+    const std::string dat = testing::slurp(out / "cell.dat");
+    const auto total = dat.find("total force (fx,fy,fz) for set XMAX");
+    REQUIRE(total != std::string::npos);
+    std::istringstream in(dat.substr(dat.find('\n', total) + 1));
+    double fx = 0.0;
+    in >> fx;
+    const double modulus = fx / area / (pull / lx);
+    const double voigt = f * ef + (1.0 - f) * em, reuss = 1.0 / (f / ef + (1.0 - f) / em);
+    WARN("twill cell: fibre volume fraction " << f << ", modulus " << modulus << " between Reuss " << reuss << " and Voigt " << voigt);
+    CHECK(modulus > reuss);
+    CHECK(modulus < voigt);
+    // Every tow moves with the cell (all of it one structure).
+    for (const char* set : {"NODES_WARP_0", "NODES_WARP_3", "NODES_WEFT_0", "NODES_WEFT_3"}) {
+        INFO(set);
+        CHECK(largestDisplacement(dat, set, 0) > 1e-4);  // the pull is 4e-3 over the cell
+    }
+    fs::remove_all(out);
 }

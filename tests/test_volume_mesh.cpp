@@ -56,13 +56,33 @@ void checkConforming(const ResolveResult& res, const VolumeMesh& v)
         flat += !(v.tetrahedronVolume(k) > 1e-9 * longest * longest * longest);
     }
     CHECK(flat == 0);
-    for (std::size_t t = 0; t < res.mesh.tows.size(); ++t) {
+    const std::size_t towCount = res.mesh.tows.size();  // also the matrix's index, in a cell
+    double towsVolume = 0.0;
+    for (std::size_t t = 0; t < towCount; ++t) {
         INFO("tow " << res.mesh.tows[t].name);
         CHECK(v.towVolume(t) == Approx(res.tows[t].volumeAfter).epsilon(1e-9));
+        towsVolume += res.tows[t].volumeAfter;
     }
-    std::map<Face, std::vector<std::size_t>> surfaceTows;  // face -> tows it bounds
-    for (std::size_t t = 0; t < res.mesh.tows.size(); ++t)
-        for (const auto& tri : res.mesh.tows[t].triangles) surfaceTows[sorted(tri[0], tri[1], tri[2])].push_back(t);
+    if (res.mesh.cell) {  // the matrix fills the rest of the box
+        const double box = res.mesh.cell->box.volume();
+        CHECK(v.towVolume(towCount) == Approx(box - towsVolume).epsilon(1e-9));
+        double all = 0.0;
+        for (std::size_t k = 0; k < v.tetrahedra.size(); ++k) all += v.tetrahedronVolume(k);
+        CHECK(all == Approx(box).epsilon(1e-9));
+    }
+    std::map<Face, std::vector<std::size_t>> surfaceTows;  // face -> tows (and the matrix) it bounds
+    for (std::size_t t = 0; t < towCount; ++t) {
+        const TowMesh& m = res.mesh.tows[t];
+        for (std::size_t k = 0; k < m.triangles.size(); ++k) {
+            const auto& tri = m.triangles[k];
+            std::vector<std::size_t>& bounds = surfaceTows[sorted(tri[0], tri[1], tri[2])];
+            bounds.push_back(t);
+            const bool onBox = (m.face[k] == TowFace::Start && m.cutAt[0]) || (m.face[k] == TowFace::End && m.cutAt[1]);
+            if (res.mesh.cell && m.region[k] < 0 && !onBox) bounds.push_back(towCount);
+        }
+    }
+    if (res.mesh.cell)
+        for (const auto& tri : res.mesh.cell->triangles) surfaceTows[sorted(tri[0], tri[1], tri[2])].push_back(towCount);
     std::map<Face, std::vector<std::size_t>> faceTets;  // face -> tows of the tetrahedra on it
     for (std::size_t k = 0; k < v.tetrahedra.size(); ++k) {
         const auto& t = v.tetrahedra[k];
@@ -80,7 +100,7 @@ void checkConforming(const ResolveResult& res, const VolumeMesh& v)
             std::sort(a.begin(), a.end());
             std::sort(b.begin(), b.end());
             surfaceWrong += a != b;
-            onInterface += b.size() == 2;
+            onInterface += b.size() == 2 && b[1] < towCount;  // two tows (not a tow and the matrix)
         }
     }
     for (const auto& [f, tows] : surfaceTows) surfaceMissing += faceTets.count(f) == 0;
@@ -190,4 +210,129 @@ TEST_CASE("meshVolumes refuses tows that are not closed", "[volume]")
         CHECK(e.code() == ErrorCode::InvalidArgument);
         CHECK(e.message().find("tow 'warp_0': its surface mesh is not closed") != std::string::npos);
     }
+}
+
+TEST_CASE("a periodic twill cell: tows clipped by the box, the matrix around them, opposite faces paired", "[volume][cell]")
+{
+    // A 6x6 2/2 twill clipped to its 4x4 repeat with faces halfway between yarns: the outermost
+    // yarns lie wholly outside, the others are cut by two opposite faces each.
+    WeaveOptions w;
+    w.kind = WeaveKind::Twill;
+    w.floatOver = w.floatUnder = 2;
+    w.warps = w.wefts = 6;
+    w.overlap = 0.08;
+    std::vector<TowSurface> tows;
+    for (const TowStack& s : generateWeave(w).stacks()) tows.push_back(TowSurface::fit(s));
+    ResolveOptions o;
+    o.mesh.edgeLength = 0.2;
+    Cell cell;
+    cell.min = {0.5, 0.5, -0.5};
+    cell.max = {4.5, 4.5, 0.5};
+    cell.periodic = true;
+    o.cell = cell;
+    const ResolveResult res = resolveTextile(tows, o);
+    REQUIRE(res.mesh.cell);
+    CHECK(res.mesh.regions.size() == 16);  // the 4x4 crossings inside
+    CHECK(res.unresolved.empty());
+    std::size_t inside = 0;
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        const TowMesh& m = res.mesh.tows[t];
+        INFO(m.name);
+        if (m.triangles.empty()) continue;
+        ++inside;
+        CHECK(res.tows[t].boundaryLoops == 0);
+        CHECK((m.cutAt[0] && m.cutAt[1]));
+    }
+    CHECK(inside == 8);
+    const CellMesh& c = *res.mesh.cell;
+    const std::array<double, 3> lo{cell.min.x, cell.min.y, cell.min.z}, hi{cell.max.x, cell.max.y, cell.max.z};
+    const auto at = [](const Point3& p, std::size_t a) { return a == 0 ? p.x : a == 1 ? p.y : p.z; };
+    // Each face's nodes on its plane, its triangles (matrix and tow caps) covering it exactly.
+    std::array<double, 6> area{};
+    const auto addArea = [&](const std::array<std::size_t, 3>& t, std::size_t f) {
+        const Point3 &a = res.mesh.nodes[t[0]], &b = res.mesh.nodes[t[1]], &d = res.mesh.nodes[t[2]];
+        area[f] += 0.5 * norm(cross(b - a, d - a));
+    };
+    for (std::size_t k = 0; k < c.triangles.size(); ++k) addArea(c.triangles[k], static_cast<std::size_t>(c.face[k]));
+    for (const TowMesh& m : res.mesh.tows)
+        for (std::size_t k = 0; k < m.triangles.size(); ++k)
+            for (std::size_t end = 0; end < 2; ++end)
+                if (m.cutAt[end] && m.face[k] == (end == 0 ? TowFace::Start : TowFace::End)) addArea(m.triangles[k], static_cast<std::size_t>(*m.cutAt[end]));
+    for (std::size_t f = 0; f < 6; ++f) {
+        INFO(cellFaceName(static_cast<CellFace>(f)));
+        const std::size_t a = f / 2;
+        const double plane = f % 2 ? hi[a] : lo[a];
+        for (std::size_t n : c.faceNodes[f]) REQUIRE(at(res.mesh.nodes[n], a) == plane);
+        const double side = (hi[(a + 1) % 3] - lo[(a + 1) % 3]) * (hi[(a + 2) % 3] - lo[(a + 2) % 3]);
+        CHECK(area[f] == Approx(side).epsilon(1e-12));
+    }
+    // Every node of a min face has its partner on the max face, moved by the box's size.
+    for (std::size_t a = 0; a < 3; ++a) {
+        INFO("axis " << a);
+        CHECK(c.periodicPairs[a].size() == c.faceNodes[2 * a].size());
+        CHECK(c.periodicPairs[a].size() == c.faceNodes[2 * a + 1].size());
+        double worst = 0.0;
+        for (const auto& [p, q] : c.periodicPairs[a]) {
+            const Point3 d = res.mesh.nodes[q] - res.mesh.nodes[p];
+            worst = std::max({worst, std::abs(at(d, a) - (hi[a] - lo[a])), std::abs(at(d, (a + 1) % 3)), std::abs(at(d, (a + 2) % 3))});
+        }
+        CHECK(worst <= 1e-9 * (hi[a] - lo[a]));
+    }
+    CHECK(c.periodicPairs[0].size() > 100);
+    // Tetrahedra of the tows and the matrix, conforming on every interface; the box's faces by one.
+    VolumeMesh v = meshVolumes(res.mesh);
+    CHECK(v.withMatrix);
+    checkConforming(res, v);
+    // Fibre directions: unit in the tows (warps along x, wefts along y, within their crimp), none
+    // in the matrix.
+    addFibreDirections(v, tows);
+    double worstMatrix = 0.0, worstUnit = 0.0, leastAlong = 1.0;
+    for (std::size_t k = 0; k < v.tetrahedra.size(); ++k) {
+        const Vector3& d = v.fibreDirection[k];
+        if (v.tow[k] == tows.size()) {
+            worstMatrix = std::max(worstMatrix, norm(d));
+            continue;
+        }
+        worstUnit = std::max(worstUnit, std::abs(norm(d) - 1.0));
+        leastAlong = std::min(leastAlong, std::abs(res.mesh.tows[v.tow[k]].name[0] == 'w' && res.mesh.tows[v.tow[k]].name[1] == 'a' ? d.x : d.y));
+    }
+    CHECK(worstMatrix == 0.0);
+    CHECK(worstUnit < 1e-12);
+    CHECK(leastAlong > 0.95);  // the crimp tilts them by at most a few degrees
+}
+
+TEST_CASE("a cell whose faces do not cut the tows across, away from crossings, is refused naming the tow", "[cell]")
+{
+    const std::vector<TowSurface> four = twill({"warp_0", "warp_1", "weft_0", "weft_1"});
+    const auto refused = [&](Point3 lo, Point3 hi, bool periodic, const std::vector<TowSurface>& tows) {
+        ResolveOptions o;
+        o.mesh.edgeLength = 0.2;
+        Cell c;
+        c.min = lo;
+        c.max = hi;
+        c.periodic = periodic;
+        o.cell = c;
+        try {
+            resolveTextile(tows, o);
+        } catch (const Error& e) {
+            CHECK(e.code() == ErrorCode::InvalidArgument);
+            return std::string(e.what());
+        }
+        return std::string("not refused");
+    };
+    // Through the crossings at x = 0: the loops cross the face.
+    std::string m = refused({0.0, -0.5, -0.5}, {3.5, 3.5, 0.5}, false, four);
+    CHECK(m.find("crosses") != std::string::npos);
+    CHECK(m.find("warp_0") != std::string::npos);
+    // Along warp_1's middle (no other tow): the plane y = 1 cuts it lengthwise.
+    m = refused({-0.5, -0.5, -0.5}, {3.5, 1.0, 0.5}, false, twill({"warp_1"}));
+    CHECK(m.find("warp_1") != std::string::npos);
+    INFO(m);
+    CHECK(m.find("lengthwise") != std::string::npos);
+    // The bundled twill's yarns end one spacing beyond the repeat: not periodic there.
+    m = refused({-0.5, -0.5, -0.5}, {3.5, 3.5, 0.5}, true, four);
+    CHECK(m.find("does not repeat") != std::string::npos);
+    // A box with no volume.
+    m = refused({1.0, -0.5, -0.5}, {1.0, 3.5, 0.5}, false, four);
+    CHECK(m.find("minimum must lie below") != std::string::npos);
 }

@@ -37,6 +37,9 @@ struct TOWGEOM_EXPORT VolumeMesh {
     /// For each tetrahedron, the tow it lies in (an index into TextileMesh::tows), or
     /// TextileMesh::tows.size() for the matrix of a mesh clipped to a cell.
     std::vector<std::size_t> tow;
+    /// True for the volumes of a mesh clipped to a cell: tow index TextileMesh::tows.size() is
+    /// the matrix.
+    bool withMatrix = false;
     /// For each tetrahedron its fibre direction (a unit vector), once addFibreDirections() has
     /// set them; empty before.
     std::vector<Vector3> fibreDirection;

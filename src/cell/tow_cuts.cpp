@@ -143,8 +143,14 @@ CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const st
                            " more than once along its length, or runs in it: the cell's faces must cut each tow at most once, across it");
                 if (count == 0) ++none;
             }
-            if (none == kProbes) {  // one side of the plane
-                if (sign * (coord(s->Value(0.5 * (r.uMin + r.uMax), r.vMin), a) - c) > 0.0) outside = true;
+            if (none == kProbes) {  // no isoline crosses: the tow lies on one side, or the plane runs along it
+                int beyond = 0;
+                for (int j = 0; j < kProbes; ++j)
+                    if (sign * (coord(s->Value(0.5 * (r.uMin + r.uMax), r.vMin + r.vPeriod() * j / kProbes), a) - c) > 0.0) ++beyond;
+                if (beyond != 0 && beyond != kProbes)
+                    refuse("the plane of " + faceText(face) +
+                           " runs along it (cuts it lengthwise): the cell's faces must cut each tow across it");
+                if (beyond == kProbes) outside = true;
                 continue;
             }
             if (none != 0)

@@ -89,8 +89,8 @@ void addFibreDirections(VolumeMesh& volumes, const std::vector<TowSurface>& tows
     std::vector<Vector3> out(volumes.tetrahedra.size());
     for (std::size_t k = 0; k < volumes.tetrahedra.size(); ++k) {
         const std::size_t t = k < volumes.tow.size() ? volumes.tow[k] : tows.size() + 1;
-        if (t == tows.size()) continue;  // the matrix: no fibres (the zero vector)
-        if (t > tows.size())
+        if (t == tows.size() && volumes.withMatrix) continue;  // the matrix: no fibres (the zero vector)
+        if (t >= tows.size())
             throw Error(ErrorCode::InvalidArgument, "tetrahedron " + std::to_string(k) + " names tow " + std::to_string(t) + " of " +
                                                         std::to_string(tows.size()) + " given");
         if (!made[t]) {

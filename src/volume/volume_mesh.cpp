@@ -321,6 +321,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     VolumeMesh out;
     out.nodes = surfaces.nodes;
     out.surfaceNodes = surfaces.nodes.size();
+    out.withMatrix = matrix;
     const Gmsh g;  // loads Gmsh's library (EngineUnavailable if it cannot)
     const detail::GmshApi& api = g.api();
     std::lock_guard<std::mutex> lock(gmshMutex());
