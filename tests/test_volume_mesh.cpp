@@ -7,6 +7,7 @@
 #include <towgeom/towgeom.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <map>
 #include <set>
@@ -283,6 +284,12 @@ TEST_CASE("a periodic twill cell: tows clipped by the box, the matrix around the
     VolumeMesh v = meshVolumes(res.mesh);
     CHECK(v.withMatrix);
     checkConforming(res, v);
+    const TetrahedronQuality q = tetrahedronQuality(v);
+    std::size_t binned = 0;
+    for (std::size_t n : q.histogram) binned += n;
+    CHECK(binned == v.tetrahedra.size());
+    CHECK(q.minDihedral > 1.0);  // no flat tetrahedron: observed 3.2 degrees
+    CHECK(q.maxDihedral < 179.0);
     // Fibre directions: unit in the tows (warps along x, wefts along y, within their crimp), none
     // in the matrix.
     addFibreDirections(v, tows);
@@ -335,4 +342,21 @@ TEST_CASE("a cell whose faces do not cut the tows across, away from crossings, i
     // A box with no volume.
     m = refused({1.0, -0.5, -0.5}, {1.0, 3.5, 0.5}, false, four);
     CHECK(m.find("minimum must lie below") != std::string::npos);
+}
+
+TEST_CASE("tetrahedronQuality: a regular tetrahedron's dihedral angles are acos(1/3), a flattened one's near 0 and 180", "[volume]")
+{
+    VolumeMesh v;
+    v.nodes = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}, {0, 0, 1e-3}, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}};
+    v.tetrahedra = {{0, 1, 2, 3}};
+    v.tow = {0};
+    TetrahedronQuality q = tetrahedronQuality(v);
+    CHECK(q.minDihedral == Approx(std::acos(1.0 / 3.0) * 180.0 / 3.14159265358979323846).epsilon(1e-12));
+    CHECK(q.maxDihedral == Approx(q.minDihedral).epsilon(1e-12));
+    CHECK(q.histogram[7] == 1);
+    v.tetrahedra = {{5, 6, 7, 4}};  // its apex a hair above the base's edge: a sliver
+    q = tetrahedronQuality(v);
+    CHECK(q.minDihedral < 0.2);
+    CHECK(q.maxDihedral > 179.0);
+    CHECK(q.histogram[0] == 1);
 }

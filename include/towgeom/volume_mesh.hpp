@@ -51,6 +51,19 @@ struct TOWGEOM_EXPORT VolumeMesh {
     double towVolume(std::size_t t) const;
 };
 
+/// Shape of the tetrahedra of a VolumeMesh: dihedral angles (those of a regular tetrahedron are
+/// 70.53 degrees; a sliver has angles near 0 and 180).
+struct TOWGEOM_EXPORT TetrahedronQuality {
+    double minDihedral = 0.0;  ///< the smallest dihedral angle of any tetrahedron, degrees
+    double maxDihedral = 0.0;  ///< the largest, degrees
+    /// Tetrahedra by their smallest dihedral angle: [0, 5), [5, 10), [10, 20), [20, 30),
+    /// [30, 40), [40, 50), [50, 60), [60, 70.53] degrees.
+    std::array<std::size_t, 8> histogram{};
+};
+
+/// The dihedral angles of every tetrahedron of @p volumes.
+TOWGEOM_EXPORT TetrahedronQuality tetrahedronQuality(const VolumeMesh& volumes);
+
 /// Meshes the inside of every tow of @p surfaces (closed tows: MeshOptions::caps) with Gmsh's
 /// HXT tetrahedral mesher, the surface triangles kept as they are (Gmsh discrete entities, no
 /// surface remeshing), so the tetrahedra of two tows meet face to face on their shared regions.

@@ -226,6 +226,11 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
                             {"nodes", v->nodes.size()},
                             {"inner_nodes", v->nodes.size() - v->surfaceNodes},
                             {"tows", std::move(perTow)}};
+        const TetrahedronQuality q = tetrahedronQuality(*v);
+        j["volume_mesh"]["quality"] = {{"min_dihedral_deg", q.minDihedral},
+                                       {"max_dihedral_deg", q.maxDihedral},
+                                       {"min_dihedral_histogram_bins_deg", {0, 5, 10, 20, 30, 40, 50, 60}},
+                                       {"min_dihedral_histogram", q.histogram}};
         if (mesh.cell) {
             j["volume_mesh"]["matrix"] = {{"tetrahedra", count[tows.size()]}, {"volume", volume[tows.size()]}};
             j["volume_mesh"]["fibre_volume_fraction"] = towVolume / mesh.cell->box.volume();
