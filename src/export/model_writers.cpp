@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <iomanip>
 #include <limits>
 #include <map>
@@ -428,6 +429,27 @@ void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostrea
                 const auto& q = volumes.tetrahedra[k];
                 w.number(++id).text(", ").number(q[0] + 1).text(", ").number(q[1] + 1).text(", ").number(q[2] + 1).text(", ").number(q[3] + 1).end();
             }
+        }
+        // Fibre directions (addFibreDirections()): each tow element's local 1-axis along its
+        // fibres, the 2-axis normal to it towards global z (y where the fibres run along z); an
+        // *ORIENTATION FIBRES for *SOLID SECTION, ..., ORIENTATION=FIBRES.
+        if (volumes.fibreDirection.size() == volumes.tetrahedra.size() && towCount > 0 && solids.size() > (tets[towCount].empty() ? 0u : 1u)) {
+            constexpr std::size_t kAxis = 16;  // a line stays within CalculiX's 132 characters
+            w.text("*DISTRIBUTION, NAME=FIBRE_AXES").end();
+            w.text(", 1., 0., 0., 0., 1., 0.").end();
+            id = 0;
+            for (std::size_t t = 0; t < towCount; ++t)
+                for (std::size_t k : tets[t]) {
+                    const Vector3& a = volumes.fibreDirection[k];
+                    const Vector3 up = std::abs(a.z) < 0.9 ? Vector3{0.0, 0.0, 1.0} : Vector3{0.0, 1.0, 0.0};
+                    Vector3 b = up - dot(up, a) * a;
+                    b = (1.0 / norm(b)) * b;
+                    w.number(++id);
+                    for (double x : {a.x, a.y, a.z, b.x, b.y, b.z}) w.text(", ").fitted(x, kAxis);
+                    w.end();
+                }
+            w.text("*ORIENTATION, NAME=FIBRES").end();
+            w.text("FIBRE_AXES").end();
         }
     }
     const auto list = [&](const std::vector<std::size_t>& ids) {
