@@ -322,6 +322,25 @@ TEST_CASE("towgeom resolve --volume fills the tows with tetrahedra that Gmsh rea
     const auto data = msh.find(header);
     REQUIRE(data != std::string::npos);
     CHECK(std::stoul(msh.substr(data + header.size())) == inMsh);
+    // ParaView's file: meshio (an independent VTK XML reader) finds the tetrahedra, the tow of
+    // each (0 or 1), its material (a tow) and a unit fibre direction.
+    INFO("meshio not found: install python3-meshio (bash cmake/ensure_packages.sh)");
+    REQUIRE(std::system("/usr/bin/python3 -c 'import meshio' >/dev/null 2>&1") == 0);
+    const Run m = testing::runShell("/usr/bin/python3 -c \"import meshio, numpy; m = meshio.read('" + (out / "textile_volume.vtu").string() +
+                                    "'); d = m.cell_data; print(len(m.points), sum(len(c.data) for c in m.cells if c.type == 'tetra'), "
+                                    "int(d['tow_id'][0].min()), int(d['tow_id'][0].max()), int(d['material'][0].min()), "
+                                    "float(abs(numpy.linalg.norm(d['fibre_direction'][0], axis=1) - 1).max()))\" 2>&1");
+    INFO(m.out);
+    REQUIRE(m.status == 0);
+    std::istringstream read(m.out);
+    double points = 0, tetrahedra = 0, lowTow = -1, highTow = -1, material = -1, offUnit = 1;
+    read >> points >> tetrahedra >> lowTow >> highTow >> material >> offUnit;
+    CHECK(points == jsonNumber(report.substr(report.find("\"volume_mesh\"")), "nodes"));
+    CHECK(tetrahedra == tets);
+    CHECK(lowTow == 0);
+    CHECK(highTow == 1);
+    CHECK(material == 1);
+    CHECK(offUnit < 1e-12);
     fs::remove_all(out);
     const Run open = cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + out.string() + "' --volume --no-caps --quiet");
     CHECK(open.status == 2);
@@ -687,7 +706,7 @@ TEST_CASE("CalculiX solves the twill's unit cell, tows in a matrix: the modulus 
     // normal to themselves), stiff tows in a soft matrix, the same Poisson ratio.
     const fs::path out = scratch("ccx_cell");
     const Run r = cli("resolve" + twill({"warp_0", "warp_1", "warp_2", "warp_3", "weft_0", "weft_1", "weft_2", "weft_3"}) + " --out '" +
-                      out.string() + "' --cell -0.5,-0.5,-0.5,3.5,3.5,0.5 --volume --mesh-size 0.2 --formats inp --quiet");
+                      out.string() + "' --cell -0.5,-0.5,-0.5,3.5,3.5,0.5 --volume --mesh-size 0.2 --formats inp,vtk --quiet");
     INFO(r.err);
     REQUIRE(r.status == 0);
     const std::string report = testing::slurp(out / "report.json");
@@ -751,5 +770,19 @@ TEST_CASE("CalculiX solves the twill's unit cell, tows in a matrix: the modulus 
     WARN("orthotropic tows: modulus " << global << " with material axes along x, " << fibres << " along the fibres");
     CHECK(fibres < 0.95 * global);  // observed 12,100 and 14,400
     CHECK(fibres > em);
+    // The .vtu holds the matrix too (tow -1, material 0), as many tetrahedra as the report.
+    REQUIRE(std::system("/usr/bin/python3 -c 'import meshio' >/dev/null 2>&1") == 0);
+    const Run m = testing::runShell("/usr/bin/python3 -c \"import meshio; m = meshio.read('" + (out / "textile_volume.vtu").string() +
+                                    "'); d = m.cell_data; print(sum(len(c.data) for c in m.cells), int(d['tow_id'][0].min()), "
+                                    "int((d['material'][0] == 0).sum()))\" 2>&1");
+    INFO(m.out);
+    REQUIRE(m.status == 0);
+    std::istringstream read(m.out);
+    double tetrahedra = 0, lowTow = 0, inMatrix = 0;
+    read >> tetrahedra >> lowTow >> inMatrix;
+    const std::string volumeMesh = report.substr(report.find("\"volume_mesh\""));
+    CHECK(tetrahedra == jsonNumber(volumeMesh, "tetrahedra"));
+    CHECK(lowTow == -1);
+    CHECK(inMatrix == jsonNumber(volumeMesh.substr(volumeMesh.find("\"matrix\"")), "tetrahedra"));
     fs::remove_all(out);
 }

@@ -28,7 +28,10 @@ TOWGEOM_EXPORT void writeGmsh(const TextileMesh& mesh, std::ostream& out);
 /// a negative sign for its secondary), in a physical volume TOW_NAME, its inner nodes classified
 /// on it; the surface entities and groups as without volumes; and, when @p volumes has its
 /// fibre directions (addFibreDirections()), $ElementData "fibre_direction" (3 components per
-/// tetrahedron).
+/// tetrahedron; zero in the matrix). A mesh clipped to a cell (TextileMesh::cell) adds the
+/// matrix as physical volume MATRIX (tag: the number of tows + 1), bounded by the box's faces
+/// and the tows' surfaces it touches, and a physical surface per box face, XMIN ... ZMAX (the
+/// matrix's and the tows' triangles on it); so does writeGmsh(mesh) for the surfaces.
 /// @throws towgeom::Error (InvalidArgument) if @p volumes is not of @p mesh.
 TOWGEOM_EXPORT void writeGmsh(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostream& out);
 
@@ -55,12 +58,29 @@ TOWGEOM_EXPORT void writeAbaqus(const TextileMesh& mesh, std::ostream& out);
 /// file: *NODE (the nodes the tetrahedra use, 1-based global numbering, at most 20 characters a
 /// number), *ELEMENT TYPE=C3D4 with ELSET=TOW_NAME per tow, per tow *NSET NODES_NAME (its nodes)
 /// and START_NAME / END_NAME (the nodes of its end caps, where supports and loads go), and
-/// *ELSET TEXTILE (every element). Two tows' elements share the nodes of their regions.
+/// *ELSET TEXTILE (every tow element). Two tows' elements share the nodes of their regions.
+/// A mesh clipped to a cell adds *ELSET MATRIX (the matrix's elements; its nodes on the tows'
+/// surfaces are the tows') and per box face *NSET XMIN ... ZMAX (every node on it). With fibre
+/// directions (addFibreDirections()) also *DISTRIBUTION FIBRE_AXES (per tow element the local
+/// 1-axis along its fibres, the 2-axis normal to it towards global z, or y where the fibres run
+/// along z) and *ORIENTATION FIBRES using it: `*SOLID SECTION, ELSET=TEXTILE, MATERIAL=M,
+/// ORIENTATION=FIBRES` gives orthotropic tows their axes (CalculiX 2.17 and later, Abaqus).
 /// @throws towgeom::Error (InvalidArgument) if @p volumes is not of @p mesh.
 TOWGEOM_EXPORT void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostream& out);
 
 /// writeAbaqus(mesh, volumes, out) to @p path, written to a temporary name and renamed.
 /// @throws towgeom::Error (WriteFailed) naming @p path.
 TOWGEOM_EXPORT void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volumes, const std::string& path);
+
+/// Writes the tetrahedra of @p volumes as a VTK XML unstructured grid (.vtu, ASCII) for
+/// ParaView: the nodes, one cell (VTK_TETRA) per tetrahedron, and per cell "tow_id" (the tow's
+/// index, -1 in the matrix), "material" (1 a tow, 0 the matrix) and, with fibre directions,
+/// "fibre_direction" (3 components, zero in the matrix).
+/// @throws towgeom::Error (InvalidArgument) if @p volumes is not of @p mesh.
+TOWGEOM_EXPORT void writeVtu(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostream& out);
+
+/// writeVtu(mesh, volumes, out) to @p path, written to a temporary name and renamed.
+/// @throws towgeom::Error (WriteFailed) naming @p path.
+TOWGEOM_EXPORT void writeVtu(const TextileMesh& mesh, const VolumeMesh& volumes, const std::string& path);
 
 TOWGEOM_END_NAMESPACE

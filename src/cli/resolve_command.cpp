@@ -111,7 +111,10 @@ Options:
                      element data "fibre_direction": its tow's tangent along its centreline
                      nearest the tetrahedron), with --formats ...,inp also
                      DIR/textile_volume.inp (C3D4, ELSET TOW_NAME, NSET NODES_NAME, START_NAME,
-                     END_NAME per tow); report.json gains "volume_mesh".
+                     END_NAME per tow, *ORIENTATION FIBRES: each element's fibre axes), with
+                     vtk also DIR/textile_volume.vtu for ParaView (tow_id, material,
+                     fibre_direction per tetrahedron); report.json gains "volume_mesh" (counts,
+                     volumes, dihedral-angle histogram).
                      Needs Gmsh's library (Debian: libgmsh4.8). With --cell also the matrix:
                      physical volume / ELSET MATRIX, groups / NSETs XMIN ... ZMAX of every node
                      on each box face; report.json "volume_mesh" gains "matrix" and
@@ -297,6 +300,7 @@ int runResolve(int argc, char** argv, int first)
         if (formats.count("inp")) writeAbaqus(mesh, files.open(path("textile.inp")));
         if (volume) writeGmsh(mesh, volumes, files.open(path("textile_volume.msh")));
         if (volume && formats.count("inp")) writeAbaqus(mesh, volumes, files.open(path("textile_volume.inp")));
+        if (volume && formats.count("vtk")) writeVtu(mesh, volumes, files.open(path("textile_volume.vtu")));
         const double writeMs = msSince(t0);
         ResolveReportOptions written;
         written.threads = options.threads;
