@@ -72,6 +72,23 @@ TOWGEOM_EXPORT void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volum
 /// @throws towgeom::Error (WriteFailed) naming @p path.
 TOWGEOM_EXPORT void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volumes, const std::string& path);
 
+/// Writes periodic boundary conditions for the volume mesh of a periodic cell (Cell::periodic)
+/// as an Abaqus/CalculiX include file: three reference nodes REF_X, REF_Y, REF_Z (numbered
+/// after the mesh's nodes) and, for every node q on a max face with its partner p on the min
+/// face (CellMesh::periodicPairs), *EQUATION u(q) - u(p) - u(REF_a) = 0 per direction, where a is
+/// the axis of the pair. A node on several max faces (the box's edges and corners) is tied by
+/// its highest axis only, so each node is dependent at most once and the ties chain back to the
+/// min faces: the displacement of REF_a is the cell's stretch along axis a (REF_X = (eps_xx,
+/// eps_yx, eps_zx) * Lx). *NSET CORNER holds the node at the box's min corner (fix it against
+/// rigid motion). Include it after writeAbaqus(mesh, volumes)'s file.
+/// @throws towgeom::Error (InvalidArgument) if @p mesh is not clipped to a periodic cell or
+/// @p volumes is not of it.
+TOWGEOM_EXPORT void writeAbaqusPeriodic(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostream& out);
+
+/// writeAbaqusPeriodic(mesh, volumes, out) to @p path, written to a temporary name and renamed.
+/// @throws towgeom::Error (WriteFailed) naming @p path.
+TOWGEOM_EXPORT void writeAbaqusPeriodic(const TextileMesh& mesh, const VolumeMesh& volumes, const std::string& path);
+
 /// Writes the tetrahedra of @p volumes as a VTK XML unstructured grid (.vtu, ASCII) for
 /// ParaView: the nodes, one cell (VTK_TETRA) per tetrahedron, and per cell "tow_id" (the tow's
 /// index, -1 in the matrix), "material" (1 a tow, 0 the matrix) and, with fibre directions,

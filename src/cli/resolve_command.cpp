@@ -129,7 +129,10 @@ Options:
   --periodic         with --cell: the textile repeats with the box; the max faces' meshes are
                      the min faces' moved by the box (every node has its partner at exactly +L),
                      refused (exit 2) where a tow's cuts on opposite faces differ by more than
-                     1e-3 of its size
+                     1e-3 of its size. With --volume --formats ...,inp also
+                     DIR/textile_volume_periodic.inp: *EQUATION ties of every max-face node to
+                     its min-face partner through reference nodes REF_X, REF_Y, REF_Z (their
+                     displacements: the cell's stretch along each axis), *NSET CORNER
   --allow-open       exit 0 even when an intersection curve is open (or, with --no-caps, a
                      loop crosses a tow's end cap): never resolved, still named on stderr;
                      other unresolved pairs still exit 3
@@ -300,6 +303,8 @@ int runResolve(int argc, char** argv, int first)
         if (formats.count("inp")) writeAbaqus(mesh, files.open(path("textile.inp")));
         if (volume) writeGmsh(mesh, volumes, files.open(path("textile_volume.msh")));
         if (volume && formats.count("inp")) writeAbaqus(mesh, volumes, files.open(path("textile_volume.inp")));
+        if (volume && formats.count("inp") && options.cell && options.cell->periodic)
+            writeAbaqusPeriodic(mesh, volumes, files.open(path("textile_volume_periodic.inp")));
         if (volume && formats.count("vtk")) writeVtu(mesh, volumes, files.open(path("textile_volume.vtu")));
         const double writeMs = msSince(t0);
         ResolveReportOptions written;

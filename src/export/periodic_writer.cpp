@@ -1,0 +1,60 @@
+// Periodic boundary conditions of a periodic cell's volume mesh as Abaqus/CalculiX *EQUATION.
+#include <algorithm>
+#include <ostream>
+#include <vector>
+
+#include "export/number_writer.hpp"
+#include "io/output_files.hpp"
+#include "towgeom/error.hpp"
+#include "towgeom/mesh_export.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+
+void writeAbaqusPeriodic(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostream& out)
+{
+    if (!mesh.cell || !mesh.cell->box.periodic)
+        throw Error(ErrorCode::InvalidArgument, "periodic boundary conditions need a mesh clipped to a periodic cell");
+    if (volumes.surfaceNodes != mesh.nodes.size())
+        throw Error(ErrorCode::InvalidArgument, "the volume mesh is not one of this surface mesh (meshVolumes() of it)");
+    const CellMesh& cell = *mesh.cell;
+    // Per node, the highest axis on whose max face it lies (-1: none).
+    std::vector<int> maxAxis(mesh.nodes.size(), -1);
+    for (int a = 0; a < 3; ++a)
+        for (std::size_t n : cell.faceNodes[static_cast<std::size_t>(2 * a + 1)]) maxAxis.at(n) = a;
+    const std::size_t ref = volumes.nodes.size();  // REF_X, REF_Y, REF_Z: ref + 1 .. ref + 3 (1-based)
+    detail::NumberWriter w(out);
+    w.text("** towgeom: periodic boundary conditions of the cell (include after the mesh)").end();
+    w.text("*NODE").end();
+    const Point3& lo = cell.box.min;
+    for (std::size_t k = 1; k <= 3; ++k) w.number(ref + k).text(", ").fitted(lo.x, 20).text(", ").fitted(lo.y, 20).text(", ").fitted(lo.z, 20).end();
+    const char* names[3] = {"REF_X", "REF_Y", "REF_Z"};
+    for (std::size_t k = 0; k < 3; ++k) w.text("*NSET, NSET=").text(names[k]).end().number(ref + k + 1).end();
+    // The min corner: on all three min faces.
+    std::vector<std::size_t> corner;
+    for (std::size_t n : cell.faceNodes[0])
+        if (std::binary_search(cell.faceNodes[2].begin(), cell.faceNodes[2].end(), n) &&
+            std::binary_search(cell.faceNodes[4].begin(), cell.faceNodes[4].end(), n))
+            corner.push_back(n);
+    if (corner.size() != 1) throw Error(ErrorCode::Internal, "the cell's min corner is not one node");
+    w.text("*NSET, NSET=CORNER").end().number(corner[0] + 1).end();
+    for (int a = 0; a < 3; ++a)
+        for (const auto& [p, q] : cell.periodicPairs[static_cast<std::size_t>(a)]) {
+            if (maxAxis.at(q) != a) continue;  // tied by a higher axis
+            for (int dof = 1; dof <= 3; ++dof) {
+                w.text("*EQUATION").end().text("3").end();
+                w.number(q + 1).text(", ").number(dof).text(", 1., ").number(p + 1).text(", ").number(dof).text(", -1., ");
+                w.number(ref + static_cast<std::size_t>(a) + 1).text(", ").number(dof).text(", -1.").end();
+            }
+        }
+    w.flush();
+}
+
+void writeAbaqusPeriodic(const TextileMesh& mesh, const VolumeMesh& volumes, const std::string& path)
+{
+    detail::OutputFiles files;
+    writeAbaqusPeriodic(mesh, volumes, files.open(path));
+    files.commit();
+}
+
+TOWGEOM_END_NAMESPACE
