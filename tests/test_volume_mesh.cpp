@@ -249,10 +249,12 @@ TEST_CASE("a periodic twill cell: tows clipped by the box, the matrix around the
     const std::array<double, 3> lo{cell.min.x, cell.min.y, cell.min.z}, hi{cell.max.x, cell.max.y, cell.max.z};
     const auto at = [](const Point3& p, std::size_t a) { return a == 0 ? p.x : a == 1 ? p.y : p.z; };
     // Each face's nodes on its plane, its triangles (matrix and tow caps) covering it exactly.
+    // Signed: a triangle turned inwards would subtract its area.
     std::array<double, 6> area{};
     const auto addArea = [&](const std::array<std::size_t, 3>& t, std::size_t f) {
         const Point3 &a = res.mesh.nodes[t[0]], &b = res.mesh.nodes[t[1]], &d = res.mesh.nodes[t[2]];
-        area[f] += 0.5 * norm(cross(b - a, d - a));
+        const Vector3 n = cross(b - a, d - a);
+        area[f] += 0.5 * (f % 2 ? 1.0 : -1.0) * at(n, f / 2);  // along the face's outward normal
     };
     for (std::size_t k = 0; k < c.triangles.size(); ++k) addArea(c.triangles[k], static_cast<std::size_t>(c.face[k]));
     for (const TowMesh& m : res.mesh.tows)
@@ -359,4 +361,46 @@ TEST_CASE("tetrahedronQuality: a regular tetrahedron's dihedral angles are acos(
     CHECK(q.minDihedral < 0.2);
     CHECK(q.maxDihedral > 179.0);
     CHECK(q.histogram[0] == 1);
+}
+
+TEST_CASE("a cell: tows wholly outside are dropped whatever the other faces' planes do to them; no tow at all is all matrix", "[volume][cell]")
+{
+    ResolveOptions o;
+    o.mesh.edgeLength = 0.2;
+    Cell cell;
+    // weft_0 (along y from -1 to 4, at x = 0) lies below the face y = 5, outside; the plane of
+    // the face x = 0, looked at first, runs along it (a tow inside would be refused for that).
+    cell.min = {0.0, 5.0, -0.5};
+    cell.max = {3.5, 6.0, 0.5};
+    o.cell = cell;
+    const ResolveResult res = resolveTextile(twill({"weft_0"}), o);
+    REQUIRE(res.mesh.cell);
+    CHECK(res.mesh.tows[0].triangles.empty());
+    const VolumeMesh v = meshVolumes(res.mesh);
+    CHECK(v.towVolume(1) == Approx(cell.volume()).epsilon(1e-12));
+    // No tows: the box's faces at a tenth of its shortest side, the matrix filling it.
+    const ResolveResult none = resolveTextile(std::vector<TowSurface>{}, o);
+    REQUIRE(none.mesh.cell);
+    CHECK(none.mesh.cell->triangles.size() > 100);
+    CHECK(meshVolumes(none.mesh).towVolume(0) == Approx(cell.volume()).epsilon(1e-12));
+}
+
+TEST_CASE("a cell's faces count in the triangle budget", "[cell]")
+{
+    // One tow in a box far larger than it: the faces, at the tow's mesh size, are most of the mesh.
+    ResolveOptions o;
+    o.mesh.edgeLength = 0.05;
+    o.mesh.maxTriangles = 50000;  // the tow alone: about 24,000 estimated
+    const std::vector<TowSurface> one = twill({"weft_1"});
+    CHECK_NOTHROW(resolveTextile(one, o));
+    Cell cell;
+    cell.min = {-5.0, -0.5, -5.0};
+    cell.max = {5.0, 3.5, 5.0};
+    o.cell = cell;
+    try {
+        resolveTextile(one, o);
+        FAIL("not refused");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::TooLarge);
+    }
 }

@@ -5,7 +5,6 @@
 
 #include <array>
 #include <cstddef>
-#include <optional>
 #include <utility>
 #include <vector>
 
@@ -36,9 +35,9 @@ TOWGEOM_EXPORT const char* cellFaceName(CellFace face) noexcept;
 ///
 /// What is clipped: a tow that crosses a face's plane once along its length, all around (one cut
 /// around the tube), inside the face's rectangle. Refused (towgeom::Error, InvalidArgument,
-/// naming the tow or the tow pair and the face): a tow that crosses a plane more than once, runs
-/// along it or crosses an edge of the box; an intersection loop that crosses a face (two tows
-/// overlap where the face cuts them). Choose the cell's faces between crossings (for a woven
+/// naming the tow (and the face) or the tow pair): a tow that crosses a plane more than once,
+/// runs along it or crosses an edge of the box; an intersection loop that crosses a face or
+/// comes within a quarter of the mesh size of one (two tows overlap where the face cuts them). Choose the cell's faces between crossings (for a woven
 /// unit cell: halfway between neighbouring yarns).
 struct TOWGEOM_EXPORT Cell {
     Point3 min;  ///< lower corner
@@ -48,9 +47,12 @@ struct TOWGEOM_EXPORT Cell {
     /// on the two faces pair up exactly), likewise y and z. A tow cut by the min face must be
     /// cut by the max face too, where its cut is the min face's moved (within periodTolerance).
     bool periodic = false;
-    /// How far (relative to the tow's size) a node moved from the min face onto the max face may
-    /// lie from the tow's surface there: a larger gap means the textile does not repeat with the
-    /// box (refused).
+    /// How far (relative to the tow's size) a node of a tow's cut moved from the min face onto
+    /// the max face may lie from the max face's cut of that tow at the same place around it (the
+    /// same v: the tow's sections must start at the same place around it on both faces, as
+    /// generated textiles' do): a larger gap means the textile does not repeat with the box
+    /// (refused). The moved node is the max face's node: its distance from the tow's surface is
+    /// at most this gap.
     double periodTolerance = 1e-3;
 
     /// Throws towgeom::Error (InvalidArgument) unless min < max on every axis, all finite, and

@@ -46,8 +46,10 @@ TOWGEOM_EXPORT void writeGmsh(const TextileMesh& mesh, const VolumeMesh& volumes
 /// end caps) and ELSET=SHARED (the regions' triangles, in their primary's orientation); per
 /// connected region *ELSET REGION_k (its triangles) and *NSET REGION_k (its nodes); per tow
 /// with end caps *ELSET CAPS_NAME; per tow *ELSET TOW_NAME (its closed surface: OWN_NAME and its
-/// REGION_k sets, by name); and *ELSET TEXTILE (every element). Names are upper-cased by
-/// CalculiX. Written to a temporary name and renamed.
+/// REGION_k sets, by name); and *ELSET TEXTILE (every tow element). A mesh clipped to a cell
+/// adds *ELEMENT TYPE=S3 ELSET=MATRIX_FACES (the box's faces outside the tows) and per box face
+/// *NSET XMIN ... ZMAX (every node on it). Names are upper-cased by CalculiX. Written to a
+/// temporary name and renamed.
 /// @throws towgeom::Error (WriteFailed) naming @p path.
 TOWGEOM_EXPORT void writeAbaqus(const TextileMesh& mesh, const std::string& path);
 

@@ -47,15 +47,17 @@ std::vector<double> crossings(const Handle(Geom_BSplineSurface)& s, double v, in
     for (int i = 1; i <= meet.NbPoints(); ++i) {
         double pu = 0.0, pv = 0.0, w = 0.0;
         meet.Parameters(i, pu, pv, w);
-        for (int k = 0; k < 4; ++k) {  // Newton on x_a(S(w, v)) = c, within the range
+        if (!(w >= r.uMin && w <= r.uMax)) continue;
+        for (int k = 0; k < 4; ++k) {  // Newton on x_a(S(w, v)) = c, kept only while it stays in the range
             gp_Pnt p;
             gp_Vec du, dv;
             s->D1(w, v, p, du, dv);
             const double d = coord(du, a);
-            if (d == 0.0) break;
-            w = std::clamp(w - (coord(p, a) - c) / d, r.uMin, r.uMax);
+            const double next = d == 0.0 ? w : w - (coord(p, a) - c) / d;
+            if (!(next >= r.uMin && next <= r.uMax)) break;
+            w = next;
         }
-        if (w >= r.uMin && w <= r.uMax) us.push_back(w);
+        us.push_back(w);
     }
     std::sort(us.begin(), us.end());
     const double same = 1e-9 * (r.uMax - r.uMin);
@@ -121,8 +123,11 @@ CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const st
                 const gp_Pnt& p = s->Pole(i, j);
                 box.add({p.X(), p.Y(), p.Z()});
             }
+        // Each face first classified, so that a tow wholly outside through one face is not
+        // refused for how another face's plane meets it.
         std::vector<Candidate> candidates;
         bool outside = false;
+        std::string refusal;
         for (int f = 0; f < 6 && !outside; ++f) {
             const CellFace face = static_cast<CellFace>(f);
             const int a = axisOf(face);
@@ -135,30 +140,39 @@ CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const st
                 break;
             }
             int none = 0;
-            for (int j = 0; j < kProbes; ++j) {
+            bool many = false;
+            for (int j = 0; j < kProbes && !many; ++j) {
                 bool inPlane = false;
                 const std::size_t count = crossings(s, r.vMin + r.vPeriod() * j / kProbes, a, c, r, inPlane).size();
-                if (inPlane || count > 1)
-                    refuse("it crosses the plane of " + faceText(face) +
-                           " more than once along its length, or runs in it: the cell's faces must cut each tow at most once, across it");
+                many = inPlane || count > 1;
                 if (count == 0) ++none;
+            }
+            const auto note = [&](const std::string& what) {
+                if (refusal.empty()) refusal = what;
+            };
+            if (many) {
+                note("it crosses the plane of " + faceText(face) +
+                     " more than once along its length, or runs in it: the cell's faces must cut each tow at most once, across it");
+                continue;
             }
             if (none == kProbes) {  // no isoline crosses: the tow lies on one side, or the plane runs along it
                 int beyond = 0;
                 for (int j = 0; j < kProbes; ++j)
                     if (sign * (coord(s->Value(0.5 * (r.uMin + r.uMax), r.vMin + r.vPeriod() * j / kProbes), a) - c) > 0.0) ++beyond;
                 if (beyond != 0 && beyond != kProbes)
-                    refuse("the plane of " + faceText(face) +
-                           " runs along it (cuts it lengthwise): the cell's faces must cut each tow across it");
+                    note("the plane of " + faceText(face) + " runs along it (cuts it lengthwise): the cell's faces must cut each tow across it");
                 if (beyond == kProbes) outside = true;
                 continue;
             }
-            if (none != 0)
-                refuse("the plane of " + faceText(face) +
-                       " cuts it only partly (along its side, not all around): the cell's faces must cut each tow across it");
+            if (none != 0) {
+                note("the plane of " + faceText(face) +
+                     " cuts it only partly (along its side, not all around): the cell's faces must cut each tow across it");
+                continue;
+            }
             const int end = sign * (coord(s->Value(r.uMin, r.vMin), a) - c) > 0.0 ? 0 : 1;
             candidates.push_back({face, end, {}});
         }
+        if (!outside && !refusal.empty()) refuse(refusal);
         if (outside) {
             out.outside[t] = 1;
             continue;
@@ -278,9 +292,10 @@ CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const st
                     std::ostringstream m;
                     m.precision(3);
                     m << "tow '" << tows[t].name() << "': its cut by the periodic cell's face " << name(0) << ", moved onto the face "
-                      << name(1) << ", lies " << worst << " (" << worst / tows[t].towSize()
-                      << " of the tow's size) from its surface there, over the period tolerance " << cell.periodTolerance
-                      << ": the textile does not repeat with the cell";
+                      << name(1) << ", lies up to " << worst / tows[t].towSize()
+                      << " of the tow's size from its cut there (at the same place around the tow), over the period tolerance "
+                      << cell.periodTolerance << ": the textile does not repeat with the cell (or its sections start at another place "
+                      << "around the tow there)";
                     throw Error(ErrorCode::InvalidArgument, m.str());
                 }
             }

@@ -38,9 +38,11 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                    regions), face (0 tube, 1 start cap, 2 end cap), point data node_id (the
                    global node number)
   DIR/textile.msh  with --formats msh: Gmsh 4.1, physical groups TOW_NAME, REGION_k and
-                   CAPS_NAME (a tow's two end caps)
+                   CAPS_NAME (a tow's two end caps); with --cell also XMIN ... ZMAX (every
+                   triangle on each box face: the matrix's and the tows' caps)
   DIR/textile.inp  with --formats inp: Abaqus, *NODE, *ELEMENT TYPE=S3 with ELSET=TOW_NAME,
-                   *ELSET/*NSET REGION_k, *ELSET CAPS_NAME
+                   *ELSET/*NSET REGION_k, *ELSET CAPS_NAME; with --cell also *ELSET
+                   MATRIX_FACES (the box's faces outside the tows) and *NSET XMIN ... ZMAX
   DIR/report.json  {"tows":[{"name","role","volume_before","volume_after","area","triangles",
                    "boundary_loops","pieces","mesh_size"}], "loops":[...as detect...], "findings":[...as detect...],
                    "unresolved":[{"tow_a","tow_b","reason","message"}], "regions":[{"primary",
@@ -70,8 +72,8 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                   closed after the swap: its pairs get no region, their loop nodes stay in
                   the meshes)
   skipped         every loop not resolved, with its code (open_curve, crosses_cap,
-                  around_both_tows, around_tow_without_caps, bands_do_not_alternate) and the
-                  reason as a sentence
+                  around_both_tows, around_tow_without_caps, bands_do_not_alternate,
+                  outside_cell: clipped away by --cell) and the reason as a sentence
   volume_removed  the volume of the two tows' overlap inside the region's loop: what the
                   secondary lost there when no third tow overlaps them there
   triple_points   points where three tows' surfaces meet (node: the global node number)
@@ -100,8 +102,8 @@ Options:
                      other tows is refused (exit 2)
   --max-triangles N  refuse (exit 2, before meshing) meshes estimated at more than N triangles,
                      all tows together (default 20000000, about 5 GB; the estimate: about 3 x
-                     the tows' area (end caps included) / (sqrt(3)/4 H^2), plus the
-                     refinement along loops)
+                     the tows' area (end caps included; with --cell, the box's faces too)
+                     / (sqrt(3)/4 H^2), plus the refinement along loops)
   --no-caps          leave every tow a tube open at its two ends (default: each tow closed by
                      its two end caps, meshes of its end sections: a closed surface)
   --volume           also fill every tow with tetrahedra (Gmsh's HXT, the surface triangles kept
@@ -118,14 +120,15 @@ Options:
                      Needs Gmsh's library (Debian: libgmsh4.8). With --cell also the matrix:
                      physical volume / ELSET MATRIX, groups / NSETs XMIN ... ZMAX of every node
                      on each box face; report.json "volume_mesh" gains "matrix" and
-                     "fibre_volume_fraction"
+                     "tow_volume_fraction"
   --cell X0,Y0,Z0,X1,Y1,Z1
                      clip every tow by this box (a unit cell for finite elements): where a face
                      cuts a tow the tow is closed by a flat cap on the face; the faces are meshed
                      around the caps (shared nodes) and, with --volume, the matrix is filled
                      too. The faces must cut tows across, away from crossings and from the box's
                      edges (else exit 2 naming the tow): for a woven cell, halfway between yarns.
-                     report.json gains "cell"
+                     A tow wholly outside the box gets no NAME.stl / NAME.vtk. report.json gains
+                     "cell"
   --periodic         with --cell: the textile repeats with the box; the max faces' meshes are
                      the min faces' moved by the box (every node has its partner at exactly +L),
                      refused (exit 2) where a tow's cuts on opposite faces differ by more than
@@ -281,6 +284,7 @@ int runResolve(int argc, char** argv, int first)
         // Open every file first (OutputFiles is not thread-safe), then fill them on all threads.
         std::vector<std::ostream*> stl(tows.size(), nullptr), vtk(tows.size(), nullptr);
         for (std::size_t t = 0; t < tows.size(); ++t) {
+            if (mesh.tows[t].triangles.empty()) continue;  // wholly outside the cell: no file
             if (formats.count("stl")) stl[t] = &files.open(path(tows[t].name() + ".stl"));
             if (formats.count("vtk")) vtk[t] = &files.open(path(tows[t].name() + ".vtk"));
         }

@@ -67,6 +67,18 @@ bool isCap(const TowMesh& m, std::size_t k) { return k < m.face.size() && m.face
 
 namespace {
 
+/// Per face of a cell (a mesh clipped to one), *NSET XMIN ... ZMAX: every node on it.
+void writeCellFaceSets(const TextileMesh& mesh, std::ostream& out)
+{
+    if (!mesh.cell) return;
+    for (std::size_t f = 0; f < 6; ++f) {
+        const std::vector<std::size_t>& nodes = mesh.cell->faceNodes[f];
+        if (nodes.empty()) continue;
+        out << "*NSET, NSET=" << upper(cellFaceName(static_cast<CellFace>(f))) << '\n';
+        for (std::size_t k = 0; k < nodes.size(); ++k) out << nodes[k] + 1 << (k % 16 == 15 || k + 1 == nodes.size() ? "\n" : ", ");
+    }
+}
+
 /// The tetrahedra of @p volumes by the tow they fill, the matrix's last (index: the tow count).
 std::vector<std::vector<std::size_t>> tetrahedraBySolid(const TextileMesh& mesh, const VolumeMesh& volumes)
 {
@@ -350,7 +362,13 @@ void writeAbaqus(const TextileMesh& mesh, std::ostream& out)
                 regionElements[r].push_back(at->second);
             }
         }
+        // A cell's faces outside the tows (the matrix's side of the box).
+        if (mesh.cell && !mesh.cell->triangles.empty()) {
+            w.text("*ELEMENT, TYPE=S3, ELSET=MATRIX_FACES").end();
+            for (const auto& t : mesh.cell->triangles) element(t);
+        }
     }
+    writeCellFaceSets(mesh, out);
     const auto list = [&](const std::vector<std::size_t>& ids, std::size_t offset) {
         for (std::size_t k = 0; k < ids.size(); ++k) out << ids[k] + offset << (k % 16 == 15 || k + 1 == ids.size() ? "\n" : ", ");
     };
@@ -472,13 +490,7 @@ void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostrea
             list(std::vector<std::size_t>(cap.begin(), cap.end()));
         }
     }
-    // The box's faces (a mesh clipped to a cell): every node on each.
-    if (mesh.cell)
-        for (std::size_t f = 0; f < 6; ++f) {
-            if (mesh.cell->faceNodes[f].empty()) continue;
-            out << "*NSET, NSET=" << upper(cellFaceName(static_cast<CellFace>(f))) << '\n';
-            list(mesh.cell->faceNodes[f]);
-        }
+    writeCellFaceSets(mesh, out);
     if (!tets[towCount].empty()) solids.pop_back();  // TEXTILE: the tows only
     if (!solids.empty()) {
         out << "*ELSET, ELSET=TEXTILE\n";

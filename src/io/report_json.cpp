@@ -233,7 +233,7 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
                                        {"min_dihedral_histogram", q.histogram}};
         if (mesh.cell) {
             j["volume_mesh"]["matrix"] = {{"tetrahedra", count[tows.size()]}, {"volume", volume[tows.size()]}};
-            j["volume_mesh"]["fibre_volume_fraction"] = towVolume / mesh.cell->box.volume();
+            j["volume_mesh"]["tow_volume_fraction"] = towVolume / mesh.cell->box.volume();
         }
     }
     Json timings = Json::object();

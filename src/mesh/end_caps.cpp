@@ -100,7 +100,7 @@ CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>
 void closeEnds(const std::vector<TowSurface>& tows, const std::vector<double>& towH, double minAngle, std::size_t threads,
                std::vector<ParametricMesh>& meshes, std::vector<std::vector<TowFace>>& face, std::vector<Point3>& nodes,
                const std::vector<std::vector<CapConstraint>>& capPaths, std::vector<std::string>* failed,
-               const std::vector<char>* cutNode)
+               const std::vector<char>* cutNode, const std::vector<std::array<bool, 2>>* cutEnds)
 {
     constexpr std::size_t kLocal = std::size_t(1) << 60;  // marks a cap's own new nodes
     std::vector<std::vector<std::pair<CapMesh, TowFace>>> caps(tows.size());
@@ -129,8 +129,9 @@ void closeEnds(const std::vector<TowSurface>& tows, const std::vector<double>& t
         }
         // The two ends together: the pairing with the first and last sections that is nearer; one
         // end alone: the nearer section.
-        const bool firstIsStart = c.size() == 2 ? distance(c[0], first) + distance(c[1], last) <= distance(c[0], last) + distance(c[1], first)
-                                                : c.size() == 1 && distance(c[0], first) <= distance(c[0], last);
+        bool firstIsStart = c.size() == 2 && distance(c[0], first) + distance(c[1], last) <= distance(c[0], last) + distance(c[1], first);
+        if (c.size() == 1)  // the other end was cut: this one is the end that was not
+            firstIsStart = cutEnds && t < cutEnds->size() ? !(*cutEnds)[t][0] : distance(c[0], first) <= distance(c[0], last);
         for (std::size_t e = 0; e < ends.size(); ++e) {
             const TowFace f = (e == 0) == firstIsStart ? TowFace::Start : TowFace::End;
             std::vector<CapConstraint> paths;

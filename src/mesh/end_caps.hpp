@@ -45,12 +45,13 @@ CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>
 /// (CapConstraint::end -1 the first end's, +1 the last's), constraints of those caps' meshes.
 /// A cap with loop pieces that cannot be meshed is noted in @p failed (one entry per tow, if
 /// given) and that tow's caps are left out; the tow's mesh is then not closed. An end whose
-/// nodes are all marked in @p cutNode (by global node, if given: a cell's cut) is left open.
+/// nodes are all marked in @p cutNode (by global node, if given: a cell's cut) is left open;
+/// @p cutEnds (per tow: its start cut, its end cut) then says which end the other one is.
 /// @throws Error (InvalidArgument) naming the tow and end whose cap cannot be meshed.
 void closeEnds(const std::vector<TowSurface>& tows, const std::vector<double>& towH, double minAngle, std::size_t threads,
                std::vector<ParametricMesh>& meshes, std::vector<std::vector<TowFace>>& face, std::vector<Point3>& nodes,
                const std::vector<std::vector<CapConstraint>>& capPaths = {}, std::vector<std::string>* failed = nullptr,
-               const std::vector<char>* cutNode = nullptr);
+               const std::vector<char>* cutNode = nullptr, const std::vector<std::array<bool, 2>>* cutEnds = nullptr);
 
 }  // namespace detail
 TOWGEOM_END_NAMESPACE

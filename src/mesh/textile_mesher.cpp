@@ -186,6 +186,8 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
             if (!options.mesh.caps || !l.closed() || excluded.count({l.towA(), l.towB()}) ||
                 (l.windsAround(LoopSide::A) && l.windsAround(LoopSide::B)))
                 continue;
+            if (options.cell && cellSide(l, *options.cell, 0.25 * std::min(towH[l.towA()], towH[l.towB()])) != CellSide::Inside)
+                continue;  // clipped away (outside), or refused below (across a face)
             if (l.windsAround(LoopSide::A)) winding[{l.towA(), l.towB()}].push_back(i);
             if (l.windsAround(LoopSide::B)) winding[{l.towB(), l.towA()}].push_back(i);
         }
@@ -399,8 +401,11 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
                 for (CapConstraint& c : capConstraintsOn(s, l, side)) capPaths[side == LoopSide::A ? l.towA() : l.towB()].push_back(std::move(c));
         }
         std::vector<std::string> capFailed(tows.size());
+        std::vector<std::array<bool, 2>> cutEnds(tows.size(), {false, false});
+        if (cuts)
+            for (std::size_t t = 0; t < tows.size(); ++t) cutEnds[t] = {cuts->cuts[t][0].has_value(), cuts->cuts[t][1].has_value()};
         closeEnds(tows, towH, options.mesh.minAngle, threads, meshes, faceOf, nodes, capPaths, &capFailed,
-                  cuts ? &cuts->cutNode : nullptr);
+                  cuts ? &cuts->cutNode : nullptr, &cutEnds);
         // A cap that could not be meshed with loop pieces on it costs the pairs of those loops.
         for (std::size_t t = 0; t < tows.size(); ++t) {
             if (capFailed[t].empty()) continue;
@@ -420,7 +425,11 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
     // The cell's faces meshed around the cuts: each tow's caps there, the rest the matrix's.
     std::optional<CellFaces> cellFaces;
     if (cuts) {
-        cellFaces = meshCellFaces(tows, *options.cell, *cuts, *std::min_element(towH.begin(), towH.end()), options.mesh.minAngle, nodes);
+        // At the finest tow's mesh size (no tow: a tenth of the box's shortest side).
+        const Cell& box = *options.cell;
+        const double faceH = towH.empty() ? 0.1 * std::min({box.max.x - box.min.x, box.max.y - box.min.y, box.max.z - box.min.z})
+                                          : *std::min_element(towH.begin(), towH.end());
+        cellFaces = meshCellFaces(tows, box, *cuts, faceH, options.mesh.minAngle, nodes);
         for (std::size_t t = 0; t < tows.size(); ++t)
             for (int end = 0; end < 2; ++end) {
                 const auto& cut = cuts->cuts[t][static_cast<std::size_t>(end)];

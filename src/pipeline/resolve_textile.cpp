@@ -60,7 +60,7 @@ void checkMeshSize(const MeshOptions& m, double area, double h, double loopLengt
     double estimate = kTrianglesPerEquilateral * area / equilateral;
     std::ostringstream how;
     how.precision(3);
-    how << kTrianglesPerEquilateral << " x the tows' area " << area << " / (sqrt(3)/4 h^2) at mesh size h = " << h;
+    how << kTrianglesPerEquilateral << " x the area to mesh (tows, and a cell's faces) " << area << " / (sqrt(3)/4 h^2) at mesh size h = " << h;
     if (spacing < h && loopLength > 0.0) {
         estimate += kTrianglesPerLoopNode * loopLength * (1.0 / spacing - 1.0 / h);
         how << ", plus " << kTrianglesPerLoopNode << " x the loops' length " << loopLength << " x (1/s - 1/h) at loop spacing s = "
@@ -149,11 +149,12 @@ void resultToUser(ResolveResult& result, const IntersectionReport& report, const
 /// are known; check() repeats the check with the loops' refinement.
 struct MeshSizePlan {
     std::vector<double> towH;  ///< per tow, the user's units
-    double area = 0.0;         ///< the tows' (faceted) area
+    double area = 0.0;         ///< the tows' (faceted) area, and a cell's faces
     double h = 1.0;            ///< the tows' mesh sizes averaged as the triangle count sees them
     double spacing = 1.0;      ///< the loop spacing
 
-    MeshSizePlan(const std::vector<TowSurface>& tows, const MeshOptions& mesh) : towH(meshSizes(tows, mesh))
+    MeshSizePlan(const std::vector<TowSurface>& tows, const MeshOptions& mesh, const std::optional<Cell>& cell = {})
+        : towH(meshSizes(tows, mesh))
     {
         // In the user's units, for the message; h area-weighted in 1/h^2.
         double perH2 = 0.0;
@@ -161,6 +162,13 @@ struct MeshSizePlan {
             const double a = facetedArea(tows[t], mesh.caps);
             area += a;
             perH2 += a / (towH[t] * towH[t]);
+        }
+        if (cell && !towH.empty()) {  // the box's faces, meshed at the finest tow's size
+            const double dx = cell->max.x - cell->min.x, dy = cell->max.y - cell->min.y, dz = cell->max.z - cell->min.z;
+            const double a = 2.0 * (dx * dy + dy * dz + dz * dx);
+            const double finest = *std::min_element(towH.begin(), towH.end());
+            area += a;
+            perH2 += a / (finest * finest);
         }
         h = perH2 > 0.0 ? std::sqrt(area / perH2) : 1.0;
         spacing = mesh.loopSpacing > 0.0 ? mesh.loopSpacing : h;
@@ -219,13 +227,13 @@ void checkWithReport(const std::vector<TowSurface>& tows, const IntersectionRepo
 ResolveResult meshTows(const std::vector<TowSurface>& tows, const IntersectionReport& report, const ResolveOptions& options)
 {
     checkWithReport(tows, report, options);
-    return meshWithPlan(tows, report, options, MeshSizePlan(tows, options.mesh));
+    return meshWithPlan(tows, report, options, MeshSizePlan(tows, options.mesh, options.cell));
 }
 
 ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const IntersectionReport& report, const ResolveOptions& options)
 {
     checkWithReport(tows, report, options);
-    return connectRegions(tows, meshWithPlan(tows, report, options, MeshSizePlan(tows, options.mesh)), options);
+    return connectRegions(tows, meshWithPlan(tows, report, options, MeshSizePlan(tows, options.mesh, options.cell)), options);
 }
 
 ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveOptions& options)
@@ -233,7 +241,7 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
     checkOptions(options);
     detail::checkIntersectionOptions(options.intersection);
     // A mesh too large for memory is refused now, before intersecting.
-    const MeshSizePlan plan(tows, options.mesh);
+    const MeshSizePlan plan(tows, options.mesh, options.cell);
     const Clock::time_point t0 = Clock::now();
     IntersectionOptions io = options.intersection;
     io.threads = options.threads;

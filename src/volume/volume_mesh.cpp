@@ -158,33 +158,33 @@ double VolumeMesh::towVolume(std::size_t t) const
 
 namespace {
 
-/// Tow @p t's closed surface split into shells (triangles joined across edges): the shell of
-/// each of its triangles. A tow cut through by a tow ranked above it has two or more.
-/// @throws towgeom::Error (InvalidArgument) naming the tow if its surface is not a closed
+/// The closed surface @p triangles (a tow's, or the matrix's) split into shells (triangles
+/// joined across edges): the shell of each triangle. A tow cut through by a tow ranked above it
+/// has two or more.
+/// @throws towgeom::Error (InvalidArgument) naming @p name if the surface is not a closed
 /// 2-manifold (an edge not used by exactly two of its triangles, a triangle given twice): Gmsh's
 /// HXT ends the process on such input.
-std::vector<std::size_t> shellsOf(const TextileMesh& surfaces, std::size_t t, std::size_t& count)
+std::vector<std::size_t> shellsOf(const std::vector<std::array<std::size_t, 3>>& triangles, const std::string& name, std::size_t& count)
 {
-    const TowMesh& m = surfaces.tows[t];
     const auto fail = [&](const std::string& what) {
-        throw Error(ErrorCode::InvalidArgument, "tow '" + m.name + "': its surface mesh is not a closed 2-manifold (" + what +
-                                                    "): volumes need tows closed by their end caps");
+        throw Error(ErrorCode::InvalidArgument, name + ": its surface mesh is not a closed 2-manifold (" + what +
+                                                    "): volumes need closed surfaces (tows closed by their end caps, overlaps resolved)");
     };
     std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> edges;
     std::set<std::array<std::size_t, 3>> seen;
     std::set<std::pair<std::size_t, std::size_t>> directed;
-    for (std::size_t k = 0; k < m.triangles.size(); ++k) {
-        auto key = m.triangles[k];
+    for (std::size_t k = 0; k < triangles.size(); ++k) {
+        auto key = triangles[k];
         std::sort(key.begin(), key.end());
         if (key[0] == key[1] || key[1] == key[2]) fail("a triangle repeats a node");
         if (!seen.insert(key).second) fail("a triangle given twice");
         for (int e = 0; e < 3; ++e) {
-            const std::size_t a = m.triangles[k][e], b = m.triangles[k][(e + 1) % 3];
+            const std::size_t a = triangles[k][e], b = triangles[k][(e + 1) % 3];
             if (!directed.insert({a, b}).second) fail("two triangles run along an edge the same way: inconsistent orientation");
             edges[{std::min(a, b), std::max(a, b)}].push_back(k);
         }
     }
-    std::vector<std::size_t> parent(m.triangles.size());
+    std::vector<std::size_t> parent(triangles.size());
     for (std::size_t k = 0; k < parent.size(); ++k) parent[k] = k;
     const auto root = [&](std::size_t k) {
         while (parent[k] != k) k = parent[k] = parent[parent[k]];
@@ -194,7 +194,7 @@ std::vector<std::size_t> shellsOf(const TextileMesh& surfaces, std::size_t t, st
         if (users.size() != 2) fail(std::to_string(users.size()) + " triangles at an edge");
         parent[root(users[0])] = root(users[1]);
     }
-    std::vector<std::size_t> shell(m.triangles.size());
+    std::vector<std::size_t> shell(triangles.size());
     std::map<std::size_t, std::size_t> number;
     for (std::size_t k = 0; k < shell.size(); ++k) shell[k] = number.emplace(root(k), number.size()).first->second;
     count = number.size();
@@ -216,7 +216,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     std::vector<std::size_t> firstVolume(towCount + 1, 0);  // volume v of tow t: firstVolume[t] + shell
     for (std::size_t t = 0; t < towCount; ++t) {
         std::size_t count = 0;
-        shell[t] = shellsOf(surfaces, t, count);
+        shell[t] = shellsOf(surfaces.tows[t].triangles, "tow '" + surfaces.tows[t].name + "'", count);
         firstVolume[t + 1] = firstVolume[t] + count;
     }
     // Clipped to a cell: the matrix is one more volume, "tow" towCount.
@@ -314,7 +314,17 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
             patches.push_back(std::move(part));
         }
     }
-    if (matrix) bounds.back() = matrixBounds;
+    if (matrix) {
+        // The matrix's boundary must be closed too: the box's faces and the tows' free surfaces.
+        std::vector<std::array<std::size_t, 3>> boundary = surfaces.cell->triangles;
+        for (const Surface& s : patches)
+            if (std::find(matrixBounds.begin(), matrixBounds.end(), -s.tag) != matrixBounds.end())
+                for (std::size_t k = 0; k + 2 < s.triangles.size(); k += 3)
+                    boundary.push_back({s.triangles[k] - 1, s.triangles[k + 2] - 1, s.triangles[k + 1] - 1});
+        std::size_t pieces = 0;
+        shellsOf(boundary, "the matrix", pieces);
+        bounds.back() = matrixBounds;
+    }
     for (std::size_t v = 0; v < bounds.size(); ++v)
         if (bounds[v].empty()) throw Error(ErrorCode::Internal, nameOf(volumeTow[v]) + ": a piece of it has no surface");
 
