@@ -6,7 +6,9 @@
 // --volume (issue 14): resolve at the default mesh size (unless --h) with --volume and print
 // the tetrahedra, the volume stage's time and its ratio to the surface stages (intersect, mesh,
 // regions); goal: the volume stage within 2x the surface stages.
-//   bench_resolve [--tows N] [--sections M] [--points P] [--threads T] [--h H] [--volume] [--smoke]
+// --cell: clip the twill to its cell (faces halfway between the outermost yarns and the next,
+// z at +-spacing/2): the tows cut by the box and the matrix around them, meshed too with --volume.
+//   bench_resolve [--tows N] [--sections M] [--points P] [--threads T] [--h H] [--volume] [--cell] [--smoke]
 #include <towgeom/towgeom.hpp>
 
 #include "bench_goal.hpp"
@@ -47,6 +49,13 @@ int main(int argc, char** argv)
     }
     command += " --out '" + (dir / "out").string() + "'" + (h > 0.0 ? " --mesh-size " + std::to_string(h) : std::string()) +
                " --threads " + std::to_string(threads) + " --formats stl,vtk --quiet" + (volume ? " --volume" : "");
+    const bool cell = args.flag("--cell");
+    if (cell) {
+        const double s = o.spacing, lo = -0.5 * s, hx = (static_cast<double>(o.wefts) - 0.5) * s, hy = (static_cast<double>(o.warps) - 0.5) * s;
+        command += " --cell " + std::to_string(lo) + "," + std::to_string(lo) + "," + std::to_string(-0.5 * s) + "," + std::to_string(hx) +
+                   "," + std::to_string(hy) + "," + std::to_string(0.5 * s);
+        std::printf("cell: [%g, %g] x [%g, %g] x [%g, %g]\n", lo, hx, lo, hy, -0.5 * s, 0.5 * s);
+    }
     std::printf("towgeom bench_resolve: 2/2 twill, %zu tows of %zu sections x %zu points, %zu crossings, h = %g, %zu threads\n",
                 textile.stacks().size(), o.sectionsPerYarn, o.pointsPerSection, textile.crossings.size(), h, threads);
     const auto t0 = std::chrono::steady_clock::now();
@@ -78,6 +87,13 @@ int main(int argc, char** argv)
         const auto tets = report.find("\"volume_mesh\":{\"tetrahedra\":");
         std::printf("volume mesh: %.0f tetrahedra; volume stage %.0f ms, surface stages %.0f ms: %.2f x  (goal <= 2 x)\n",
                     tets == std::string::npos ? -1.0 : std::atof(report.c_str() + tets + 28), stage, surface, stage / surface);
+        if (cell) {
+            const std::string key = "\"matrix\":{\"tetrahedra\":";
+            const auto matrix = report.find(key);
+            std::printf("matrix: %.0f tetrahedra; tows' volume fraction %.4f\n",
+                        matrix == std::string::npos ? -1.0 : std::atof(report.c_str() + matrix + key.size()),
+                        number("tow_volume_fraction"));
+        }
         goals.require("the volume stage ran", stage > 0.0);
         goals.require("volume stage within 2 x the surface stages", stage <= 2.0 * surface);
     }

@@ -11,6 +11,7 @@
 #include <array>
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -363,7 +364,7 @@ TEST_CASE("tetrahedronQuality: a regular tetrahedron's dihedral angles are acos(
     CHECK(q.histogram[0] == 1);
 }
 
-TEST_CASE("a cell: tows wholly outside are dropped whatever the other faces' planes do to them; no tow at all is all matrix", "[volume][cell]")
+TEST_CASE("a cell: tows wholly outside are dropped whatever the other faces' planes do to them, and no tow at all is all matrix", "[volume][cell]")
 {
     ResolveOptions o;
     o.mesh.edgeLength = 0.2;
@@ -403,4 +404,42 @@ TEST_CASE("a cell's faces count in the triangle budget", "[cell]")
     } catch (const Error& e) {
         CHECK(e.code() == ErrorCode::TooLarge);
     }
+}
+
+TEST_CASE("meshVolumes --order 2: quadratic tetrahedra share one middle node per edge, at its middle, on every surface edge", "[volume][quadratic]")
+{
+    ResolveOptions o;
+    o.mesh.edgeLength = 0.15;
+    const ResolveResult res = resolveTextile(twill({"warp_0", "weft_0"}), o);
+    REQUIRE(res.mesh.regions.size() == 1);
+    VolumeMeshOptions q;
+    q.order = 2;
+    const VolumeMesh v = meshVolumes(res.mesh, q);
+    checkConforming(res, v);  // the corners as linear tetrahedra
+    REQUIRE(v.edgeNodes.size() == v.tetrahedra.size());
+    constexpr int kEdges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> middle;
+    std::size_t differ = 0, offMiddle = 0, onCorner = 0;
+    for (std::size_t k = 0; k < v.tetrahedra.size(); ++k)
+        for (int e = 0; e < 6; ++e) {
+            const std::size_t a = v.tetrahedra[k][kEdges[e][0]], b = v.tetrahedra[k][kEdges[e][1]], m = v.edgeNodes[k][e];
+            differ += middle.emplace(std::minmax(a, b), m).first->second != m;
+            offMiddle += !(distance(v.nodes[m], 0.5 * (v.nodes[a] + v.nodes[b])) <= 1e-12 * distance(v.nodes[a], v.nodes[b]));
+            onCorner += m < v.surfaceNodes;
+        }
+    CHECK(onCorner == 0);
+    CHECK(differ == 0);
+    CHECK(offMiddle == 0);
+    // Every surface triangle's edges are edges of the tetrahedra (the tows share the region's).
+    std::size_t missing = 0;
+    for (const TowMesh& m : res.mesh.tows)
+        for (const auto& t : m.triangles)
+            for (int e = 0; e < 3; ++e) missing += middle.count(std::minmax(t[e], t[(e + 1) % 3])) == 0;
+    CHECK(missing == 0);
+    std::ostringstream inp;
+    writeAbaqus(res.mesh, v, inp);
+    CHECK(inp.str().find("*ELEMENT, TYPE=C3D10, ELSET=TOW_warp_0") != std::string::npos);
+    VolumeMeshOptions bad;
+    bad.order = 3;
+    CHECK_THROWS_AS(meshVolumes(res.mesh, bad), Error);
 }

@@ -31,7 +31,9 @@ TOWGEOM_EXPORT void writeGmsh(const TextileMesh& mesh, std::ostream& out);
 /// tetrahedron; zero in the matrix). A mesh clipped to a cell (TextileMesh::cell) adds the
 /// matrix as physical volume MATRIX (tag: the number of tows + 1), bounded by the box's faces
 /// and the tows' surfaces it touches, and a physical surface per box face, XMIN ... ZMAX (the
-/// matrix's and the tows' triangles on it); so does writeGmsh(mesh) for the surfaces.
+/// matrix's and the tows' triangles on it); so does writeGmsh(mesh) for the surfaces. Quadratic
+/// tetrahedra (VolumeMesh::edgeNodes) are written as 10-node tetrahedra and the surfaces as
+/// 6-node triangles (their edges' middle nodes).
 /// @throws towgeom::Error (InvalidArgument) if @p volumes is not of @p mesh.
 TOWGEOM_EXPORT void writeGmsh(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostream& out);
 
@@ -63,11 +65,15 @@ TOWGEOM_EXPORT void writeAbaqus(const TextileMesh& mesh, std::ostream& out);
 /// *ELSET TEXTILE (every tow element). Two tows' elements share the nodes of their regions.
 /// A mesh clipped to a cell adds *ELSET MATRIX (the matrix's elements; its nodes on the tows'
 /// surfaces are the tows') and per box face *NSET XMIN ... ZMAX (every node on it). With fibre
-/// directions (addFibreDirections()) also *DISTRIBUTION FIBRE_AXES (per tow element the local
-/// 1-axis along its fibres, the 2-axis normal to it towards global z, or y where the fibres run
-/// along z) and *ORIENTATION FIBRES using it: `*SOLID SECTION, ELSET=TEXTILE, MATERIAL=M,
-/// ORIENTATION=FIBRES` gives orthotropic tows their axes (CalculiX 2.17 and later, Abaqus).
-/// @throws towgeom::Error (InvalidArgument) if @p volumes is not of @p mesh.
+/// directions (addFibreDirections()) also *DISTRIBUTION FIBRE_AXES (LOCATION=ELEMENT, its
+/// *DISTRIBUTION TABLE COORD3D, COORD3D: per tow element the local 1-axis along its fibres, the
+/// 2-axis normal to it towards global z, or y where the fibres run along z) and *ORIENTATION
+/// FIBRES using it: `*SOLID SECTION, ELSET=TEXTILE, MATERIAL=M, ORIENTATION=FIBRES` gives
+/// orthotropic tows their axes (Abaqus 6.14 and later; CalculiX 2.17 and later, which warns
+/// that it skips the *DISTRIBUTION TABLE line). Quadratic tetrahedra (VolumeMesh::edgeNodes)
+/// are written as C3D10, their middle nodes in every node set they lie on.
+/// @throws towgeom::Error (InvalidArgument) if @p volumes is not of @p mesh, or its fibre
+/// directions are not one unit vector per tow tetrahedron.
 TOWGEOM_EXPORT void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostream& out);
 
 /// writeAbaqus(mesh, volumes, out) to @p path, written to a temporary name and renamed.
@@ -80,9 +86,13 @@ TOWGEOM_EXPORT void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volum
 /// face (CellMesh::periodicPairs), *EQUATION u(q) - u(p) - u(REF_a) = 0 per direction, where a is
 /// the axis of the pair. A node on several max faces (the box's edges and corners) is tied by
 /// its highest axis only, so each node is dependent at most once and the ties chain back to the
-/// min faces: the displacement of REF_a is the cell's stretch along axis a (REF_X = (eps_xx,
-/// eps_yx, eps_zx) * Lx). *NSET CORNER holds the node at the box's min corner (fix it against
-/// rigid motion). Include it after writeAbaqus(mesh, volumes)'s file.
+/// min faces; the highest axis's ties come first, so no dependent node appears in a later tie
+/// (Abaqus' rule). The displacement of REF_a is the cell's stretch along axis a (REF_X =
+/// (eps_xx, eps_yx, eps_zx) * Lx). *NSET CORNER holds the node at the box's min corner (fix it
+/// against rigid motion). With quadratic tetrahedra the middle nodes on the faces are tied too.
+/// Include it after writeAbaqus(mesh, volumes)'s file; put no *BOUNDARY on the max faces' nodes
+/// (they are dependent). CalculiX reports no reaction force at the reference nodes (no element
+/// uses them): read the force on the max face (*NODE PRINT, NSET=XMAX, TOTALS=ONLY, RF).
 /// @throws towgeom::Error (InvalidArgument) if @p mesh is not clipped to a periodic cell or
 /// @p volumes is not of it.
 TOWGEOM_EXPORT void writeAbaqusPeriodic(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostream& out);
@@ -92,7 +102,8 @@ TOWGEOM_EXPORT void writeAbaqusPeriodic(const TextileMesh& mesh, const VolumeMes
 TOWGEOM_EXPORT void writeAbaqusPeriodic(const TextileMesh& mesh, const VolumeMesh& volumes, const std::string& path);
 
 /// Writes the tetrahedra of @p volumes as a VTK XML unstructured grid (.vtu, ASCII) for
-/// ParaView: the nodes, one cell (VTK_TETRA) per tetrahedron, and per cell "tow_id" (the tow's
+/// ParaView: the nodes, one cell (VTK_TETRA, or VTK_QUADRATIC_TETRA with VolumeMesh::edgeNodes)
+/// per tetrahedron, and per cell "tow_id" (the tow's
 /// index, -1 in the matrix), "material" (1 a tow, 0 the matrix) and, with fibre directions,
 /// "fibre_direction" (3 components, zero in the matrix).
 /// @throws towgeom::Error (InvalidArgument) if @p volumes is not of @p mesh.

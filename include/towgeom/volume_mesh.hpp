@@ -18,6 +18,9 @@ TOWGEOM_BEGIN_NAMESPACE
 struct VolumeMeshOptions {
     /// Gmsh's tetrahedral optimisation after HXT (moves and swaps interior nodes and faces only).
     bool optimize = true;
+    /// 1: linear tetrahedra (4 nodes); 2: quadratic (10 nodes: Gmsh's node in the middle of every
+    /// edge, the edges straight, shared by the tetrahedra and the two tows at a region).
+    int order = 1;
     /// Threads for HXT; 0: as many as the machine has. The tetrahedra may differ slightly from
     /// call to call (HXT's parallel insertion; within one process also Gmsh's state between
     /// calls); one thread in a fresh process gives the same mesh every time. Volumes and
@@ -28,12 +31,18 @@ struct VolumeMeshOptions {
 /// Linear tetrahedra filling each tow of a TextileMesh, on the surface mesh as it is.
 struct TOWGEOM_EXPORT VolumeMesh {
     /// The surface mesh's nodes first (same indices as TextileMesh::nodes), then the nodes
-    /// inside the tows. Every surface triangle is a face of one tetrahedron of each tow it bounds
-    /// (two at a region, one elsewhere): no node is added on a surface.
+    /// inside the tows (and, for quadratic tetrahedra, the edges' middle nodes). Every surface
+    /// triangle is a face of one tetrahedron of each tow it bounds (two at a region, one
+    /// elsewhere): no corner node is added on a surface.
     std::vector<Point3> nodes;
     std::size_t surfaceNodes = 0;  ///< how many of nodes are the surface mesh's
     /// Four nodes each, ordered so that the signed volume (tetrahedronVolume()) is positive.
     std::vector<std::array<std::size_t, 4>> tetrahedra;
+    /// Quadratic tetrahedra (VolumeMeshOptions::order 2): per tetrahedron the node in the middle
+    /// of each of its edges (0,1), (1,2), (2,0), (0,3), (1,3), (2,3) of tetrahedra's corners (the
+    /// order of Abaqus' C3D10 and VTK's quadratic tetrahedron); empty for linear ones. These
+    /// nodes follow the corners in nodes; those on a surface are on its triangles' edges.
+    std::vector<std::array<std::size_t, 6>> edgeNodes;
     /// For each tetrahedron, the tow it lies in (an index into TextileMesh::tows), or
     /// TextileMesh::tows.size() for the matrix of a mesh clipped to a cell.
     std::vector<std::size_t> tow;
@@ -62,6 +71,7 @@ struct TOWGEOM_EXPORT TetrahedronQuality {
 };
 
 /// The dihedral angles of every tetrahedron of @p volumes.
+/// @throws towgeom::Error (InvalidArgument) if a tetrahedron names a node out of range.
 TOWGEOM_EXPORT TetrahedronQuality tetrahedronQuality(const VolumeMesh& volumes);
 
 /// Meshes the inside of every tow of @p surfaces (closed tows: MeshOptions::caps) with Gmsh's
@@ -76,7 +86,8 @@ TOWGEOM_EXPORT TetrahedronQuality tetrahedronQuality(const VolumeMesh& volumes);
 /// the process); each call works in a model of its own and restores the host's current model
 /// and the options it sets.
 /// Gmsh's library (Debian: libgmsh4.8) is loaded on the first call, not linked.
-/// @throws towgeom::Error (EngineUnavailable) if Gmsh's library cannot be loaded;
+/// @throws towgeom::Error (InvalidArgument) if VolumeMeshOptions::order is not 1 or 2;
+///         (EngineUnavailable) if Gmsh's library cannot be loaded;
 ///         (InvalidArgument) if a tow's surface is not a closed 2-manifold (every edge of its
 ///         triangles shared by exactly two of them, no triangle twice) or a triangle is in two
 ///         regions (Gmsh would end the process on such input);

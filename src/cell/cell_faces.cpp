@@ -211,6 +211,12 @@ FaceMesh meshFace(const std::vector<TowSurface>& tows, CellFace face, int a, dou
 
 }  // namespace
 
+double cellFaceSize(const Cell& cell, const std::vector<double>& towH)
+{
+    if (!towH.empty()) return *std::min_element(towH.begin(), towH.end());
+    return std::max({cell.max.x - cell.min.x, cell.max.y - cell.min.y, cell.max.z - cell.min.z}) / 20.0;
+}
+
 CellFaces meshCellFaces(const std::vector<TowSurface>& tows, const Cell& cell, const CellCuts& cuts, double h, double minAngle,
                         std::vector<Point3>& nodes)
 {

@@ -26,6 +26,10 @@ struct CellFaces {
     CellMesh mesh;
 };
 
+/// The edge length the box's faces are meshed at: the finest of @p towH, or with no tow a
+/// twentieth of the box's longest side.
+double cellFaceSize(const Cell& cell, const std::vector<double>& towH);
+
 /// Meshes the six faces of @p cell around the cuts @p cuts of @p tows at edge length @p h and
 /// smallest angle @p minAngle (degrees); new nodes are appended to @p nodes.
 /// @throws Error (InvalidArgument) naming the two tows whose cuts overlap on a face.

@@ -115,12 +115,19 @@ Options:
                      DIR/textile_volume.inp (C3D4, ELSET TOW_NAME, NSET NODES_NAME, START_NAME,
                      END_NAME per tow, *ORIENTATION FIBRES: each element's fibre axes), with
                      vtk also DIR/textile_volume.vtu for ParaView (tow_id, material,
-                     fibre_direction per tetrahedron); report.json gains "volume_mesh" (counts,
-                     volumes, dihedral-angle histogram).
+                     fibre_direction per tetrahedron); report.json gains "volume_mesh":
+                     {"tetrahedra","order","nodes","inner_nodes","tows":[{"name","tetrahedra",
+                     "volume"}],"quality":{"min_dihedral_deg","max_dihedral_deg",
+                     "min_dihedral_histogram_bins_deg" (lower edges: 0 5 10 20 ... 60, the last
+                     bin up to 70.53),"min_dihedral_histogram"}}, with --cell also "matrix":
+                     {"tetrahedra","volume"} and "tow_volume_fraction".
                      Needs Gmsh's library (Debian: libgmsh4.8). With --cell also the matrix:
                      physical volume / ELSET MATRIX, groups / NSETs XMIN ... ZMAX of every node
                      on each box face; report.json "volume_mesh" gains "matrix" and
                      "tow_volume_fraction"
+  --order N          with --volume: 1 linear tetrahedra (default; C3D4), 2 quadratic (10 nodes,
+                     straight edges: C3D10, Gmsh's 10-node tetrahedra and 6-node triangles, VTK's
+                     quadratic tetrahedra; node sets hold the middle nodes on them too)
   --cell X0,Y0,Z0,X1,Y1,Z1
                      clip every tow by this box (a unit cell for finite elements): where a face
                      cuts a tow the tow is closed by a flat cap on the face; the faces are meshed
@@ -211,7 +218,7 @@ int runResolve(int argc, char** argv, int first)
                         {{"help"}, {"quiet"}, {"allow-open"}, {"out", true}, {"primary", true}, {"mesh-size", true},
                          {"min-angle", true}, {"loop-spacing", true}, {"formats", true}, {"tolerance", true},
                          {"threads", true}, {"max-triangles", true}, {"no-caps"}, {"report", true}, {"volume"},
-                         {"cell", true}, {"periodic"}});
+                         {"cell", true}, {"periodic"}, {"order", true}});
         if (args.has("help")) {
             std::cout << kResolveHelp;
             return kExitOk;
@@ -235,6 +242,12 @@ int runResolve(int argc, char** argv, int first)
         else if (args.has("periodic")) throw UsageError("--periodic needs --cell");
         if (options.cell && !options.mesh.caps) throw UsageError("--cell needs closed tows: drop --no-caps");
         const bool volume = args.has("volume");
+        int order = 1;
+        if (const auto given = args.value("order")) {
+            if (*given != "1" && *given != "2") throw UsageError("--order takes 1 (linear tetrahedra) or 2 (quadratic), not '" + *given + "'");
+            if (!volume) throw UsageError("--order needs --volume");
+            order = *given == "2" ? 2 : 1;
+        }
         if (volume && !options.mesh.caps) throw UsageError("--volume needs closed tows: drop --no-caps");
         const std::set<std::string> formats = parseFormats(args.value("formats"));
         const bool quiet = args.has("quiet");
@@ -268,6 +281,7 @@ int runResolve(int argc, char** argv, int first)
             printer.update("meshing the tows' volumes (Gmsh HXT)", 0, 1);
             VolumeMeshOptions vo;
             vo.threads = options.threads;
+            vo.order = order;
             volumes = meshVolumes(mesh, vo);
             addFibreDirections(volumes, tows);
             printer.update("meshing the tows' volumes (Gmsh HXT)", 1, 1);

@@ -12,6 +12,7 @@
 
 #include <ostream>
 
+#include "export/edge_middles.hpp"
 #include "export/number_writer.hpp"
 #include "io/output_files.hpp"
 #include "towgeom/error.hpp"
@@ -67,12 +68,13 @@ bool isCap(const TowMesh& m, std::size_t k) { return k < m.face.size() && m.face
 
 namespace {
 
-/// Per face of a cell (a mesh clipped to one), *NSET XMIN ... ZMAX: every node on it.
-void writeCellFaceSets(const TextileMesh& mesh, std::ostream& out)
+/// Per face of a cell (a mesh clipped to one), *NSET XMIN ... ZMAX: every node on it (with
+/// @p middles, a quadratic volume mesh's middle nodes on it too).
+void writeCellFaceSets(const TextileMesh& mesh, std::ostream& out, const detail::EdgeMiddles* middles = nullptr)
 {
     if (!mesh.cell) return;
     for (std::size_t f = 0; f < 6; ++f) {
-        const std::vector<std::size_t>& nodes = mesh.cell->faceNodes[f];
+        const std::vector<std::size_t> nodes = middles ? middles->withMiddles(mesh.cell->faceNodes[f]) : mesh.cell->faceNodes[f];
         if (nodes.empty()) continue;
         out << "*NSET, NSET=" << upper(cellFaceName(static_cast<CellFace>(f))) << '\n';
         for (std::size_t k = 0; k < nodes.size(); ++k) out << nodes[k] + 1 << (k % 16 == 15 || k + 1 == nodes.size() ? "\n" : ", ");
@@ -185,27 +187,54 @@ void writeGmshModel(const TextileMesh& mesh, const VolumeMesh* volumes, std::ost
     for (std::size_t t = 0; t <= towCount; ++t)
         if (!tets[t].empty()) solids.push_back(t);
     out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
-    out << "$PhysicalNames\n" << towCount + mesh.regions.size() + capGroups.size() + (mesh.cell ? 6 : 0) + solids.size() << '\n';
-    for (std::size_t t = 0; t < towCount; ++t) out << "2 " << t + 1 << " \"" << label("TOW_", names[t]) << "\"\n";
+    // A tow with no triangle (wholly outside a cell) names no group.
+    std::size_t towGroups = 0;
+    for (const TowMesh& m : mesh.tows) towGroups += m.triangles.empty() ? 0 : 1;
+    out << "$PhysicalNames\n" << towGroups + mesh.regions.size() + capGroups.size() + (mesh.cell ? 6 : 0) + solids.size() << '\n';
+    for (std::size_t t = 0; t < towCount; ++t)
+        if (!mesh.tows[t].triangles.empty()) out << "2 " << t + 1 << " \"" << label("TOW_", names[t]) << "\"\n";
     for (std::size_t r = 0; r < mesh.regions.size(); ++r) out << "2 " << towCount + r + 1 << " \"REGION_" << r + 1 << "\"\n";
     for (const auto& [group, name] : capGroups) out << "2 " << group << " \"" << name << "\"\n";
     if (mesh.cell)
         for (std::size_t f = 0; f < 6; ++f) out << "2 " << faceGroup[f] << " \"" << upper(cellFaceName(static_cast<CellFace>(f))) << "\"\n";
     for (std::size_t t : solids) out << "3 " << t + 1 << " \"" << (t == matrix ? std::string("MATRIX") : label("TOW_", names[t])) << "\"\n";
     out << "$EndPhysicalNames\n";
+    // Quadratic tetrahedra: 10-node tetrahedra (Gmsh's order: edges 01, 12, 20, 03, 23, 13) and
+    // 6-node triangles (edges 01, 12, 20).
+    const bool quadratic = volumes && !volumes->edgeNodes.empty();
+    if (quadratic && volumes->edgeNodes.size() != volumes->tetrahedra.size())
+        throw Error(ErrorCode::InvalidArgument, "the volume mesh has middle nodes for some of its tetrahedra only");
+    const detail::EdgeMiddles middles = volumes ? detail::EdgeMiddles(*volumes) : detail::EdgeMiddles(VolumeMesh{});
+    const auto triangleNodes = [&](const std::array<std::size_t, 3>& t) {
+        std::vector<std::size_t> n(t.begin(), t.end());
+        if (quadratic)
+            for (int e = 0; e < 3; ++e) {
+                const std::size_t* m = middles.of(t[static_cast<std::size_t>(e)], t[static_cast<std::size_t>((e + 1) % 3)]);
+                if (!m) throw Error(ErrorCode::InvalidArgument, "a surface triangle's edge is no edge of the quadratic tetrahedra");
+                n.push_back(*m);
+            }
+        return n;
+    };
+    const auto tetNodes = [&](std::size_t k) {
+        const auto& q = volumes->tetrahedra[k];
+        std::vector<std::size_t> n(q.begin(), q.end());
+        if (quadratic)
+            for (int e : {0, 1, 2, 3, 5, 4}) n.push_back(volumes->edgeNodes[k][static_cast<std::size_t>(e)]);
+        return n;
+    };
     // Each node is classified on the first entity that uses it: surfaces first, then volumes.
     std::vector<std::size_t> owner(nodes.size(), 0);
     std::vector<std::vector<std::size_t>> blocks(entities.size()), solidBlocks(solids.size());
     for (std::size_t e = 0; e < entities.size(); ++e)
         for (const auto& t : entities[e].triangles)
-            for (std::size_t n : t)
+            for (std::size_t n : triangleNodes(t))
                 if (owner[n] == 0) {
                     owner[n] = e + 1;
                     blocks[e].push_back(n);
                 }
     for (std::size_t v = 0; v < solids.size(); ++v)
         for (std::size_t k : tets[solids[v]])
-            for (std::size_t n : volumes->tetrahedra[k])
+            for (std::size_t n : tetNodes(k))
                 if (owner[n] == 0) {
                     owner[n] = entities.size() + v + 1;
                     solidBlocks[v].push_back(n);
@@ -268,15 +297,19 @@ void writeGmshModel(const TextileMesh& mesh, const VolumeMesh* volumes, std::ost
     {
         NumberWriter w(out);
         for (std::size_t e = 0; e < entities.size(); ++e) {
-            w.text("2 ").number(e + 1).text(" 2 ").number(entities[e].triangles.size()).end();
-            for (const auto& t : entities[e].triangles)
-                w.number(++id).text(" ").number(t[0] + 1).text(" ").number(t[1] + 1).text(" ").number(t[2] + 1).end();
+            w.text("2 ").number(e + 1).text(quadratic ? " 9 " : " 2 ").number(entities[e].triangles.size()).end();
+            for (const auto& t : entities[e].triangles) {
+                w.number(++id);
+                for (std::size_t n : triangleNodes(t)) w.text(" ").number(n + 1);
+                w.end();
+            }
         }
         for (std::size_t t : solids) {
-            w.text("3 ").number(t + 1).text(" 4 ").number(tets[t].size()).end();
+            w.text("3 ").number(t + 1).text(quadratic ? " 11 " : " 4 ").number(tets[t].size()).end();
             for (std::size_t k : tets[t]) {
-                const auto& q = volumes->tetrahedra[k];
-                w.number(++id).text(" ").number(q[0] + 1).text(" ").number(q[1] + 1).text(" ").number(q[2] + 1).text(" ").number(q[3] + 1).end();
+                w.number(++id);
+                for (std::size_t n : tetNodes(k)) w.text(" ").number(n + 1);
+                w.end();
             }
         }
     }
@@ -426,11 +459,18 @@ void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostrea
     const std::vector<std::string> names = towLabels(mesh);
     const std::size_t towCount = mesh.tows.size();
     const std::vector<std::vector<std::size_t>> tets = tetrahedraBySolid(mesh, volumes);
-    out << "*HEADING\ntowgeom: tetrahedra of " << towCount << " tows" << (tets[towCount].empty() ? "" : " and the matrix")
-        << " (C3D4), conforming on their shared surfaces\n";
+    const bool quadratic = !volumes.edgeNodes.empty();
+    if (quadratic && volumes.edgeNodes.size() != volumes.tetrahedra.size())
+        throw Error(ErrorCode::InvalidArgument, "the volume mesh has middle nodes for some of its tetrahedra only");
+    const char* type = quadratic ? "C3D10" : "C3D4";
+    const detail::EdgeMiddles middles(volumes);
+    out << "*HEADING\ntowgeom: tetrahedra of " << towCount << " tows" << (tets[towCount].empty() ? "" : " and the matrix") << " ("
+        << type << "), conforming on their shared surfaces\n";
     std::vector<char> used(volumes.nodes.size(), 0);
     for (const auto& t : volumes.tetrahedra)
         for (std::size_t n : t) used[n] = 1;
+    for (const auto& e : volumes.edgeNodes)
+        for (std::size_t n : e) used.at(n) = 1;
     std::vector<std::string> solids;
     {
         NumberWriter w(out);
@@ -442,23 +482,34 @@ void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostrea
         for (std::size_t t = 0; t <= towCount; ++t) {
             if (tets[t].empty()) continue;
             solids.push_back(t == towCount ? std::string("MATRIX") : label("TOW_", names[t]));
-            w.text("*ELEMENT, TYPE=C3D4, ELSET=").text(solids.back().c_str()).end();
+            w.text("*ELEMENT, TYPE=").text(type).text(", ELSET=").text(solids.back().c_str()).end();
             for (std::size_t k : tets[t]) {
                 const auto& q = volumes.tetrahedra[k];
-                w.number(++id).text(", ").number(q[0] + 1).text(", ").number(q[1] + 1).text(", ").number(q[2] + 1).text(", ").number(q[3] + 1).end();
+                w.number(++id).text(", ").number(q[0] + 1).text(", ").number(q[1] + 1).text(", ").number(q[2] + 1).text(", ").number(q[3] + 1);
+                if (quadratic)  // C3D10's middle nodes: edges 12, 23, 31, 14, 24, 34 (1-based), as edgeNodes
+                    for (std::size_t m : volumes.edgeNodes[k]) w.text(", ").number(m + 1);
+                w.end();
             }
         }
         // Fibre directions (addFibreDirections()): each tow element's local 1-axis along its
         // fibres, the 2-axis normal to it towards global z (y where the fibres run along z); an
         // *ORIENTATION FIBRES for *SOLID SECTION, ..., ORIENTATION=FIBRES.
-        if (volumes.fibreDirection.size() == volumes.tetrahedra.size() && towCount > 0 && solids.size() > (tets[towCount].empty() ? 0u : 1u)) {
+        if (!volumes.fibreDirection.empty() && volumes.fibreDirection.size() != volumes.tetrahedra.size())
+            throw Error(ErrorCode::InvalidArgument, "the volume mesh has " + std::to_string(volumes.fibreDirection.size()) +
+                                                        " fibre directions for " + std::to_string(volumes.tetrahedra.size()) + " tetrahedra");
+        if (!volumes.fibreDirection.empty() && towCount > 0 && solids.size() > (tets[towCount].empty() ? 0u : 1u)) {
             constexpr std::size_t kAxis = 16;  // a line stays within CalculiX's 132 characters
-            w.text("*DISTRIBUTION, NAME=FIBRE_AXES").end();
+            w.text("*DISTRIBUTION TABLE, NAME=FIBRE_AXES_TABLE").end().text("COORD3D, COORD3D").end();
+            w.text("*DISTRIBUTION, NAME=FIBRE_AXES, LOCATION=ELEMENT, TABLE=FIBRE_AXES_TABLE").end();
             w.text(", 1., 0., 0., 0., 1., 0.").end();
             id = 0;
             for (std::size_t t = 0; t < towCount; ++t)
                 for (std::size_t k : tets[t]) {
-                    const Vector3& a = volumes.fibreDirection[k];
+                    const Vector3& d = volumes.fibreDirection[k];
+                    if (!(std::abs(norm(d) - 1.0) < 1e-6))
+                        throw Error(ErrorCode::InvalidArgument, "tetrahedron " + std::to_string(k) + " of tow '" + mesh.tows[t].name +
+                                                                    "' has a fibre direction that is not a unit vector");
+                    const Vector3 a = (1.0 / norm(d)) * d;
                     const Vector3 up = std::abs(a.z) < 0.9 ? Vector3{0.0, 0.0, 1.0} : Vector3{0.0, 1.0, 0.0};
                     Vector3 b = up - dot(up, a) * a;
                     b = (1.0 / norm(b)) * b;
@@ -477,7 +528,10 @@ void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostrea
     for (std::size_t t = 0; t < towCount; ++t) {
         if (tets[t].empty()) continue;
         std::set<std::size_t> all;
-        for (std::size_t k : tets[t]) all.insert(volumes.tetrahedra[k].begin(), volumes.tetrahedra[k].end());
+        for (std::size_t k : tets[t]) {
+            all.insert(volumes.tetrahedra[k].begin(), volumes.tetrahedra[k].end());
+            if (quadratic) all.insert(volumes.edgeNodes[k].begin(), volumes.edgeNodes[k].end());
+        }
         out << "*NSET, NSET=" << label("NODES_", names[t]) << '\n';
         list(std::vector<std::size_t>(all.begin(), all.end()));
         for (const TowFace face : {TowFace::Start, TowFace::End}) {
@@ -487,10 +541,10 @@ void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostrea
                 if (m.face[k] == face) cap.insert(m.triangles[k].begin(), m.triangles[k].end());
             if (cap.empty()) continue;
             out << "*NSET, NSET=" << label(face == TowFace::Start ? "START_" : "END_", names[t]) << '\n';
-            list(std::vector<std::size_t>(cap.begin(), cap.end()));
+            list(middles.withMiddles(std::vector<std::size_t>(cap.begin(), cap.end())));
         }
     }
-    writeCellFaceSets(mesh, out);
+    writeCellFaceSets(mesh, out, &middles);
     if (!tets[towCount].empty()) solids.pop_back();  // TEXTILE: the tows only
     if (!solids.empty()) {
         out << "*ELSET, ELSET=TEXTILE\n";

@@ -1,8 +1,11 @@
 // Periodic boundary conditions of a periodic cell's volume mesh as Abaqus/CalculiX *EQUATION.
 #include <algorithm>
+#include <array>
+#include <map>
 #include <ostream>
 #include <vector>
 
+#include "export/edge_middles.hpp"
 #include "export/number_writer.hpp"
 #include "io/output_files.hpp"
 #include "towgeom/error.hpp"
@@ -18,10 +21,30 @@ void writeAbaqusPeriodic(const TextileMesh& mesh, const VolumeMesh& volumes, std
     if (volumes.surfaceNodes != mesh.nodes.size())
         throw Error(ErrorCode::InvalidArgument, "the volume mesh is not one of this surface mesh (meshVolumes() of it)");
     const CellMesh& cell = *mesh.cell;
+    // The node pairs per axis, with quadratic tetrahedra's middle nodes: the middle of a min-face
+    // edge pairs with the middle of its partners' edge.
+    const detail::EdgeMiddles middles(volumes);
+    std::array<std::vector<std::pair<std::size_t, std::size_t>>, 3> pairs = cell.periodicPairs;
+    std::array<std::vector<std::size_t>, 6> onFace;
+    for (std::size_t f = 0; f < 6; ++f) onFace[f] = middles.withMiddles(cell.faceNodes[f]);
+    if (!middles.empty())
+        for (std::size_t a = 0; a < 3; ++a) {
+            const std::map<std::size_t, std::size_t> partner(cell.periodicPairs[a].begin(), cell.periodicPairs[a].end());
+            for (const auto& [edge, mid] : middles.all()) {
+                const auto p = partner.find(edge.first), q = partner.find(edge.second);
+                if (p == partner.end() || q == partner.end()) continue;
+                const std::size_t* moved = middles.of(p->second, q->second);
+                if (!moved) throw Error(ErrorCode::Internal, "a min-face edge's partner edge is no edge of the tetrahedra");
+                pairs[a].emplace_back(mid, *moved);
+            }
+        }
     // Per node, the highest axis on whose max face it lies (-1: none).
-    std::vector<int> maxAxis(mesh.nodes.size(), -1);
+    std::vector<int> maxAxis(volumes.nodes.size(), -1);
     for (int a = 0; a < 3; ++a)
-        for (std::size_t n : cell.faceNodes[static_cast<std::size_t>(2 * a + 1)]) maxAxis.at(n) = a;
+        for (std::size_t n : onFace[static_cast<std::size_t>(2 * a + 1)]) {
+            if (n >= maxAxis.size()) throw Error(ErrorCode::InvalidArgument, "a cell face's node is not in the volume mesh");
+            maxAxis[n] = a;
+        }
     const std::size_t ref = volumes.nodes.size();  // REF_X, REF_Y, REF_Z: ref + 1 .. ref + 3 (1-based)
     detail::NumberWriter w(out);
     w.text("** towgeom: periodic boundary conditions of the cell (include after the mesh)").end();
@@ -36,11 +59,15 @@ void writeAbaqusPeriodic(const TextileMesh& mesh, const VolumeMesh& volumes, std
         if (std::binary_search(cell.faceNodes[2].begin(), cell.faceNodes[2].end(), n) &&
             std::binary_search(cell.faceNodes[4].begin(), cell.faceNodes[4].end(), n))
             corner.push_back(n);
+    if (volumes.nodes.size() < mesh.nodes.size()) throw Error(ErrorCode::InvalidArgument, "the volume mesh has fewer nodes than its surfaces");
     if (corner.size() != 1) throw Error(ErrorCode::Internal, "the cell's min corner is not one node");
     w.text("*NSET, NSET=CORNER").end().number(corner[0] + 1).end();
-    for (int a = 0; a < 3; ++a)
-        for (const auto& [p, q] : cell.periodicPairs[static_cast<std::size_t>(a)]) {
-            if (maxAxis.at(q) != a) continue;  // tied by a higher axis
+    // Highest axis first: a node made dependent by an axis's ties is never used again by a later
+    // tie (Abaqus' rule for *EQUATION); the lower axes' ties use it only before, as independent.
+    for (int a = 2; a >= 0; --a)
+        for (const auto& [p, q] : pairs[static_cast<std::size_t>(a)]) {
+            if (q >= maxAxis.size() || p >= maxAxis.size()) throw Error(ErrorCode::InvalidArgument, "a periodic pair's node is not in the volume mesh");
+            if (maxAxis[q] != a) continue;  // tied by a higher axis
             for (int dof = 1; dof <= 3; ++dof) {
                 w.text("*EQUATION").end().text("3").end();
                 w.number(q + 1).text(", ").number(dof).text(", 1., ").number(p + 1).text(", ").number(dof).text(", -1., ");

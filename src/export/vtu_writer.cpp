@@ -30,11 +30,22 @@ void writeVtu(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostream& 
     for (const Point3& p : volumes.nodes) w.number(p.x).text(" ").number(p.y).text(" ").number(p.z).end();
     w.text("</DataArray>").end().text("</Points>").end();
     w.text("<Cells>").end().text("<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">").end();
-    for (const auto& t : volumes.tetrahedra) w.number(t[0]).text(" ").number(t[1]).text(" ").number(t[2]).text(" ").number(t[3]).end();
+    // Quadratic tetrahedra (VTK_QUADRATIC_TETRA): the middle nodes in edgeNodes' order, VTK's.
+    const bool quadratic = !volumes.edgeNodes.empty();
+    if (quadratic && volumes.edgeNodes.size() != volumes.tetrahedra.size())
+        throw Error(ErrorCode::InvalidArgument, "the volume mesh has middle nodes for some of its tetrahedra only");
+    for (std::size_t k = 0; k < volumes.tetrahedra.size(); ++k) {
+        const auto& t = volumes.tetrahedra[k];
+        w.number(t[0]).text(" ").number(t[1]).text(" ").number(t[2]).text(" ").number(t[3]);
+        if (quadratic)
+            for (std::size_t m : volumes.edgeNodes[k]) w.text(" ").number(m);
+        w.end();
+    }
+    const std::size_t per = quadratic ? 10 : 4;
     w.text("</DataArray>").end().text("<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">").end();
-    for (std::size_t k = 0; k < volumes.tetrahedra.size(); ++k) w.number(4 * (k + 1)).end();
+    for (std::size_t k = 0; k < volumes.tetrahedra.size(); ++k) w.number(per * (k + 1)).end();
     w.text("</DataArray>").end().text("<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">").end();
-    for (std::size_t k = 0; k < volumes.tetrahedra.size(); ++k) w.text("10").end();  // VTK_TETRA
+    for (std::size_t k = 0; k < volumes.tetrahedra.size(); ++k) w.text(quadratic ? "24" : "10").end();  // VTK_(QUADRATIC_)TETRA
     w.text("</DataArray>").end().text("</Cells>").end();
     w.text("<CellData Scalars=\"tow_id\"").text(fibres ? " Vectors=\"fibre_direction\">" : ">").end();
     w.text("<DataArray type=\"Int32\" Name=\"tow_id\" format=\"ascii\">").end();

@@ -223,6 +223,7 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
             towVolume += volume[t];
         }
         j["volume_mesh"] = {{"tetrahedra", v->tetrahedra.size()},
+                            {"order", v->edgeNodes.empty() ? 1 : 2},
                             {"nodes", v->nodes.size()},
                             {"inner_nodes", v->nodes.size() - v->surfaceNodes},
                             {"tows", std::move(perTow)}};

@@ -425,11 +425,7 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
     // The cell's faces meshed around the cuts: each tow's caps there, the rest the matrix's.
     std::optional<CellFaces> cellFaces;
     if (cuts) {
-        // At the finest tow's mesh size (no tow: a tenth of the box's shortest side).
-        const Cell& box = *options.cell;
-        const double faceH = towH.empty() ? 0.1 * std::min({box.max.x - box.min.x, box.max.y - box.min.y, box.max.z - box.min.z})
-                                          : *std::min_element(towH.begin(), towH.end());
-        cellFaces = meshCellFaces(tows, box, *cuts, faceH, options.mesh.minAngle, nodes);
+        cellFaces = meshCellFaces(tows, *options.cell, *cuts, cellFaceSize(*options.cell, towH), options.mesh.minAngle, nodes);
         for (std::size_t t = 0; t < tows.size(); ++t)
             for (int end = 0; end < 2; ++end) {
                 const auto& cut = cuts->cuts[t][static_cast<std::size_t>(end)];

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "cell/cell_faces.hpp"
 #include "core/progress_report.hpp"
 #include "intersect/textile_frame.hpp"
 #include "mesh/textile_mesher.hpp"
@@ -163,12 +164,12 @@ struct MeshSizePlan {
             area += a;
             perH2 += a / (towH[t] * towH[t]);
         }
-        if (cell && !towH.empty()) {  // the box's faces, meshed at the finest tow's size
+        if (cell) {  // the box's faces, meshed at the finest tow's size
             const double dx = cell->max.x - cell->min.x, dy = cell->max.y - cell->min.y, dz = cell->max.z - cell->min.z;
             const double a = 2.0 * (dx * dy + dy * dz + dz * dx);
-            const double finest = *std::min_element(towH.begin(), towH.end());
+            const double faceH = detail::cellFaceSize(*cell, towH);
             area += a;
-            perH2 += a / (finest * finest);
+            perH2 += a / (faceH * faceH);
         }
         h = perH2 > 0.0 ? std::sqrt(area / perH2) : 1.0;
         spacing = mesh.loopSpacing > 0.0 ? mesh.loopSpacing : h;

@@ -32,25 +32,7 @@ const GmshApi& gmshApi()
             if (!f && failure.empty()) failure = std::string("Gmsh's library ") + soname + " lacks the function " + name;
         };
 #define TOWGEOM_GMSH_RESOLVE(name) resolve(api.name, #name);
-        TOWGEOM_GMSH_RESOLVE(gmshInitialize)
-        TOWGEOM_GMSH_RESOLVE(gmshFinalize)
-        TOWGEOM_GMSH_RESOLVE(gmshFree)
-        TOWGEOM_GMSH_RESOLVE(gmshOptionSetNumber)
-        TOWGEOM_GMSH_RESOLVE(gmshOptionGetNumber)
-        TOWGEOM_GMSH_RESOLVE(gmshModelAdd)
-        TOWGEOM_GMSH_RESOLVE(gmshModelSetCurrent)
-        TOWGEOM_GMSH_RESOLVE(gmshModelGetCurrent)
-        TOWGEOM_GMSH_RESOLVE(gmshModelRemove)
-        TOWGEOM_GMSH_RESOLVE(gmshModelAddDiscreteEntity)
-        TOWGEOM_GMSH_RESOLVE(gmshModelMeshAddNodes)
-        TOWGEOM_GMSH_RESOLVE(gmshModelMeshAddElementsByType)
-        TOWGEOM_GMSH_RESOLVE(gmshModelGeoAddSurfaceLoop)
-        TOWGEOM_GMSH_RESOLVE(gmshModelGeoAddVolume)
-        TOWGEOM_GMSH_RESOLVE(gmshModelGeoSynchronize)
-        TOWGEOM_GMSH_RESOLVE(gmshModelMeshGenerate)
-        TOWGEOM_GMSH_RESOLVE(gmshModelMeshGetNodes)
-        TOWGEOM_GMSH_RESOLVE(gmshModelMeshGetElementsByType)
-        TOWGEOM_GMSH_RESOLVE(gmshLoggerGetLastError)
+        TOWGEOM_GMSH_FUNCTIONS(TOWGEOM_GMSH_RESOLVE)
 #undef TOWGEOM_GMSH_RESOLVE
     });
     if (!failure.empty()) throw Error(ErrorCode::EngineUnavailable, failure);

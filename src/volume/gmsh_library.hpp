@@ -14,29 +14,34 @@
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
 
+/// Every Gmsh function towgeom calls, as X(name): the one list both the table and the loader use.
+#define TOWGEOM_GMSH_FUNCTIONS(X) \
+    X(gmshInitialize) \
+    X(gmshFinalize) \
+    X(gmshFree) \
+    X(gmshOptionSetNumber) \
+    X(gmshOptionGetNumber) \
+    X(gmshModelAdd) \
+    X(gmshModelSetCurrent) \
+    X(gmshModelGetCurrent) \
+    X(gmshModelRemove) \
+    X(gmshModelAddDiscreteEntity) \
+    X(gmshModelMeshAddNodes) \
+    X(gmshModelMeshAddElementsByType) \
+    X(gmshModelGeoAddSurfaceLoop) \
+    X(gmshModelGeoAddVolume) \
+    X(gmshModelGeoSynchronize) \
+    X(gmshModelMeshGenerate) \
+    X(gmshModelMeshSetOrder) \
+    X(gmshModelMeshGetNodes) \
+    X(gmshModelMeshGetElementsByType) \
+    X(gmshLoggerGetLastError)
+
 /// The Gmsh functions towgeom calls, resolved from the shared library. Each call checks Gmsh's
 /// error flag and throws a string with Gmsh's last error message.
 struct GmshApi {
 #define TOWGEOM_GMSH_FUNCTION(name) decltype(&::name) name = nullptr;
-    TOWGEOM_GMSH_FUNCTION(gmshInitialize)
-    TOWGEOM_GMSH_FUNCTION(gmshFinalize)
-    TOWGEOM_GMSH_FUNCTION(gmshFree)
-    TOWGEOM_GMSH_FUNCTION(gmshOptionSetNumber)
-    TOWGEOM_GMSH_FUNCTION(gmshOptionGetNumber)
-    TOWGEOM_GMSH_FUNCTION(gmshModelAdd)
-    TOWGEOM_GMSH_FUNCTION(gmshModelSetCurrent)
-    TOWGEOM_GMSH_FUNCTION(gmshModelGetCurrent)
-    TOWGEOM_GMSH_FUNCTION(gmshModelRemove)
-    TOWGEOM_GMSH_FUNCTION(gmshModelAddDiscreteEntity)
-    TOWGEOM_GMSH_FUNCTION(gmshModelMeshAddNodes)
-    TOWGEOM_GMSH_FUNCTION(gmshModelMeshAddElementsByType)
-    TOWGEOM_GMSH_FUNCTION(gmshModelGeoAddSurfaceLoop)
-    TOWGEOM_GMSH_FUNCTION(gmshModelGeoAddVolume)
-    TOWGEOM_GMSH_FUNCTION(gmshModelGeoSynchronize)
-    TOWGEOM_GMSH_FUNCTION(gmshModelMeshGenerate)
-    TOWGEOM_GMSH_FUNCTION(gmshModelMeshGetNodes)
-    TOWGEOM_GMSH_FUNCTION(gmshModelMeshGetElementsByType)
-    TOWGEOM_GMSH_FUNCTION(gmshLoggerGetLastError)
+    TOWGEOM_GMSH_FUNCTIONS(TOWGEOM_GMSH_FUNCTION)
 #undef TOWGEOM_GMSH_FUNCTION
 };
 

@@ -133,7 +133,8 @@ private:
     const Gmsh& g_;
     bool hadCurrent_ = false, added_ = false;
     std::string hostModel_;
-    std::pair<const char*, double> saved_[5] = {{"General.Terminal", 0.0},
+    std::pair<const char*, double> saved_[6] = {{"General.Terminal", 0.0},
+                                                {"Mesh.ElementOrder", 0.0},
                                                 {"General.NumThreads", 0.0},
                                                 {"Mesh.Algorithm3D", 0.0},
                                                 {"Mesh.Optimize", 0.0},
@@ -157,6 +158,27 @@ double VolumeMesh::towVolume(std::size_t t) const
 }
 
 namespace {
+
+/// The middle nodes @p middle of tetrahedron @p tet's edges in the order (0,1), (1,2), (2,0),
+/// (0,3), (1,3), (2,3), each found at its edge's middle (whatever order Gmsh gave them in).
+/// @throws towgeom::Error (Internal) if an edge has no node at its middle.
+std::array<std::size_t, 6> middleNodes(const std::vector<Point3>& nodes, const std::array<std::size_t, 4>& tet, const std::array<std::size_t, 6>& middle)
+{
+    constexpr int kEdges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+    std::array<std::size_t, 6> out{};
+    for (int e = 0; e < 6; ++e) {
+        const Point3& a = nodes[tet[static_cast<std::size_t>(kEdges[e][0])]];
+        const Point3& b = nodes[tet[static_cast<std::size_t>(kEdges[e][1])]];
+        const Point3 mid = 0.5 * (a + b);
+        std::size_t best = 0;
+        for (std::size_t m = 1; m < 6; ++m)
+            if (distance(nodes[middle[m]], mid) < distance(nodes[middle[best]], mid)) best = m;
+        if (!(distance(nodes[middle[best]], mid) <= 1e-9 * distance(a, b)))
+            throw Error(ErrorCode::Internal, "Gmsh's quadratic tetrahedron has no node at the middle of an edge");
+        out[static_cast<std::size_t>(e)] = middle[best];
+    }
+    return out;
+}
 
 /// The closed surface @p triangles (a tow's, or the matrix's) split into shells (triangles
 /// joined across edges): the shell of each triangle. A tow cut through by a tow ranked above it
@@ -205,6 +227,9 @@ std::vector<std::size_t> shellsOf(const std::vector<std::array<std::size_t, 3>>&
 
 VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& options)
 {
+    if (options.order != 1 && options.order != 2)
+        throw Error(ErrorCode::InvalidArgument, "the tetrahedra's order must be 1 (linear) or 2 (quadratic), not " + std::to_string(options.order));
+    const bool quadratic = options.order == 2;
     const std::size_t towCount = surfaces.tows.size();
     for (std::size_t t = 0; t < towCount; ++t)
         if (surfaces.boundaryLoopCount(t) != 0)
@@ -365,6 +390,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         option("General.NumThreads", static_cast<double>(options.threads));
         option("Mesh.Renumber", 0);  // keep the surface nodes' tags (= index + 1)
         g.call("gmshModelMeshGenerate", api.gmshModelMeshGenerate, 3);
+        if (quadratic) g.call("gmshModelMeshSetOrder", api.gmshModelMeshSetOrder, 2);
 
         const auto nodesOn = [&](int dim, std::vector<std::size_t>& tags, std::vector<double>& coords) {
             std::size_t* t = nullptr;
@@ -375,13 +401,15 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
             coords = detail::gmshTake(api, c, nc);
             detail::gmshTake(api, p, np);
         };
-        // No node may have been added on a surface (the surfaces are the tows' interfaces).
+        // No corner node may have been added on a surface (the surfaces are the tows'
+        // interfaces); quadratic tetrahedra's middle nodes are checked below, edge by edge.
         std::vector<std::size_t> tags;
         std::vector<double> coords;
         nodesOn(2, tags, coords);
-        for (std::size_t n : tags)
-            if (n > surfaces.nodes.size() || !classified[n - 1])
-                throw Error(ErrorCode::Internal, "Gmsh added a node on a tow's surface while meshing the volumes");
+        if (!quadratic)
+            for (std::size_t n : tags)
+                if (n > surfaces.nodes.size() || !classified[n - 1])
+                    throw Error(ErrorCode::Internal, "Gmsh added a node on a tow's surface while meshing the volumes");
         // Every node: the surface's keep their indices, Gmsh's new ones are appended.
         nodesOn(-1, tags, coords);
         std::vector<std::size_t> index;  // by Gmsh tag
@@ -407,16 +435,20 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
             const std::size_t t = volumeTow[v];
             where = nameOf(t);
             std::size_t *e = nullptr, *n = nullptr, ne = 0, nn = 0;
-            g.call("gmshModelMeshGetElementsByType", api.gmshModelMeshGetElementsByType, 4, &e, &ne, &n, &nn, static_cast<int>(v) + 1,
+            const int type = quadratic ? 11 : 4;  // 10-node or 4-node tetrahedra
+            const std::size_t per = quadratic ? 10 : 4;
+            g.call("gmshModelMeshGetElementsByType", api.gmshModelMeshGetElementsByType, type, &e, &ne, &n, &nn, static_cast<int>(v) + 1,
                    std::size_t(0), std::size_t(1));
             const std::vector<std::size_t> elements = detail::gmshTake(api, e, ne), nodes = detail::gmshTake(api, n, nn);
-            if (elements.empty() || nodes.size() != 4 * elements.size())
+            if (elements.empty() || nodes.size() != per * elements.size())
                 throw Error(ErrorCode::Internal, "Gmsh made no tetrahedron (" + detail::gmshLastError(api) + ")");
             for (std::size_t k = 0; k < elements.size(); ++k) {
-                std::array<std::size_t, 4> tet{node(nodes[4 * k]), node(nodes[4 * k + 1]), node(nodes[4 * k + 2]), node(nodes[4 * k + 3])};
+                const std::size_t* q = &nodes[per * k];
+                std::array<std::size_t, 4> tet{node(q[0]), node(q[1]), node(q[2]), node(q[3])};
                 if (signedVolume(out.nodes[tet[0]], out.nodes[tet[1]], out.nodes[tet[2]], out.nodes[tet[3]]) < 0.0) std::swap(tet[2], tet[3]);
                 out.tetrahedra.push_back(tet);
                 out.tow.push_back(t);
+                if (quadratic) out.edgeNodes.push_back(middleNodes(out.nodes, tet, {node(q[4]), node(q[5]), node(q[6]), node(q[7]), node(q[8]), node(q[9])}));
             }
         }
     } catch (const Error& e) {

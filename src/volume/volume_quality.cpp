@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "towgeom/error.hpp"
 #include "towgeom/volume_mesh.hpp"
 #include "towgeom/export.hpp"
 
@@ -29,6 +30,8 @@ TetrahedronQuality tetrahedronQuality(const VolumeMesh& volumes)
     q.minDihedral = volumes.tetrahedra.empty() ? 0.0 : 180.0;
     constexpr double kBins[] = {5.0, 10.0, 20.0, 30.0, 40.0, 50.0, 60.0};
     for (const auto& t : volumes.tetrahedra) {
+        for (std::size_t n : t)
+            if (n >= volumes.nodes.size()) throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a node out of range");
         const Point3* p[4] = {&volumes.nodes[t[0]], &volumes.nodes[t[1]], &volumes.nodes[t[2]], &volumes.nodes[t[3]]};
         double lo = 180.0, hi = 0.0;
         constexpr int kEdges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
