@@ -13,6 +13,7 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include "cli_runner.hpp"
 #include "mesh_checks.hpp"
@@ -52,6 +53,25 @@ double largestDisplacement(const std::string& dat, const std::string& set, int c
         worst = component >= 0 ? std::max(worst, std::abs(u[component])) : std::max({worst, std::abs(u[0]), std::abs(u[1]), std::abs(u[2])});
     }
     return worst;
+}
+
+/// The x component of CalculiX's "total force (fx,fy,fz) for set SET" (*NODE PRINT, TOTALS=ONLY,
+/// RF) in @p dat; NaN when it is not there.
+double totalForceX(const std::string& dat, const std::string& set)
+{
+    const auto total = dat.find("total force (fx,fy,fz) for set " + set + " ");
+    if (total == std::string::npos) return std::nan("");
+    std::istringstream in(dat.substr(dat.find('\n', total) + 1));
+    double fx = std::nan("");
+    in >> fx;
+    return fx;
+}
+
+/// The Reuss and Voigt bounds of the Young's modulus of tows (modulus @p ef, volume fraction @p f)
+/// in a matrix (modulus @p em).
+std::pair<double, double> reussVoigt(double f, double ef, double em)
+{
+    return {1.0 / (f / ef + (1.0 - f) / em), f * ef + (1.0 - f) * em};
 }
 
 fs::path scratch(const std::string& name)
@@ -729,13 +749,8 @@ TEST_CASE("CalculiX solves the twill's unit cell, tows in a matrix: the modulus 
     REQUIRE(c.status == 0);
     CHECK(c.out.find("ERROR") == std::string::npos);
     const std::string dat = testing::slurp(out / "cell.dat");
-    const auto total = dat.find("total force (fx,fy,fz) for set XMAX");
-    REQUIRE(total != std::string::npos);
-    std::istringstream in(dat.substr(dat.find('\n', total) + 1));
-    double fx = 0.0;
-    in >> fx;
-    const double modulus = fx / area / (pull / lx);
-    const double voigt = f * ef + (1.0 - f) * em, reuss = 1.0 / (f / ef + (1.0 - f) / em);
+    const double modulus = totalForceX(dat, "XMAX") / area / (pull / lx);
+    const auto [reuss, voigt] = reussVoigt(f, ef, em);
     WARN("twill cell: tow volume fraction " << f << ", modulus " << modulus << " between Reuss " << reuss << " and Voigt " << voigt);
     CHECK(modulus > reuss);
     CHECK(modulus < voigt);
@@ -758,13 +773,7 @@ TEST_CASE("CalculiX solves the twill's unit cell, tows in a matrix: the modulus 
         const Run run = testing::runShell("cd '" + out.string() + "' && ccx -i " + name + " 2>&1");
         INFO(run.out);
         CHECK(run.status == 0);
-        const std::string result = testing::slurp(out / (name + ".dat"));
-        const auto force = result.find("total force (fx,fy,fz) for set XMAX");
-        if (force == std::string::npos) return 0.0;
-        std::istringstream line(result.substr(result.find('\n', force) + 1));
-        double x = 0.0;
-        line >> x;
-        return x / area / (pull / lx);
+        return totalForceX(testing::slurp(out / (name + ".dat")), "XMAX") / area / (pull / lx);
     };
     const double global = pulled("global_axes", ""), fibres = pulled("fibre_axes", ", ORIENTATION=FIBRES");
     WARN("orthotropic tows: modulus " << global << " with material axes along x, " << fibres << " along the fibres");
@@ -867,13 +876,8 @@ TEST_CASE("CalculiX solves a periodic twill cell under periodic boundary conditi
     REQUIRE(c.status == 0);
     CHECK(c.out.find("ERROR") == std::string::npos);
     const std::string dat = testing::slurp(out / "periodic.dat");
-    const auto total = dat.find("total force (fx,fy,fz) for set XMAX");
-    REQUIRE(total != std::string::npos);
-    std::istringstream in(dat.substr(dat.find('\n', total) + 1));
-    double fx = 0.0;
-    in >> fx;
-    const double modulus = fx / area / (pull / lx);
-    const double voigt = f * ef + (1.0 - f) * em, reuss = 1.0 / (f / ef + (1.0 - f) / em);
+    const double modulus = totalForceX(dat, "XMAX") / area / (pull / lx);
+    const auto [reuss, voigt] = reussVoigt(f, ef, em);
     WARN("periodic twill cell: tow volume fraction " << f << ", modulus " << modulus << " between Reuss " << reuss << " and Voigt " << voigt);
     CHECK(modulus > reuss);
     CHECK(modulus < voigt);
