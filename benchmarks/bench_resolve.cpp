@@ -95,7 +95,8 @@ int main(int argc, char** argv)
                         number("tow_volume_fraction"));
         }
         goals.require("the volume stage ran", stage > 0.0);
-        goals.require("volume stage within 2 x the surface stages", stage <= 2.0 * surface);
+        // A goal (not a correctness check): volume stage <= 2 x surface stages.
+        goals.ratioAtLeast("surface stages / volume stage", surface / stage, 0.5);
     }
     std::size_t regions = 0;
     for (auto at = report.find("\"secondary\":\""); at != std::string::npos; at = report.find("\"secondary\":\"", at + 1)) ++regions;
