@@ -7,6 +7,7 @@
 /// TowSurface::fit(); every failure is a towgeom::Error.
 #pragma once
 
+#include "towgeom/bezier_extraction.hpp"
 #include "towgeom/cell.hpp"
 #include "towgeom/collision.hpp"
 #include "towgeom/cross_section.hpp"

@@ -28,7 +28,8 @@ struct VolumeMeshOptions {
     std::size_t threads = 0;
 };
 
-/// Linear tetrahedra filling each tow of a TextileMesh, on the surface mesh as it is.
+/// Tetrahedra (linear, or quadratic: VolumeMeshOptions::order) filling each tow of a
+/// TextileMesh (and the matrix of a cell), on the surface mesh as it is.
 struct TOWGEOM_EXPORT VolumeMesh {
     /// The surface mesh's nodes first (same indices as TextileMesh::nodes), then the nodes
     /// inside the tows (and, for quadratic tetrahedra, the edges' middle nodes). Every surface
@@ -41,7 +42,8 @@ struct TOWGEOM_EXPORT VolumeMesh {
     /// Quadratic tetrahedra (VolumeMeshOptions::order 2): per tetrahedron the node in the middle
     /// of each of its edges (0,1), (1,2), (2,0), (0,3), (1,3), (2,3) of tetrahedra's corners (the
     /// order of Abaqus' C3D10 and VTK's quadratic tetrahedron); empty for linear ones. These
-    /// nodes follow the corners in nodes; those on a surface are on its triangles' edges.
+    /// nodes come after the surface mesh's nodes, mixed with the inner corners; those on a
+    /// surface are in the middle of its triangles' edges.
     std::vector<std::array<std::size_t, 6>> edgeNodes;
     /// For each tetrahedron, the tow it lies in (an index into TextileMesh::tows), or
     /// TextileMesh::tows.size() for the matrix of a mesh clipped to a cell.
@@ -91,8 +93,8 @@ TOWGEOM_EXPORT TetrahedronQuality tetrahedronQuality(const VolumeMesh& volumes);
 ///         (InvalidArgument) if a tow's surface is not a closed 2-manifold (every edge of its
 ///         triangles shared by exactly two of them, no triangle twice) or a triangle is in two
 ///         regions (Gmsh would end the process on such input);
-///         (Internal) with Gmsh's message if Gmsh fails, or if it added, moved or renumbered a
-///         surface node.
+///         (Internal) with Gmsh's message if Gmsh fails, if it added, moved or renumbered a
+///         surface node, or (order 2) if a tetrahedron has no node at the middle of an edge.
 TOWGEOM_EXPORT VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& options = {});
 
 /// Sets VolumeMesh::fibreDirection: for each tetrahedron, the fibre direction of its tow at the

@@ -116,7 +116,8 @@ Options:
                      END_NAME per tow, *ORIENTATION FIBRES: each element's fibre axes), with
                      vtk also DIR/textile_volume.vtu for ParaView (tow_id, material,
                      fibre_direction per tetrahedron); report.json gains "volume_mesh":
-                     {"tetrahedra","order","nodes","inner_nodes","tows":[{"name","tetrahedra",
+                     {"tetrahedra","order","nodes","inner_nodes" (nodes Gmsh added: inner
+                     corners and, with --order 2, every middle node),"tows":[{"name","tetrahedra",
                      "volume"}],"quality":{"min_dihedral_deg","max_dihedral_deg",
                      "min_dihedral_histogram_bins_deg" (lower edges: 0 5 10 20 ... 60, the last
                      bin up to 70.53),"min_dihedral_histogram"}}, with --cell also "matrix":

@@ -12,6 +12,7 @@
 
 #include <ostream>
 
+#include "export/cell_face_triangles.hpp"
 #include "export/edge_middles.hpp"
 #include "export/number_writer.hpp"
 #include "io/output_files.hpp"
@@ -74,7 +75,8 @@ void writeCellFaceSets(const TextileMesh& mesh, std::ostream& out, const detail:
 {
     if (!mesh.cell) return;
     for (std::size_t f = 0; f < 6; ++f) {
-        const std::vector<std::size_t> nodes = middles ? middles->withMiddles(mesh.cell->faceNodes[f]) : mesh.cell->faceNodes[f];
+        const std::vector<std::size_t> nodes =
+            middles ? middles->withMiddles(mesh.cell->faceNodes[f], detail::cellFaceTriangles(mesh, static_cast<CellFace>(f))) : mesh.cell->faceNodes[f];
         if (nodes.empty()) continue;
         out << "*NSET, NSET=" << upper(cellFaceName(static_cast<CellFace>(f))) << '\n';
         for (std::size_t k = 0; k < nodes.size(); ++k) out << nodes[k] + 1 << (k % 16 == 15 || k + 1 == nodes.size() ? "\n" : ", ");
@@ -86,6 +88,12 @@ std::vector<std::vector<std::size_t>> tetrahedraBySolid(const TextileMesh& mesh,
 {
     const std::size_t towCount = mesh.tows.size();
     std::vector<std::vector<std::size_t>> tets(towCount + 1);
+    for (const auto& t : volumes.tetrahedra)
+        for (std::size_t n : t)
+            if (n >= volumes.nodes.size()) throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a node out of range");
+    for (const auto& e : volumes.edgeNodes)
+        for (std::size_t n : e)
+            if (n >= volumes.nodes.size()) throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a middle node out of range");
     for (std::size_t k = 0; k < volumes.tetrahedra.size(); ++k) {
         if (volumes.tow[k] > towCount || (volumes.tow[k] == towCount && !mesh.cell))
             throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a tow out of range");
@@ -536,12 +544,16 @@ void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostrea
         list(std::vector<std::size_t>(all.begin(), all.end()));
         for (const TowFace face : {TowFace::Start, TowFace::End}) {
             std::set<std::size_t> cap;
+            std::vector<std::array<std::size_t, 3>> capTriangles;
             const TowMesh& m = mesh.tows[t];
             for (std::size_t k = 0; k < m.triangles.size() && k < m.face.size(); ++k)
-                if (m.face[k] == face) cap.insert(m.triangles[k].begin(), m.triangles[k].end());
+                if (m.face[k] == face) {
+                    cap.insert(m.triangles[k].begin(), m.triangles[k].end());
+                    capTriangles.push_back(m.triangles[k]);
+                }
             if (cap.empty()) continue;
             out << "*NSET, NSET=" << label(face == TowFace::Start ? "START_" : "END_", names[t]) << '\n';
-            list(middles.withMiddles(std::vector<std::size_t>(cap.begin(), cap.end())));
+            list(middles.withMiddles(std::vector<std::size_t>(cap.begin(), cap.end()), capTriangles));
         }
     }
     writeCellFaceSets(mesh, out, &middles);

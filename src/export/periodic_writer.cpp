@@ -5,6 +5,7 @@
 #include <ostream>
 #include <vector>
 
+#include "export/cell_face_triangles.hpp"
 #include "export/edge_middles.hpp"
 #include "export/number_writer.hpp"
 #include "io/output_files.hpp"
@@ -26,17 +27,27 @@ void writeAbaqusPeriodic(const TextileMesh& mesh, const VolumeMesh& volumes, std
     const detail::EdgeMiddles middles(volumes);
     std::array<std::vector<std::pair<std::size_t, std::size_t>>, 3> pairs = cell.periodicPairs;
     std::array<std::vector<std::size_t>, 6> onFace;
-    for (std::size_t f = 0; f < 6; ++f) onFace[f] = middles.withMiddles(cell.faceNodes[f]);
+    std::array<std::vector<std::array<std::size_t, 3>>, 6> faceTriangles;
+    for (std::size_t f = 0; f < 6; ++f) {
+        faceTriangles[f] = detail::cellFaceTriangles(mesh, static_cast<CellFace>(f));
+        onFace[f] = middles.withMiddles(cell.faceNodes[f], faceTriangles[f]);
+    }
     if (!middles.empty())
         for (std::size_t a = 0; a < 3; ++a) {
             const std::map<std::size_t, std::size_t> partner(cell.periodicPairs[a].begin(), cell.periodicPairs[a].end());
-            for (const auto& [edge, mid] : middles.all()) {
-                const auto p = partner.find(edge.first), q = partner.find(edge.second);
-                if (p == partner.end() || q == partner.end()) continue;
-                const std::size_t* moved = middles.of(p->second, q->second);
-                if (!moved) throw Error(ErrorCode::Internal, "a min-face edge's partner edge is no edge of the tetrahedra");
-                pairs[a].emplace_back(mid, *moved);
-            }
+            for (const auto& t : faceTriangles[2 * a])  // the min face's edges and their partners
+                for (int e = 0; e < 3; ++e) {
+                    const std::size_t u = t[static_cast<std::size_t>(e)], w = t[static_cast<std::size_t>((e + 1) % 3)];
+                    const std::size_t* mid = middles.of(u, w);
+                    const auto p = partner.find(u), q = partner.find(w);
+                    if (!mid || p == partner.end() || q == partner.end())
+                        throw Error(ErrorCode::InvalidArgument, "a min-face edge has no middle node or no partner on the max face");
+                    const std::size_t* moved = middles.of(p->second, q->second);
+                    if (!moved) throw Error(ErrorCode::InvalidArgument, "a min-face edge's partner edge is no edge of the tetrahedra");
+                    pairs[a].emplace_back(*mid, *moved);
+                }
+            std::sort(pairs[a].begin(), pairs[a].end());
+            pairs[a].erase(std::unique(pairs[a].begin(), pairs[a].end()), pairs[a].end());
         }
     // Per node, the highest axis on whose max face it lies (-1: none).
     std::vector<int> maxAxis(volumes.nodes.size(), -1);

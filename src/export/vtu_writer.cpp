@@ -18,6 +18,12 @@ void writeVtu(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostream& 
         throw Error(ErrorCode::InvalidArgument, "the volume mesh has " + std::to_string(volumes.fibreDirection.size()) +
                                                     " fibre directions for " + std::to_string(volumes.tetrahedra.size()) + " tetrahedra");
     const std::size_t towCount = mesh.tows.size();
+    for (const auto& t : volumes.tetrahedra)
+        for (std::size_t n : t)
+            if (n >= volumes.nodes.size()) throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a node out of range");
+    for (const auto& e : volumes.edgeNodes)
+        for (std::size_t n : e)
+            if (n >= volumes.nodes.size()) throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a middle node out of range");
     for (std::size_t t : volumes.tow)
         if (t > towCount || (t == towCount && !volumes.withMatrix))
             throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a tow out of range");

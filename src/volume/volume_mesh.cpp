@@ -133,8 +133,10 @@ private:
     const Gmsh& g_;
     bool hadCurrent_ = false, added_ = false;
     std::string hostModel_;
-    std::pair<const char*, double> saved_[6] = {{"General.Terminal", 0.0},
+    std::pair<const char*, double> saved_[8] = {{"General.Terminal", 0.0},
                                                 {"Mesh.ElementOrder", 0.0},
+                                                {"Mesh.SubdivisionAlgorithm", 0.0},
+                                                {"Mesh.HighOrderOptimize", 0.0},
                                                 {"General.NumThreads", 0.0},
                                                 {"Mesh.Algorithm3D", 0.0},
                                                 {"Mesh.Optimize", 0.0},
@@ -173,7 +175,8 @@ std::array<std::size_t, 6> middleNodes(const std::vector<Point3>& nodes, const s
         std::size_t best = 0;
         for (std::size_t m = 1; m < 6; ++m)
             if (distance(nodes[middle[m]], mid) < distance(nodes[middle[best]], mid)) best = m;
-        if (!(distance(nodes[middle[best]], mid) <= 1e-9 * distance(a, b)))
+        const double scale = std::max({std::abs(mid.x), std::abs(mid.y), std::abs(mid.z)});
+        if (!(distance(nodes[middle[best]], mid) <= 1e-9 * distance(a, b) + 1e-14 * scale))
             throw Error(ErrorCode::Internal, "Gmsh's quadratic tetrahedron has no node at the middle of an edge");
         out[static_cast<std::size_t>(e)] = middle[best];
     }
@@ -389,8 +392,12 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         option("Mesh.Optimize", options.optimize ? 1 : 0);
         option("General.NumThreads", static_cast<double>(options.threads));
         option("Mesh.Renumber", 0);  // keep the surface nodes' tags (= index + 1)
+        // Linear elements from generate() whatever the host set (order 2 comes after the check
+        // below), no subdivision, no high-order optimisation.
+        option("Mesh.ElementOrder", 1);
+        option("Mesh.SubdivisionAlgorithm", 0);
+        option("Mesh.HighOrderOptimize", 0);
         g.call("gmshModelMeshGenerate", api.gmshModelMeshGenerate, 3);
-        if (quadratic) g.call("gmshModelMeshSetOrder", api.gmshModelMeshSetOrder, 2);
 
         const auto nodesOn = [&](int dim, std::vector<std::size_t>& tags, std::vector<double>& coords) {
             std::size_t* t = nullptr;
@@ -401,15 +408,15 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
             coords = detail::gmshTake(api, c, nc);
             detail::gmshTake(api, p, np);
         };
-        // No corner node may have been added on a surface (the surfaces are the tows'
-        // interfaces); quadratic tetrahedra's middle nodes are checked below, edge by edge.
+        // No node may have been added on a surface (the surfaces are the tows' interfaces); then
+        // quadratic tetrahedra get their middle nodes (checked below, edge by edge).
         std::vector<std::size_t> tags;
         std::vector<double> coords;
         nodesOn(2, tags, coords);
-        if (!quadratic)
-            for (std::size_t n : tags)
-                if (n > surfaces.nodes.size() || !classified[n - 1])
-                    throw Error(ErrorCode::Internal, "Gmsh added a node on a tow's surface while meshing the volumes");
+        for (std::size_t n : tags)
+            if (n > surfaces.nodes.size() || !classified[n - 1])
+                throw Error(ErrorCode::Internal, "Gmsh added a node on a tow's surface while meshing the volumes");
+        if (quadratic) g.call("gmshModelMeshSetOrder", api.gmshModelMeshSetOrder, 2);
         // Every node: the surface's keep their indices, Gmsh's new ones are appended.
         nodesOn(-1, tags, coords);
         std::vector<std::size_t> index;  // by Gmsh tag

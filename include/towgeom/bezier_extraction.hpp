@@ -1,0 +1,62 @@
+/// @file bezier_extraction.hpp
+/// @brief Bézier extraction of a tow's B-spline surface for isogeometric analysis (Borden et al.,
+/// "Isogeometric finite element data structures based on Bézier extraction of NURBS", 2011):
+/// every knot-span element as a Bézier patch, with the operator that maps the B-spline basis onto
+/// the element's Bernstein basis.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "towgeom/point.hpp"
+#include "towgeom/tow_surface.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+
+/// One knot-span element (a u-span x a v-span of non-zero length) as a Bézier patch.
+struct TOWGEOM_EXPORT BezierElement {
+    std::size_t uSpan = 0;  ///< the element's index among the u-spans (0-based)
+    std::size_t vSpan = 0;  ///< its index among the v-spans
+    double uMin = 0.0;      ///< its parameter box: u from uMin ...
+    double uMax = 0.0;      ///< ... to uMax
+    double vMin = 0.0;      ///< v from vMin ...
+    double vMax = 0.0;      ///< ... to vMax
+    /// The (p+1)(q+1) B-spline basis functions non-zero on the element, local index
+    /// a = au + (p+1) av, each as its global index iu * BezierSurface::vFunctions + iv.
+    std::vector<std::size_t> functions;
+    /// The element extraction operator C_e, row-major ((p+1)(q+1) rows a, as many columns b):
+    /// N_a = sum_b C_e[a][b] B_b, with B_b = B_bu(s) B_bv(t) the Bernstein polynomials of degree
+    /// (p, q) of the element's local coordinates s = (u - uMin) / (uMax - uMin), t likewise
+    /// (local b = bu + (p+1) bv). The tensor product of the u and v operators.
+    std::vector<double> extraction;
+    /// The Bézier control points (local index b): sum_a C_e[a][b] times the control point of
+    /// function a.
+    std::vector<Point3> controlPoints;
+};
+
+/// A tow's surface as B-spline data in the clamped (non-periodic) form and its Bézier elements.
+/// The surface is polynomial (weights 1).
+struct TOWGEOM_EXPORT BezierSurface {
+    std::size_t uDegree = 0;    ///< p
+    std::size_t vDegree = 0;    ///< q
+    std::size_t uFunctions = 0;  ///< B-spline basis functions along u
+    std::size_t vFunctions = 0;  ///< along v (the periodic surface made clamped: same geometry)
+    std::vector<double> uKnots;  ///< the full (flat) knot vectors, clamped
+    std::vector<double> vKnots;  ///< (v: one period, from vMin to vMax)
+    /// Control points, global index iu * vFunctions + iv.
+    std::vector<Point3> controlPoints;
+    /// Every element, u-spans outer, v-spans inner.
+    std::vector<BezierElement> elements;
+
+    /// The point of element @p e at local coordinates (@p s, @p t) in [0, 1]^2 by Bernstein
+    /// evaluation of its Bézier control points.
+    Point3 point(const BezierElement& e, double s, double t) const;
+};
+
+/// The Bézier extraction of @p tow's surface: its basis functions evaluated by OCCT (BSplCLib) at
+/// p+1 points per span and the operator that maps them onto the Bernstein basis there.
+/// @throws towgeom::Error (Internal) if the kernel's surface is rational (fitted tows never are).
+TOWGEOM_EXPORT BezierSurface extractBezier(const TowSurface& tow);
+
+TOWGEOM_END_NAMESPACE
