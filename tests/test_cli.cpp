@@ -283,3 +283,67 @@ TEST_CASE("towgeom fit refuses a tessellation over --max-triangles at once (exit
     CHECK(cli("fit '" + kTube + "' --max-triangles 200").status == 2);  // applies to --out only
     fs::remove_all(out);
 }
+
+TEST_CASE("towgeom fit --bezier writes each tow's Bézier extraction, which an independent B-spline evaluation confirms", "[cli][iga][bezier]")
+{
+    // The JSON read by Python: at 200 random points of random elements, the Bernstein patch of
+    // bezier_points equals de Boor's evaluation of the clamped B-spline (u_knots, v_knots,
+    // control_points) written with it, and bezier_points = C_e^T times the functions' points.
+    const fs::path out = fs::temp_directory_path() / ("towgeom_fit_bezier_" + std::to_string(::getpid()));
+    fs::remove_all(out);
+    const std::string warp = std::string(TOWGEOM_EXAMPLE_DATA) + "/twill/warp_0.stw";
+    const Run r = cli("fit '" + warp + "' --out '" + out.string() + "' --bezier --quiet");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    REQUIRE(fs::exists(out / "warp_0_bezier.json"));
+    const std::string script = out.string() + "/check.py";
+    std::ofstream(script) << R"(import json, math, random, sys
+j = json.load(open(sys.argv[1]))
+p, q = j['u_degree'], j['v_degree']
+U, V, P, nv = j['u_knots'], j['v_knots'], j['control_points'], j['v_functions']
+def basis(knots, deg, x, i):  # Cox-de Boor: value of basis function i at x (span-open on the right)
+    def N(i, k):
+        if k == 0:
+            return 1.0 if knots[i] <= x < knots[i + 1] else 0.0
+        a = 0.0 if knots[i + k] == knots[i] else (x - knots[i]) / (knots[i + k] - knots[i]) * N(i, k - 1)
+        b = 0.0 if knots[i + k + 1] == knots[i + 1] else (knots[i + k + 1] - x) / (knots[i + k + 1] - knots[i + 1]) * N(i + 1, k - 1)
+        return a + b
+    return N(i, deg)
+def bern(n, k, s):
+    return math.comb(n, k) * s ** k * (1 - s) ** (n - k)
+random.seed(3)
+worst_eval, worst_ce = 0.0, 0.0
+E = j['elements']
+for trial in range(200):
+    e = random.choice(E)
+    s, t = random.random(), random.random()
+    u = e['u'][0] + s * (e['u'][1] - e['u'][0]); v = e['v'][0] + t * (e['v'][1] - e['v'][0])
+    bz = [sum(bern(p, bu, s) * bern(q, bv, t) * e['bezier_points'][bu + (p + 1) * bv][c] for bu in range(p + 1) for bv in range(q + 1)) for c in range(3)]
+    iu0, iv0 = e['functions'][0] // nv, e['functions'][0] % nv
+    bs = [0.0, 0.0, 0.0]
+    for iu in range(iu0, iu0 + p + 1):
+        nu = basis(U, p, u, iu)
+        for iv in range(iv0, iv0 + q + 1):
+            w = nu * basis(V, q, v, iv)
+            for c in range(3): bs[c] += w * P[iu * nv + iv][c]
+    worst_eval = max(worst_eval, max(abs(bz[c] - bs[c]) for c in range(3)))
+    n = (p + 1) * (q + 1)
+    for b in range(n):
+        x = [sum(e['extraction'][a * n + b] * P[e['functions'][a]][c] for a in range(n)) for c in range(3)]
+        worst_ce = max(worst_ce, max(abs(x[c] - e['bezier_points'][b][c]) for c in range(3)))
+print(len(E), worst_eval, worst_ce)
+)";
+    const Run py = towgeom::testing::runShell("/usr/bin/python3 '" + script + "' '" + (out / "warp_0_bezier.json").string() + "' 2>&1");
+    INFO(py.out);
+    REQUIRE(py.status == 0);
+    std::istringstream read(py.out);
+    double elements = 0, worstEval = 1, worstCe = 1;
+    read >> elements >> worstEval >> worstCe;
+    CHECK(elements > 100);
+    CHECK(worstEval < 1e-12);  // the tow is about 1 across
+    CHECK(worstCe < 1e-12);
+    const Run bad = cli("fit '" + warp + "' --bezier --quiet");
+    CHECK(bad.status == 2);
+    CHECK(bad.err.find("--bezier") != std::string::npos);
+    fs::remove_all(out);
+}

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <cstddef>
+#include <iosfwd>
+#include <string>
 #include <vector>
 
 #include "towgeom/point.hpp"
@@ -58,5 +60,13 @@ struct TOWGEOM_EXPORT BezierSurface {
 /// p+1 points per span and the operator that maps them onto the Bernstein basis there.
 /// @throws towgeom::Error (Internal) if the kernel's surface is rational (fitted tows never are).
 TOWGEOM_EXPORT BezierSurface extractBezier(const TowSurface& tow);
+
+/// Writes @p bezier as one JSON object for isogeometric codes: {"tow", "u_degree", "v_degree",
+/// "u_functions", "v_functions", "u_knots", "v_knots", "control_points":[[x,y,z]...] (global
+/// index iu * v_functions + iv), "elements":[{"u_span", "v_span", "u":[min,max], "v":[min,max],
+/// "functions":[global indices], "extraction":[row-major C_e], "bezier_points":[[x,y,z]...]}]}
+/// (see BezierElement for the local orders).
+/// @throws towgeom::Error (WriteFailed) if @p out fails.
+TOWGEOM_EXPORT void writeBezierJson(const BezierSurface& bezier, const std::string& tow, std::ostream& out);
 
 TOWGEOM_END_NAMESPACE

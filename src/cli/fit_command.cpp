@@ -51,6 +51,10 @@ Options:
                   (default: 3 per section interval along, 3 per input point around)
   --max-triangles N  refuse (exit 2, before fitting) tessellations of more than N triangles,
                   2 (U - 1) V per tow, all tows together (default 20000000)
+  --bezier        with --out, also DIR/NAME_bezier.json per tow for isogeometric analysis:
+                  the B-spline in clamped form (degrees, knots, control points) and every
+                  knot-span element as a Bezier patch with its extraction operator C_e
+                  (Borden et al. 2011) and Bezier control points (library: extractBezier())
   --quiet         no progress lines on stderr
   -h, --help      this help
 
@@ -58,8 +62,9 @@ Exit status: 0 success; 2 invalid input or usage (one line on stderr naming file
 or a tessellation over --max-triangles; 1 an output file could not be written, or an internal
 failure (a failed run leaves DIR exactly as it was).
 
-Example:
+Examples:
   towgeom fit examples/data/*.stw --out fitted/ > fit.json
+  towgeom fit examples/data/twill/warp_0.stw --out iga/ --bezier > /dev/null
 )";
 
 struct Samples {
@@ -103,7 +108,7 @@ int runFit(int argc, char** argv, int first)
     try {
         const Args args(argc, argv, first,
                         {{"help"}, {"quiet"}, {"mode", true}, {"tolerance", true}, {"out", true}, {"samples", true},
-                         {"max-triangles", true}});
+                         {"max-triangles", true}, {"bezier"}});
         if (args.has("help")) {
             std::cout << kFitHelp;
             return kExitOk;
@@ -120,6 +125,8 @@ int runFit(int argc, char** argv, int first)
         const auto outDir = args.value("out");
         if (!outDir && args.has("samples")) throw UsageError("--samples applies to --out only");
         if (!outDir && args.has("max-triangles")) throw UsageError("--max-triangles applies to --out only");
+        const bool bezier = args.has("bezier");
+        if (!outDir && bezier) throw UsageError("--bezier writes files: it needs --out DIR");
         const std::size_t maxTriangles = args.maxTriangles(MeshOptions{}.maxTriangles);
         const bool quiet = args.has("quiet");
 
@@ -174,6 +181,10 @@ int runFit(int argc, char** argv, int first)
             towList.push_back(std::move(t));
         }
         const std::string report = jsonText({{"tows", std::move(towList)}});
+        // The Bézier extractions (isogeometric analysis), all computed before anything is written.
+        std::vector<BezierSurface> extractions;
+        if (bezier)
+            for (const TowSurface& s : surfaces) extractions.push_back(extractBezier(s));
 
         if (outDir) {
             detail::OutputFiles files;
@@ -183,6 +194,7 @@ int runFit(int argc, char** argv, int first)
                 const auto [nu, nv] = stations(stacks[k]);
                 const std::string path = (std::filesystem::path(*outDir) / (s.name() + ".vtk")).string();
                 writeVtk(s.tessellate(nu, nv), files.open(path), "towgeom surface of tow " + s.name());
+                if (bezier) writeBezierJson(extractions[k], s.name(), files.open((std::filesystem::path(*outDir) / (s.name() + "_bezier.json")).string()));
             }
             files.commit();
         }
