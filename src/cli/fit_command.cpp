@@ -52,9 +52,10 @@ Options:
   --max-triangles N  refuse (exit 2, before fitting) tessellations of more than N triangles,
                   2 (U - 1) V per tow, all tows together (default 20000000)
   --bezier        with --out, also DIR/NAME_bezier.json per tow for isogeometric analysis:
-                  the B-spline in clamped form (degrees, knots, control points) and every
-                  knot-span element as a Bezier patch with its extraction operator C_e
-                  (Borden et al. 2011) and Bezier control points (library: extractBezier())
+                  the tube's B-spline (degrees, knots, control points of its basis, periodic
+                  around the tow) and every knot-span element as a Bezier patch with its
+                  extraction operator C_e (Borden et al. 2011) and Bezier control points
+                  (library: extractBezier(), writeBezierJson())
   --quiet         no progress lines on stderr
   -h, --help      this help
 

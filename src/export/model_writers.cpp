@@ -15,6 +15,7 @@
 #include "export/cell_face_triangles.hpp"
 #include "export/edge_middles.hpp"
 #include "export/number_writer.hpp"
+#include "export/volume_mesh_checks.hpp"
 #include "io/output_files.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
@@ -86,30 +87,16 @@ void writeCellFaceSets(const TextileMesh& mesh, std::ostream& out, const detail:
 /// The tetrahedra of @p volumes by the tow they fill, the matrix's last (index: the tow count).
 std::vector<std::vector<std::size_t>> tetrahedraBySolid(const TextileMesh& mesh, const VolumeMesh& volumes)
 {
-    const std::size_t towCount = mesh.tows.size();
-    std::vector<std::vector<std::size_t>> tets(towCount + 1);
-    for (const auto& t : volumes.tetrahedra)
-        for (std::size_t n : t)
-            if (n >= volumes.nodes.size()) throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a node out of range");
-    for (const auto& e : volumes.edgeNodes)
-        for (std::size_t n : e)
-            if (n >= volumes.nodes.size()) throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a middle node out of range");
-    for (std::size_t k = 0; k < volumes.tetrahedra.size(); ++k) {
-        if (volumes.tow[k] > towCount || (volumes.tow[k] == towCount && !mesh.cell))
-            throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a tow out of range");
-        tets[volumes.tow[k]].push_back(k);
-    }
+    detail::checkVolumeMeshOf(mesh, volumes);
+    std::vector<std::vector<std::size_t>> tets(mesh.tows.size() + 1);
+    for (std::size_t k = 0; k < volumes.tetrahedra.size(); ++k) tets[volumes.tow[k]].push_back(k);
     return tets;
 }
 
 /// writeGmsh() with, when @p volumes is given, a volume entity per tow holding its tetrahedra.
 void writeGmshModel(const TextileMesh& mesh, const VolumeMesh* volumes, std::ostream& out)
 {
-    if (volumes && (volumes->surfaceNodes != mesh.nodes.size() || volumes->tetrahedra.size() != volumes->tow.size()))
-        throw Error(ErrorCode::InvalidArgument, "the volume mesh is not one of this surface mesh (meshVolumes() of it)");
-    if (volumes && !volumes->fibreDirection.empty() && volumes->fibreDirection.size() != volumes->tetrahedra.size())
-        throw Error(ErrorCode::InvalidArgument, "the volume mesh has " + std::to_string(volumes->fibreDirection.size()) +
-                                                    " fibre directions for " + std::to_string(volumes->tetrahedra.size()) + " tetrahedra");
+    if (volumes) detail::checkVolumeMeshOf(mesh, *volumes);
     const std::vector<Point3>& nodes = volumes ? volumes->nodes : mesh.nodes;
     out << std::setprecision(std::numeric_limits<double>::max_digits10);
     // Surface entities, every triangle in one: per tow its tube and its cap triangles outside
@@ -210,8 +197,6 @@ void writeGmshModel(const TextileMesh& mesh, const VolumeMesh* volumes, std::ost
     // Quadratic tetrahedra: 10-node tetrahedra (Gmsh's order: edges 01, 12, 20, 03, 23, 13) and
     // 6-node triangles (edges 01, 12, 20).
     const bool quadratic = volumes && !volumes->edgeNodes.empty();
-    if (quadratic && volumes->edgeNodes.size() != volumes->tetrahedra.size())
-        throw Error(ErrorCode::InvalidArgument, "the volume mesh has middle nodes for some of its tetrahedra only");
     const detail::EdgeMiddles middles = volumes ? detail::EdgeMiddles(*volumes) : detail::EdgeMiddles(VolumeMesh{});
     const auto triangleNodes = [&](const std::array<std::size_t, 3>& t) {
         std::vector<std::size_t> n(t.begin(), t.end());
@@ -461,15 +446,11 @@ void writeGmsh(const TextileMesh& mesh, const std::string& path)
 
 void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostream& out)
 {
-    if (volumes.surfaceNodes != mesh.nodes.size() || volumes.tetrahedra.size() != volumes.tow.size())
-        throw Error(ErrorCode::InvalidArgument, "the volume mesh is not one of this surface mesh (meshVolumes() of it)");
     constexpr std::size_t kField = 20;
     const std::vector<std::string> names = towLabels(mesh);
     const std::size_t towCount = mesh.tows.size();
-    const std::vector<std::vector<std::size_t>> tets = tetrahedraBySolid(mesh, volumes);
+    const std::vector<std::vector<std::size_t>> tets = tetrahedraBySolid(mesh, volumes);  // checks volumes
     const bool quadratic = !volumes.edgeNodes.empty();
-    if (quadratic && volumes.edgeNodes.size() != volumes.tetrahedra.size())
-        throw Error(ErrorCode::InvalidArgument, "the volume mesh has middle nodes for some of its tetrahedra only");
     const char* type = quadratic ? "C3D10" : "C3D4";
     const detail::EdgeMiddles middles(volumes);
     out << "*HEADING\ntowgeom: tetrahedra of " << towCount << " tows" << (tets[towCount].empty() ? "" : " and the matrix") << " ("
@@ -502,9 +483,6 @@ void writeAbaqus(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostrea
         // Fibre directions (addFibreDirections()): each tow element's local 1-axis along its
         // fibres, the 2-axis normal to it towards global z (y where the fibres run along z); an
         // *ORIENTATION FIBRES for *SOLID SECTION, ..., ORIENTATION=FIBRES.
-        if (!volumes.fibreDirection.empty() && volumes.fibreDirection.size() != volumes.tetrahedra.size())
-            throw Error(ErrorCode::InvalidArgument, "the volume mesh has " + std::to_string(volumes.fibreDirection.size()) +
-                                                        " fibre directions for " + std::to_string(volumes.tetrahedra.size()) + " tetrahedra");
         if (!volumes.fibreDirection.empty() && towCount > 0 && solids.size() > (tets[towCount].empty() ? 0u : 1u)) {
             constexpr std::size_t kAxis = 16;  // a line stays within CalculiX's 132 characters
             w.text("*DISTRIBUTION TABLE, NAME=FIBRE_AXES_TABLE").end().text("COORD3D, COORD3D").end();

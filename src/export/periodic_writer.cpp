@@ -8,6 +8,7 @@
 #include "export/cell_face_triangles.hpp"
 #include "export/edge_middles.hpp"
 #include "export/number_writer.hpp"
+#include "export/volume_mesh_checks.hpp"
 #include "io/output_files.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/mesh_export.hpp"
@@ -19,8 +20,7 @@ void writeAbaqusPeriodic(const TextileMesh& mesh, const VolumeMesh& volumes, std
 {
     if (!mesh.cell || !mesh.cell->box.periodic)
         throw Error(ErrorCode::InvalidArgument, "periodic boundary conditions need a mesh clipped to a periodic cell");
-    if (volumes.surfaceNodes != mesh.nodes.size())
-        throw Error(ErrorCode::InvalidArgument, "the volume mesh is not one of this surface mesh (meshVolumes() of it)");
+    detail::checkVolumeMeshOf(mesh, volumes);
     const CellMesh& cell = *mesh.cell;
     // The node pairs per axis, with quadratic tetrahedra's middle nodes: the middle of a min-face
     // edge pairs with the middle of its partners' edge.
@@ -70,7 +70,6 @@ void writeAbaqusPeriodic(const TextileMesh& mesh, const VolumeMesh& volumes, std
         if (std::binary_search(cell.faceNodes[2].begin(), cell.faceNodes[2].end(), n) &&
             std::binary_search(cell.faceNodes[4].begin(), cell.faceNodes[4].end(), n))
             corner.push_back(n);
-    if (volumes.nodes.size() < mesh.nodes.size()) throw Error(ErrorCode::InvalidArgument, "the volume mesh has fewer nodes than its surfaces");
     if (corner.size() != 1) throw Error(ErrorCode::Internal, "the cell's min corner is not one node");
     w.text("*NSET, NSET=CORNER").end().number(corner[0] + 1).end();
     // Highest axis first: a node made dependent by an axis's ties is never used again by a later

@@ -2,6 +2,7 @@
 #include <ostream>
 
 #include "export/number_writer.hpp"
+#include "export/volume_mesh_checks.hpp"
 #include "io/output_files.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/mesh_export.hpp"
@@ -11,22 +12,9 @@ TOWGEOM_BEGIN_NAMESPACE
 
 void writeVtu(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostream& out)
 {
-    if (volumes.surfaceNodes != mesh.nodes.size() || volumes.tetrahedra.size() != volumes.tow.size())
-        throw Error(ErrorCode::InvalidArgument, "the volume mesh is not one of this surface mesh (meshVolumes() of it)");
+    detail::checkVolumeMeshOf(mesh, volumes);
     const bool fibres = !volumes.fibreDirection.empty();
-    if (fibres && volumes.fibreDirection.size() != volumes.tetrahedra.size())
-        throw Error(ErrorCode::InvalidArgument, "the volume mesh has " + std::to_string(volumes.fibreDirection.size()) +
-                                                    " fibre directions for " + std::to_string(volumes.tetrahedra.size()) + " tetrahedra");
     const std::size_t towCount = mesh.tows.size();
-    for (const auto& t : volumes.tetrahedra)
-        for (std::size_t n : t)
-            if (n >= volumes.nodes.size()) throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a node out of range");
-    for (const auto& e : volumes.edgeNodes)
-        for (std::size_t n : e)
-            if (n >= volumes.nodes.size()) throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a middle node out of range");
-    for (std::size_t t : volumes.tow)
-        if (t > towCount || (t == towCount && !volumes.withMatrix))
-            throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a tow out of range");
     detail::NumberWriter w(out);
     w.text("<?xml version=\"1.0\"?>").end();
     w.text("<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">").end();
@@ -38,8 +26,6 @@ void writeVtu(const TextileMesh& mesh, const VolumeMesh& volumes, std::ostream& 
     w.text("<Cells>").end().text("<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">").end();
     // Quadratic tetrahedra (VTK_QUADRATIC_TETRA): the middle nodes in edgeNodes' order, VTK's.
     const bool quadratic = !volumes.edgeNodes.empty();
-    if (quadratic && volumes.edgeNodes.size() != volumes.tetrahedra.size())
-        throw Error(ErrorCode::InvalidArgument, "the volume mesh has middle nodes for some of its tetrahedra only");
     for (std::size_t k = 0; k < volumes.tetrahedra.size(); ++k) {
         const auto& t = volumes.tetrahedra[k];
         w.number(t[0]).text(" ").number(t[1]).text(" ").number(t[2]).text(" ").number(t[3]);

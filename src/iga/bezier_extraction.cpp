@@ -11,6 +11,7 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <limits>
 
 #include "surface/tow_surface_impl.hpp"
 #include "towgeom/error.hpp"
@@ -69,6 +70,10 @@ std::vector<Span> spansOf(const TColStd_Array1OfReal& flat, int degree)
             }
         }
         s.c = n * bern.inverse();
+        // Exact zeros where the operator has them (round-off of the solve otherwise).
+        for (Eigen::Index r = 0; r < s.c.rows(); ++r)
+            for (Eigen::Index c = 0; c < s.c.cols(); ++c)
+                if (std::abs(s.c(r, c)) < 64.0 * std::numeric_limits<double>::epsilon()) s.c(r, c) = 0.0;
         spans.push_back(std::move(s));
     }
     return spans;
@@ -87,26 +92,44 @@ Point3 BezierSurface::point(const BezierElement& e, double s, double t) const
 
 BezierSurface extractBezier(const TowSurface& tow)
 {
-    Handle(Geom_BSplineSurface) s = Handle(Geom_BSplineSurface)::DownCast(tow.impl().surface->Copy());
-    if (s.IsNull() || s->IsURational() || s->IsVRational())
-        throw Error(ErrorCode::Internal, "tow '" + tow.name() + "': Bézier extraction of a rational surface is not supported");
-    if (s->IsUPeriodic()) s->SetUNotPeriodic();
-    if (s->IsVPeriodic()) s->SetVNotPeriodic();  // the same geometry, clamped knots
+    const Handle(Geom_BSplineSurface)& periodic = tow.impl().surface;
+    Handle(Geom_BSplineSurface) s = Handle(Geom_BSplineSurface)::DownCast(periodic->Copy());
+    if (s.IsNull() || s->IsURational() || s->IsVRational() || s->IsUPeriodic())
+        throw Error(ErrorCode::Internal, "tow '" + tow.name() + "': Bézier extraction needs a polynomial surface open along the tow");
+    // The periodic v direction unrolled (OCCT: the same geometry, open knots reaching beyond the
+    // period, the first q poles repeated at the end); each unrolled function is then numbered as
+    // the periodic function it is a piece of, so the basis stays periodic (no slit at the seam).
+    const bool vPeriodic = s->IsVPeriodic();
+    if (vPeriodic) s->SetVNotPeriodic();
     BezierSurface out;
+    out.vPeriodic = vPeriodic;
     out.uDegree = static_cast<std::size_t>(s->UDegree());
     out.vDegree = static_cast<std::size_t>(s->VDegree());
-    out.uFunctions = static_cast<std::size_t>(s->NbUPoles());
-    out.vFunctions = static_cast<std::size_t>(s->NbVPoles());
+    out.uFunctions = static_cast<std::size_t>(periodic->NbUPoles());
+    out.vFunctions = static_cast<std::size_t>(periodic->NbVPoles());
     TColStd_Array1OfReal uFlat(1, s->NbUPoles() + s->UDegree() + 1), vFlat(1, s->NbVPoles() + s->VDegree() + 1);
     s->UKnotSequence(uFlat);
     s->VKnotSequence(vFlat);
     for (int i = uFlat.Lower(); i <= uFlat.Upper(); ++i) out.uKnots.push_back(uFlat(i));
     for (int i = vFlat.Lower(); i <= vFlat.Upper(); ++i) out.vKnots.push_back(vFlat(i));
-    for (int i = 1; i <= s->NbUPoles(); ++i)
-        for (int j = 1; j <= s->NbVPoles(); ++j) {
-            const gp_Pnt& p = s->Pole(i, j);
+    for (int i = 1; i <= periodic->NbUPoles(); ++i)
+        for (int j = 1; j <= periodic->NbVPoles(); ++j) {
+            const gp_Pnt& p = periodic->Pole(i, j);
             out.controlPoints.push_back({p.X(), p.Y(), p.Z()});
         }
+    // Unrolled v pole -> periodic v pole, matched by position along the first u row (the
+    // unrolled poles are the periodic ones, some repeated).
+    std::vector<std::size_t> vOf(static_cast<std::size_t>(s->NbVPoles()));
+    const double same = 1e-9 * tow.towSize();
+    for (int j = 1; j <= s->NbVPoles(); ++j) {
+        int found = 0;
+        for (int k = 1; k <= periodic->NbVPoles() && !found; ++k)
+            if (s->Pole(1, j).Distance(periodic->Pole(1, k)) <= same && s->Pole(s->NbUPoles(), j).Distance(periodic->Pole(periodic->NbUPoles(), k)) <= same)
+                found = k;
+        if (!found) throw Error(ErrorCode::Internal, "tow '" + tow.name() + "': an unrolled control point is none of the periodic surface's");
+        vOf[static_cast<std::size_t>(j - 1)] = static_cast<std::size_t>(found - 1);
+    }
+    if (s->NbUPoles() != periodic->NbUPoles()) throw Error(ErrorCode::Internal, "tow '" + tow.name() + "': unrolling v changed the poles along u");
     const std::vector<Span> us = spansOf(uFlat, s->UDegree()), vs = spansOf(vFlat, s->VDegree());
     const std::size_t p = out.uDegree, q = out.vDegree, n = (p + 1) * (q + 1);
     for (std::size_t i = 0; i < us.size(); ++i)
@@ -123,7 +146,7 @@ BezierSurface extractBezier(const TowSurface& tow)
             for (std::size_t av = 0; av <= q; ++av)
                 for (std::size_t au = 0; au <= p; ++au) {
                     const std::size_t a = au + (p + 1) * av;
-                    const std::size_t global = (us[i].first + au) * out.vFunctions + vs[j].first + av;
+                    const std::size_t global = (us[i].first + au) * out.vFunctions + vOf[vs[j].first + av];
                     e.functions.push_back(global);
                     for (std::size_t bv = 0; bv <= q; ++bv)
                         for (std::size_t bu = 0; bu <= p; ++bu) {

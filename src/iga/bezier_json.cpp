@@ -23,6 +23,7 @@ void writeBezierJson(const BezierSurface& bezier, const std::string& tow, std::o
     j["v_degree"] = bezier.vDegree;
     j["u_functions"] = bezier.uFunctions;
     j["v_functions"] = bezier.vFunctions;
+    j["v_periodic"] = bezier.vPeriodic;
     j["u_knots"] = bezier.uKnots;
     j["v_knots"] = bezier.vKnots;
     j["control_points"] = points(bezier.controlPoints);
