@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "cell/axis.hpp"
 #include "mesh/constraint_keeping_mesher.hpp"
 #include "mesh/mesh_cdt.hpp"
 #include "towgeom/error.hpp"
@@ -23,8 +24,6 @@ using Triangle = std::array<std::size_t, 3>;
 
 namespace {
 
-double coord(const Point3& p, int a) { return a == 0 ? p.x : a == 1 ? p.y : p.z; }
-double& coord(Point3& p, int a) { return a == 0 ? p.x : a == 1 ? p.y : p.z; }
 /// The face's two in-plane axes, in increasing order.
 std::array<int, 2> inPlane(int a) { return a == 0 ? std::array<int, 2>{1, 2} : a == 1 ? std::array<int, 2>{0, 2} : std::array<int, 2>{0, 1}; }
 

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "cell/axis.hpp"
 #include "surface/tow_surface_impl.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
@@ -18,12 +19,6 @@ namespace detail {
 
 namespace {
 
-int axisOf(CellFace f) { return static_cast<int>(f) / 2; }
-bool isMaxFace(CellFace f) { return static_cast<int>(f) % 2 == 1; }
-double coord(const gp_Pnt& p, int a) { return a == 0 ? p.X() : a == 1 ? p.Y() : p.Z(); }
-double coord(const Point3& p, int a) { return a == 0 ? p.x : a == 1 ? p.y : p.z; }
-double& coord(Point3& p, int a) { return a == 0 ? p.x : a == 1 ? p.y : p.z; }
-double coord(const gp_Vec& p, int a) { return a == 0 ? p.X() : a == 1 ? p.Y() : p.Z(); }
 
 std::string faceText(CellFace f) { return std::string("the cell's face ") + cellFaceName(f); }
 
@@ -52,8 +47,8 @@ std::vector<double> crossings(const Handle(Geom_BSplineSurface)& s, double v, in
             gp_Pnt p;
             gp_Vec du, dv;
             s->D1(w, v, p, du, dv);
-            const double d = coord(du, a);
-            const double next = d == 0.0 ? w : w - (coord(p, a) - c) / d;
+            const double d = du.Coord(a + 1);
+            const double next = d == 0.0 ? w : w - (p.Coord(a + 1) - c) / d;
             if (!(next >= r.uMin && next <= r.uMax)) break;
             w = next;
         }
@@ -158,7 +153,7 @@ CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const st
             if (none == kProbes) {  // no isoline crosses: the tow lies on one side, or the plane runs along it
                 int beyond = 0;
                 for (int j = 0; j < kProbes; ++j)
-                    if (sign * (coord(s->Value(0.5 * (r.uMin + r.uMax), r.vMin + r.vPeriod() * j / kProbes), a) - c) > 0.0) ++beyond;
+                    if (sign * (s->Value(0.5 * (r.uMin + r.uMax), r.vMin + r.vPeriod() * j / kProbes).Coord(a + 1) - c) > 0.0) ++beyond;
                 if (beyond != 0 && beyond != kProbes)
                     note("the plane of " + faceText(face) + " runs along it (cuts it lengthwise): the cell's faces must cut each tow across it");
                 if (beyond == kProbes) outside = true;
@@ -169,7 +164,7 @@ CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const st
                      " cuts it only partly (along its side, not all around): the cell's faces must cut each tow across it");
                 continue;
             }
-            const int end = sign * (coord(s->Value(r.uMin, r.vMin), a) - c) > 0.0 ? 0 : 1;
+            const int end = sign * (s->Value(r.uMin, r.vMin).Coord(a + 1) - c) > 0.0 ? 0 : 1;
             candidates.push_back({face, end, {}});
         }
         if (!outside && !refusal.empty()) refuse(refusal);

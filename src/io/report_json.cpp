@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "export/volume_mesh_checks.hpp"
+
 #include "core/parallel.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/report.hpp"
@@ -205,14 +207,11 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
                      {"matrix_face_triangles", mesh.cell->triangles.size()}};
     }
     if (const VolumeMesh* v = options.volumes) {
-        if (v->surfaceNodes != mesh.nodes.size() || v->tow.size() != v->tetrahedra.size())
-            throw Error(ErrorCode::InvalidArgument, "the volume mesh is not one of the result's mesh");
+        detail::checkVolumeMeshOf(mesh, *v);
         // Per tow, then the matrix (a mesh clipped to a cell).
         std::vector<std::size_t> count(tows.size() + 1, 0);
         std::vector<double> volume(tows.size() + 1, 0.0);
         for (std::size_t k = 0; k < v->tetrahedra.size(); ++k) {
-            if (v->tow[k] > tows.size() || (v->tow[k] == tows.size() && !mesh.cell))
-                throw Error(ErrorCode::InvalidArgument, "a tetrahedron names a tow out of range");
             ++count[v->tow[k]];
             volume[v->tow[k]] += v->tetrahedronVolume(k);
         }

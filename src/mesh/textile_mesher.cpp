@@ -82,15 +82,6 @@ void keepInCell(ParametricMesh& mesh, const CellCuts& cuts, std::size_t t)
     mesh.centroids.resize(kept);
 }
 
-/// The unit mean of @p directions (zero if they cancel).
-Vector3 meanDirection(const std::vector<Vector3>& directions)
-{
-    Vector3 sum;
-    for (const Vector3& d : directions) sum = sum + d;
-    const double n = norm(sum);
-    return n > 0.0 ? (1.0 / n) * sum : sum;
-}
-
 /// The meshes of tow @p tow could not be made with the loops of @p pairs on it.
 struct TowMeshFailure {
     std::size_t tow = 0;
@@ -430,7 +421,7 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
             for (int end = 0; end < 2; ++end) {
                 const auto& cut = cuts->cuts[t][static_cast<std::size_t>(end)];
                 if (!cut) continue;
-                const Vector3 along = meanDirection(fibreDirections(tows[t], cut->uv));
+                const Vector3 along = meanFibreDirection(tows[t], cut->uv);
                 for (const Triangle& tri : cellFaces->caps[t][static_cast<std::size_t>(end)]) {
                     meshes[t].triangles.push_back(tri);
                     faceOf[t].push_back(end == 0 ? TowFace::Start : TowFace::End);

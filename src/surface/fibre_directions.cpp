@@ -43,6 +43,14 @@ std::vector<Vector3> fibreDirections(const TowSurface& tow, const std::vector<UV
     });
 }
 
+Vector3 meanFibreDirection(const TowSurface& tow, const std::vector<UV>& at)
+{
+    Vector3 sum;
+    for (const Vector3& d : fibreDirections(tow, at)) sum = sum + d;
+    const double n = norm(sum);
+    return n > 0.0 ? (1.0 / n) * sum : sum;
+}
+
 void appendCapDirections(const TowSurface& tow, const std::vector<TowFace>& face, std::vector<Vector3>& fibre)
 {
     if (fibre.size() >= face.size()) return;
@@ -50,10 +58,7 @@ void appendCapDirections(const TowSurface& tow, const std::vector<TowFace>& face
     const auto along = [&](double u) {
         std::vector<UV> section;
         for (int k = 0; k < 16; ++k) section.push_back({u, r.vMin + r.vPeriod() * k / 16.0});
-        Vector3 sum;
-        for (const Vector3& d : fibreDirections(tow, section)) sum = sum + d;
-        const double n = norm(sum);
-        return n > 0.0 ? (1.0 / n) * sum : sum;
+        return meanFibreDirection(tow, section);
     };
     const Vector3 start = along(r.uMin), end = along(r.uMax);
     for (std::size_t k = fibre.size(); k < face.size(); ++k) fibre.push_back(face[k] == TowFace::Start ? start : end);

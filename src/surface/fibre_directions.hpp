@@ -16,6 +16,9 @@ namespace detail {
 /// points that come span by span, as a mesh's triangles do.
 std::vector<Vector3> fibreDirections(const TowSurface& tow, const std::vector<UV>& at);
 
+/// The unit mean of fibreDirections(@p tow, @p at) (zero if they cancel): a cap's direction.
+Vector3 meanFibreDirection(const TowSurface& tow, const std::vector<UV>& at);
+
 /// Appends to @p fibre (one direction per triangle so far) the directions of the cap triangles
 /// that follow in @p face: the tow's direction along its first or last section, the unit mean
 /// of dS/du / |dS/du| over v there.
