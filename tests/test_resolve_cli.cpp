@@ -482,6 +482,31 @@ TEST_CASE("towgeom resolve --primary chooses which tow keeps its surface", "[cli
     fs::remove_all(out);
 }
 
+TEST_CASE("towgeom resolve --method symmetric: both tows give volume, the report says which surface each region got", "[cli][resolve][symmetric]")
+{
+    const fs::path out = scratch("symmetric");
+    const Run r = cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + out.string() + "' --method symmetric --quiet");
+    REQUIRE(r.status == 0);
+    const std::string report = testing::slurp(out / "report.json");
+    CHECK(report.find("\"method\":\"symmetric\"") != std::string::npos);
+    CHECK(report.find("\"surface\":\"middle\",\"note\":\"\"") != std::string::npos);
+    CHECK(report.find("\"surface\":\"primary\"") == std::string::npos);
+    // Each tow lost about half of what the region removed (read independently, Python).
+    const Run py = testing::runShell("/usr/bin/python3 -c \"import json; j = json.load(open('" + (out / "report.json").string() +
+                                     "')); lost = [t['volume_before'] - t['volume_after'] for t in j['tows']]; "
+                                     "removed = sum(g['volume_removed'] for g in j['regions']); "
+                                     "print(min(lost) / removed, max(lost) / removed, sum(lost) / removed)\"");
+    REQUIRE(py.status == 0);
+    std::istringstream in(py.out);
+    double lo = 0.0, hi = 0.0, total = 0.0;
+    in >> lo >> hi >> total;
+    CHECK(lo > 0.4);
+    CHECK(hi < 0.6);
+    CHECK(total == Approx(1.0).epsilon(1e-6));
+    CHECK(cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + out.string() + "' --method both --quiet").status == 2);
+    fs::remove_all(out);
+}
+
 TEST_CASE("towgeom resolve skips and names an open curve (exit 3), refuses bad usage (exit 2)", "[cli][resolve][open]")
 {
     const fs::path dir = scratch("open");

@@ -269,6 +269,21 @@ TEST_CASE("three tows overlapping at one point: each keeps its volume minus the 
     checkThreeTows(tows, resolveTextile(tows, o), {2, 0, 1}, 2);
 }
 
+TEST_CASE("symmetric method where three tows overlap: the rank rule decides there, and says so", "[resolve][scan][triple][symmetric]")
+{
+    const std::vector<TowSurface> tows = fit(threeTowsAtAPoint(0.3, 0.41));
+    ResolveOptions o;
+    o.method = ResolutionMethod::Symmetric;
+    const ResolveResult res = resolveTextile(tows, o);
+    // Every region has a part inside the third tow: each keeps the primary's surface, with a note.
+    for (const ConnectedRegion& r : res.mesh.regions) {
+        CHECK(r.surface == SharedSurface::Primary);
+        INFO(r.note);
+        CHECK((r.note.find("third tow") != std::string::npos || r.note.find("another loop") != std::string::npos));
+    }
+    checkThreeTows(tows, res, {0, 1, 2}, 2);
+}
+
 TEST_CASE("a triple point next to a tow's seam: no slivers", "[resolve][scan][triple][seam]")
 {
     // w's seam (its sections' first point) turned to a triple point's angle plus a little: the

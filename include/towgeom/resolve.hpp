@@ -24,6 +24,22 @@ TOWGEOM_BEGIN_NAMESPACE
 /// @brief resolveTextile(): compatible meshes of all tows, from the tows alone or from an IntersectionReport kept earlier (the stages chained: intersect, mesh, connect regions).
 /// @{
 
+/// How two overlapping tows share the surface between them (ResolveOptions::method).
+enum class ResolutionMethod {
+    /// The rank rule: inside each loop the lower-ranked tow (the secondary) gives way to the
+    /// higher-ranked one (the primary), whose surface both share. The primary keeps its volume,
+    /// the secondary loses the whole overlap.
+    Connect,
+    /// Both tows give way: inside each loop they share the mid-surface between their two
+    /// surfaces (each node of the primary's surface inside the loop moved halfway to the
+    /// secondary's surface along the primary's normal, solved on both exact surfaces; the loop's
+    /// nodes stay, so the mid-surface meets both tows exactly at the loop). Each tow loses about
+    /// half of the overlap. A region where the rank rule must decide (a third tow overlaps there,
+    /// the loop goes around a tow or across a cap) keeps the primary's surface:
+    /// ConnectedRegion::surface and ConnectedRegion::note say which and why.
+    Symmetric
+};
+
 // The deprecated callback member makes GCC warn in the implicit copy and move members, at this
 // definition; only the callback's own uses should warn.
 #pragma GCC diagnostic push
@@ -38,6 +54,8 @@ struct ResolveOptions {
     /// it; of a pair, the higher-ranked tow is the primary (keeps its surface). Empty
     /// (default): input order.
     std::vector<std::string> primaryPatterns;
+    /// How overlapping tows share their surface: the rank rule (default) or the mid-surface.
+    ResolutionMethod method = ResolutionMethod::Connect;
     /// Worker threads (intersection and meshing); 0: one per hardware thread.
     std::size_t threads = 0;
     /// If set, every tow is clipped by this box (in the user's units) and TextileMesh::cell
@@ -164,6 +182,9 @@ struct ResolveResult {
     /// intersections.loops but bound no region).
     std::vector<UnresolvedPair> unresolved;
     MeshQuality quality;               ///< of the final meshes
+    /// The method the regions were made with (ResolveOptions::method); per region,
+    /// ConnectedRegion::surface says which surface it got.
+    ResolutionMethod method = ResolutionMethod::Connect;
     /// Meshing rounds: the mesher never splits a loop or seam edge itself; where a triangle needs
     /// such a split to meet the bounds, the split became a node of both sides and the tows
     /// concerned were meshed again, at most 6 rounds (1 when no split was needed).

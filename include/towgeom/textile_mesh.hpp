@@ -51,6 +51,12 @@ struct TowMesh {
     std::array<std::optional<CellFace>, 2> cutAt{};
 };
 
+/// Which surface a connected region's triangles lie on (ResolveOptions::method).
+enum class SharedSurface : unsigned char {
+    Primary,  ///< the primary's own surface inside the loop (the rank rule)
+    Middle    ///< the mid-surface halfway between both tows' surfaces (ResolutionMethod::Symmetric)
+};
+
 /// Where two tows overlapped, the surface between them: the primary's (the higher-ranked tow's)
 /// triangles inside one closed intersection loop of the pair that lie inside the secondary and
 /// inside no other tow ranked above the secondary, now shared by both tows (same nodes, same
@@ -74,6 +80,13 @@ struct ConnectedRegion {
     /// The volume of the two tows' overlap inside the loop: what the secondary lost there when no
     /// third tow overlaps them there (then the secondary's loss is volumeBefore - volumeAfter).
     double volumeRemoved = 0.0;
+    /// The surface the region's triangles lie on. Its interior nodes (off every loop) lie on the
+    /// primary's surface for SharedSurface::Primary, between both tows for Middle; then they are
+    /// on neither tow's surface and in neither tow's TowMesh::parameters.
+    SharedSurface surface = SharedSurface::Primary;
+    /// Why ResolutionMethod::Symmetric kept the primary's surface here (a sentence); empty
+    /// otherwise.
+    std::string note;
 };
 
 /// A point where three tows' surfaces meet: the intersection loops of their three pairs cross

@@ -46,12 +46,12 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
   DIR/report.json  {"tows":[{"name","role","volume_before","volume_after","area","triangles",
                    "boundary_loops","pieces","mesh_size"}], "loops":[...as detect...], "findings":[...as detect...],
                    "unresolved":[{"tow_a","tow_b","reason","message"}], "regions":[{"primary",
-                   "secondary","triangles","nodes","area","volume_removed"}],
+                   "secondary","triangles","nodes","area","volume_removed","surface","note"}],
                    "triple_points":[{"tows":[3 names],"node","point":[x,y,z]}],
                    "skipped":[{"tow_a","tow_b","code","reason"}], "node_count",
                    "mesh_quality":{"min_angle_deg","angle_histogram","fraction_at_least_20",
                    "triangles","faces_over_bounds"},
-                   "mesh_rounds", "timings_ms":{...}}
+                   "mesh_rounds", "method", "timings_ms":{...}}
 
   role            primary (keeps its surface), secondary (gave volume), both, or none
   pieces          connected pieces of the tow's mesh: more than 1 where tows ranked above it
@@ -75,7 +75,11 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                   around_both_tows, around_tow_without_caps, bands_do_not_alternate,
                   outside_cell: clipped away by --cell) and the reason as a sentence
   volume_removed  the volume of the two tows' overlap inside the region's loop: what the
-                  secondary lost there when no third tow overlaps them there
+                  secondary lost there when no third tow overlaps them there (with
+                  --method symmetric, what both lost together there)
+  surface         the surface a region's triangles lie on: primary (the primary's own) or
+                  middle (--method symmetric: halfway between both tows'); note says why
+                  --method symmetric kept the primary's surface there (a third tow overlaps)
   triple_points   points where three tows' surfaces meet (node: the global node number)
   angle_histogram triangles per 5-degree bin of their smallest 3D angle (0-5, 5-10, ...)
   faces_over_bounds triangles left longer than H or below the angle bound because fixing them
@@ -88,6 +92,12 @@ Options:
   --primary GLOB     tows whose names match rank above tows that do not (repeatable; shell
                      patterns, e.g. --primary 'warp_*'); otherwise command-line order ranks
                      them: a tow gives way to every tow ranked above it
+  --method M         how overlapping tows share their surface: connect (default: the rank
+                     rule, the lower-ranked tow gives way and loses the whole overlap) or
+                     symmetric (both give way to the mid-surface between them, solved on both
+                     exact surfaces along their common normal; each loses about half; where a
+                     third tow overlaps, or a loop goes around a tow or across a cap, the rank
+                     rule decides and report.json's region "note" says so)
   --mesh-size H      target 3D edge length (default: 0.1 x each tow's own size); a tow is meshed
                      at most at a quarter of its circumference (noted on stderr, and each
                      tow's "mesh_size" in report.json)
@@ -219,7 +229,7 @@ int runResolve(int argc, char** argv, int first)
                         {{"help"}, {"quiet"}, {"allow-open"}, {"out", true}, {"primary", true}, {"mesh-size", true},
                          {"min-angle", true}, {"loop-spacing", true}, {"formats", true}, {"tolerance", true},
                          {"threads", true}, {"max-triangles", true}, {"no-caps"}, {"report", true}, {"volume"},
-                         {"cell", true}, {"periodic"}, {"order", true}});
+                         {"cell", true}, {"periodic"}, {"order", true}, {"method", true}});
         if (args.has("help")) {
             std::cout << kResolveHelp;
             return kExitOk;
@@ -229,6 +239,10 @@ int runResolve(int argc, char** argv, int first)
         if (!outDir) throw UsageError("--out DIR is required");
         ResolveOptions options;
         options.primaryPatterns = args.values("primary");
+        if (const auto method = args.value("method")) {
+            if (*method == "symmetric") options.method = ResolutionMethod::Symmetric;
+            else if (*method != "connect") throw UsageError("--method takes connect or symmetric, not '" + *method + "'");
+        }
         options.mesh.edgeLength = args.positive("mesh-size");
         options.mesh.loopSpacing = args.positive("loop-spacing");
         if (const auto a = args.number("min-angle")) {

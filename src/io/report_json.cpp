@@ -169,7 +169,9 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
                            {"triangles", g.triangles.size()},
                            {"nodes", g.nodes.size()},
                            {"area", g.area},
-                           {"volume_removed", g.volumeRemoved}});
+                           {"volume_removed", g.volumeRemoved},
+                           {"surface", g.surface == SharedSurface::Middle ? "middle" : "primary"},
+                           {"note", g.note}});
     j["regions"] = std::move(regions);
     Json triple = Json::array();
     for (const TriplePoint& p : mesh.triplePoints) {
@@ -195,6 +197,7 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
                          {"triangles", q.triangles},
                          {"faces_over_bounds", q.facesOverBounds}};
     j["mesh_rounds"] = result.meshRounds;
+    j["method"] = result.method == ResolutionMethod::Symmetric ? "symmetric" : "connect";
     if (mesh.cell) {
         const Cell& c = mesh.cell->box;
         std::size_t kept = 0;

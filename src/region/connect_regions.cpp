@@ -18,6 +18,7 @@
 #include "mesh/mesh_measures.hpp"
 #include "mesh/textile_mesh_finish.hpp"
 #include "region/connected_region.hpp"
+#include "region/mid_surface.hpp"
 #include "region/winding_loops.hpp"
 #include "surface/occt_convert.hpp"
 #include "surface/tow_surface_impl.hpp"
@@ -261,6 +262,68 @@ struct TowBands {
     std::vector<detail::WindingPolygon> polygons;  // each loop's node polygon on the tow
 };
 
+/// A region's move to the mid-surface: its nodes off the loops and where they go, or why the
+/// region keeps the primary's surface (the rank rule decides there).
+struct MidSurfaceMove {
+    std::vector<std::size_t> nodes;
+    std::vector<Point3> positions;
+    std::string note;  ///< empty when the region moves
+};
+
+/// The MidSurfaceMove of region @p r (triangles still numbered in the primary's input mesh) of
+/// the active loops @p shared (indices into in.loops), with the secondary's triangles inside its
+/// loop @p secondaryInside; @p crowded when a third tow overlaps it.
+MidSurfaceMove midSurfaceMove(const std::vector<TowSurface>& tows, const std::vector<IntersectionLoop>& loops, const TextileMesh& in,
+                              const std::vector<std::size_t>& shared, const ConnectedRegion& r, const std::vector<Triangle>& secondaryInside, bool crowded)
+{
+    MidSurfaceMove m;
+    const std::string pair = "tows '" + tows[r.primary].name() + "' and '" + tows[r.secondary].name() + "'";
+    if (crowded) {
+        m.note = "a third tow overlaps the region of " + pair + " (loop " + std::to_string(r.loop) + "): the rank rule decides there";
+        return m;
+    }
+    // Its own loops (the loop and its holes) must not wind around a tow or cross a cap, and no
+    // other loop may have a node in it.
+    std::set<std::size_t> own(r.holes.begin(), r.holes.end());
+    own.insert(r.loop);
+    for (std::size_t l : own)
+        for (const LoopSide side : {LoopSide::A, LoopSide::B})
+            if (loops[l].windsAround(side) || loops[l].crossesCap(side)) {
+                m.note = "loop " + std::to_string(l) + " of " + pair + " goes around a tow or across an end cap: the rank rule decides there";
+                return m;
+            }
+    std::set<std::size_t> onOwnLoop, onOtherLoop;
+    for (std::size_t k : shared) {
+        const MeshedLoop& ml = in.loops[k];
+        (own.count(ml.loop) ? onOwnLoop : onOtherLoop).insert(ml.nodes.begin(), ml.nodes.end());
+    }
+    for (const TriplePoint& p : in.triplePoints) onOtherLoop.insert(p.node);
+    std::set<std::size_t> regionNodes;
+    for (std::size_t k : r.triangles) {
+        const Triangle& t = in.tows[r.primary].triangles[k];
+        regionNodes.insert(t.begin(), t.end());
+    }
+    for (std::size_t n : regionNodes) {
+        if (onOwnLoop.count(n)) continue;
+        if (onOtherLoop.count(n)) {
+            m.note = "another loop runs through the region of " + pair + " (loop " + std::to_string(r.loop) + "): the rank rule decides there";
+            return m;
+        }
+        m.nodes.push_back(n);
+    }
+    detail::MidSurfaceRegion region;
+    region.primary = &tows[r.primary];
+    region.secondary = &tows[r.secondary];
+    region.primaryParameters = &in.tows[r.primary].parameters;
+    region.secondaryParameters = &in.tows[r.secondary].parameters;
+    region.secondaryTriangles = secondaryInside;
+    region.movable = m.nodes;
+    std::string why;
+    if (!detail::midSurfacePositions(region, in.nodes, m.positions, why))
+        m.note = "no mid-surface for the region of " + pair + " (loop " + std::to_string(r.loop) + "): " + why + "; the rank rule decides there";
+    return m;
+}
+
 /// One classification and swap with the loops of @p meshed flagged in @p active; @p out gets the
 /// mesh, the regions and the tows' figures. Returns the tows that failed (then @p out is not
 /// complete).
@@ -364,6 +427,8 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
     std::vector<long> regionOf(shared.size(), -1);
     std::vector<ConnectedRegion> regions;
     std::vector<std::vector<Triangle>> lens;  // per region: both tows' surfaces inside the loop
+    std::vector<std::vector<Triangle>> secondaryInside;  // per region: the secondary's surface inside the loop
+    std::vector<char> crowded;  // per region: a triangle of it lies inside a third tow too
     for (std::size_t k = 0; k < shared.size(); ++k) {
         if (depth[k] % 2 == 1) continue;  // a hole of the region around it
         const auto [a, b] = pairOf(k);
@@ -377,6 +442,8 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
         regionOf[k] = static_cast<long>(regions.size());
         regions.push_back(std::move(r));
         lens.emplace_back();
+        secondaryInside.emplace_back();
+        crowded.push_back(0);
     }
     // Loops that wind around a tow (it passes through the other tow, or ends inside it) cut it
     // into bands alternately inside and outside the other.
@@ -476,13 +543,21 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
                 if (c.first % 2 == 1 && regionOf[c.second] < 0)
                     if (const auto w = windingRegionLoop.find(std::minmax(t, o)); w != windingRegionLoop.end()) c.second = w->second;
             std::size_t top = tows.size();  // the highest-ranked tow it lies inside
+            std::size_t insideTows = 0;
             for (const auto& [o, c] : within)
-                if (c.first % 2 == 1 && (top == tows.size() || rank[o] < rank[top])) top = o;
+                if (c.first % 2 == 1) {
+                    ++insideTows;
+                    if (top == tows.size() || rank[o] < rank[top]) top = o;
+                }
             for (const auto& [o, c] : within)
                 if (c.first % 2 == 1 && regionOf[c.second] >= 0) lens[static_cast<std::size_t>(regionOf[c.second])].push_back(mesh.triangles[tri]);
             if (top == tows.size()) continue;
             if (rank[top] < rank[t]) {
                 removed[t][tri] = 1;
+                if (const long id = regionOf[within[top].second]; id >= 0) {
+                    secondaryInside[static_cast<std::size_t>(id)].push_back(mesh.triangles[tri]);
+                    if (insideTows > 1) crowded[static_cast<std::size_t>(id)] = 1;
+                }
             } else {
                 const long id = regionOf[within[top].second];
                 if (id < 0) {
@@ -492,6 +567,7 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
                 }
                 const Triangle& triangle = mesh.triangles[tri];
                 region[t][tri] = id;
+                if (insideTows > 1) crowded[static_cast<std::size_t>(id)] = 1;
                 ConnectedRegion& r = regions[static_cast<std::size_t>(id)];
                 r.triangles.push_back(tri);
                 r.area += detail::triangleArea(N, triangle);
@@ -518,6 +594,7 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
     // renumbered in loop order.
     out.tows.assign(tows.size(), TowResolution{});
     std::vector<long> renumbered(regions.size(), -1);
+    std::vector<std::size_t> kept;  // the regions kept, by their old number
     for (std::size_t g = 0; g < regions.size(); ++g) {
         ConnectedRegion& r = regions[g];
         if (r.triangles.empty()) continue;
@@ -539,6 +616,7 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
         out.tows[r.primary].primaryAnywhere = true;
         out.tows[r.secondary].secondaryAnywhere = true;
         renumbered[g] = static_cast<long>(out.mesh.regions.size());
+        kept.push_back(g);
         out.mesh.regions.push_back(std::move(r));
     }
     for (auto& ids : region)
@@ -546,6 +624,27 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
             if (id >= 0) id = renumbered[static_cast<std::size_t>(id)];
     for (auto& list : inserted)
         for (auto& entry : list) std::get<1>(entry) = renumbered[static_cast<std::size_t>(std::get<1>(entry))];
+    // The symmetric method: each region's nodes off the loops moved to the mid-surface.
+    std::vector<Point3> nodes = N;
+    std::vector<char> moved(N.size(), 0);
+    if (options.method == ResolutionMethod::Symmetric) {
+        std::vector<MidSurfaceMove> moves(out.mesh.regions.size());
+        detail::parallelFor(out.mesh.regions.size(), threads, [&](std::size_t g) {
+            moves[g] = midSurfaceMove(tows, loops, in, shared, out.mesh.regions[g], secondaryInside[kept[g]], crowded[kept[g]] != 0);
+        });
+        for (std::size_t g = 0; g < moves.size(); ++g) {
+            ConnectedRegion& r = out.mesh.regions[g];
+            r.note = moves[g].note;
+            if (!r.note.empty()) continue;
+            r.surface = SharedSurface::Middle;
+            for (std::size_t i = 0; i < moves[g].nodes.size(); ++i) {
+                nodes[moves[g].nodes[i]] = moves[g].positions[i];
+                moved[moves[g].nodes[i]] = 1;
+            }
+            r.area = 0.0;
+            for (std::size_t k : r.triangles) r.area += detail::triangleArea(nodes, in.tows[r.primary].triangles[k]);
+        }
+    }
     out.mesh.tows.resize(tows.size());
     std::vector<std::vector<std::size_t>> placeOf(tows.size());  // input triangle -> its place in the tow's mesh
     detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
@@ -577,7 +676,7 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
         auto at = mesh.parameters.begin();
         for (std::size_t n : used) {
             while (at != mesh.parameters.end() && at->first < n) ++at;
-            if (at != mesh.parameters.end() && at->first == n) m.parameters.push_back(*at);
+            if (at != mesh.parameters.end() && at->first == n && !moved[n]) m.parameters.push_back(*at);
         }
     });
     // A region's triangles by their place in the primary's final mesh (it keeps them all).
@@ -592,7 +691,7 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
         // Its own mesh's volume: closed by its caps, or open at its two ends (closed by fans);
         // either way checked with the mesh after the swap below.
         r.volumeBefore = uv.capped[t] ? detail::signedVolume(N, in.tows[t].triangles) : detail::closedVolume(N, in.tows[t].triangles);
-        const detail::SurfaceFigures f = detail::surfaceFigures(N, triangles);
+        const detail::SurfaceFigures f = detail::surfaceFigures(nodes, triangles);
         r.volumeAfter = f.volume;
         r.area = f.area;
         r.boundaryLoops = f.boundaryLoops;
@@ -609,7 +708,7 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
     out.mesh.triplePoints = in.triplePoints;
     out.mesh.cell = in.cell;
     detail::keepResolvedTriplePoints(out.mesh, loops);
-    out.mesh.nodes = N;
+    out.mesh.nodes = std::move(nodes);
     return failures;
 }
 
@@ -640,6 +739,7 @@ ResolveResult connectRegions(const std::vector<TowSurface>& tows, ResolveResult 
             out.skipped = std::move(meshed.skipped);
 #pragma GCC diagnostic pop
             out.meshRounds = meshed.meshRounds;
+            out.method = options.method;
             out.timings = meshed.timings;
             out.timings.regions = msSince(t0);
             return out;
