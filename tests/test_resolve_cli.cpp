@@ -507,6 +507,26 @@ TEST_CASE("towgeom resolve --method symmetric: both tows give volume, the report
     fs::remove_all(out);
 }
 
+TEST_CASE("towgeom resolve --method shrink: the shrunk tows written as .stw, in which detect finds no curve", "[cli][resolve][shrink]")
+{
+    const fs::path out = scratch("shrink");
+    const Run r = cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + out.string() + "' --method shrink --quiet");
+    REQUIRE(r.status == 0);
+    const std::string report = testing::slurp(out / "report.json");
+    CHECK(report.find("\"method\":\"shrink\"") != std::string::npos);
+    CHECK(report.find("\"regions\":[]") != std::string::npos);
+    CHECK(report.find("\"largest_section_change\":0.0") != std::string::npos);  // warp_0 ranks first: unchanged
+    // The tows as shrunk: detect (another run, from the files) finds nothing between them.
+    const Run d = cli("detect '" + (out / "shrunk" / "warp_0.stw").string() + "' '" + (out / "shrunk" / "weft_0.stw").string() + "' --quiet");
+    CHECK(d.status == 0);
+    CHECK(d.out.find("\"loops\":[]") != std::string::npos);
+    CHECK(d.out.find("\"findings\":[]") != std::string::npos);
+    // The input twill pair has a curve (so the test can fail).
+    const Run before = cli("detect" + twill({"warp_0", "weft_0"}) + " --quiet");
+    CHECK(before.out.find("\"loops\":[]") == std::string::npos);
+    fs::remove_all(out);
+}
+
 TEST_CASE("towgeom resolve skips and names an open curve (exit 3), refuses bad usage (exit 2)", "[cli][resolve][open]")
 {
     const fs::path dir = scratch("open");

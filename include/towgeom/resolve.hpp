@@ -15,6 +15,7 @@
 #include "towgeom/progress.hpp"
 #include "towgeom/textile_mesh.hpp"
 #include "towgeom/tow_intersection.hpp"
+#include "towgeom/tow_stack.hpp"
 #include "towgeom/tow_surface.hpp"
 #include "towgeom/export.hpp"
 
@@ -37,7 +38,51 @@ enum class ResolutionMethod {
     /// half of the overlap. A region where the rank rule must decide (a third tow overlaps there,
     /// the loop goes around a tow or across a cap) keeps the primary's surface:
     /// ConnectedRegion::surface and ConnectedRegion::note say which and why.
-    Symmetric
+    Symmetric,
+    /// The baseline of tools that cannot share surfaces: the tows of each interpenetrating pair
+    /// are shrunk (sections scaled about their centroids, locally, by bisection) until the pair
+    /// no longer interpenetrates (shrinkTows(), ShrinkOptions), then meshed each on its own: no
+    /// shared surface, a gap or a contact between them. ResolveResult::shrunk says how much.
+    Shrink
+};
+
+/// Options of the shrink baseline (ResolutionMethod::Shrink, shrinkTows()).
+struct ShrinkOptions {
+    /// Shrink both tows of a pair by the same factor; default (false): the lower-ranked only.
+    bool both = false;
+    /// The length along the tow over which the scale returns to 1 beyond the part the pair's
+    /// curves span (cos^2 blend), in the user's units; 0 (default): the tow's size
+    /// (TowSurface::towSize()).
+    double blendLength = 0.0;
+    /// The bisection stops when the smallest reduction f of the scale (1 - f at the overlap) that
+    /// separates the pair is known to this. Default 1e-3.
+    double tolerance = 1e-3;
+    /// Added to the reduction the bisection found (at most down to minScale), so that the pair
+    /// keeps a gap (about margin x its section size) that its meshes' chords do not close and
+    /// intersectTows() does not report as touching. Default 0.02.
+    double margin = 0.02;
+    /// The smallest scale tried, in (0, 1): a pair that still interpenetrates there is named in
+    /// ResolveResult::unresolved (UnresolvedPair::Reason::NotSeparated). Default 0.2.
+    double minScale = 0.2;
+};
+
+/// What ResolutionMethod::Shrink (shrinkTows()) did to one tow.
+struct ShrunkTow {
+    /// The scale of each input section about its centroid (1: unchanged), in the order of
+    /// TowSurface::sections().
+    std::vector<double> sectionScale;
+    double volumeBefore = 0.0;  ///< TowSurface::volume() of the input tow
+    double volumeAfter = 0.0;   ///< TowSurface::volume() of the shrunk tow
+    /// The shrunk tow's sections (the input's scaled; in the surface's order, TowSurface::
+    /// sections()), to write as .stw (writeStack()) or fit again.
+    TowStack stack;
+    /// The largest relative change of a section's size: 1 - the smallest scale (0 unchanged).
+    double largestSectionChange() const
+    {
+        double s = 1.0;
+        for (double x : sectionScale) s = x < s ? x : s;
+        return 1.0 - s;
+    }
 };
 
 // The deprecated callback member makes GCC warn in the implicit copy and move members, at this
@@ -54,8 +99,11 @@ struct ResolveOptions {
     /// it; of a pair, the higher-ranked tow is the primary (keeps its surface). Empty
     /// (default): input order.
     std::vector<std::string> primaryPatterns;
-    /// How overlapping tows share their surface: the rank rule (default) or the mid-surface.
+    /// How overlapping tows share their surface: the rank rule (default), the mid-surface, or
+    /// not at all (the shrink baseline).
     ResolutionMethod method = ResolutionMethod::Connect;
+    /// The shrink baseline's options (ResolutionMethod::Shrink).
+    ShrinkOptions shrink;
     /// Worker threads (intersection and meshing); 0: one per hardware thread.
     std::size_t threads = 0;
     /// If set, every tow is clipped by this box (in the user's units) and TextileMesh::cell
@@ -128,7 +176,10 @@ struct UnresolvedPair {
         /// its loops had no region, or its loops around it did not cut it into bands alternately
         /// inside and outside the other tow. Every pair with loops on that tow was left out of the
         /// regions and the rest connected again; the pair's loop nodes stay in both meshes.
-        RegionFailed
+        RegionFailed,
+        /// ResolutionMethod::Shrink: the pair still interpenetrates with its sections scaled down
+        /// to ShrinkOptions::minScale (the rank rule resolves what is left of it).
+        NotSeparated
     };
     std::size_t towA = 0;  ///< lower tow index
     std::size_t towB = 0;  ///< higher tow index
@@ -185,6 +236,12 @@ struct ResolveResult {
     /// The method the regions were made with (ResolveOptions::method); per region,
     /// ConnectedRegion::surface says which surface it got.
     ResolutionMethod method = ResolutionMethod::Connect;
+    /// ResolutionMethod::Shrink: per tow, its sections' scales and exact volumes before and after
+    /// (empty otherwise). Then intersections holds the curves left between the shrunk tows (none
+    /// when every pair was separated), TowResolution::volumeAfter is the shrunk tow's mesh volume
+    /// and volumeBefore the input tow's at the same resolution: its exact volume times the
+    /// shrunk tow's mesh volume over its exact volume (equal for a tow left unchanged).
+    std::vector<ShrunkTow> shrunk;
     /// Meshing rounds: the mesher never splits a loop or seam edge itself; where a triangle needs
     /// such a split to meet the bounds, the split became a node of both sides and the tows
     /// concerned were meshed again, at most 6 rounds (1 when no split was needed).

@@ -26,6 +26,7 @@
 #include "towgeom/resolve.hpp"
 #include "towgeom/mesh_tows.hpp"
 #include "towgeom/connect_regions.hpp"
+#include "towgeom/shrink_tows.hpp"
 #include "towgeom/stack_reader.hpp"
 #include "towgeom/stl_writer.hpp"
 #include "towgeom/textile_io.hpp"

@@ -44,7 +44,7 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                    *ELSET/*NSET REGION_k, *ELSET CAPS_NAME; with --cell also *ELSET
                    MATRIX_FACES (the box's faces outside the tows) and *NSET XMIN ... ZMAX
   DIR/report.json  {"tows":[{"name","role","volume_before","volume_after","area","triangles",
-                   "boundary_loops","pieces","mesh_size"}], "loops":[...as detect...], "findings":[...as detect...],
+                   "boundary_loops","pieces","mesh_size"(,"largest_section_change")}], "loops":[...as detect...], "findings":[...as detect...],
                    "unresolved":[{"tow_a","tow_b","reason","message"}], "regions":[{"primary",
                    "secondary","triangles","nodes","area","volume_removed","surface","note"}],
                    "triple_points":[{"tows":[3 names],"node","point":[x,y,z]}],
@@ -54,6 +54,7 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                    "mesh_rounds", "method", "timings_ms":{...}}
 
   role            primary (keeps its surface), secondary (gave volume), both, or none
+  largest_section_change  --method shrink: 1 - the smallest scale of the tow's sections
   pieces          connected pieces of the tow's mesh: more than 1 where tows ranked above it
                   pass through it and cut it
   unresolved      tow pairs that meet but were not resolved (their meshes still overlap), once
@@ -70,7 +71,8 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                   meshed with the pair's loops: its pairs are left out, the rest resolved),
                   region_failed (a tow could not be connected with its loops, e.g. it was not
                   closed after the swap: its pairs get no region, their loop nodes stay in
-                  the meshes)
+                  the meshes), not_separated (--method shrink: the pair still
+                  interpenetrates with its sections at a fifth of their size)
   skipped         every loop not resolved, with its code (open_curve, crosses_cap,
                   around_both_tows, around_tow_without_caps, bands_do_not_alternate,
                   outside_cell: clipped away by --cell) and the reason as a sentence
@@ -97,7 +99,14 @@ Options:
                      symmetric (both give way to the mid-surface between them, solved on both
                      exact surfaces along their common normal; each loses about half; where a
                      third tow overlaps, or a loop goes around a tow or across a cap, the rank
-                     rule decides and report.json's region "note" says so)
+                     rule decides and report.json's region "note" says so), or shrink (the
+                     baseline of tools without shared surfaces: each interpenetrating pair's
+                     lower-ranked tow, or both with --shrink-both, has its sections scaled
+                     down about their centroids along the part the pair's curves span,
+                     blended back to 1 over the tow's size, by bisection until the refitted
+                     pair has no curve, plus a 2 % margin; then each tow is meshed on its own
+                     and DIR/shrunk/NAME.stw holds the shrunk tows)
+  --shrink-both      with --method shrink: both tows of a pair give way by the same factor
   --mesh-size H      target 3D edge length (default: 0.1 x each tow's own size); a tow is meshed
                      at most at a quarter of its circumference (noted on stderr, and each
                      tow's "mesh_size" in report.json)
@@ -229,7 +238,7 @@ int runResolve(int argc, char** argv, int first)
                         {{"help"}, {"quiet"}, {"allow-open"}, {"out", true}, {"primary", true}, {"mesh-size", true},
                          {"min-angle", true}, {"loop-spacing", true}, {"formats", true}, {"tolerance", true},
                          {"threads", true}, {"max-triangles", true}, {"no-caps"}, {"report", true}, {"volume"},
-                         {"cell", true}, {"periodic"}, {"order", true}, {"method", true}});
+                         {"cell", true}, {"periodic"}, {"order", true}, {"method", true}, {"shrink-both"}});
         if (args.has("help")) {
             std::cout << kResolveHelp;
             return kExitOk;
@@ -239,9 +248,11 @@ int runResolve(int argc, char** argv, int first)
         if (!outDir) throw UsageError("--out DIR is required");
         ResolveOptions options;
         options.primaryPatterns = args.values("primary");
+        options.shrink.both = args.has("shrink-both");
         if (const auto method = args.value("method")) {
             if (*method == "symmetric") options.method = ResolutionMethod::Symmetric;
-            else if (*method != "connect") throw UsageError("--method takes connect or symmetric, not '" + *method + "'");
+            else if (*method == "shrink") options.method = ResolutionMethod::Shrink;
+            else if (*method != "connect") throw UsageError("--method takes connect, symmetric or shrink, not '" + *method + "'");
         }
         options.mesh.edgeLength = args.positive("mesh-size");
         options.mesh.loopSpacing = args.positive("loop-spacing");
@@ -339,6 +350,10 @@ int runResolve(int argc, char** argv, int first)
         if (volume && formats.count("inp") && options.cell && options.cell->periodic)
             writeAbaqusPeriodic(mesh, volumes, files.open(path("textile_volume_periodic.inp")));
         if (volume && formats.count("vtk")) writeVtu(mesh, volumes, files.open(path("textile_volume.vtu")));
+        if (!result.shrunk.empty()) {  // --method shrink: the shrunk tows, for detect or another tool
+            files.makeDirectory(path("shrunk"));
+            for (const ShrunkTow& s : result.shrunk) writeStack(files.open(path("shrunk/" + s.stack.name + ".stw")), s.stack);
+        }
         const double writeMs = msSince(t0);
         ResolveReportOptions written;
         written.threads = options.threads;

@@ -154,6 +154,7 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
                            {"boundary_loops", r.boundaryLoops},
                            {"pieces", r.pieces},
                            {"mesh_size", r.meshSize}});
+        if (t < result.shrunk.size()) towList.back()["largest_section_change"] = result.shrunk[t].largestSectionChange();
     }
     j["tows"] = std::move(towList);
     j["loops"] = loopsJson(result.intersections, tows, 0.0, options.threads);
@@ -197,7 +198,7 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
                          {"triangles", q.triangles},
                          {"faces_over_bounds", q.facesOverBounds}};
     j["mesh_rounds"] = result.meshRounds;
-    j["method"] = result.method == ResolutionMethod::Symmetric ? "symmetric" : "connect";
+    j["method"] = result.method == ResolutionMethod::Symmetric ? "symmetric" : result.method == ResolutionMethod::Shrink ? "shrink" : "connect";
     if (mesh.cell) {
         const Cell& c = mesh.cell->box;
         std::size_t kept = 0;

@@ -44,6 +44,7 @@ const char* codeOf(UnresolvedPair::Reason r)
     case UnresolvedPair::Reason::MeshFailed: return "mesh_failed";
     case UnresolvedPair::Reason::LoopsMeet: return "loops_meet";
     case UnresolvedPair::Reason::RegionFailed: return "region_failed";
+    case UnresolvedPair::Reason::NotSeparated: return "not_separated";
     }
     return "mesh_failed";
 }

@@ -3,6 +3,7 @@
 #include "towgeom/connect_regions.hpp"
 #include "towgeom/mesh_tows.hpp"
 #include "towgeom/resolve.hpp"
+#include "towgeom/shrink_tows.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -223,6 +224,33 @@ void checkWithReport(const std::vector<TowSurface>& tows, const IntersectionRepo
     detail::checkReportTows(tows, report);
 }
 
+/// ResolutionMethod::Shrink: the tows shrunk apart (shrinkTows()), intersected again and meshed
+/// each on its own (what is left of a pair not separated is resolved by the rank rule).
+ResolveResult resolveShrunk(const std::vector<TowSurface>& tows, const IntersectionReport& report, const ResolveOptions& options)
+{
+    const Clock::time_point t0 = Clock::now();
+    ShrinkResult s = shrinkTows(tows, report, options);
+    IntersectionOptions io = options.intersection;
+    io.threads = options.threads;
+    if (!io.monitor) io.monitor = options.monitor;
+    detail::sayStage(options, "intersecting the shrunk tows");
+    const IntersectionReport after = intersectTows(s.tows, io);
+    const double shrinkMs = msSince(t0);
+    ResolveOptions o = options;
+    o.method = ResolutionMethod::Connect;
+    ResolveResult result = connectRegions(s.tows, meshWithPlan(s.tows, after, o, MeshSizePlan(s.tows, o.mesh, o.cell)), o);
+    result.method = ResolutionMethod::Shrink;
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        TowResolution& r = result.tows[t];
+        const ShrunkTow& f = s.figures[t];
+        r.volumeBefore = f.volumeAfter > 0.0 ? f.volumeBefore * (r.volumeAfter / f.volumeAfter) : r.volumeAfter;
+    }
+    result.shrunk = std::move(s.figures);
+    result.unresolved.insert(result.unresolved.end(), s.notSeparated.begin(), s.notSeparated.end());
+    result.timings.intersect += shrinkMs;
+    return result;
+}
+
 }  // namespace
 
 ResolveResult meshTows(const std::vector<TowSurface>& tows, const IntersectionReport& report, const ResolveOptions& options)
@@ -234,6 +262,7 @@ ResolveResult meshTows(const std::vector<TowSurface>& tows, const IntersectionRe
 ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const IntersectionReport& report, const ResolveOptions& options)
 {
     checkWithReport(tows, report, options);
+    if (options.method == ResolutionMethod::Shrink) return resolveShrunk(tows, report, options);
     return connectRegions(tows, meshWithPlan(tows, report, options, MeshSizePlan(tows, options.mesh, options.cell)), options);
 }
 
@@ -250,6 +279,11 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
     if (!io.monitor) io.monitor = options.monitor;
     const IntersectionReport report = intersectTows(tows, io);
     const double intersectMs = msSince(t0);
+    if (options.method == ResolutionMethod::Shrink) {
+        ResolveResult result = resolveShrunk(tows, report, options);
+        result.timings.intersect += intersectMs;
+        return result;
+    }
     ResolveResult result = connectRegions(tows, meshWithPlan(tows, report, options, plan), options);
     result.timings.intersect = intersectMs;
     return result;

@@ -12,13 +12,13 @@
 #include <tuple>
 #include <utility>
 
-#include "core/glob_match.hpp"
 #include "core/parallel.hpp"
 #include "core/progress_report.hpp"
 #include "mesh/mesh_measures.hpp"
 #include "mesh/textile_mesh_finish.hpp"
 #include "region/connected_region.hpp"
 #include "region/mid_surface.hpp"
+#include "region/tow_ranks.hpp"
 #include "region/winding_loops.hpp"
 #include "surface/occt_convert.hpp"
 #include "surface/tow_surface_impl.hpp"
@@ -37,21 +37,6 @@ using NodeUV = std::pair<std::size_t, UV>;
 double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 Triangle reversed(const Triangle& t) { return {t[0], t[2], t[1]}; }
-
-/// Each tow's rank (0 first): tows whose name matches a primary pattern, then the others, each
-/// in input order. A tow gives way to every tow ranked above it.
-std::vector<std::size_t> towRanks(const std::vector<TowSurface>& tows, const std::vector<std::string>& primaryPatterns)
-{
-    std::vector<std::size_t> order(tows.size());
-    for (std::size_t t = 0; t < tows.size(); ++t) order[t] = t;
-    std::stable_partition(order.begin(), order.end(), [&](std::size_t t) {
-        return std::any_of(primaryPatterns.begin(), primaryPatterns.end(),
-                           [&](const std::string& p) { return detail::globMatch(p, tows[t].name()); });
-    });
-    std::vector<std::size_t> rank(tows.size());
-    for (std::size_t r = 0; r < order.size(); ++r) rank[order[r]] = r;
-    return rank;
-}
 
 /// The (u,v) of @p node in a tow's TowMesh::parameters (sorted by node), or null.
 const UV* uvOf(const std::vector<NodeUV>& parameters, std::size_t node)
@@ -343,7 +328,7 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
     const auto polygonOf = [&](std::size_t s, LoopSide side) -> const std::vector<UV>& {
         return uv.polygon[shared[s]][side == LoopSide::A ? 0 : 1];
     };
-    const std::vector<std::size_t> rank = towRanks(tows, options.primaryPatterns);
+    const std::vector<std::size_t> rank = detail::towRanks(tows, options.primaryPatterns);
     const auto period = [&](std::size_t t) { return tows[t].parameterRange().vPeriod(); };
     const auto pairOf = [&](std::size_t s) { return TowPair{loopOf(s).towA(), loopOf(s).towB()}; };
     // The nesting depth of each loop among its pair's loops; the loops directly inside one of
