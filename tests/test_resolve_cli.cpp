@@ -527,6 +527,46 @@ TEST_CASE("towgeom resolve --method shrink: the shrunk tows written as .stw, in 
     fs::remove_all(out);
 }
 
+TEST_CASE("towgeom resolve --report-methods: report.html that Chromium draws (charts, 3D view) and report.csv", "[cli][resolve][report][chromium]")
+{
+    const fs::path out = scratch("report_methods");
+    const Run r = cli("resolve" + twill({"warp_0", "warp_1", "weft_0", "weft_1"}) + " --out '" + out.string() +
+                      "' --report-methods symmetric,shrink --quiet");
+    REQUIRE(r.status == 0);
+    REQUIRE(fs::exists(out / "report.html"));
+    // The CSV, read independently: a row per tow and method; shrink loses more than connect,
+    // symmetric's worst tow at most 0.6 of connect's.
+    const Run py = testing::runShell(
+        "/usr/bin/python3 -c \"import csv; rows = list(csv.DictReader(open('" + (out / "report.csv").string() +
+        "'))); loss = lambda m: [float(r['volume_before']) - float(r['volume_after']) for r in rows if r['method'] == m]; "
+        "print(len(rows), sum(loss('shrink')) > sum(loss('connect')), max(loss('symmetric')) <= 0.6 * max(loss('connect')))\"");
+    REQUIRE(py.status == 0);
+    CHECK(py.out == "12 True True\n");
+    // Chromium opens it from disk, with no network: the three plots drawn, the 3D view shows
+    // the four tows and they cover part of it (WebGL by SwiftShader).
+    const fs::path profile = out / "chromium-profile";
+    const Run page = testing::runShell("timeout 180 chromium --headless --no-sandbox --disable-extensions --user-data-dir='" + profile.string() +
+                                       "' --enable-unsafe-swiftshader --use-angle=swiftshader --window-size=1300,2400 "
+                                       "--virtual-time-budget=20000 --dump-dom 'file://" + (out / "report.html").string() + "' 2>/dev/null");
+    REQUIRE(page.status == 0);
+    const std::size_t body = page.out.find("<body");
+    REQUIRE(body != std::string::npos);
+    const std::string tag = page.out.substr(body, page.out.find('>', body) - body);
+    INFO(tag);
+    CHECK(tag.find("data-charts=\"3\"") != std::string::npos);
+    CHECK(tag.find("data-view=\"4\"") != std::string::npos);
+    const std::size_t covered = tag.find("data-view-covered=\"");
+    REQUIRE(covered != std::string::npos);
+    const double fraction = std::stod(tag.substr(covered + 19));
+    CHECK(fraction > 0.02);
+    CHECK(fraction < 0.9);
+    // The tables are there without JavaScript too.
+    const std::string html = testing::slurp(out / "report.html");
+    CHECK(html.find("<h2>Tows</h2>") != std::string::npos);
+    CHECK(html.find("<td>weft_0</td><td>secondary</td>") != std::string::npos);
+    fs::remove_all(out);
+}
+
 TEST_CASE("towgeom resolve skips and names an open curve (exit 3), refuses bad usage (exit 2)", "[cli][resolve][open]")
 {
     const fs::path dir = scratch("open");

@@ -135,6 +135,13 @@ struct TowResolution {
     /// The mesh size h this tow was meshed at: MeshOptions::relativeEdgeLength x its own size,
     /// or MeshOptions::edgeLength, at most a quarter of its circumference.
     double meshSize = 0.0;
+    /// "primary" (primary in some region, secondary in none), "secondary", "both" or "none".
+    const char* role() const
+    {
+        if (primaryAnywhere && secondaryAnywhere) return "both";
+        if (primaryAnywhere) return "primary";
+        return secondaryAnywhere ? "secondary" : "none";
+    }
 };
 
 /// Smallest 3D angles of the final triangles.

@@ -25,6 +25,7 @@
 #include "towgeom/report.hpp"
 #include "towgeom/resolve.hpp"
 #include "towgeom/mesh_tows.hpp"
+#include "towgeom/method_comparison.hpp"
 #include "towgeom/connect_regions.hpp"
 #include "towgeom/shrink_tows.hpp"
 #include "towgeom/stack_reader.hpp"

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <cstdlib>
@@ -107,6 +108,13 @@ Options:
                      pair has no curve, plus a 2 % margin; then each tow is meshed on its own
                      and DIR/shrunk/NAME.stw holds the shrunk tows)
   --shrink-both      with --method shrink: both tows of a pair give way by the same factor
+  --report-methods LIST
+                     also resolve by each method of LIST (from connect,symmetric,shrink) on
+                     the same loops and meshes and write DIR/report.html (one self-contained
+                     page, opens from disk: summary, per-tow table, volume change per tow per
+                     method, section area along each tow before and after, mesh quality, a 3D
+                     view of --method's meshes coloured by tow or region) and DIR/report.csv
+                     (a row per tow and method). The meshes written are --method's
   --mesh-size H      target 3D edge length (default: 0.1 x each tow's own size); a tow is meshed
                      at most at a quarter of its circumference (noted on stderr, and each
                      tow's "mesh_size" in report.json)
@@ -238,7 +246,7 @@ int runResolve(int argc, char** argv, int first)
                         {{"help"}, {"quiet"}, {"allow-open"}, {"out", true}, {"primary", true}, {"mesh-size", true},
                          {"min-angle", true}, {"loop-spacing", true}, {"formats", true}, {"tolerance", true},
                          {"threads", true}, {"max-triangles", true}, {"no-caps"}, {"report", true}, {"volume"},
-                         {"cell", true}, {"periodic"}, {"order", true}, {"method", true}, {"shrink-both"}});
+                         {"cell", true}, {"periodic"}, {"order", true}, {"method", true}, {"shrink-both"}, {"report-methods", true}});
         if (args.has("help")) {
             std::cout << kResolveHelp;
             return kExitOk;
@@ -289,8 +297,28 @@ int runResolve(int argc, char** argv, int first)
         const auto reportPath = args.value("report");
         if (reportPath && options.intersection.tolerance > 0.0)
             throw UsageError("--tolerance has no effect with --report: the loops were computed with the report's tolerance");
+        // --report-methods: the methods side by side (the first is --method's, whose meshes are written).
+        std::vector<ResolutionMethod> methods;
+        if (const auto list = args.value("report-methods")) {
+            if (reportPath) throw UsageError("--report-methods intersects the tows itself: drop --report");
+            methods.push_back(options.method);
+            std::stringstream in(*list);
+            for (std::string name; std::getline(in, name, ',');) {
+                ResolutionMethod m = ResolutionMethod::Connect;
+                if (name == "symmetric") m = ResolutionMethod::Symmetric;
+                else if (name == "shrink") m = ResolutionMethod::Shrink;
+                else if (name != "connect") throw UsageError("--report-methods takes methods from connect,symmetric,shrink, not '" + name + "'");
+                if (std::find(methods.begin(), methods.end(), m) == methods.end()) methods.push_back(m);
+            }
+        }
+        std::optional<MethodComparison> comparison;
         const ResolveResult result = [&] {
             try {
+                if (!methods.empty()) {
+                    std::vector<ResolveResult> results;
+                    comparison = compareMethods(tows, methods, options, &results);
+                    return std::move(results.front());
+                }
                 if (reportPath) return resolveTextile(tows, readIntersectionReport(*reportPath, tows), options);
                 return resolveTextile(tows, options);
             } catch (const Error& e) {
@@ -350,6 +378,10 @@ int runResolve(int argc, char** argv, int first)
         if (volume && formats.count("inp") && options.cell && options.cell->periodic)
             writeAbaqusPeriodic(mesh, volumes, files.open(path("textile_volume_periodic.inp")));
         if (volume && formats.count("vtk")) writeVtu(mesh, volumes, files.open(path("textile_volume.vtu")));
+        if (comparison) {
+            writeReportHtml(*comparison, mesh, files.open(path("report.html")));
+            writeReportCsv(*comparison, files.open(path("report.csv")));
+        }
         if (!result.shrunk.empty()) {  // --method shrink: the shrunk tows, for detect or another tool
             files.makeDirectory(path("shrunk"));
             for (const ShrunkTow& s : result.shrunk) writeStack(files.open(path("shrunk/" + s.stack.name + ".stw")), s.stack);

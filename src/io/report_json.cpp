@@ -89,14 +89,6 @@ void dump(const Json& j, std::ostream& out)
     if (!out) throw Error(ErrorCode::WriteFailed, "could not write the report");
 }
 
-const char* roleOf(const TowResolution& r)
-{
-    if (r.primaryAnywhere && r.secondaryAnywhere) return "both";
-    if (r.primaryAnywhere) return "primary";
-    if (r.secondaryAnywhere) return "secondary";
-    return "none";
-}
-
 /// The report code of a skipped loop's reason.
 const char* skipCode(SkippedLoop::Reason r)
 {
@@ -146,7 +138,7 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
     for (std::size_t t = 0; t < tows.size(); ++t) {
         const TowResolution& r = result.tows[t];
         towList.push_back({{"name", tows[t].name()},
-                           {"role", roleOf(r)},
+                           {"role", r.role()},
                            {"volume_before", r.volumeBefore},
                            {"volume_after", r.volumeAfter},
                            {"area", r.area},
