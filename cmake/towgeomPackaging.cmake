@@ -23,3 +23,6 @@ write_basic_package_version_file("${PROJECT_BINARY_DIR}/towgeomConfigVersion.cma
 install(FILES "${PROJECT_BINARY_DIR}/towgeomConfig.cmake" "${PROJECT_BINARY_DIR}/towgeomConfigVersion.cmake"
   DESTINATION ${TOWGEOM_CMAKE_DIR})
 install(FILES LICENSE README.md CHANGELOG.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
+# The libraries report.html inlines (Chart.js, three.js), which the binaries carry.
+install(FILES src/report/assets/LICENSE.chart.js.md src/report/assets/LICENSE.kurkle-color.md src/report/assets/LICENSE.three.txt
+  src/report/assets/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR}/report-assets)

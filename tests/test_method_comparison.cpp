@@ -12,20 +12,11 @@
 #include <cmath>
 #include <sstream>
 
+#include "synthetic_tows.hpp"
+
 using namespace towgeom;
 
 namespace {
-
-std::vector<TowSurface> twill()
-{
-    WeaveOptions w;
-    w.kind = WeaveKind::Twill;
-    w.floatOver = w.floatUnder = 2;
-    w.overlap = 0.08;
-    std::vector<TowSurface> tows;
-    for (const TowStack& s : generateWeave(w).stacks()) tows.push_back(TowSurface::fit(s));
-    return tows;
-}
 
 double worstLoss(const MethodFigures& m)
 {
@@ -45,7 +36,7 @@ double totalLoss(const MethodFigures& m)
 
 TEST_CASE("compareMethods on the twill: connect as resolveTextile, symmetric halves the worst loss, shrink loses most", "[report][symmetric][shrink]")
 {
-    const std::vector<TowSurface> tows = twill();
+    const std::vector<TowSurface> tows = testing::fittedTwill22();
     std::vector<ResolveResult> results;
     const MethodComparison c =
         compareMethods(tows, {ResolutionMethod::Connect, ResolutionMethod::Symmetric, ResolutionMethod::Shrink}, {}, &results);
@@ -72,7 +63,7 @@ TEST_CASE("compareMethods on the twill: connect as resolveTextile, symmetric hal
             const double exact = tows[t].sectionArea(u[i]);
             const double rel = std::abs(c.sectionAreaBefore[t][i] - exact) / exact;
             worst = std::max(worst, rel);
-            CHECK(rel < 0.02);
+            CHECK(rel < 0.01);  // observed 0.55 %
         }
         // Connect: a primary's cuts are unchanged; a secondary's smaller where it gave way.
         const TowMethodFigures& f = c.methods[0].tows[t];
@@ -97,8 +88,51 @@ TEST_CASE("compareMethods on the twill: connect as resolveTextile, symmetric hal
     writeReportCsv(c, csv);
     const std::string page = html.str(), table = csv.str();
     CHECK(page.find("<script type=\"importmap\">") != std::string::npos);
-    CHECK(page.find("src=\"http") == std::string::npos);  // nothing fetched
+    CHECK(page.find(" src=") == std::string::npos);  // nothing loaded from elsewhere
     CHECK(std::count(table.begin(), table.end(), '\n') == 1 + 3 * static_cast<long>(tows.size()));
     CHECK_THROWS_AS(compareMethods(tows, {}), Error);
     CHECK_THROWS_AS(compareMethods(tows, {ResolutionMethod::Connect, ResolutionMethod::Connect}), Error);
+}
+
+TEST_CASE("section areas count only the tow's own pass through a section's plane", "[report]")
+{
+    // A U-turn (a half torus, tube radius 0.1, legs 0.25 apart): the first section's plane also
+    // cuts the last end's leg, within twice the section's radius of its centre.
+    testing::Sampling s;
+    s.sections = 25;
+    s.points = 32;
+    const std::vector<TowSurface> tows = {TowSurface::fit(testing::bentTube(0.1, 0.125, 3.14159265358979323846, s, "u_turn"))};
+    const MethodComparison c = compareMethods(tows, {ResolutionMethod::Connect});
+    const std::vector<double>& u = tows[0].sectionParameters();
+    REQUIRE(c.sectionAreaBefore[0].size() == u.size());
+    for (std::size_t i = 0; i < u.size(); ++i) {
+        INFO("section " << i);
+        CHECK(c.sectionAreaBefore[0][i] == Approx(tows[0].sectionArea(u[i])).epsilon(0.01));
+        CHECK(c.methods[0].tows[0].sectionArea[i] == Approx(c.sectionAreaBefore[0][i]).epsilon(1e-12));
+    }
+}
+
+TEST_CASE("report.html keeps its scripts whatever the tows are called", "[report]")
+{
+    std::vector<TowSurface> tows = testing::fittedTwill22();
+    testing::Sampling s;
+    s.sections = 9;
+    s.points = 16;
+    TowStack odd = testing::tubeAlongX(0.05, 1.0, 0.0, 10.0, 0.0, s, "x");
+    odd.name = "a<!--<script></script>&b";
+    const std::vector<TowSurface> two = {tows.front(), TowSurface::fit(odd)};
+    std::vector<ResolveResult> results;
+    const MethodComparison c = compareMethods(two, {ResolutionMethod::Connect}, {}, &results);
+    std::ostringstream html;
+    writeReportHtml(c, results.front().mesh, html);
+    const std::string page = html.str();
+    CHECK(page.find("<!--<script>") == std::string::npos);
+    CHECK(page.find("a&lt;!--&lt;script&gt;&lt;/script&gt;&amp;b") != std::string::npos);  // in the tables
+    CHECK(page.find("a\\u003c!--\\u003cscript\\u003e") != std::string::npos);             // in the data
+    // A stream with another locale and precision is left as it was and does not change the CSV.
+    std::ostringstream csv;
+    csv.precision(3);
+    writeReportCsv(c, csv);
+    CHECK(csv.precision() == 3);
+    CHECK(csv.str().find("a<!--<script></script>&b,connect,") != std::string::npos);
 }

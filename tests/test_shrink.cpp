@@ -12,22 +12,12 @@
 #include <chrono>
 
 #include "cgal_reference.hpp"
+#include "synthetic_tows.hpp"
 #include "mesh_checks.hpp"
 
 using namespace towgeom;
 
 namespace {
-
-std::vector<TowSurface> twill()
-{
-    WeaveOptions w;
-    w.kind = WeaveKind::Twill;
-    w.floatOver = w.floatUnder = 2;
-    w.overlap = 0.08;
-    std::vector<TowSurface> tows;
-    for (const TowStack& s : generateWeave(w).stacks()) tows.push_back(TowSurface::fit(s));
-    return tows;
-}
 
 double totalLoss(const ResolveResult& r)
 {
@@ -40,7 +30,7 @@ double totalLoss(const ResolveResult& r)
 
 TEST_CASE("shrink: the twill's tows shrunk apart, no curve left, more volume lost than the rank rule", "[resolve][shrink][weave]")
 {
-    const std::vector<TowSurface> tows = twill();
+    const std::vector<TowSurface> tows = testing::fittedTwill22();
     const IntersectionReport loops = intersectTows(tows);
     REQUIRE(loops.loops.size() == 16);
     for (const bool both : {false, true}) {
@@ -80,7 +70,7 @@ TEST_CASE("shrink: the twill's tows shrunk apart, no curve left, more volume los
 
 TEST_CASE("shrink through resolveTextile: separate meshes, no shared surface, a larger loss than connect", "[resolve][shrink][weave]")
 {
-    const std::vector<TowSurface> tows = twill();
+    const std::vector<TowSurface> tows = testing::fittedTwill22();
     ResolveOptions o;
     const ResolveResult connect = resolveTextile(tows, o);
     o.method = ResolutionMethod::Shrink;
@@ -98,10 +88,28 @@ TEST_CASE("shrink through resolveTextile: separate meshes, no shared surface, a 
         CHECK(b.nonManifoldEdges == 0);
     }
     for (std::size_t t = 0; t < tows.size(); ++t) {
-        // Unchanged tows keep their volume exactly; the mesh measures what CGAL does.
-        if (shrink.shrunk[t].largestSectionChange() == 0.0) CHECK(shrink.tows[t].volumeBefore == Approx(shrink.tows[t].volumeAfter).epsilon(1e-12));
+        // The mesh measures what CGAL does.
         CHECK(testing::closedMeshVolume(shrink.mesh.closedTowSurface(t)) == Approx(shrink.tows[t].volumeAfter).epsilon(1e-9));
     }
     WARN("twill: total volume lost: shrink " << totalLoss(shrink) << ", connect " << totalLoss(connect));
     CHECK(totalLoss(shrink) > totalLoss(connect));
+}
+
+TEST_CASE("shrink: a tow whose centre lies inside the other is not shrunk into it, but named", "[resolve][shrink]")
+{
+    // y (radius 0.3, x from 1 to 3) lies along x's top at height 0.4: scaled about its centres it
+    // only sinks into x (radius 0.5), it never comes apart.
+    testing::Sampling s;
+    s.sections = 21;
+    s.points = 32;
+    const std::vector<TowSurface> tows =
+        testing::fitAll({testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "x"), testing::tubeAlongX(0.3, 2.0, 1.0, 0.0, 0.4, s, "y")});
+    const IntersectionReport loops = intersectTows(tows);
+    REQUIRE_FALSE(loops.loops.empty());
+    ResolveOptions o;
+    const ShrinkResult r = shrinkTows(tows, loops, o);
+    REQUIRE(r.notSeparated.size() == 1);
+    CHECK(r.notSeparated.front().reason == UnresolvedPair::Reason::NotSeparated);
+    CHECK(r.figures[1].largestSectionChange() == 0.0);  // left as it was, not shrunk inside x
+    CHECK(r.figures[1].volumeAfter == Approx(r.figures[1].volumeBefore).epsilon(1e-12));
 }

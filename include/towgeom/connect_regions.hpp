@@ -43,7 +43,7 @@ TOWGEOM_BEGIN_NAMESPACE
 ///     std::cout << "tows " << g.primary << " and " << g.secondary << " share " << g.area << "\n";
 /// @endcode
 ///
-/// @throws towgeom::Error (InvalidArgument) when @p meshed does not fit @p tows (tow count or
+/// @throws towgeom::Error (InvalidArgument) for ResolutionMethod::Shrink (not a region method), when @p meshed does not fit @p tows (tow count or
 /// names, per-triangle lists of another length, node indices out of range, a side triangle's or
 /// loop's node without (u,v) on its tow, a loop not closed in the report, regions already made),
 /// naming the tow or loop; (Internal) for a tow that is not closed with no loop on it; (Cancelled).

@@ -30,7 +30,9 @@ struct TowMethodFigures {
     std::size_t triangles = 0;    ///< of its final mesh
     double largestSectionChange = 0.0;  ///< ResolutionMethod::Shrink: ShrunkTow::largestSectionChange(); else 0
     /// At each input section: the area of the final mesh's cross-section in that section's plane
-    /// (through its centroid, normal to its polygon), near the section (within twice its radius).
+    /// (through its centroid, normal to its polygon): the cut's closed contours that lie mostly
+    /// inside the input section's polygon (so another pass of the same tow through the plane is
+    /// not counted).
     std::vector<double> sectionArea;
     /// The relative volume change in percent: 100 (after - before) / before.
     double volumeChangePercent() const { return volumeBefore > 0.0 ? 100.0 * (volumeAfter - volumeBefore) / volumeBefore : 0.0; }
@@ -38,7 +40,7 @@ struct TowMethodFigures {
 
 /// One method's result.
 struct MethodFigures {
-    ResolutionMethod method = ResolutionMethod::Connect;
+    ResolutionMethod method = ResolutionMethod::Connect;  ///< which method
     std::vector<TowMethodFigures> tows;  ///< per input tow
     std::size_t regions = 0;             ///< connected regions (shared surfaces)
     std::size_t unresolvedPairs = 0;     ///< ResolveResult::unresolved
@@ -48,24 +50,27 @@ struct MethodFigures {
 
 /// An intersection loop as the report lists it.
 struct LoopRow {
-    std::size_t towA = 0, towB = 0;
-    bool closed = true;
+    std::size_t towA = 0;             ///< IntersectionLoop::towA()
+    std::size_t towB = 0;             ///< IntersectionLoop::towB()
+    bool closed = true;               ///< IntersectionLoop::closed()
     double length = 0.0;              ///< IntersectionLoop::length()
-    double areaA = 0.0, areaB = 0.0;  ///< IntersectionLoop::enclosedArea() on each tow
+    double areaA = 0.0;               ///< IntersectionLoop::enclosedArea() on tow A
+    double areaB = 0.0;               ///< IntersectionLoop::enclosedArea() on tow B
 };
 
 /// A connected region of the first method, as the report lists it.
 struct RegionRow {
-    std::size_t primary = 0, secondary = 0;
-    std::size_t triangles = 0;
+    std::size_t primary = 0;     ///< ConnectedRegion::primary
+    std::size_t secondary = 0;   ///< ConnectedRegion::secondary
+    std::size_t triangles = 0;   ///< its triangles
     double area = 0.0;           ///< ConnectedRegion::area
     double volumeRemoved = 0.0;  ///< ConnectedRegion::volumeRemoved
-    SharedSurface surface = SharedSurface::Primary;
+    SharedSurface surface = SharedSurface::Primary;  ///< ConnectedRegion::surface
 };
 
 /// What compareMethods() measured: everything the report shows, as plain values.
 struct MethodComparison {
-    std::vector<std::string> towNames;
+    std::vector<std::string> towNames;  ///< the tows, in input order
     /// Per tow, at each input section: the length along the polyline of the sections' centroids.
     std::vector<std::vector<double>> stations;
     /// Per tow, at each input section: the cross-section area of the tow's own closed mesh before

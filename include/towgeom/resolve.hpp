@@ -33,10 +33,12 @@ enum class ResolutionMethod {
     Connect,
     /// Both tows give way: inside each loop they share the mid-surface between their two
     /// surfaces (each node of the primary's surface inside the loop moved halfway to the
-    /// secondary's surface along the primary's normal, solved on both exact surfaces; the loop's
-    /// nodes stay, so the mid-surface meets both tows exactly at the loop). Each tow loses about
-    /// half of the overlap. A region where the rank rule must decide (a third tow overlaps there,
-    /// the loop goes around a tow or across a cap) keeps the primary's surface:
+    /// secondary's surface along their common normal, the mean of the two surfaces' normals at
+    /// the segment's ends, solved on both exact surfaces; the loop's nodes stay, so the
+    /// mid-surface meets both tows exactly at the loop). Each tow loses about half of the
+    /// overlap. A region where the rank rule must decide (a third tow overlaps there, another
+    /// loop runs through it, its loop goes around a tow or across a cap) or where the
+    /// mid-surface point of a node is not found keeps the primary's surface:
     /// ConnectedRegion::surface and ConnectedRegion::note say which and why.
     Symmetric,
     /// The baseline of tools that cannot share surfaces: the tows of each interpenetrating pair
@@ -184,8 +186,9 @@ struct UnresolvedPair {
         /// inside and outside the other tow. Every pair with loops on that tow was left out of the
         /// regions and the rest connected again; the pair's loop nodes stay in both meshes.
         RegionFailed,
-        /// ResolutionMethod::Shrink: the pair still interpenetrates with its sections scaled down
-        /// to ShrinkOptions::minScale (the rank rule resolves what is left of it).
+        /// ResolutionMethod::Shrink: the pair still interpenetrates (or one tow lies inside the
+        /// other) with its sections scaled down to ShrinkOptions::minScale: it is not shrunk for
+        /// that pair and the rank rule resolves it.
         NotSeparated
     };
     std::size_t towA = 0;  ///< lower tow index

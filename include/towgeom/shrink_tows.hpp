@@ -28,17 +28,23 @@ struct ShrinkResult {
     std::size_t fits = 0;  ///< trial fits made (two per bisection step with ShrinkOptions::both)
 };
 
-/// The shrink baseline: for each tow pair with intersection curves in @p report (in the
-/// report's pair order), the sections of the lower-ranked tow (ResolveOptions::primaryPatterns,
+/// The shrink baseline: for each tow pair with intersection curves in @p report (in the order of
+/// their tow indices), the sections of the lower-ranked tow (ResolveOptions::primaryPatterns,
 /// then input order; both tows with ShrinkOptions::both) are scaled about their centroids by
 /// 1 - f w(s), w = 1 along the part of the tow the pair's curves span (their u range) and
 /// falling to 0 over ShrinkOptions::blendLength on both sides (cos^2), s the length along the
 /// polyline of section centroids. f is found by bisection (to ShrinkOptions::tolerance) as the
-/// smallest that leaves the refitted pair without an intersection curve (intersectPair()), so
+/// smallest that leaves the refitted pair without an intersection curve and without either tow
+/// inside the other or touching it (intersectTows() on the pair: no loop, no finding), so
 /// it is known to that tolerance; ShrinkOptions::margin is then added, so the pair keeps a gap
 /// its meshes do not close. A section keeps the smallest scale any of its
-/// pairs asked for. A pair still interpenetrating at f = 1 - minScale is listed in
-/// ShrinkResult::notSeparated (and its tows keep that scale).
+/// pairs asked for. A pair still interpenetrating (or one inside the other) at f = 1 - minScale
+/// is listed in ShrinkResult::notSeparated and not shrunk for that pair (resolveTextile()
+/// resolves it by the rank rule). A shrunk tow is
+/// refitted with its fit mode and default tolerances. Sections are scaled about the mean of
+/// their points: for a section that does not contain that point (a crescent), scaling can move
+/// part of it outwards, and new contacts with other tows are not looked for here (resolveTextile()
+/// intersects the shrunk tows again and resolves what is left by the rank rule).
 ///
 /// @code
 /// const towgeom::IntersectionReport loops = towgeom::intersectTows(tows);

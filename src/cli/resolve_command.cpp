@@ -54,7 +54,8 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                    "triangles","faces_over_bounds"},
                    "mesh_rounds", "method", "timings_ms":{...}}
 
-  role            primary (keeps its surface), secondary (gave volume), both, or none
+  role            primary (keeps its surface; with --method symmetric it gives way too, to
+                  the mid-surface), secondary (gave volume), both, or none
   largest_section_change  --method shrink: 1 - the smallest scale of the tow's sections
   pieces          connected pieces of the tow's mesh: more than 1 where tows ranked above it
                   pass through it and cut it
@@ -73,7 +74,8 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                   region_failed (a tow could not be connected with its loops, e.g. it was not
                   closed after the swap: its pairs get no region, their loop nodes stay in
                   the meshes), not_separated (--method shrink: the pair still
-                  interpenetrates with its sections at a fifth of their size)
+                  interpenetrates with its sections at a fifth of their size, or one lies
+                  inside the other: not shrunk, the rank rule resolves it)
   skipped         every loop not resolved, with its code (open_curve, crosses_cap,
                   around_both_tows, around_tow_without_caps, bands_do_not_alternate,
                   outside_cell: clipped away by --cell) and the reason as a sentence
@@ -262,6 +264,8 @@ int runResolve(int argc, char** argv, int first)
             else if (*method == "shrink") options.method = ResolutionMethod::Shrink;
             else if (*method != "connect") throw UsageError("--method takes connect, symmetric or shrink, not '" + *method + "'");
         }
+        if (options.shrink.both && options.method != ResolutionMethod::Shrink && !args.value("report-methods"))
+            throw UsageError("--shrink-both needs --method shrink (or shrink in --report-methods)");
         options.mesh.edgeLength = args.positive("mesh-size");
         options.mesh.loopSpacing = args.positive("loop-spacing");
         if (const auto a = args.number("min-angle")) {
@@ -421,6 +425,9 @@ int runResolve(int argc, char** argv, int first)
                       << result.quality.minAngle << " deg, " << 100.0 * result.quality.fractionAtLeast(20.0)
                       << " % of triangles at least 20 deg): the mesh size may be too coarse for the tows' curvature; "
                          "try a smaller --mesh-size\n";
+        if (!quiet)
+            for (const ConnectedRegion& g : mesh.regions)
+                if (!g.note.empty()) std::cerr << "towgeom resolve: note: " << g.note << "\n";
         reportContacts("resolve", result.intersections, tows);
         reportUnresolved("resolve", unresolved, tows);
         return exitsUnresolved(unresolved, args.has("allow-open")) ? kExitUnresolved : kExitOk;

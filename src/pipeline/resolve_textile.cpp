@@ -14,6 +14,7 @@
 
 #include "cell/cell_faces.hpp"
 #include "core/progress_report.hpp"
+#include "pipeline/resolve_checks.hpp"
 #include "intersect/textile_frame.hpp"
 #include "mesh/textile_mesher.hpp"
 #include "towgeom/error.hpp"
@@ -243,7 +244,9 @@ ResolveResult resolveShrunk(const std::vector<TowSurface>& tows, const Intersect
     for (std::size_t t = 0; t < tows.size(); ++t) {
         TowResolution& r = result.tows[t];
         const ShrunkTow& f = s.figures[t];
-        r.volumeBefore = f.volumeAfter > 0.0 ? f.volumeBefore * (r.volumeAfter / f.volumeAfter) : r.volumeAfter;
+        // The input tow's volume at the shrunk mesh's resolution (before any swap of what the
+        // rank rule still resolved), so the loss counts both the shrink and that swap.
+        r.volumeBefore = f.volumeAfter > 0.0 ? f.volumeBefore * (r.volumeBefore / f.volumeAfter) : r.volumeBefore;
     }
     result.shrunk = std::move(s.figures);
     result.unresolved.insert(result.unresolved.end(), s.notSeparated.begin(), s.notSeparated.end());
@@ -252,6 +255,13 @@ ResolveResult resolveShrunk(const std::vector<TowSurface>& tows, const Intersect
 }
 
 }  // namespace
+
+void detail::checkBeforeIntersecting(const std::vector<TowSurface>& tows, const ResolveOptions& options)
+{
+    checkOptions(options);
+    detail::checkIntersectionOptions(options.intersection);
+    const MeshSizePlan plan(tows, options.mesh, options.cell);
+}
 
 ResolveResult meshTows(const std::vector<TowSurface>& tows, const IntersectionReport& report, const ResolveOptions& options)
 {

@@ -255,11 +255,12 @@ struct MidSurfaceMove {
     std::string note;  ///< empty when the region moves
 };
 
-/// The MidSurfaceMove of region @p r (triangles still numbered in the primary's input mesh) of
-/// the active loops @p shared (indices into in.loops), with the secondary's triangles inside its
-/// loop @p secondaryInside; @p crowded when a third tow overlaps it.
+/// The MidSurfaceMove of region @p r (triangles still numbered in the primary's input mesh), with
+/// the secondary's triangles inside its loop @p secondaryInside; @p crowded when a third tow
+/// overlaps it. Every loop of @p in counts, the inactive ones too (their nodes stay in both
+/// their tows' meshes).
 MidSurfaceMove midSurfaceMove(const std::vector<TowSurface>& tows, const std::vector<IntersectionLoop>& loops, const TextileMesh& in,
-                              const std::vector<std::size_t>& shared, const ConnectedRegion& r, const std::vector<Triangle>& secondaryInside, bool crowded)
+                              const ConnectedRegion& r, const std::vector<Triangle>& secondaryInside, bool crowded)
 {
     MidSurfaceMove m;
     const std::string pair = "tows '" + tows[r.primary].name() + "' and '" + tows[r.secondary].name() + "'";
@@ -278,10 +279,7 @@ MidSurfaceMove midSurfaceMove(const std::vector<TowSurface>& tows, const std::ve
                 return m;
             }
     std::set<std::size_t> onOwnLoop, onOtherLoop;
-    for (std::size_t k : shared) {
-        const MeshedLoop& ml = in.loops[k];
-        (own.count(ml.loop) ? onOwnLoop : onOtherLoop).insert(ml.nodes.begin(), ml.nodes.end());
-    }
+    for (const MeshedLoop& ml : in.loops) (own.count(ml.loop) ? onOwnLoop : onOtherLoop).insert(ml.nodes.begin(), ml.nodes.end());
     for (const TriplePoint& p : in.triplePoints) onOtherLoop.insert(p.node);
     std::set<std::size_t> regionNodes;
     for (std::size_t k : r.triangles) {
@@ -534,15 +532,16 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
                     ++insideTows;
                     if (top == tows.size() || rank[o] < rank[top]) top = o;
                 }
+            // Inside two other tows or more: every region of those pairs has a third tow in it.
+            if (insideTows > 1)
+                for (const auto& [o, c] : within)
+                    if (c.first % 2 == 1 && regionOf[c.second] >= 0) crowded[static_cast<std::size_t>(regionOf[c.second])] = 1;
             for (const auto& [o, c] : within)
                 if (c.first % 2 == 1 && regionOf[c.second] >= 0) lens[static_cast<std::size_t>(regionOf[c.second])].push_back(mesh.triangles[tri]);
             if (top == tows.size()) continue;
             if (rank[top] < rank[t]) {
                 removed[t][tri] = 1;
-                if (const long id = regionOf[within[top].second]; id >= 0) {
-                    secondaryInside[static_cast<std::size_t>(id)].push_back(mesh.triangles[tri]);
-                    if (insideTows > 1) crowded[static_cast<std::size_t>(id)] = 1;
-                }
+                if (const long id = regionOf[within[top].second]; id >= 0) secondaryInside[static_cast<std::size_t>(id)].push_back(mesh.triangles[tri]);
             } else {
                 const long id = regionOf[within[top].second];
                 if (id < 0) {
@@ -552,7 +551,6 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
                 }
                 const Triangle& triangle = mesh.triangles[tri];
                 region[t][tri] = id;
-                if (insideTows > 1) crowded[static_cast<std::size_t>(id)] = 1;
                 ConnectedRegion& r = regions[static_cast<std::size_t>(id)];
                 r.triangles.push_back(tri);
                 r.area += detail::triangleArea(N, triangle);
@@ -615,7 +613,7 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
     if (options.method == ResolutionMethod::Symmetric) {
         std::vector<MidSurfaceMove> moves(out.mesh.regions.size());
         detail::parallelFor(out.mesh.regions.size(), threads, [&](std::size_t g) {
-            moves[g] = midSurfaceMove(tows, loops, in, shared, out.mesh.regions[g], secondaryInside[kept[g]], crowded[kept[g]] != 0);
+            moves[g] = midSurfaceMove(tows, loops, in, out.mesh.regions[g], secondaryInside[kept[g]], crowded[kept[g]] != 0);
         });
         for (std::size_t g = 0; g < moves.size(); ++g) {
             ConnectedRegion& r = out.mesh.regions[g];
@@ -701,6 +699,8 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
 
 ResolveResult connectRegions(const std::vector<TowSurface>& tows, ResolveResult meshed, const ResolveOptions& options)
 {
+    if (options.method == ResolutionMethod::Shrink)
+        throw Error(ErrorCode::InvalidArgument, "the shrink method changes the tows before they are meshed: use resolveTextile() or shrinkTows()");
     const Clock::time_point t0 = Clock::now();
     const Parametric uv = readParametric(tows, meshed);
     detail::sayStage(options, "connecting " + std::to_string(meshed.mesh.loops.size()) + " regions");

@@ -1,7 +1,8 @@
 // The mid-surface of a connected region: each node of the primary's surface inside the loop moved
-// halfway to the secondary's surface along the primary's normal. The ray's first hit on the
-// secondary's faceted surface (CGAL's AABB tree) seeds Newton's method on the secondary's exact
-// B-spline surface (OCCT), so the midpoint is that of the two exact surfaces.
+// halfway to the secondary's surface along their common normal. The ray's first hit on the
+// secondary's faceted surface (CGAL's AABB tree; else its nearest point) seeds Newton's method
+// on the secondary's exact B-spline surface (OCCT), so the midpoint is that of the two exact
+// surfaces.
 #include "region/mid_surface.hpp"
 
 #include <CGAL/AABB_traits.h>
@@ -94,7 +95,7 @@ bool midSurfacePositions(const MidSurfaceRegion& region, const std::vector<Point
     const GeomAdaptor_Surface surfaceA(a.impl().surface), surfaceB(b.impl().surface);
     const ParameterRange rangeB = b.parameterRange();
     const double periodB = rangeB.vPeriod();
-    const double tolerance = 1e-12 * std::max(a.towSize(), b.towSize());
+    const double scaleTolerance = 1e-12 * std::max(a.towSize(), b.towSize());
     for (const std::size_t node : region.movable) {
         const UV* uvA = uvOf(*region.primaryParameters, node);
         if (!uvA) {
@@ -110,16 +111,25 @@ bool midSurfacePositions(const MidSurfaceRegion& region, const std::vector<Point
             return false;
         }
         inward.Normalize();
-        const Kernel::Ray_3 ray(Kernel::Point_3(p.X(), p.Y(), p.Z()), Kernel::Vector_3(inward.X(), inward.Y(), inward.Z()));
+        // The seed: the first hit of the ray along the inward normal on the secondary's
+        // triangles inside the loop, else (a deep overlap, where that ray leaves the primary
+        // first) the nearest point of those triangles.
+        const Kernel::Point_3 from(p.X(), p.Y(), p.Z());
+        const Kernel::Ray_3 ray(from, Kernel::Vector_3(inward.X(), inward.Y(), inward.Z()));
         const auto hit = tree.first_intersection(ray);
-        const Kernel::Point_3* x = hit ? boost::get<Kernel::Point_3>(&hit->first) : nullptr;
-        if (!x) {
-            why = "the line along the primary's normal at node " + std::to_string(node) +
-                  " meets no triangle of the secondary inside the loop";
-            return false;
+        const Kernel::Point_3* onRay = hit ? boost::get<Kernel::Point_3>(&hit->first) : nullptr;
+        Kernel::Point_3 seed;
+        TriangleIterator seedTriangle;
+        if (onRay) {
+            seed = *onRay;
+            seedTriangle = hit->second;
+        } else {
+            const auto nearest = tree.closest_point_and_primitive(from);
+            seed = nearest.first;
+            seedTriangle = nearest.second;
         }
-        // The hit's (u,v) on the secondary, interpolated over its triangle's nodes.
-        const auto& tri = region.secondaryTriangles[static_cast<std::size_t>(hit->second - faceted.cbegin())];
+        // The seed's (u,v) on the secondary, interpolated over its triangle's nodes.
+        const auto& tri = region.secondaryTriangles[static_cast<std::size_t>(seedTriangle - faceted.cbegin())];
         std::array<const UV*, 3> corner{};
         for (int k = 0; k < 3; ++k) {
             corner[static_cast<std::size_t>(k)] = uvOf(*region.secondaryParameters, tri[static_cast<std::size_t>(k)]);
@@ -128,21 +138,26 @@ bool midSurfacePositions(const MidSurfaceRegion& region, const std::vector<Point
                 return false;
             }
         }
-        const gp_XYZ hx(x->x(), x->y(), x->z());
+        const gp_XYZ hx(seed.x(), seed.y(), seed.z());
         const std::array<double, 3> w = barycentric(hx, toOcct(nodes[tri[0]]).XYZ(), toOcct(nodes[tri[1]]).XYZ(), toOcct(nodes[tri[2]]).XYZ());
         double u = 0.0, v = 0.0;
         for (std::size_t k = 0; k < 3; ++k) {
             u += w[k] * corner[k]->u;
             v += w[k] * vNear(corner[k]->v, corner[0]->v, periodB);
         }
+        const double tolerance = std::max(scaleTolerance, 1e-14 * p.XYZ().Modulus());  // rounding far from the origin
         double t = (hx - p.XYZ()).Dot(inward.XYZ());
         // The common normal: the segment p q along the mean of the primary's inward normal at p
         // and the secondary's outward normal at q (q's side of the overlap), so that the
         // construction is the same with the tows' roles swapped. Fixed-point iteration on the
         // direction, Newton's method on q for each direction.
         gp_XYZ d = inward.XYZ();
+        if (!onRay && (hx - p.XYZ()).Modulus() > scaleTolerance) {  // towards the nearest point first
+            d = (hx - p.XYZ()).Normalized();
+            t = (hx - p.XYZ()).Modulus();
+        }
         bool converged = false;
-        for (int outer = 0; outer < 20 && !converged; ++outer) {
+        for (int outer = 0; outer < 200 && !converged; ++outer) {  // linear convergence, about 0.3 per step
             if (!onSurfaceAlong(surfaceB, rangeB, p.XYZ(), d, tolerance, u, v, t)) break;
             gp_Pnt q;
             gp_Vec bu, bv;
@@ -153,7 +168,7 @@ bool midSurfacePositions(const MidSurfaceRegion& region, const std::vector<Point
             gp_XYZ next = inward.XYZ() + outB;
             if (next.Modulus() < 1e-3) break;  // opposite normals: no common direction
             next.Normalize();
-            converged = (next - d).Modulus() <= 1e-11;
+            converged = (next - d).Modulus() <= 1e-10;
             // Keep q where it is while the direction turns: t along the new direction.
             t = (q.XYZ() - p.XYZ()).Dot(next);
             d = next;

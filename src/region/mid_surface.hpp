@@ -27,12 +27,14 @@ struct MidSurfaceRegion {
 };
 
 /// Where each of @p region's movable nodes goes: the midpoint between the node p (on the primary's
-/// surface S_A, inside the secondary) and the point q where the line from p along -n_A (S_A's
-/// outward normal, into the primary) meets the secondary's surface S_B, solved exactly on S_B (by
-/// Newton's method from the first hit of that ray on the secondary's triangles inside the loop,
-/// CGAL's AABB tree). One position per movable node, in order. Returns false and sets @p why when
-/// a node's line meets no secondary triangle inside the loop or Newton's method does not converge
-/// (the region keeps the primary's surface then).
+/// surface S_A, inside the secondary) and the point q of the secondary's surface S_B such that
+/// q - p runs along the common normal, the mean of S_A's inward normal at p and S_B's outward
+/// normal at q (the same construction with the roles swapped). Solved on S_B's exact surface:
+/// fixed-point iteration on the direction, Newton's method for q along each; seeded by the first
+/// hit of the ray from p along -n_A on the secondary's triangles inside the loop (CGAL's AABB
+/// tree), or their nearest point where that ray misses them. One position per movable node, in
+/// order. Returns false and sets @p why when a node's q is not found (the region keeps the
+/// primary's surface then).
 bool midSurfacePositions(const MidSurfaceRegion& region, const std::vector<Point3>& nodes, std::vector<Point3>& positions,
                          std::string& why);
 

@@ -146,6 +146,7 @@ ShrinkResult shrinkTows(const std::vector<TowSurface>& tows, const IntersectionR
             for (const auto& [t, w] : shrunk) {
                 std::vector<double> s = scale[t];
                 for (std::size_t i = 0; i < s.size(); ++i) s[i] = std::min(s[i], 1.0 - f * w[i]);
+                if (s == scale[t]) continue;  // unchanged: the tow as it is, not a refit
                 FitOptions byMode = fit;
                 byMode.mode = tows[t].mode();
                 trial.insert_or_assign(t, std::make_pair(TowSurface::fit(scaledStack(tows[t], sections[t], s), byMode), s));
@@ -153,7 +154,10 @@ ShrinkResult shrinkTows(const std::vector<TowSurface>& tows, const IntersectionR
             }
             const TowSurface& ta = trial.count(a) ? trial.at(a).first : result.tows[a];
             const TowSurface& tb = trial.count(b) ? trial.at(b).first : result.tows[b];
-            return intersectPair(ta, tb, io).empty();
+            // Separated: no curve, and neither tow inside the other (a tow shrunk into the other
+            // is not separated) nor touching it.
+            const IntersectionReport pair = intersectTows({ta, tb}, io);
+            return pair.loops.empty() && pair.findings.empty();
         };
         const auto keep = [&]() {
             for (auto& [t, entry] : trial) {
@@ -163,11 +167,11 @@ ShrinkResult shrinkTows(const std::vector<TowSurface>& tows, const IntersectionR
         };
         if (separated(0.0)) continue;  // shrinking for earlier pairs separated it already
         double lo = 0.0, hi = 1.0 - o.minScale;
-        if (!separated(hi)) {
-            keep();
+        if (!separated(hi)) {  // shrinking cannot separate it (e.g. the secondary's centre is inside the primary): left as it is
             result.notSeparated.push_back({a, b, UnresolvedPair::Reason::NotSeparated,
                                            "tows '" + tows[a].name() + "' and '" + tows[b].name() +
-                                               "' still interpenetrate with their sections scaled to " + std::to_string(o.minScale)});
+                                               "' still interpenetrate (or one lies inside the other) with their sections scaled to " +
+                                               std::to_string(o.minScale) + ": not shrunk for this pair, the rank rule resolves it"});
             continue;
         }
         while (hi - lo > o.tolerance) {

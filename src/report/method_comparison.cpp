@@ -6,6 +6,7 @@
 
 #include "core/parallel.hpp"
 #include "core/progress_report.hpp"
+#include "pipeline/resolve_checks.hpp"
 #include "report/section_slices.hpp"
 #include "towgeom/connect_regions.hpp"
 #include "towgeom/error.hpp"
@@ -51,6 +52,7 @@ MethodComparison compareMethods(const std::vector<TowSurface>& tows, const std::
     for (std::size_t i = 0; i < methods.size(); ++i)
         if (std::count(methods.begin(), methods.end(), methods[i]) > 1)
             throw Error(ErrorCode::InvalidArgument, std::string("method '") + resolutionMethodName(methods[i]) + "' is asked for twice");
+    detail::checkBeforeIntersecting(tows, options);
     const std::size_t threads = detail::workerCount(options.threads);
     MethodComparison c;
     std::vector<std::vector<detail::SectionPlane>> planes;
@@ -84,6 +86,8 @@ MethodComparison compareMethods(const std::vector<TowSurface>& tows, const std::
         MethodFigures f;
         f.method = method;
         f.milliseconds = msSince(t0);
+        r.timings.intersect += c.intersectMilliseconds;  // the shared intersection (and meshing) in each result
+        if (method != ResolutionMethod::Shrink) r.timings.mesh = c.meshMilliseconds;
         f.regions = r.mesh.regions.size();
         f.unresolvedPairs = r.unresolved.size();
         f.quality = r.quality;

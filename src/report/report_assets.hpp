@@ -16,6 +16,12 @@ extern const unsigned char kThreeJs[];        ///< three 0.169.0 build/three.mod
 extern const std::size_t kThreeJsSize;
 extern const unsigned char kOrbitControlsJs[];  ///< three 0.169.0 examples/jsm/controls/OrbitControls.js
 extern const std::size_t kOrbitControlsJsSize;
+extern const unsigned char kChartJsLicence[];  ///< chart.js's LICENSE.md
+extern const std::size_t kChartJsLicenceSize;
+extern const unsigned char kKurkleColorLicence[];  ///< @kurkle/color's LICENSE.md
+extern const std::size_t kKurkleColorLicenceSize;
+extern const unsigned char kThreeJsLicence[];  ///< three's LICENSE
+extern const std::size_t kThreeJsLicenceSize;
 
 inline std::string_view asset(const unsigned char* bytes, std::size_t size)
 {

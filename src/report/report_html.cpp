@@ -5,11 +5,12 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <locale>
 #include <ostream>
-#include <sstream>
 #include <string>
 
 #include "report/report_assets.hpp"
@@ -53,25 +54,31 @@ std::string escapeHtml(const std::string& s)
     return out;
 }
 
-/// JSON text safe inside a <script> element.
+/// JSON text safe inside a <script> element: <, > and & as \u escapes (no "</script>", no
+/// "<!--" can appear, whatever the tows are called).
 std::string scriptJson(const Json& j)
 {
-    std::string s = j.dump(-1, ' ', false, Json::error_handler_t::replace);
+    const std::string s = j.dump(-1, ' ', false, Json::error_handler_t::replace);
     std::string out;
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        if (s[i] == '<' && i + 1 < s.size() && s[i + 1] == '/') out += "<\\";
-        else out += s[i];
+    out.reserve(s.size());
+    for (const char c : s) {
+        if (c == '<') out += "\\u003c";
+        else if (c == '>') out += "\\u003e";
+        else if (c == '&') out += "\\u0026";
+        else out += c;
     }
     return out;
 }
 
+/// @p x with @p digits significant digits (or the shortest exact text for digits 0), whatever
+/// the stream's locale; "-" when not finite.
 std::string number(double x, int digits = 6)
 {
     if (!std::isfinite(x)) return "-";
-    std::ostringstream o;
-    o.precision(digits);
-    o << x;
-    return o.str();
+    char text[64];
+    const auto r = digits > 0 ? std::to_chars(text, text + sizeof text, x, std::chars_format::general, digits)
+                              : std::to_chars(text, text + sizeof text, x);
+    return std::string(text, r.ptr);
 }
 
 /// One tow's mesh for the 3D view: its nodes (float32 x, y, z), triangles (uint32, into those
@@ -305,6 +312,20 @@ void writeSummary(const MethodComparison& c, std::ostream& out)
     out << "</table>\n";
 }
 
+/// The classic "C" locale on a stream while it lives (integers without digit grouping), the
+/// caller's restored after.
+class ClassicLocale {
+public:
+    explicit ClassicLocale(std::ostream& out) : out_(out), saved_(out.imbue(std::locale::classic())) {}
+    ~ClassicLocale() { out_.imbue(saved_); }
+    ClassicLocale(const ClassicLocale&) = delete;
+    ClassicLocale& operator=(const ClassicLocale&) = delete;
+
+private:
+    std::ostream& out_;
+    std::locale saved_;
+};
+
 }  // namespace
 
 void writeReportHtml(const MethodComparison& c, const TextileMesh& view, std::ostream& out)
@@ -313,6 +334,7 @@ void writeReportHtml(const MethodComparison& c, const TextileMesh& view, std::os
         throw Error(ErrorCode::InvalidArgument, "the 3D view's mesh has " + std::to_string(view.tows.size()) + " tows, the comparison " +
                                                     std::to_string(c.towNames.size()));
     if (c.methods.empty()) throw Error(ErrorCode::InvalidArgument, "the comparison has no method");
+    const ClassicLocale classic(out);
     for (const MethodFigures& m : c.methods)
         if (m.tows.size() != c.towNames.size()) throw Error(ErrorCode::InvalidArgument, "a method's figures are not of the comparison's tows");
     const Json imports = {{"imports",
@@ -359,15 +381,24 @@ void writeReportHtml(const MethodComparison& c, const TextileMesh& view, std::os
             << "</td><td>" << (l.closed ? "yes" : "no") << "</td><td>" << number(l.length) << "</td><td>" << number(l.areaA) << "</td><td>"
             << number(l.areaB) << "</td></tr>\n";
     }
-    out << "</table>\n<script type=\"application/json\" id=\"report-data\">" << scriptJson(dataOf(c, view)) << "</script>\n";
-    out << "<script>" << kChartsScript << "</script>\n<script type=\"module\">" << kViewScript << "</script>\n</body></html>\n";
+    out << "</table>\n<h2>Licences</h2>\n<details><summary>The page inlines Chart.js 4.5.1 (with @kurkle/color) and three.js "
+           "0.169.0 with its OrbitControls, verbatim from their npm packages, under these licences.</summary>\n";
+    for (const auto& [name, text] : {std::pair{"Chart.js", detail::asset(detail::kChartJsLicence, detail::kChartJsLicenceSize)},
+                                      std::pair{"@kurkle/color", detail::asset(detail::kKurkleColorLicence, detail::kKurkleColorLicenceSize)},
+                                      std::pair{"three.js", detail::asset(detail::kThreeJsLicence, detail::kThreeJsLicenceSize)}})
+        out << "<h3>" << name << "</h3><pre>" << escapeHtml(std::string(text)) << "</pre>\n";
+    out << "</details>\n<script type=\"application/json\" id=\"report-data\">" << scriptJson(dataOf(c, view)) << "</script>\n";
+    out << "<script>" << kChartsScript << "</script>\n<script type=\"module\">" << kViewScript << "</script>\n"
+        << "<script>window.addEventListener('load', () => { if (!document.body.dataset.view) document.getElementById('view').textContent = "
+           "'The 3D view could not be loaded: it needs a browser with import maps and WebGL (Chrome 89+, Firefox 108+, Safari 16.4+).'; });"
+           "</script>\n</body></html>\n";
     if (!out) throw Error(ErrorCode::WriteFailed, "could not write the report");
 }
 
 void writeReportCsv(const MethodComparison& c, std::ostream& out)
 {
+    const ClassicLocale classic(out);
     out << "tow,method,role,volume_before,volume_after,volume_change_percent,area,triangles,largest_section_change\n";
-    out.precision(12);
     for (const MethodFigures& m : c.methods)
         for (std::size_t t = 0; t < c.towNames.size(); ++t) {
             const TowMethodFigures& f = m.tows[t];
@@ -377,8 +408,9 @@ void writeReportCsv(const MethodComparison& c, std::ostream& out)
                 for (char ch : name) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
                 name = quoted + "\"";
             }
-            out << name << ',' << resolutionMethodName(m.method) << ',' << f.role << ',' << f.volumeBefore << ',' << f.volumeAfter << ','
-                << f.volumeChangePercent() << ',' << f.area << ',' << f.triangles << ',' << f.largestSectionChange << '\n';
+            out << name << ',' << resolutionMethodName(m.method) << ',' << f.role << ',' << number(f.volumeBefore, 0) << ','
+                << number(f.volumeAfter, 0) << ',' << number(f.volumeChangePercent(), 0) << ',' << number(f.area, 0) << ','
+                << std::to_string(f.triangles) << ',' << number(f.largestSectionChange, 0) << '\n';
         }
     if (!out) throw Error(ErrorCode::WriteFailed, "could not write the CSV report");
 }

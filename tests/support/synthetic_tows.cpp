@@ -1,5 +1,7 @@
 #include "synthetic_tows.hpp"
 
+#include <towgeom/weave.hpp>
+
 #include <cmath>
 #include <functional>
 
@@ -153,5 +155,21 @@ TracedTow tracedRacetrack(std::size_t m, std::size_t n, const std::vector<double
     return t;
 }
 
+
+std::vector<TowSurface> fitAll(const std::vector<TowStack>& stacks)
+{
+    std::vector<TowSurface> tows;
+    for (const TowStack& s : stacks) tows.push_back(TowSurface::fit(s));
+    return tows;
+}
+
+std::vector<TowSurface> fittedTwill22()
+{
+    WeaveOptions w;
+    w.kind = WeaveKind::Twill;
+    w.floatOver = w.floatUnder = 2;
+    w.overlap = 0.08;
+    return fitAll(generateWeave(w).stacks());
+}
 
 }  // namespace towgeom::testing

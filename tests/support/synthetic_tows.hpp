@@ -2,9 +2,11 @@
 #pragma once
 
 #include <towgeom/tow_stack.hpp>
+#include <towgeom/tow_surface.hpp>
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace towgeom::testing {
 
@@ -71,5 +73,11 @@ struct TracedTow {
 /// tip at +y; the section wanders sideways and up and down and its width varies along the tow;
 /// y and z are rounded to the pixel grid. Goes counter-clockwise about +x unless @p clockwise.
 TracedTow tracedRacetrack(std::size_t m, std::size_t n, const std::vector<double>& offset, bool clockwise);
+
+/// Every stack fitted (TowSurface::fit, default options), in order.
+std::vector<TowSurface> fitAll(const std::vector<TowStack>& stacks);
+
+/// The generator's 4x4 2/2 twill (overlap 0.08, default sampling), fitted: 8 tows, 16 loops.
+std::vector<TowSurface> fittedTwill22();
 
 }  // namespace towgeom::testing
