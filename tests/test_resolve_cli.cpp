@@ -546,7 +546,7 @@ TEST_CASE("towgeom resolve --report-methods: report.html that Chromium draws (ch
     // the four tows and they cover part of it (WebGL by SwiftShader).
     const fs::path profile = out / "chromium-profile";
     const Run page = testing::runShell("timeout 180 chromium --headless --no-sandbox --disable-extensions --user-data-dir='" + profile.string() +
-                                       "' --enable-unsafe-swiftshader --use-angle=swiftshader --window-size=1300,2400 "
+                                       "' --enable-unsafe-swiftshader --use-angle=swiftshader --window-size=1300,2400 --host-resolver-rules='MAP * ~NOTFOUND' "
                                        "--virtual-time-budget=20000 --dump-dom 'file://" + (out / "report.html").string() + "' 2>/dev/null");
     REQUIRE(page.status == 0);
     const std::size_t body = page.out.find("<body");
