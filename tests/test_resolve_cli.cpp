@@ -567,6 +567,39 @@ TEST_CASE("towgeom resolve --report-methods: report.html that Chromium draws (ch
     fs::remove_all(out);
 }
 
+TEST_CASE("towgeom resolve --knot-spans: each tow's elements classified in JSON that Python reads back", "[cli][resolve][knot_spans]")
+{
+    const fs::path out = scratch("knot_spans");
+    const Run r = cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + out.string() + "' --knot-spans --quiet");
+    REQUIRE(r.status == 0);
+    REQUIRE(fs::exists(out / "warp_0_knot_spans.vtk"));
+    // The primary keeps every element whole: its elements' areas add up to the surface's area
+    // as `towgeom fit` reports it (another command, TowSurface::area()); the secondary has
+    // trimmed elements, each trimming curve inside its element's box.
+    const Run fit = cli("fit" + twill({"warp_0"}));
+    REQUIRE(fit.status == 0);
+    const std::size_t at = fit.out.find("\"area\":");
+    REQUIRE(at != std::string::npos);
+    const double area = std::stod(fit.out.substr(at + 7));
+    const Run py = testing::runShell(
+        "/usr/bin/python3 -c \"import json\n"
+        "p = json.load(open('" + (out / "warp_0_knot_spans.json").string() + "'))\n"
+        "s = json.load(open('" + (out / "weft_0_knot_spans.json").string() + "'))\n"
+        "inside = all(e['u'][0] - 1e-12 <= q[0] <= e['u'][1] + 1e-12 and e['v'][0] - 1e-12 <= q[1] <= e['v'][1] + 1e-12 "
+        "for e in s['elements'] for c in e['trimming_curves'] for q in c)\n"
+        "print('%.15g' % sum(e['area'] for e in p['elements']), p['valid'] == len(p['elements']), s['trimmed'] > 0, s['invalid'] > 0, inside, "
+        "abs(sum(e['kept_area'] for e in s['elements']) - s['kept_area']) < 1e-12)\"");
+    REQUIRE(py.status == 0);
+    std::istringstream in(py.out);
+    double sum = 0.0;
+    std::string rest;
+    in >> sum;
+    std::getline(in, rest);
+    CHECK(std::abs(sum - area) <= 1e-9 * area);
+    CHECK(rest == " True True True True True");
+    fs::remove_all(out);
+}
+
 TEST_CASE("towgeom resolve skips and names an open curve (exit 3), refuses bad usage (exit 2)", "[cli][resolve][open]")
 {
     const fs::path dir = scratch("open");

@@ -24,6 +24,7 @@
 #include "towgeom/point.hpp"
 #include "towgeom/report.hpp"
 #include "towgeom/resolve.hpp"
+#include "towgeom/knot_span_classification.hpp"
 #include "towgeom/mesh_tows.hpp"
 #include "towgeom/method_comparison.hpp"
 #include "towgeom/connect_regions.hpp"

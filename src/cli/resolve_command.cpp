@@ -110,6 +110,11 @@ Options:
                      pair has no curve, plus a 2 % margin; then each tow is meshed on its own
                      and DIR/shrunk/NAME.stw holds the shrunk tows)
   --shrink-both      with --method shrink: both tows of a pair give way by the same factor
+  --knot-spans       also write DIR/NAME_knot_spans.json and .vtk: every knot-span element of
+                     the tow's B-spline surface valid (kept whole), invalid (removed) or trimmed
+                     (a trimming curve, its loops' chords or a cell's cut, runs through it),
+                     with its area, kept area and trimming-curve pieces in (u,v); the VTK shows
+                     the elements on the surface coloured by class (isogeometric analysis)
   --report-methods LIST
                      also resolve by each method of LIST (from connect,symmetric,shrink) on
                      the same loops and meshes and write DIR/report.html (one self-contained
@@ -248,7 +253,7 @@ int runResolve(int argc, char** argv, int first)
                         {{"help"}, {"quiet"}, {"allow-open"}, {"out", true}, {"primary", true}, {"mesh-size", true},
                          {"min-angle", true}, {"loop-spacing", true}, {"formats", true}, {"tolerance", true},
                          {"threads", true}, {"max-triangles", true}, {"no-caps"}, {"report", true}, {"volume"},
-                         {"cell", true}, {"periodic"}, {"order", true}, {"method", true}, {"shrink-both"}, {"report-methods", true}});
+                         {"cell", true}, {"periodic"}, {"order", true}, {"method", true}, {"shrink-both"}, {"report-methods", true}, {"knot-spans"}});
         if (args.has("help")) {
             std::cout << kResolveHelp;
             return kExitOk;
@@ -279,6 +284,8 @@ int runResolve(int argc, char** argv, int first)
         if (const auto cell = args.value("cell")) options.cell = parseCell(*cell, args.has("periodic"));
         else if (args.has("periodic")) throw UsageError("--periodic needs --cell");
         if (options.cell && !options.mesh.caps) throw UsageError("--cell needs closed tows: drop --no-caps");
+        if (args.has("knot-spans") && options.method == ResolutionMethod::Shrink)
+            throw UsageError("--knot-spans classifies the input tows' elements; with --method shrink the meshes are of the shrunk tows");
         const bool volume = args.has("volume");
         int order = 1;
         if (const auto given = args.value("order")) {
@@ -382,6 +389,17 @@ int runResolve(int argc, char** argv, int first)
         if (volume && formats.count("inp") && options.cell && options.cell->periodic)
             writeAbaqusPeriodic(mesh, volumes, files.open(path("textile_volume_periodic.inp")));
         if (volume && formats.count("vtk")) writeVtu(mesh, volumes, files.open(path("textile_volume.vtu")));
+        if (args.has("knot-spans")) {  // the elements of each tow's B-spline: valid, invalid, trimmed
+            std::vector<KnotSpanClassification> spans(tows.size());
+            detail::parallelFor(tows.size(), detail::workerCount(options.threads), [&](std::size_t t) {
+                if (!mesh.tows[t].triangles.empty()) spans[t] = classifyKnotSpans(tows, mesh, t);
+            });
+            for (std::size_t t = 0; t < tows.size(); ++t) {
+                if (mesh.tows[t].triangles.empty()) continue;
+                writeKnotSpansJson(spans[t], files.open(path(tows[t].name() + "_knot_spans.json")));
+                writeKnotSpansVtk(spans[t], tows[t], files.open(path(tows[t].name() + "_knot_spans.vtk")));
+            }
+        }
         if (comparison) {
             writeReportHtml(*comparison, mesh, files.open(path("report.html")));
             writeReportCsv(*comparison, files.open(path("report.csv")));
