@@ -560,10 +560,25 @@ TEST_CASE("towgeom resolve --report-methods: report.html that Chromium draws (ch
     const double fraction = std::stod(tag.substr(covered + 19));
     CHECK(fraction > 0.02);
     CHECK(fraction < 0.9);
+    // Every plot has pixels drawn, and no script error or console.error happened (the page counts
+    // them on <html data-errors>).
+    const std::size_t plots = tag.find("data-chart-pixels=\"");
+    REQUIRE(plots != std::string::npos);
+    std::istringstream drawn(tag.substr(plots + 19, tag.find('"', plots + 19) - plots - 19));
+    std::size_t count = 0;
+    for (std::string part; std::getline(drawn, part, ',');) {
+        INFO("plot " << count << " drawn on " << part);
+        CHECK(std::stod(part) > 0.01);
+        ++count;
+    }
+    CHECK(count == 3);
+    const std::size_t html = page.out.find("<html");
+    REQUIRE(html != std::string::npos);
+    CHECK(page.out.substr(html, page.out.find('>', html) - html).find("data-errors") == std::string::npos);
     // The tables are there without JavaScript too.
-    const std::string html = testing::slurp(out / "report.html");
-    CHECK(html.find("<h2>Tows</h2>") != std::string::npos);
-    CHECK(html.find("<td>weft_0</td><td>secondary</td>") != std::string::npos);
+    const std::string file = testing::slurp(out / "report.html");
+    CHECK(file.find("<h2>Tows</h2>") != std::string::npos);
+    CHECK(file.find("<td>weft_0</td><td>secondary</td>") != std::string::npos);
     fs::remove_all(out);
 }
 

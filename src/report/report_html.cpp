@@ -186,6 +186,14 @@ const char* kChartsScript = R"(
   showSections(worst);
   ++drawn;
   document.body.dataset.charts = String(drawn);
+  // How much of each plot is drawn (for a check that none is blank).
+  document.body.dataset.chartPixels = ['volume-chart', 'section-chart', 'quality-chart'].map((id) => {
+    const canvas = document.getElementById(id);
+    const pixels = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
+    let drawnPixels = 0;
+    for (let i = 3; i < pixels.length; i += 4) if (pixels[i] > 0) ++drawnPixels;
+    return (drawnPixels / (canvas.width * canvas.height)).toFixed(3);
+  }).join(',');
 })();
 )";
 
@@ -345,6 +353,9 @@ void writeReportHtml(const MethodComparison& c, const TextileMesh& view, std::os
         << kStyle << "</style>\n"
         << "<!-- Chart.js 4.5.1 (MIT, Chart.js Contributors; bundles @kurkle/color, MIT) and three.js 0.169.0 (MIT, three.js "
            "authors), inlined verbatim from their npm packages -->\n"
+        << "<script>(function () { const count = () => { document.documentElement.dataset.errors = String(Number(document.documentElement.dataset.errors || 0) + 1); };"
+           " window.addEventListener('error', count); window.addEventListener('unhandledrejection', count);"
+           " const error = console.error; console.error = function () { count(); error.apply(console, arguments); }; })();</script>\n"
         << "<script>" << detail::asset(detail::kChartJs, detail::kChartJsSize) << "</script>\n"
         << "<script type=\"importmap\">" << scriptJson(imports) << "</script>\n</head><body>\n";
     out << "<h1>Resolution methods compared</h1>\n<p class=\"note\">" << c.towNames.size() << " tows, " << c.loops.size()
