@@ -187,25 +187,6 @@ KnotSpanClassification classifyKnotSpans(const std::vector<TowSurface>& tows, co
         own.push_back(c);
         ownNodes.push_back(mesh.triangles[k]);
     }
-    // Each piece of each triangle in each element it meets (its copies a period apart too).
-    for (std::size_t k = 0; k < own.size(); ++k) {
-        const std::array<UV, 3>& c = own[k];
-        const double uLo = std::min({c[0].u, c[1].u, c[2].u}), uHi = std::max({c[0].u, c[1].u, c[2].u});
-        const double vLo = std::min({c[0].v, c[1].v, c[2].v}), vHi = std::max({c[0].v, c[1].v, c[2].v});
-        for (int shift = -2; shift <= 2; ++shift) {
-            const double dv = shift * period;
-            if (vHi + dv <= v0 || vLo + dv >= v0 + period) continue;
-            const Kernel::Triangle_2 tri(P2(c[0].u, c[0].v + dv), P2(c[1].u, c[1].v + dv), P2(c[2].u, c[2].v + dv));
-            const auto [i0, i1] = spanRange(uKnots, uLo, uHi);
-            const auto [j0, j1] = spanRange(vKnots, std::max(vLo + dv, v0), std::min(vHi + dv, v0 + period));
-            for (std::size_t i = i0; i <= i1; ++i)
-                for (std::size_t j = j0; j <= j1; ++j) {
-                    KnotSpanElement& e = out.elements[i * nv + j];
-                    const std::vector<P2> piece = clip(tri, Kernel::Iso_rectangle_2(P2(e.uMin, e.vMin), P2(e.uMax, e.vMax)));
-                    if (piece.size() >= 3) e.keptArea += polygonIntegral(s, gauss, piece);
-                }
-        }
-    }
     // The trimming curves: edges of the own kept triangles used once (not along the tube's ends),
     // oriented as their triangle runs them (the kept side on the left), cut by each element.
     std::vector<std::vector<std::array<UV, 2>>> pieces(out.elements.size());  // per element, unchained
@@ -249,6 +230,32 @@ KnotSpanClassification classifyKnotSpans(const std::vector<TowSurface>& tows, co
                     }
             }
         }
+    // Each triangle against each element it meets (its copies a period apart too): an element no
+    // trimming curve crosses is kept whole as soon as one triangle covers part of it; in the
+    // others the kept pieces are integrated.
+    std::vector<char> covered(out.elements.size(), 0);
+    for (std::size_t k = 0; k < own.size(); ++k) {
+        const std::array<UV, 3>& c = own[k];
+        const double uLo = std::min({c[0].u, c[1].u, c[2].u}), uHi = std::max({c[0].u, c[1].u, c[2].u});
+        const double vLo = std::min({c[0].v, c[1].v, c[2].v}), vHi = std::max({c[0].v, c[1].v, c[2].v});
+        for (int shift = -2; shift <= 2; ++shift) {
+            const double dv = shift * period;
+            if (vHi + dv <= v0 || vLo + dv >= v0 + period) continue;
+            const Kernel::Triangle_2 tri(P2(c[0].u, c[0].v + dv), P2(c[1].u, c[1].v + dv), P2(c[2].u, c[2].v + dv));
+            const auto [i0, i1] = spanRange(uKnots, uLo, uHi);
+            const auto [j0, j1] = spanRange(vKnots, std::max(vLo + dv, v0), std::min(vHi + dv, v0 + period));
+            for (std::size_t i = i0; i <= i1; ++i)
+                for (std::size_t j = j0; j <= j1; ++j) {
+                    const std::size_t id = i * nv + j;
+                    if (covered[id] && pieces[id].empty()) continue;  // whole, decided
+                    KnotSpanElement& e = out.elements[id];
+                    const std::vector<P2> piece = clip(tri, Kernel::Iso_rectangle_2(P2(e.uMin, e.vMin), P2(e.uMax, e.vMax)));
+                    if (piece.size() < 3) continue;
+                    covered[id] = 1;
+                    if (!pieces[id].empty()) e.keptArea += polygonIntegral(s, gauss, piece);
+                }
+        }
+    }
     // Each element's pieces chained into polylines (a piece joins where another ends, either
     // way round), so a curve runs from where it enters the element to where it leaves.
     for (std::size_t k = 0; k < out.elements.size(); ++k) {
@@ -275,15 +282,19 @@ KnotSpanClassification classifyKnotSpans(const std::vector<TowSurface>& tows, co
     }
     // A trimming curve through it makes an element trimmed; one without is kept whole or not
     // at all (its measured kept area is then its area or 0 to the quadrature, ~1e-8).
-    for (KnotSpanElement& e : out.elements) {
+    for (std::size_t k = 0; k < out.elements.size(); ++k) {
+        KnotSpanElement& e = out.elements[k];
         const double ratio = e.area > 0.0 ? e.keptArea / e.area : 0.0;
         if (!e.trimmingCurves.empty() && ratio > 1e-12 && ratio < 1.0 - 1e-12) {
             e.kind = ElementClass::Trimmed;
             continue;
         }
-        e.trimmingCurves.clear();  // (a curve touching it only: kept whole or not at all)
-        e.kind = e.keptArea >= 0.5 * e.area ? ElementClass::Valid : ElementClass::Invalid;
-        e.keptArea = e.kind == ElementClass::Valid ? e.area : 0.0;
+        // Whole: without a curve, kept if a triangle covers part of it; with one that keeps all
+        // or nothing (a curve grazing it), by its kept area.
+        const bool kept = e.trimmingCurves.empty() ? covered[k] != 0 : ratio >= 0.5;
+        e.trimmingCurves.clear();
+        e.kind = kept ? ElementClass::Valid : ElementClass::Invalid;
+        e.keptArea = kept ? e.area : 0.0;
     }
     return out;
 }
