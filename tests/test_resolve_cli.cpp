@@ -615,6 +615,30 @@ TEST_CASE("towgeom resolve --knot-spans: each tow's elements classified in JSON 
     fs::remove_all(out);
 }
 
+TEST_CASE("towgeom resolve --cell DIR/textile.json takes the generator's periodic unit cell", "[cli][resolve][cell]")
+{
+    const fs::path gen = scratch("cell_gen"), out = scratch("cell_from_json");
+    REQUIRE(cli("generate --weave twill --tows 6x6 --overlap 0.08 --quiet --out '" + gen.string() + "'").status == 0);
+    const Run r = cli("resolve '" + gen.string() + "'/*.stw --out '" + out.string() + "' --cell '" + (gen / "textile.json").string() +
+                      "' --mesh-size 0.2 --quiet");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const std::string report = testing::slurp(out / "report.json");
+    CHECK(report.find("\"cell\":{\"min\":[0.5,0.5,") != std::string::npos);
+    CHECK(report.find("\"max\":[4.5,4.5,") != std::string::npos);
+    CHECK(report.find("\"periodic\":true") != std::string::npos);
+    // A 4 x 4 twill has no repeat + 2 yarns each way: no cell, and resolve says so, naming the file.
+    const fs::path small = scratch("cell_gen_small");
+    REQUIRE(cli("generate --weave twill --tows 4x4 --quiet --out '" + small.string() + "'").status == 0);
+    const Run none = cli("resolve '" + small.string() + "'/*.stw --out '" + out.string() + "_none' --cell '" + (small / "textile.json").string() + "' --quiet");
+    CHECK(none.status == 2);
+    CHECK(none.err.find("textile.json: no \"cell\"") != std::string::npos);
+    CHECK_FALSE(fs::exists(out.string() + "_none"));
+    fs::remove_all(gen);
+    fs::remove_all(small);
+    fs::remove_all(out);
+}
+
 TEST_CASE("towgeom resolve skips and names an open curve (exit 3), refuses bad usage (exit 2)", "[cli][resolve][open]")
 {
     const fs::path dir = scratch("open");

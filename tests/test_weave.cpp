@@ -243,3 +243,49 @@ TEST_CASE("a yarn's section may vary along it", "[weave][section]")
     y.sections.pop_back();
     CHECK_THROWS_AS(y.stack(o.pointsPerSection), Error);
 }
+
+TEST_CASE("the generator's unit cell: one repeat where the textile repeats exactly, none where it cannot", "[weave][cell]")
+{
+    const auto cellOf = [](WeaveKind kind, std::size_t over, std::size_t under, std::size_t step, std::size_t warps, std::size_t wefts) {
+        WeaveOptions o;
+        o.kind = kind;
+        o.floatOver = over;
+        o.floatUnder = under;
+        o.step = step;
+        o.warps = warps;
+        o.wefts = wefts;
+        o.overlap = 0.08;
+        return generateWeave(o);
+    };
+    struct Case {
+        WeaveKind kind;
+        std::size_t over, under, step, warps, wefts;
+        double x, y;  // the expected repeat along x (wefts) and y (warps); 0: no cell
+    };
+    for (const Case k : {Case{WeaveKind::Twill, 2, 2, 1, 6, 6, 4, 4}, Case{WeaveKind::Twill, 2, 2, 1, 4, 4, 0, 0},
+                         Case{WeaveKind::Twill, 2, 2, 2, 4, 6, 4, 2}, Case{WeaveKind::Plain, 1, 1, 1, 4, 4, 2, 2},
+                         Case{WeaveKind::Satin, 5, 1, 2, 7, 7, 5, 5}, Case{WeaveKind::Basket, 2, 2, 1, 6, 6, 4, 4},
+                         Case{WeaveKind::Orthogonal, 2, 2, 1, 6, 6, 0, 0}}) {
+        INFO("kind " << static_cast<int>(k.kind) << ", " << k.over << "/" << k.under << " step " << k.step << ", " << k.warps << " x " << k.wefts);
+        const Textile t = cellOf(k.kind, k.over, k.under, k.step, k.warps, k.wefts);
+        const std::optional<Cell> cell = t.unitCell();
+        REQUIRE(cell.has_value() == (k.x > 0.0));
+        if (!cell) continue;
+        CHECK(cell->periodic);
+        CHECK(cell->min.x == 0.5);
+        CHECK(cell->min.y == 0.5);
+        CHECK(cell->max.x - cell->min.x == k.x);
+        CHECK(cell->max.y - cell->min.y == k.y);
+        if (k.kind != WeaveKind::Twill || k.step != 1 || k.warps != 6) continue;
+        // The textile does repeat there: resolveTextile's periodic check (cuts on the max faces
+        // equal the min faces' moved by the cell, within 1e-3 of the tow size) accepts it.
+        std::vector<TowSurface> tows;
+        for (const TowStack& s : t.stacks()) tows.push_back(TowSurface::fit(s));
+        ResolveOptions o;
+        o.cell = cell;
+        o.mesh.edgeLength = 0.2;
+        const ResolveResult r = resolveTextile(tows, o);
+        REQUIRE(r.mesh.cell.has_value());
+        CHECK_FALSE(r.mesh.cell->periodicPairs.empty());
+    }
+}

@@ -17,7 +17,9 @@ struct TextileOutput {
 
 /// Writes DIR/NAME.stw for every yarn (the `.stw` format of stack_reader.hpp) and
 /// DIR/textile.json: {"weave", "parameters":{...}, "yarns":[{"name","role","file","sections",
-/// "points"}], "crossings":[{"warp","weft","x","y","warp_over"}]}, so later tools can use roles.
+/// "points"}], "crossings":[{"warp","weft","x","y","warp_over"}], "cell":{"min":[x,y,z],
+/// "max":[x,y,z],"periodic":true}} (the cell only where Textile::unitCell() has one), so later
+/// tools can use roles and the unit cell (towgeom resolve --cell textile.json).
 /// The directory is created if needed; all files appear only if every one was written.
 /// @throws towgeom::Error (WriteFailed) naming the file that failed.
 TOWGEOM_EXPORT void writeTextile(const Textile& textile, const std::string& directory, const TextileOutput& output = {});

@@ -3,9 +3,11 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "towgeom/cell.hpp"
 #include "towgeom/cross_section.hpp"
 #include "towgeom/tow_stack.hpp"
 #include "towgeom/yarn_path.hpp"
@@ -97,6 +99,15 @@ struct TOWGEOM_EXPORT Textile {
 
     /// Every yarn as a stack with options.pointsPerSection points per section.
     std::vector<TowStack> stacks() const;
+
+    /// The weave's unit cell, periodic (Cell::periodic): one repeat of the pattern along x and y
+    /// (plain 2 x 2 yarns; n/m twill n + m wefts by (n + m) / gcd(step, n + m) warps; n-harness
+    /// satin n by n; basket 2n by 2n), its faces halfway between yarns from x = y = spacing / 2,
+    /// and in z the yarns' crimp plus their height on each side. A yarn's path between two
+    /// interlacements depends on the two beyond them only (Catmull-Rom), so the textile repeats
+    /// there exactly when there are at least a repeat + 2 wefts and warps; with fewer (or for
+    /// the orthogonal weave) there is no such cell and the result is empty.
+    std::optional<Cell> unitCell() const;
 };
 
 /// Generates a textile. Warps run along +x at y = i * spacing, wefts along +y at

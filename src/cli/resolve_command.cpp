@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <optional>
 #include <set>
@@ -19,6 +20,8 @@
 #include "core/parallel.hpp"
 #include "io/output_files.hpp"
 #include "towgeom/towgeom.hpp"
+
+#include <nlohmann/json.hpp>
 
 namespace towgeom::cli {
 
@@ -163,14 +166,17 @@ Options:
   --order N          with --volume: 1 linear tetrahedra (default; C3D4), 2 quadratic (10 nodes,
                      straight edges: C3D10, Gmsh's 10-node tetrahedra and 6-node triangles, VTK's
                      quadratic tetrahedra; node sets hold the middle nodes on them too)
-  --cell X0,Y0,Z0,X1,Y1,Z1
+  --cell X0,Y0,Z0,X1,Y1,Z1 | --cell DIR/textile.json
                      clip every tow by this box (a unit cell for finite elements): where a face
                      cuts a tow the tow is closed by a flat cap on the face; the faces are meshed
                      around the caps (shared nodes) and, with --volume, the matrix is filled
                      too. The faces must cut tows across, away from crossings and from the box's
                      edges (else exit 2 naming the tow): for a woven cell, halfway between yarns.
                      A tow wholly outside the box gets no NAME.stl / NAME.vtk. report.json gains
-                     "cell"
+                     "cell". DIR/textile.json: the unit cell `towgeom generate` wrote there (one
+                     repeat of a 2D weave, faces halfway between yarns, periodic; it writes one
+                     when there are at least a repeat + 2 wefts and warps, e.g. 6 x 6 for a 2/2
+                     twill)
   --periodic         with --cell: the textile repeats with the box; the max faces' meshes are
                      the min faces' moved by the box (every node has its partner at exactly +L),
                      refused (exit 2) where a tow's cuts on opposite faces differ by more than
@@ -202,8 +208,46 @@ Examples:
 )";
 
 /// --cell XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX.
+/// The "cell" of a generator's textile.json (periodic; --periodic changes nothing then).
+/// @throws towgeom::Error (FileNotFound, FileUnreadable, InvalidArgument) naming the file.
+Cell readCellFile(const std::string& path)
+{
+    std::ifstream in(path);
+    if (!std::filesystem::exists(path)) throw Error(ErrorCode::FileNotFound, "the file given to --cell does not exist", path);
+    if (!in) throw Error(ErrorCode::FileUnreadable, "cannot read the file given to --cell", path);
+    nlohmann::json j;
+    try {
+        in >> j;
+    } catch (const nlohmann::json::exception& e) {
+        throw Error(ErrorCode::InvalidArgument, std::string("not JSON: ") + e.what(), path);
+    }
+    const auto corner = [&](const char* key) {
+        const nlohmann::json& c = j["cell"][key];
+        if (!c.is_array() || c.size() != 3 || !c[0].is_number() || !c[1].is_number() || !c[2].is_number())
+            throw Error(ErrorCode::InvalidArgument, std::string("\"cell\".\"") + key + "\" must be three numbers", path);
+        return Point3{c[0].get<double>(), c[1].get<double>(), c[2].get<double>()};
+    };
+    if (!j.is_object() || !j.contains("cell"))
+        throw Error(ErrorCode::InvalidArgument,
+                    "no \"cell\": the generator writes one for a 2D weave with at least a repeat + 2 wefts and warps "
+                    "(e.g. 6 x 6 for a 2/2 twill); give --cell X0,Y0,Z0,X1,Y1,Z1 instead",
+                    path);
+    Cell c;
+    c.min = corner("min");
+    c.max = corner("max");
+    c.periodic = j["cell"].value("periodic", false);
+    if (!(c.min.x < c.max.x && c.min.y < c.max.y && c.min.z < c.max.z))
+        throw Error(ErrorCode::InvalidArgument, "\"cell\": each minimum must lie below its maximum", path);
+    return c;
+}
+
 Cell parseCell(const std::string& text, bool periodic)
 {
+    if (text.size() > 5 && text.compare(text.size() - 5, 5, ".json") == 0) {
+        Cell c = readCellFile(text);
+        c.periodic = c.periodic || periodic;
+        return c;
+    }
     std::vector<double> v;
     std::size_t at = 0;
     while (at <= text.size()) {

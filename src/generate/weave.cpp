@@ -14,6 +14,9 @@ namespace {
 
 [[noreturn]] void invalid(const std::string& why) { throw Error(ErrorCode::InvalidArgument, "weave: " + why); }
 
+/// The interlacement height: the crimp given, else half the yarn height less the overlap.
+double crimpOf(const WeaveOptions& o) { return o.crimp > 0.0 ? o.crimp : 0.5 * o.height * (1.0 - o.overlap); }
+
 int wrap(long value, long period) { return static_cast<int>(((value % period) + period) % period); }
 
 /// True when warp i passes over weft j in a 2D weave (any integers: the pattern repeats).
@@ -244,12 +247,38 @@ std::vector<TowStack> Textile::stacks() const
     return out;
 }
 
+std::optional<Cell> Textile::unitCell() const
+{
+    const WeaveOptions& o = options;
+    long repeatJ = 0, repeatI = 0;  // along the wefts' index (x) and the warps' (y)
+    switch (o.kind) {
+    case WeaveKind::Plain: repeatJ = repeatI = 2; break;
+    case WeaveKind::Twill: {
+        const long n = static_cast<long>(o.floatOver + o.floatUnder);
+        repeatJ = n;
+        repeatI = n / std::gcd(static_cast<long>(o.step), n);
+        break;
+    }
+    case WeaveKind::Satin: repeatJ = repeatI = static_cast<long>(o.floatOver); break;
+    case WeaveKind::Basket: repeatJ = repeatI = 2 * static_cast<long>(o.floatOver); break;
+    case WeaveKind::Orthogonal: return std::nullopt;
+    }
+    if (static_cast<long>(o.wefts) < repeatJ + 2 || static_cast<long>(o.warps) < repeatI + 2) return std::nullopt;
+    const double s = o.spacing;
+    const double c = crimpOf(o);
+    Cell cell;
+    cell.min = {0.5 * s, 0.5 * s, -(c + o.height)};
+    cell.max = {(0.5 + static_cast<double>(repeatJ)) * s, (0.5 + static_cast<double>(repeatI)) * s, c + o.height};
+    cell.periodic = true;
+    return cell;
+}
+
 Textile generateWeave(const WeaveOptions& options)
 {
     options.validate();
     Textile t;
     t.options = options;
-    const double c = options.crimp > 0.0 ? options.crimp : 0.5 * options.height * (1.0 - options.overlap);
+    const double c = crimpOf(options);
     if (options.kind == WeaveKind::Orthogonal)
         generateOrthogonal(options, c, t);
     else

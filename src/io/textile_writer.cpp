@@ -69,6 +69,8 @@ void writeTextile(const Textile& textile, const std::string& directory, const Te
                              {"y", c.position.y},
                              {"warp_over", c.warpOver}});
     j["crossings"] = std::move(crossings);
+    if (const std::optional<Cell> cell = textile.unitCell())  // for towgeom resolve --cell textile.json
+        j["cell"] = {{"min", {cell->min.x, cell->min.y, cell->min.z}}, {"max", {cell->max.x, cell->max.y, cell->max.z}}, {"periodic", true}};
     files.open(path("textile.json")) << j.dump(-1, ' ', false, Json::error_handler_t::replace);
     files.commit();
 }
