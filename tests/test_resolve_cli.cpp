@@ -568,7 +568,7 @@ TEST_CASE("towgeom resolve --report-methods: report.html that Chromium draws (ch
     std::size_t count = 0;
     for (std::string part; std::getline(drawn, part, ',');) {
         INFO("plot " << count << " drawn on " << part);
-        CHECK(std::stod(part) > 0.01);
+        CHECK(std::stod(part) > 0.008);  // data in the methods' colours (empty plots: 0.0015-0.0035)
         ++count;
     }
     CHECK(count == 3);

@@ -103,7 +103,7 @@ struct TOWGEOM_EXPORT Textile {
     /// The weave's unit cell, periodic (Cell::periodic): one repeat of the pattern along x and y
     /// (plain 2 x 2 yarns; n/m twill n + m wefts by (n + m) / gcd(step, n + m) warps; n-harness
     /// satin n by n; basket 2n by 2n), its faces halfway between yarns from x = y = spacing / 2,
-    /// and in z the yarns' crimp plus their height on each side. A yarn's path between two
+    /// and in z the yarns' sampled extent plus a quarter of their height on each side. A yarn's path between two
     /// interlacements depends on the two beyond them only (Catmull-Rom), so the textile repeats
     /// there exactly when there are at least a repeat + 2 wefts and warps; with fewer (or for
     /// the orthogonal weave) there is no such cell and the result is empty.

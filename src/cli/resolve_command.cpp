@@ -215,35 +215,40 @@ Cell readCellFile(const std::string& path)
     std::ifstream in(path);
     if (!std::filesystem::exists(path)) throw Error(ErrorCode::FileNotFound, "the file given to --cell does not exist", path);
     if (!in) throw Error(ErrorCode::FileUnreadable, "cannot read the file given to --cell", path);
-    nlohmann::json j;
     try {
+        nlohmann::json j;
         in >> j;
+        if (!j.is_object() || !j.contains("cell"))
+            throw Error(ErrorCode::InvalidArgument,
+                        "no \"cell\": the generator writes one for a 2D weave with at least a repeat + 2 wefts and warps "
+                        "(e.g. 6 x 6 for a 2/2 twill); give --cell X0,Y0,Z0,X1,Y1,Z1 instead",
+                        path);
+        const nlohmann::json& cell = j["cell"];
+        if (!cell.is_object()) throw Error(ErrorCode::InvalidArgument, "\"cell\" must be an object {\"min\", \"max\", \"periodic\"}", path);
+        const auto corner = [&](const char* key) {
+            if (!cell.contains(key) || !cell[key].is_array() || cell[key].size() != 3 || !cell[key][0].is_number() ||
+                !cell[key][1].is_number() || !cell[key][2].is_number())
+                throw Error(ErrorCode::InvalidArgument, std::string("\"cell\".\"") + key + "\" must be three numbers", path);
+            return Point3{cell[key][0].get<double>(), cell[key][1].get<double>(), cell[key][2].get<double>()};
+        };
+        Cell c;
+        c.min = corner("min");
+        c.max = corner("max");
+        if (cell.contains("periodic") && !cell["periodic"].is_boolean())
+            throw Error(ErrorCode::InvalidArgument, "\"cell\".\"periodic\" must be true or false", path);
+        c.periodic = cell.value("periodic", false);
+        if (!(c.min.x < c.max.x && c.min.y < c.max.y && c.min.z < c.max.z))
+            throw Error(ErrorCode::InvalidArgument, "\"cell\": each minimum must lie below its maximum", path);
+        return c;
     } catch (const nlohmann::json::exception& e) {
-        throw Error(ErrorCode::InvalidArgument, std::string("not JSON: ") + e.what(), path);
+        throw Error(ErrorCode::InvalidArgument, std::string("not a textile.json with a cell: ") + e.what(), path);
     }
-    const auto corner = [&](const char* key) {
-        const nlohmann::json& c = j["cell"][key];
-        if (!c.is_array() || c.size() != 3 || !c[0].is_number() || !c[1].is_number() || !c[2].is_number())
-            throw Error(ErrorCode::InvalidArgument, std::string("\"cell\".\"") + key + "\" must be three numbers", path);
-        return Point3{c[0].get<double>(), c[1].get<double>(), c[2].get<double>()};
-    };
-    if (!j.is_object() || !j.contains("cell"))
-        throw Error(ErrorCode::InvalidArgument,
-                    "no \"cell\": the generator writes one for a 2D weave with at least a repeat + 2 wefts and warps "
-                    "(e.g. 6 x 6 for a 2/2 twill); give --cell X0,Y0,Z0,X1,Y1,Z1 instead",
-                    path);
-    Cell c;
-    c.min = corner("min");
-    c.max = corner("max");
-    c.periodic = j["cell"].value("periodic", false);
-    if (!(c.min.x < c.max.x && c.min.y < c.max.y && c.min.z < c.max.z))
-        throw Error(ErrorCode::InvalidArgument, "\"cell\": each minimum must lie below its maximum", path);
-    return c;
 }
 
 Cell parseCell(const std::string& text, bool periodic)
 {
-    if (text.size() > 5 && text.compare(text.size() - 5, 5, ".json") == 0) {
+    // A file (textile.json): any text that is not a list of numbers.
+    if (text.find(',') == std::string::npos) {
         Cell c = readCellFile(text);
         c.periodic = c.periodic || periodic;
         return c;

@@ -17,6 +17,9 @@ namespace {
 /// The interlacement height: the crimp given, else half the yarn height less the overlap.
 double crimpOf(const WeaveOptions& o) { return o.crimp > 0.0 ? o.crimp : 0.5 * o.height * (1.0 - o.overlap); }
 
+/// value / divisor rounded down (towards minus infinity), divisor > 0.
+long floorDiv(long value, long divisor) { return value / divisor - (value % divisor != 0 && value < 0 ? 1 : 0); }
+
 int wrap(long value, long period) { return static_cast<int>(((value % period) + period) % period); }
 
 /// True when warp i passes over weft j in a 2D weave (any integers: the pattern repeats).
@@ -26,7 +29,7 @@ bool warpOver(const WeaveOptions& o, long i, long j)
     case WeaveKind::Plain: return wrap(i + j, 2) == 0;
     case WeaveKind::Twill: return wrap(j - static_cast<long>(o.step) * i, o.floatOver + o.floatUnder) < o.floatOver;
     case WeaveKind::Satin: return wrap(j - static_cast<long>(o.step) * i, o.floatOver) == 0;
-    case WeaveKind::Basket: return wrap(i / o.floatOver - (i < 0) + j / o.floatOver - (j < 0), 2) == 0;
+    case WeaveKind::Basket: return wrap(floorDiv(i, static_cast<long>(o.floatOver)) + floorDiv(j, static_cast<long>(o.floatOver)), 2) == 0;
     case WeaveKind::Orthogonal: return false;
     }
     return false;
@@ -265,10 +268,18 @@ std::optional<Cell> Textile::unitCell() const
     }
     if (static_cast<long>(o.wefts) < repeatJ + 2 || static_cast<long>(o.warps) < repeatI + 2) return std::nullopt;
     const double s = o.spacing;
-    const double c = crimpOf(o);
+    // In z the yarns' sampled extent (a Catmull-Rom path overshoots its points along a float)
+    // and a quarter of their height on each side.
+    double low = 0.0, high = 0.0;
+    for (const TowStack& stack : stacks())
+        for (const auto& section : stack.sections)
+            for (const Point3& p : section) {
+                low = std::min(low, p.z);
+                high = std::max(high, p.z);
+            }
     Cell cell;
-    cell.min = {0.5 * s, 0.5 * s, -(c + o.height)};
-    cell.max = {(0.5 + static_cast<double>(repeatJ)) * s, (0.5 + static_cast<double>(repeatI)) * s, c + o.height};
+    cell.min = {0.5 * s, 0.5 * s, low - 0.25 * o.height};
+    cell.max = {(0.5 + static_cast<double>(repeatJ)) * s, (0.5 + static_cast<double>(repeatI)) * s, high + 0.25 * o.height};
     cell.periodic = true;
     return cell;
 }

@@ -233,7 +233,8 @@ KnotSpanClassification classifyKnotSpans(const std::vector<TowSurface>& tows, co
     // Each triangle against each element it meets (its copies a period apart too): an element no
     // trimming curve crosses is kept whole as soon as one triangle covers part of it; in the
     // others the kept pieces are integrated.
-    std::vector<char> covered(out.elements.size(), 0);
+    std::vector<double> covered(out.elements.size(), 0.0);  // the (u,v) area the kept triangles cover
+    const auto boxArea = [&](const KnotSpanElement& e) { return (e.uMax - e.uMin) * (e.vMax - e.vMin); };
     for (std::size_t k = 0; k < own.size(); ++k) {
         const std::array<UV, 3>& c = own[k];
         const double uLo = std::min({c[0].u, c[1].u, c[2].u}), uHi = std::max({c[0].u, c[1].u, c[2].u});
@@ -247,11 +248,17 @@ KnotSpanClassification classifyKnotSpans(const std::vector<TowSurface>& tows, co
             for (std::size_t i = i0; i <= i1; ++i)
                 for (std::size_t j = j0; j <= j1; ++j) {
                     const std::size_t id = i * nv + j;
-                    if (covered[id] && pieces[id].empty()) continue;  // whole, decided
+                    if (pieces[id].empty() && covered[id] > 0.5 * boxArea(out.elements[id])) continue;  // whole, decided
                     KnotSpanElement& e = out.elements[id];
                     const std::vector<P2> piece = clip(tri, Kernel::Iso_rectangle_2(P2(e.uMin, e.vMin), P2(e.uMax, e.vMax)));
                     if (piece.size() < 3) continue;
-                    covered[id] = 1;
+                    double twice = 0.0;  // the piece's (u,v) area by the shoelace formula, either orientation
+                    for (std::size_t q = 0; q < piece.size(); ++q) {
+                        const P2& a = piece[q];
+                        const P2& b = piece[(q + 1) % piece.size()];
+                        twice += a.x() * b.y() - a.y() * b.x();
+                    }
+                    covered[id] += 0.5 * std::abs(twice);
                     if (!pieces[id].empty()) e.keptArea += polygonIntegral(s, gauss, piece);
                 }
         }
@@ -291,7 +298,8 @@ KnotSpanClassification classifyKnotSpans(const std::vector<TowSurface>& tows, co
         }
         // Whole: without a curve, kept if a triangle covers part of it; with one that keeps all
         // or nothing (a curve grazing it), by its kept area.
-        const bool kept = e.trimmingCurves.empty() ? covered[k] != 0 : ratio >= 0.5;
+        // (Slivers of triangles rounding past a knot line cover next to nothing: not kept.)
+        const bool kept = e.trimmingCurves.empty() ? covered[k] > 0.5 * boxArea(e) : ratio >= 0.5;
         e.trimmingCurves.clear();
         e.kind = kept ? ElementClass::Valid : ElementClass::Invalid;
         e.keptArea = kept ? e.area : 0.0;

@@ -186,13 +186,16 @@ const char* kChartsScript = R"(
   showSections(worst);
   ++drawn;
   document.body.dataset.charts = String(drawn);
-  // How much of each plot is drawn (for a check that none is blank).
+  // How much of each plot shows data: pixels in the methods' colours (axes, grid and text are
+  // grey or black; the legend's swatches are a few hundred pixels), for a check that none is blank.
+  const rgb = colours.map((c) => [1, 3, 5].map((k) => parseInt(c.substr(k, 2), 16)));
   document.body.dataset.chartPixels = ['volume-chart', 'section-chart', 'quality-chart'].map((id) => {
     const canvas = document.getElementById(id);
     const pixels = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
-    let drawnPixels = 0;
-    for (let i = 3; i < pixels.length; i += 4) if (pixels[i] > 0) ++drawnPixels;
-    return (drawnPixels / (canvas.width * canvas.height)).toFixed(3);
+    let data = 0;
+    for (let i = 0; i < pixels.length; i += 4)
+      if (pixels[i + 3] > 200 && rgb.some((c) => Math.abs(pixels[i] - c[0]) + Math.abs(pixels[i + 1] - c[1]) + Math.abs(pixels[i + 2] - c[2]) < 60)) ++data;
+    return (data / (canvas.width * canvas.height)).toFixed(4);
   }).join(',');
 })();
 )";
