@@ -128,7 +128,7 @@ ShrinkResult shrinkTows(const std::vector<TowSurface>& tows, const IntersectionR
     for (const auto& [pair, span] : spans) {
         detail::throwIfCancelled(options.monitor);
         detail::sayStage(options, "shrinking tow pair " + std::to_string(++done) + " of " + std::to_string(spans.size()));
-        const auto [a, b] = pair;
+        const std::size_t a = pair.first, b = pair.second;  // (not a structured binding: the lambdas below capture them)
         const std::size_t secondary = rank[a] < rank[b] ? b : a;
         // The tows shrunk for this pair, with their weights.
         std::vector<std::pair<std::size_t, std::vector<double>>> shrunk;
