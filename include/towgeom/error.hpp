@@ -40,8 +40,10 @@ enum class ErrorCode {
                               ///< message gives the estimate and the limit.
     MalformedReport,          ///< A JSON report read back is malformed, or is not one of the tows given.
     Cancelled,                ///< Progress::cancel() stopped the work; no result was made.
-    EngineUnavailable         ///< An engine loaded when first needed (Gmsh's library, for
+    EngineUnavailable,        ///< An engine loaded when first needed (Gmsh's library, for
                               ///< meshVolumes()) could not be loaded; the message names its package.
+    Unsupported               ///< Valid input that this version cannot handle yet (e.g. a
+                              ///< trimmed B-rep of a loop across an end cap); the message says what.
 };
 
 /// A short, stable, machine-readable name of a code, e.g. "non_numeric".

@@ -25,6 +25,7 @@
 #include "towgeom/report.hpp"
 #include "towgeom/resolve.hpp"
 #include "towgeom/knot_span_classification.hpp"
+#include "towgeom/trimmed_brep.hpp"
 #include "towgeom/mesh_tows.hpp"
 #include "towgeom/method_comparison.hpp"
 #include "towgeom/connect_regions.hpp"

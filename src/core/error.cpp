@@ -54,6 +54,7 @@ const char* errorCodeName(ErrorCode code) noexcept
     case ErrorCode::MalformedReport: return "malformed_report";
     case ErrorCode::Cancelled: return "cancelled";
     case ErrorCode::EngineUnavailable: return "engine_unavailable";
+    case ErrorCode::Unsupported: return "unsupported";
     }
     return "unknown";
 }

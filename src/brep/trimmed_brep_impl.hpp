@@ -1,0 +1,21 @@
+// The kernel side of TrimmedBrep: the compound of the tows' solids.
+#pragma once
+
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Solid.hxx>
+
+#include <string>
+#include <vector>
+
+#include "towgeom/trimmed_brep.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+
+struct TrimmedBrep::Impl {
+    TopoDS_Compound compound;          // the solids, shared faces shared
+    std::vector<TopoDS_Solid> solids;  // one per tow, in input order
+    std::vector<std::string> names;    // the tows' names
+};
+
+TOWGEOM_END_NAMESPACE
