@@ -615,6 +615,32 @@ TEST_CASE("towgeom resolve --knot-spans: each tow's elements classified in JSON 
     fs::remove_all(out);
 }
 
+TEST_CASE("towgeom resolve --formats step,brep: the exact solids, named, that Gmsh reads; refused where not built", "[cli][resolve][brep]")
+{
+    const fs::path out = scratch("brep");
+    const Run r = cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + out.string() + "' --formats step,brep --quiet");
+    REQUIRE(r.status == 0);
+    const std::string step = testing::slurp(out / "textile.step");
+    CHECK(testing::count(step, "MANIFOLD_SOLID_BREP(") == 2);
+    CHECK(testing::count(step, "MANIFOLD_SOLID_BREP('warp_0'") == 1);
+    CHECK(testing::count(step, "MANIFOLD_SOLID_BREP('weft_0'") == 1);
+    CHECK(testing::slurp(out / "textile.brep").substr(0, 64).find("CASCADE Topology") != std::string::npos);
+    // Gmsh's OpenCASCADE kernel reads it and meshes its faces, without an error.
+    const Run gmsh = testing::runShell("gmsh '" + (out / "textile.step").string() + "' -2 -clmax 0.2 -o '" + (out / "check.msh").string() +
+                                       "' 2>&1");
+    INFO(gmsh.out);
+    CHECK(gmsh.status == 0);
+    CHECK(gmsh.out.find("Error") == std::string::npos);
+    CHECK(fs::file_size(out / "check.msh") > 10000);
+    fs::remove_all(out);
+    // Only the connect method's surfaces are the tows' B-splines: exit 2, nothing written.
+    const Run refused = cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + out.string() +
+                            "' --formats step --method symmetric --quiet");
+    CHECK(refused.status == 2);
+    CHECK(refused.err.find("--method connect") != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+}
+
 TEST_CASE("towgeom resolve --cell DIR/textile.json takes the generator's periodic unit cell", "[cli][resolve][cell]")
 {
     const fs::path gen = scratch("cell_gen"), out = scratch("cell_from_json");

@@ -1,6 +1,7 @@
-// trimmedBrep(): the resolved bundled twill as exact solids, checked by OpenCASCADE itself
-// (BRepCheck_Analyzer on what is read back from the STEP file, BRepGProp volumes) against the
-// tows' exact volumes and resolve's mesh volumes.
+// trimmedBrep(): the resolved bundled twill as exact solids, checked on the files read back by
+// OpenCASCADE (BRepCheck_Analyzer, BRepGProp, the STEP reader's names, faces shared in the BREP)
+// against the tows' exact volumes, an OCCT boolean of the untrimmed tows, resolve's mesh
+// volumes, and meshed by Gmsh from the STEP file.
 #include <catch2/catch.hpp>
 
 #include <towgeom/error.hpp>
@@ -8,12 +9,21 @@
 #include <towgeom/stack_reader.hpp>
 #include <towgeom/trimmed_brep.hpp>
 
+#include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
 #include <string>
 
+#include <unistd.h>
+
+#include "occt_reference.hpp"
+
 using namespace towgeom;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -25,23 +35,103 @@ std::vector<TowSurface> bundledTwill()
     return tows;
 }
 
+fs::path freshDirectory(const std::string& name)
+{
+    const fs::path dir = fs::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+double relative(double a, double b) { return std::abs(a - b) / std::abs(b); }
+
 }  // namespace
 
-TEST_CASE("trimmed B-rep of the bundled twill: valid solids, volumes of the exact tows", "[brep]")
+TEST_CASE("trimmed B-rep of the bundled twill: valid named solids, exact volumes, shared faces, Gmsh meshes the STEP",
+          "[brep]")
 {
     const std::vector<TowSurface> tows = bundledTwill();
     const ResolveResult r = resolveTextile(tows);
+    REQUIRE(r.mesh.regions.size() == 16);
     const TrimmedBrep brep = trimmedBrep(tows, r);
     REQUIRE(brep.solids().size() == tows.size());
+    CHECK(brep.sharedFaceCount() == r.mesh.regions.size());
+    const fs::path dir = freshDirectory("towgeom_brep");
+    const std::string step = (dir / "twill.step").string(), brepFile = (dir / "twill.brep").string();
+    brep.writeStep(step);
+    brep.writeBrep(brepFile);
+    CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 2);  // no temporary left
+
+    // The untrimmed tows (no regions): each pair's overlap by OCCT's boolean, independent of the loops.
+    ResolveResult whole = r;
+    whole.mesh.regions.clear();
+    const std::string wholeFile = (dir / "whole.brep").string();
+    trimmedBrep(tows, whole).writeBrep(wholeFile);
+    std::vector<double> exact(tows.size());
+    for (std::size_t t = 0; t < tows.size(); ++t) exact[t] = tows[t].volume();
+    for (const ConnectedRegion& g : r.mesh.regions) exact[g.secondary] -= testing::commonVolume(wholeFile, g.secondary, g.primary);
+
+    // Volumes from the STEP file; the BREP file for validity and its shared faces.
+    const testing::ReadShapes fromStep = testing::readStep(step), fromBrep = testing::readBrep(brepFile, false);
+    REQUIRE(fromStep.solids.size() == tows.size());
+    REQUIRE(fromBrep.solids.size() == tows.size());
     for (std::size_t t = 0; t < tows.size(); ++t) {
         const BrepSolid& s = brep.solids()[t];
-        INFO(s.name << ": volume " << s.volume << ", exact " << tows[t].volume() << ", mesh " << r.tows[t].volumeAfter << ", faces "
-                    << s.faces << ", shared " << s.sharedFaces << ", tolerance " << s.maxTolerance << ", valid " << s.valid);
+        const testing::ReadSolid &a = fromStep.solids[t], &b = fromBrep.solids[t];
+        INFO(s.name << ": volume " << s.volume << ", read back " << a.volume << " (STEP), exact " << exact[t]
+                    << ", mesh " << r.tows[t].volumeAfter << ", faces " << s.faces << ", shared " << s.sharedFaces
+                    << ", tolerance " << s.maxTolerance);
         CHECK(s.valid);
-        CHECK(std::abs(s.volume - r.tows[t].volumeAfter) <= 5e-3 * r.tows[t].volumeAfter);
-        WARN(s.name << ": volume " << s.volume << ", exact " << tows[t].volume() << ", mesh " << r.tows[t].volumeAfter << ", faces "
-                    << s.faces << ", shared " << s.sharedFaces << ", tolerance " << s.maxTolerance << ", valid " << s.valid);
+        CHECK(a.valid);
+        CHECK(b.valid);
+        CHECK(a.name == tows[t].name());
+        CHECK(relative(s.volume, exact[t]) <= 1e-6);
+        CHECK(relative(a.volume, exact[t]) <= 1e-6);
+        CHECK(relative(s.volume, r.tows[t].volumeAfter) <= 5e-3);
+        CHECK(s.maxTolerance <= 1e-5 * tows[t].towSize());
+        // 4 crossings each: a warp is the primary of 4 regions (its own face inside each loop
+        // shared), a weft the secondary of 4; plus the tube and two caps.
+        CHECK(s.sharedFaces == 4);
+        CHECK(s.faces == 7);
     }
-    brep.writeStep("/tmp/twill.step");
-    brep.writeBrep("/tmp/twill.brep");
+    // In the BREP file each shared face is one face of both solids.
+    std::size_t shared = 0;
+    for (const auto& entry : fromBrep.sharedFaces) {
+        const std::pair<std::size_t, std::size_t> solids = entry.first;
+        const auto region = std::find_if(r.mesh.regions.begin(), r.mesh.regions.end(), [&](const ConnectedRegion& g) {
+            return std::minmax(g.primary, g.secondary) == std::minmax(solids.first, solids.second);
+        });
+        CHECK(region != r.mesh.regions.end());
+        shared += entry.second;
+    }
+    CHECK(shared == r.mesh.regions.size());
+
+    // Gmsh's OpenCASCADE kernel imports the STEP file and meshes every volume.
+    const std::string msh = (dir / "twill.msh").string(), log = (dir / "gmsh.log").string();
+    const std::string command = "gmsh '" + step + "' -3 -clmax 0.2 -format msh4 -o '" + msh + "' > '" + log + "' 2>&1";
+    const int status = std::system(command.c_str());
+    std::ifstream in(log);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    INFO(text.substr(text.size() > 3000 ? text.size() - 3000 : 0));
+    CHECK(status == 0);
+    CHECK(text.find("Error") == std::string::npos);
+    CHECK(fs::exists(msh));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("trimmed B-rep: what is not built yet is refused, naming it", "[brep]")
+{
+    const std::vector<TowSurface> tows = bundledTwill();
+    ResolveOptions o;
+    o.method = ResolutionMethod::Symmetric;
+    const ResolveResult symmetric = resolveTextile(tows, o);
+    try {
+        trimmedBrep(tows, symmetric);
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::Unsupported);
+        CHECK(std::string(e.what()).find("connect") != std::string::npos);
+    }
+    const std::vector<TowSurface> fewer(tows.begin(), tows.begin() + 3);
+    CHECK_THROWS_AS(trimmedBrep(fewer, symmetric), Error);
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <iosfwd>
 #include <memory>
 #include <string>
 #include <vector>
@@ -61,6 +62,11 @@ public:
     /// shared: one face referenced by both solids). Written as writeStep() is.
     /// @throws towgeom::Error (WriteFailed) naming @p path.
     void writeBrep(const std::string& path) const;
+    /// writeStep() to a stream (OpenCASCADE writes STEP to files only: through a temporary file).
+    /// @throws towgeom::Error (WriteFailed) when the temporary file cannot be written or read.
+    void writeStep(std::ostream& out) const;
+    /// writeBrep() to a stream.
+    void writeBrep(std::ostream& out) const;
 
     /// Kernel data (opaque).
     struct Impl;

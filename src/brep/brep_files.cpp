@@ -3,6 +3,9 @@
 // target's directory and renamed into place.
 #include <BRepTools.hxx>
 #include <Interface_Static.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_Printer.hxx>
 #include <STEPCAFControl_Writer.hxx>
 #include <Standard_Failure.hxx>
 #include <TDataStd_Name.hxx>
@@ -13,11 +16,13 @@
 
 #include <unistd.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <mutex>
+#include <vector>
 
 #include "brep/trimmed_brep_impl.hpp"
 #include "towgeom/error.hpp"
@@ -44,6 +49,31 @@ void writeReplacing(const std::string& path, const std::function<bool(const std:
     throw Error(ErrorCode::WriteFailed, ok ? "cannot move the written file into place" : why, path);
 }
 
+/// Silences OCCT's default messenger (the STEP writer prints its statistics to stdout) while it
+/// lives; the printers' levels are restored after.
+class QuietMessenger {
+public:
+    QuietMessenger()
+    {
+        const Message_SequenceOfPrinters& printers = Message::DefaultMessenger()->Printers();
+        for (int k = 1; k <= printers.Length(); ++k) {
+            levels_.push_back(printers(k)->GetTraceLevel());
+            printers(k)->SetTraceLevel(Message_Fail);
+        }
+    }
+    ~QuietMessenger()
+    {
+        const Message_SequenceOfPrinters& printers = Message::DefaultMessenger()->Printers();
+        for (int k = 1; k <= printers.Length() && k <= static_cast<int>(levels_.size()); ++k)
+            printers(k)->SetTraceLevel(levels_[static_cast<std::size_t>(k - 1)]);
+    }
+    QuietMessenger(const QuietMessenger&) = delete;
+    QuietMessenger& operator=(const QuietMessenger&) = delete;
+
+private:
+    std::vector<Message_Gravity> levels_;
+};
+
 /// Interface_Static is process-wide: one STEP writer at a time.
 std::mutex& stepMutex()
 {
@@ -51,31 +81,36 @@ std::mutex& stepMutex()
     return m;
 }
 
+/// Writes @p impl's compound as STEP to @p file; false when OCCT could not.
+bool writeStepFile(const TrimmedBrep::Impl& impl, const std::string& file)
+{
+    const std::lock_guard<std::mutex> lock(stepMutex());
+    const QuietMessenger quiet;
+    Handle(TDocStd_Document) doc;
+    XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", doc);
+    const Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+    // One shape (the compound, not an assembly) whose sub-shapes, the solids, carry names.
+    const TDF_Label root = shapes->AddShape(impl.compound, Standard_False);
+    TDataStd_Name::Set(root, "textile");
+    for (std::size_t k = 0; k < impl.solids.size(); ++k) {
+        const TDF_Label sub = shapes->AddSubShape(root, impl.solids[k]);
+        if (!sub.IsNull()) TDataStd_Name::Set(sub, TCollection_ExtendedString(impl.names[k].c_str(), Standard_True));
+    }
+    STEPCAFControl_Writer writer;  // first: it registers the parameters set below
+    Interface_Static::SetCVal("write.step.schema", "AP214IS");
+    Interface_Static::SetIVal("write.stepcaf.subshapes.name", 1);
+    writer.SetNameMode(Standard_True);
+    const bool ok = writer.Transfer(doc, STEPControl_AsIs) && writer.Write(file.c_str()) == IFSelect_RetDone;
+    Interface_Static::SetIVal("write.stepcaf.subshapes.name", 0);
+    XCAFApp_Application::GetApplication()->Close(doc);
+    return ok;
+}
+
 }  // namespace
 
 void TrimmedBrep::writeStep(const std::string& path) const
 {
-    writeReplacing(path, [&](const std::string& file) {
-        const std::lock_guard<std::mutex> lock(stepMutex());
-        Handle(TDocStd_Document) doc;
-        XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", doc);
-        const Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
-        // One shape (the compound, not an assembly) whose sub-shapes, the solids, carry names.
-        const TDF_Label root = shapes->AddShape(impl_->compound, Standard_False);
-        TDataStd_Name::Set(root, "textile");
-        for (std::size_t k = 0; k < impl_->solids.size(); ++k) {
-            const TDF_Label sub = shapes->AddSubShape(root, impl_->solids[k]);
-            if (!sub.IsNull()) TDataStd_Name::Set(sub, TCollection_ExtendedString(impl_->names[k].c_str(), Standard_True));
-        }
-        Interface_Static::SetCVal("write.step.schema", "AP214IS");
-        Interface_Static::SetIVal("write.stepcaf.subshapes.name", 1);
-        STEPCAFControl_Writer writer;
-        writer.SetNameMode(Standard_True);
-        const bool ok = writer.Transfer(doc, STEPControl_AsIs) && writer.Write(file.c_str()) == IFSelect_RetDone;
-        Interface_Static::SetIVal("write.stepcaf.subshapes.name", 0);
-        XCAFApp_Application::GetApplication()->Close(doc);
-        return ok;
-    });
+    writeReplacing(path, [&](const std::string& file) { return writeStepFile(*impl_, file); });
 }
 
 void TrimmedBrep::writeBrep(const std::string& path) const
@@ -83,10 +118,35 @@ void TrimmedBrep::writeBrep(const std::string& path) const
     writeReplacing(path, [&](const std::string& file) {
         std::ofstream out(file, std::ios::binary);
         if (!out) return false;
-        BRepTools::Write(impl_->compound, out);
+        writeBrep(out);
         out.close();
         return static_cast<bool>(out);
     });
 }
+
+void TrimmedBrep::writeStep(std::ostream& out) const
+{
+    const std::string file =
+        (std::filesystem::temp_directory_path() / ("towgeom-" + std::to_string(::getpid()) + "-" +
+                                                   std::to_string(reinterpret_cast<std::uintptr_t>(this)) + ".step"))
+            .string();
+    bool ok = false;
+    std::string why = "cannot write a temporary STEP file";
+    try {
+        ok = writeStepFile(*impl_, file);
+    } catch (const Standard_Failure& e) {
+        why = std::string("OpenCASCADE failed writing STEP: ") + e.GetMessageString();
+    }
+    if (ok) {
+        std::ifstream in(file, std::ios::binary);
+        out << in.rdbuf();
+        ok = static_cast<bool>(in) && static_cast<bool>(out);
+        why = "cannot copy the temporary STEP file " + file;
+    }
+    std::remove(file.c_str());
+    if (!ok) throw Error(ErrorCode::WriteFailed, why);
+}
+
+void TrimmedBrep::writeBrep(std::ostream& out) const { BRepTools::Write(impl_->compound, out); }
 
 TOWGEOM_END_NAMESPACE

@@ -109,12 +109,12 @@ double seamOf(const std::vector<TowSurface>& tows, const std::vector<Intersectio
     return bestSeam;
 }
 
-/// The loop's points on @p side with v moved by whole periods into (seam, seam + period).
-std::vector<UV> uvOn(const IntersectionLoop& l, LoopSide side, double seam, double period)
+/// The (u,v) of @p points on @p side with v moved by whole periods into (seam, seam + period).
+std::vector<UV> uvOn(const std::vector<LoopPoint>& points, LoopSide side, double seam, double period)
 {
     std::vector<UV> uv;
-    uv.reserve(l.points().size());
-    for (const LoopPoint& p : l.points()) uv.push_back(sideOf(p, side));
+    uv.reserve(points.size());
+    for (const LoopPoint& p : points) uv.push_back(sideOf(p, side));
     double lo = 1e300;
     for (const UV& x : uv) lo = std::min(lo, x.v);
     const double shift = period * std::floor((lo - seam) / period);
@@ -122,13 +122,19 @@ std::vector<UV> uvOn(const IntersectionLoop& l, LoopSide side, double seam, doub
     return uv;
 }
 
-/// The edge of closed loop @p l: a periodic B-spline through its points with chord-length
-/// parameters, and on each tow a periodic B-spline through its (u,v) points at the same
-/// parameters, v in that tow's seam period.
+/// Exact points of a loop per point it has, for its edge's curves: cubic interpolation through
+/// the loop's own points (spaced for the chordal tolerance) strays ~1e-6 of the tow size from the
+/// surfaces; through four times as many, ~250 times less. (Approximated curves with fewer poles
+/// are not periodic, and OCCT's STEP reader heals their faces into pieces.)
+constexpr double kEdgeDensity = 2.0;
+
+/// The edge of closed loop @p l: a periodic B-spline through its exact points (kEdgeDensity per
+/// point of the loop) with chord-length parameters, and on each tow a periodic B-spline through
+/// their (u,v) at the same parameters, v in that tow's seam period; made same-parameter by OCCT.
 TopoDS_Edge loopEdge(const IntersectionLoop& l, const Handle(Geom_BSplineSurface)& sa, double seamA, double periodA,
                      const Handle(Geom_BSplineSurface)& sb, double seamB, double periodB, double tolerance)
 {
-    const std::vector<LoopPoint>& p = l.points();
+    const std::vector<LoopPoint> p = l.resample(l.length() / (kEdgeDensity * static_cast<double>(l.points().size())));
     const int n = static_cast<int>(p.size());
     Handle(TColgp_HArray1OfPnt) pts = new TColgp_HArray1OfPnt(1, n);
     Handle(TColStd_HArray1OfReal) params = new TColStd_HArray1OfReal(1, n + 1);
@@ -144,7 +150,7 @@ TopoDS_Edge loopEdge(const IntersectionLoop& l, const Handle(Geom_BSplineSurface
     curve.Perform();
     if (!curve.IsDone()) throw Error(ErrorCode::Internal, "OpenCASCADE could not interpolate the loop's points");
     const auto pcurve = [&](LoopSide side, double seam, double period) {
-        const std::vector<UV> uv = uvOn(l, side, seam, period);
+        const std::vector<UV> uv = uvOn(p, side, seam, period);
         Handle(TColgp_HArray1OfPnt2d) q = new TColgp_HArray1OfPnt2d(1, n);
         for (int k = 0; k < n; ++k) q->SetValue(k + 1, gp_Pnt2d(uv[static_cast<std::size_t>(k)].u, uv[static_cast<std::size_t>(k)].v));
         Geom2dAPI_Interpolate c(q, params, Standard_True, 1e-12);
@@ -165,6 +171,8 @@ TopoDS_Edge loopEdge(const IntersectionLoop& l, const Handle(Geom_BSplineSurface
     b.Range(e, sa, TopLoc_Location(), 0.0, s);
     b.Range(e, sb, TopLoc_Location(), 0.0, s);
     e.Closed(Standard_True);
+    // The builder marks a new edge same-parameter: unmark it, so that OCCT checks the curves
+    // against each other and sets the tolerance they need.
     b.SameParameter(e, Standard_False);
     b.SameRange(e, Standard_False);
     BRepLib::SameParameter(e, tolerance);
@@ -298,6 +306,22 @@ TopoDS_Face capFace(const Handle(Geom_BSplineSurface)& s, double u, double v0, d
     return face;
 }
 
+/// A face's share of its solid's volume (divergence theorem about @p origin, the sign of its
+/// orientation) and its area, by OCCT's adaptive Gauss integration (BRepGProp).
+struct Measure {
+    double volume = 0.0;
+    double area = 0.0;
+};
+
+Measure measure(const TopoDS_Face& face, const gp_Pnt& origin)
+{
+    constexpr double kEps = 1e-8;  // relative error of the integrals
+    GProp_GProps v(origin), a(origin);
+    BRepGProp::VolumeProperties(face, v, kEps);
+    BRepGProp::SurfaceProperties(face, a, kEps);
+    return {v.Mass(), a.Mass()};
+}
+
 /// The largest tolerance of @p shape's edges and vertices.
 double maxToleranceOf(const TopoDS_Shape& shape)
 {
@@ -404,7 +428,7 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
             for (std::size_t j = i + 1; j < on[t].size(); ++j) {
                 const IntersectionLoop &a = loops[on[t][i].loop], &b = loops[on[t][j].loop];
                 if (a.towA() == b.towA() && a.towB() == b.towB()) continue;  // holes of one region: nested by design
-                if (overlapInUv(uvOn(a, on[t][i].side, seam[t], period), uvOn(b, on[t][j].side, seam[t], period)))
+                if (overlapInUv(uvOn(a.points(), on[t][i].side, seam[t], period), uvOn(b.points(), on[t][j].side, seam[t], period)))
                     throw Error(ErrorCode::Unsupported, "on tow '" + tows[t].name() + "' the loops of " + pairName(tows, a) + " and of " +
                                                             pairName(tows, b) + " overlap (three tows overlap there): not built as a "
                                                             "trimmed B-rep yet");
@@ -454,18 +478,37 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
             const ParameterRange pr = tow.parameterRange();
             TopoDS_Edge rims[2];
             TopoDS_Face face = tubeFace(s, pr, seam[t], tolerance, rims);
+            // The solid's volume and area, face by face: the whole tow closed by its caps (its exact
+            // volume and area, TowSurface's own integrals) less the disc inside each outer loop on
+            // it, plus the faces inside loops (shared faces, islands); those by OCCT's adaptive
+            // integration on small faces (over the tube's face with the loops as holes it takes
+            // OCCT seconds per tow).
+            const BoundingBox box = tow.boundingBox();
+            const gp_Pnt origin = detail::toOcct(0.5 * (box.min + box.max));
+            Measure total{tow.volume(), tow.area()};
             for (const LoopOnTow& x : on[t]) {
                 const bool outer = std::any_of(r.mesh.regions.begin(), r.mesh.regions.end(),
                                                [&](const ConnectedRegion& g) { return g.loop == x.loop; });
-                if (outer) b.Add(face, wire(x.loop, t, false));  // islands lie inside an outer loop
+                if (!outer) continue;  // islands lie inside an outer loop
+                b.Add(face, wire(x.loop, t, false));
+                const Measure disc = measure(insideFace(s, wire(x.loop, t, true), {}, tolerance), origin);
+                total.volume -= disc.volume;
+                total.area -= disc.area;
             }
             b.NaturalRestriction(face, Standard_False);
             loopCount[t] = on[t].size();
+            for (const TopoDS_Face& f : faces[t]) {  // shared faces and islands
+                const Measure m = measure(f, origin);
+                total.volume += m.volume;
+                total.area += m.area;
+            }
             faces[t].push_back(face);
-            faces[t].push_back(capFace(s, pr.uMin, seam[t], pr.vPeriod(), rims[0], outwardAtEnd(s, pr.uMin, pr.vMin, pr.vPeriod(), true),
-                                       tow.towSize(), tow.name(), "first"));
-            faces[t].push_back(capFace(s, pr.uMax, seam[t], pr.vPeriod(), rims[1], outwardAtEnd(s, pr.uMax, pr.vMin, pr.vPeriod(), false),
-                                       tow.towSize(), tow.name(), "last"));
+            for (int k = 0; k < 2; ++k) {
+                const double u = k == 0 ? pr.uMin : pr.uMax;
+                faces[t].push_back(capFace(s, u, seam[t], pr.vPeriod(), rims[k], outwardAtEnd(s, u, pr.vMin, pr.vPeriod(), k == 0),
+                                           tow.towSize(), tow.name(), k == 0 ? "first" : "last"));
+                total.area += measure(faces[t].back(), origin).area;
+            }
             TopoDS_Shell shell;
             b.MakeShell(shell);
             for (const TopoDS_Face& f : faces[t]) b.Add(shell, f);
@@ -479,11 +522,8 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
 
             BrepSolid& out = solids[t];
             out.name = tow.name();
-            GProp_GProps vp, sp;
-            BRepGProp::VolumeProperties(solid, vp, 1e-9, Standard_True);
-            BRepGProp::SurfaceProperties(solid, sp, 1e-9);
-            out.volume = vp.Mass();
-            out.area = sp.Mass();
+            out.volume = total.volume;
+            out.area = total.area;
             out.faces = faces[t].size();
             out.sharedFaces = shared[t];
             out.loops = loopCount[t];

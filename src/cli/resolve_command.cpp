@@ -44,6 +44,10 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
   DIR/textile.msh  with --formats msh: Gmsh 4.1, physical groups TOW_NAME, REGION_k and
                    CAPS_NAME (a tow's two end caps); with --cell also XMIN ... ZMAX (every
                    triangle on each box face: the matrix's and the tows' caps)
+  DIR/textile.step with --formats step: STEP AP214, one solid per tow named after it (for
+                   CAD-based FE tools: Abaqus/CAE, ANSYS, Gmsh's OpenCASCADE kernel); your
+                   units written as millimetres. DIR/textile.brep with --formats brep: the
+                   same in OpenCASCADE's BREP, where shared faces stay one face of both solids
   DIR/textile.inp  with --formats inp: Abaqus, *NODE, *ELEMENT TYPE=S3 with ELSET=TOW_NAME,
                    *ELSET/*NSET REGION_k, *ELSET CAPS_NAME; with --cell also *ELSET
                    MATRIX_FACES (the box's faces outside the tows) and *NSET XMIN ... ZMAX
@@ -131,7 +135,10 @@ Options:
   --min-angle DEG    smallest triangle angle the mesher aims for, at most 30 (default 20)
   --loop-spacing S   node spacing along intersection loops (default: the smaller mesh size of
                      the loop's two tows)
-  --formats LIST     comma-separated from stl,vtk,msh,inp (default stl,vtk)
+  --formats LIST     comma-separated from stl,vtk,msh,inp,step,brep (default stl,vtk); step
+                     and brep are the exact solids (--method connect, no --cell): each tow's
+                     B-spline face trimmed by its loops, the faces two tows share one face of
+                     both, planar caps (see DIR/textile.step below)
   --tolerance T      intersection point tolerance (default: 1e-7 x the tow size)
   --report FILE      take the intersection loops from FILE, written by 'towgeom detect
                      --save-report FILE' for the same tows in the same order, instead of
@@ -285,11 +292,11 @@ std::set<std::string> parseFormats(const std::optional<std::string>& text)
     std::set<std::string> formats;
     std::stringstream in(text ? *text : std::string("stl,vtk"));
     for (std::string f; std::getline(in, f, ',');) {
-        if (f != "stl" && f != "vtk" && f != "msh" && f != "inp")
-            throw UsageError("--formats takes stl, vtk, msh and inp, comma-separated, not '" + f + "'");
+        if (f != "stl" && f != "vtk" && f != "msh" && f != "inp" && f != "step" && f != "brep")
+            throw UsageError("--formats takes stl, vtk, msh, inp, step and brep, comma-separated, not '" + f + "'");
         formats.insert(f);
     }
-    if (formats.empty()) throw UsageError("--formats needs at least one of stl, vtk, msh, inp");
+    if (formats.empty()) throw UsageError("--formats needs at least one of stl, vtk, msh, inp, step, brep");
     return formats;
 }
 
@@ -344,6 +351,11 @@ int runResolve(int argc, char** argv, int first)
         }
         if (volume && !options.mesh.caps) throw UsageError("--volume needs closed tows: drop --no-caps");
         const std::set<std::string> formats = parseFormats(args.value("formats"));
+        const bool exact = formats.count("step") || formats.count("brep");
+        if (exact && options.method != ResolutionMethod::Connect)
+            throw UsageError("--formats step and brep are built for --method connect only (the other methods' surfaces are not "
+                             "faces of the input tows' B-splines)");
+        if (exact && options.cell) throw UsageError("--formats step and brep are not built for tows clipped to a --cell yet");
         const bool quiet = args.has("quiet");
         ProgressPrinter printer("resolve", quiet);
         options.monitor = &printer;
@@ -402,6 +414,13 @@ int runResolve(int argc, char** argv, int first)
             volumeMs = msSince(t0);
         }
 
+        std::optional<TrimmedBrep> brep;  // the exact solids (--formats step, brep)
+        if (exact) {
+            printer.update("building the trimmed B-rep (OpenCASCADE)", 0, 1);
+            brep = trimmedBrep(tows, result);
+            printer.update("building the trimmed B-rep (OpenCASCADE)", 1, 1);
+        }
+
         // Everything is computed before anything is written.
         t0 = std::chrono::steady_clock::now();
         const std::vector<UnresolvedPairEntry> unresolved = unresolvedPairs(result);
@@ -432,6 +451,8 @@ int runResolve(int argc, char** argv, int first)
             }
         });
         if (formats.count("msh")) writeGmsh(mesh, files.open(path("textile.msh")));
+        if (formats.count("step")) brep->writeStep(files.open(path("textile.step")));
+        if (formats.count("brep")) brep->writeBrep(files.open(path("textile.brep")));
         if (formats.count("inp")) writeAbaqus(mesh, files.open(path("textile.inp")));
         if (volume) writeGmsh(mesh, volumes, files.open(path("textile_volume.msh")));
         if (volume && formats.count("inp")) writeAbaqus(mesh, volumes, files.open(path("textile_volume.inp")));

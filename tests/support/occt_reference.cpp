@@ -1,0 +1,107 @@
+#include "occt_reference.hpp"
+
+#include <BRepAlgoAPI_Common.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepGProp.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <GProp_GProps.hxx>
+#include <Interface_Static.hxx>
+#include <STEPCAFControl_Reader.hxx>
+#include <TCollection_AsciiString.hxx>
+#include <TDF_ChildIterator.hxx>
+#include <TDF_LabelSequence.hxx>
+#include <TDataStd_Name.hxx>
+#include <TDocStd_Document.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
+
+#include <stdexcept>
+
+namespace towgeom::testing {
+
+namespace {
+
+ReadShapes describe(const TopoDS_Shape& shape, const std::vector<std::pair<TopoDS_Shape, std::string>>& names, bool volumes)
+{
+    ReadShapes r;
+    std::vector<TopoDS_Shape> solids;
+    for (TopExp_Explorer x(shape, TopAbs_SOLID); x.More(); x.Next()) solids.push_back(x.Current());
+    std::vector<TopTools_IndexedMapOfShape> faces(solids.size());
+    for (std::size_t k = 0; k < solids.size(); ++k) {
+        ReadSolid s;
+        for (const auto& [named, name] : names)
+            if (named.IsSame(solids[k])) s.name = name;
+        s.valid = BRepCheck_Analyzer(solids[k]).IsValid();
+        if (volumes) {
+            GProp_GProps p;
+            BRepGProp::VolumeProperties(solids[k], p, 1e-7, Standard_True);
+            s.volume = p.Mass();
+        }
+        TopExp::MapShapes(solids[k], TopAbs_FACE, faces[k]);
+        s.faces = static_cast<std::size_t>(faces[k].Extent());
+        r.solids.push_back(s);
+    }
+    for (std::size_t i = 0; i < solids.size(); ++i)
+        for (std::size_t j = i + 1; j < solids.size(); ++j) {
+            std::size_t n = 0;
+            for (int k = 1; k <= faces[i].Extent(); ++k) n += faces[j].Contains(faces[i](k)) ? 1 : 0;
+            if (n > 0) r.sharedFaces.push_back({{i, j}, n});
+        }
+    return r;
+}
+
+TopoDS_Shape brepShape(const std::string& path)
+{
+    TopoDS_Shape shape;
+    BRep_Builder b;
+    if (!BRepTools::Read(shape, path.c_str(), b)) throw std::runtime_error("cannot read BREP " + path);
+    return shape;
+}
+
+}  // namespace
+
+ReadShapes readStep(const std::string& path)
+{
+    Handle(TDocStd_Document) doc;
+    XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", doc);
+    STEPCAFControl_Reader reader;  // first: it registers the parameter set below
+    Interface_Static::SetIVal("read.stepcaf.subshapes.name", 1);
+    reader.SetNameMode(Standard_True);
+    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone || !reader.Transfer(doc))
+        throw std::runtime_error("cannot read STEP " + path);
+    const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+    TDF_LabelSequence free;
+    tool->GetFreeShapes(free);
+    if (free.Length() != 1) throw std::runtime_error("STEP " + path + ": not one top-level shape");
+    std::vector<std::pair<TopoDS_Shape, std::string>> names;
+    for (TDF_ChildIterator it(free.Value(1), Standard_True); it.More(); it.Next()) {
+        Handle(TDataStd_Name) n;
+        if (!it.Value().FindAttribute(TDataStd_Name::GetID(), n)) continue;
+        names.push_back({tool->GetShape(it.Value()), TCollection_AsciiString(n->Get()).ToCString()});
+    }
+    const ReadShapes r = describe(tool->GetShape(free.Value(1)), names, true);
+    XCAFApp_Application::GetApplication()->Close(doc);
+    return r;
+}
+
+ReadShapes readBrep(const std::string& path, bool volumes) { return describe(brepShape(path), {}, volumes); }
+
+double commonVolume(const std::string& path, std::size_t i, std::size_t j)
+{
+    const TopoDS_Shape shape = brepShape(path);
+    std::vector<TopoDS_Shape> solids;
+    for (TopExp_Explorer x(shape, TopAbs_SOLID); x.More(); x.Next()) solids.push_back(x.Current());
+    BRepAlgoAPI_Common common(solids.at(i), solids.at(j));
+    if (!common.IsDone()) throw std::runtime_error("BRepAlgoAPI_Common failed");
+    GProp_GProps p;
+    BRepGProp::VolumeProperties(common.Shape(), p, 1e-7, Standard_True);
+    return p.Mass();
+}
+
+}  // namespace towgeom::testing

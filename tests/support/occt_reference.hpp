@@ -1,0 +1,37 @@
+// Independent references for the tests, computed by OpenCASCADE on files read back (not with
+// the code that wrote them): the solids of a STEP or BREP file, their validity, volumes and
+// names, the faces two solids share, and the volumes of their pairwise overlaps (OCCT booleans).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace towgeom::testing {
+
+/// One solid read back.
+struct ReadSolid {
+    std::string name;      ///< its name in the file (STEP: the representation item's name), or empty
+    bool valid = false;    ///< BRepCheck_Analyzer accepts it
+    double volume = 0.0;   ///< BRepGProp, relative precision 1e-7
+    std::size_t faces = 0;  ///< faces of its shells
+};
+
+/// What a STEP or BREP file holds.
+struct ReadShapes {
+    std::vector<ReadSolid> solids;  ///< in the file's order
+    /// Pairs of solids (indices) with a face in common (the same face, TopoDS IsSame), and how many.
+    std::vector<std::pair<std::pair<std::size_t, std::size_t>, std::size_t>> sharedFaces;
+};
+
+/// Reads @p path with OCCT's STEP reader (XDE, names of sub-shapes on).
+ReadShapes readStep(const std::string& path);
+/// Reads @p path with OCCT's BREP reader; volumes only when @p volumes (seconds per trimmed
+/// solid), else 0.
+ReadShapes readBrep(const std::string& path, bool volumes = true);
+/// The volume of the common part of solids @p i and @p j of the BREP file @p path
+/// (BRepAlgoAPI_Common).
+double commonVolume(const std::string& path, std::size_t i, std::size_t j);
+
+}  // namespace towgeom::testing
