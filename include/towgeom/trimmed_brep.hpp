@@ -34,8 +34,11 @@ struct BrepOptions {
 /// One resolved tow as a solid.
 struct BrepSolid {
     std::string name;           ///< the tow's name
-    double volume = 0.0;        ///< the solid's volume (OpenCASCADE's BRepGProp, exact to ~1e-9 relative)
-    double area = 0.0;          ///< the area of its boundary
+    /// The solid's volume: the tow's exact volume (TowSurface::volume()) less, inside each of its
+    /// loops, the part of its surface's share there plus the share of the faces that replace it
+    /// (OpenCASCADE's BRepGProp on those faces, 1e-9 relative).
+    double volume = 0.0;
+    double area = 0.0;          ///< the area of its boundary (computed as the volume is)
     std::size_t faces = 0;      ///< faces of its shell: its own (tube pieces, caps) and the shared ones
     std::size_t sharedFaces = 0;  ///< faces it shares with another tow's solid (the same face in both)
     std::size_t loops = 0;      ///< intersection loops on its boundary (trimming curves)
