@@ -615,7 +615,7 @@ TEST_CASE("towgeom resolve --knot-spans: each tow's elements classified in JSON 
     fs::remove_all(out);
 }
 
-TEST_CASE("towgeom resolve --formats step,brep: the exact solids, named, that Gmsh reads; refused where not built", "[cli][resolve][brep]")
+TEST_CASE("towgeom resolve --formats step,brep: the exact solids, named, that Gmsh reads, refused where not built", "[cli][resolve][brep]")
 {
     const fs::path out = scratch("brep");
     const Run r = cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + out.string() + "' --formats step,brep --quiet");

@@ -21,6 +21,7 @@
 #include <unistd.h>
 
 #include "occt_reference.hpp"
+#include "synthetic_tows.hpp"
 
 using namespace towgeom;
 namespace fs = std::filesystem;
@@ -116,6 +117,46 @@ TEST_CASE("trimmed B-rep of the bundled twill: valid named solids, exact volumes
     CHECK(status == 0);
     CHECK(text.find("Error") == std::string::npos);
     CHECK(fs::exists(msh));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("trimmed B-rep of a ring-shaped overlap: the island is a face of both tows, the ring shared", "[brep][nested]")
+{
+    // A round tube over a dented one: an outer loop with an island loop inside it (test_resolve_scans).
+    testing::Sampling along, across;
+    along.sections = 41;
+    along.points = 64;
+    across.sections = 161;
+    across.points = 64;
+    const std::vector<TowSurface> tows = {TowSurface::fit(testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, along, "x")),
+                                          TowSurface::fit(testing::dentedTubeAlongY(0.4, 0.82, 0.15, 0.12, across, "y"))};
+    const ResolveResult r = resolveTextile(tows);
+    REQUIRE(r.mesh.regions.size() == 1);
+    REQUIRE(r.mesh.regions[0].holes.size() == 1);
+    const TrimmedBrep brep = trimmedBrep(tows, r);
+    const fs::path dir = freshDirectory("towgeom_brep_ring");
+    const std::string file = (dir / "ring.brep").string(), whole = (dir / "whole.brep").string();
+    brep.writeBrep(file);
+    ResolveResult untrimmed = r;
+    untrimmed.mesh.regions.clear();
+    trimmedBrep(tows, untrimmed).writeBrep(whole);
+    const double overlap = testing::commonVolume(whole, 0, 1);
+    const testing::ReadShapes back = testing::readBrep(file);
+    REQUIRE(back.solids.size() == 2);
+    for (std::size_t t = 0; t < 2; ++t) {
+        const BrepSolid& s = brep.solids()[t];
+        const double exact = tows[t].volume() - (t == 1 ? overlap : 0.0);
+        INFO(s.name << ": volume " << s.volume << ", read back " << back.solids[t].volume << ", exact " << exact << ", overlap "
+                    << overlap << ", faces " << s.faces);
+        CHECK(s.valid);
+        CHECK(back.solids[t].valid);
+        CHECK(relative(s.volume, exact) <= 1e-6);
+        CHECK(relative(back.solids[t].volume, exact) <= 1e-6);
+        CHECK(s.faces == 5);  // the tube with a hole, the ring (shared), the island, two caps
+        CHECK(s.loops == 2);
+    }
+    REQUIRE(back.sharedFaces.size() == 1);
+    CHECK(back.sharedFaces[0].second == 1);
     fs::remove_all(dir);
 }
 

@@ -34,9 +34,9 @@ struct BrepOptions {
 /// One resolved tow as a solid.
 struct BrepSolid {
     std::string name;           ///< the tow's name
-    /// The solid's volume: the tow's exact volume (TowSurface::volume()) less, inside each of its
-    /// loops, the part of its surface's share there plus the share of the faces that replace it
-    /// (OpenCASCADE's BRepGProp on those faces, 1e-9 relative).
+    /// The solid's volume: the tow's exact volume (TowSurface::volume()) changed by what its
+    /// loops cut out and put in (OpenCASCADE's BRepGProp over the faces inside the loops, 1e-9
+    /// relative).
     double volume = 0.0;
     double area = 0.0;          ///< the area of its boundary (computed as the volume is)
     std::size_t faces = 0;      ///< faces of its shell: its own (tube pieces, caps) and the shared ones
@@ -95,7 +95,12 @@ private:
 /// - its two planar end caps (the end sections' planes).
 /// Each loop is one edge: a periodic B-spline through its points (chord-length parameters) with a
 /// periodic B-spline curve through its (u,v) points on each of the two surfaces, made same-
-/// parameter by OpenCASCADE.
+/// parameter by OpenCASCADE. BrepSolid::valid says whether OpenCASCADE's checker accepts each
+/// solid (check it before you hand the file on).
+///
+/// Tow pairs resolveTextile() left unresolved (ResolveResult::unresolved) and loops it skipped
+/// (ResolveResult::skippedLoops) are not trimmed here either: those tows' solids overlap there,
+/// as their meshes do.
 ///
 /// @code
 /// const towgeom::ResolveResult r = towgeom::resolveTextile(tows);
@@ -109,7 +114,8 @@ private:
 ///         naming the tow or tow pair for what this version does not build yet: other methods
 ///         than Connect, a cell (ResolveOptions::cell), triple points, a loop that winds around a
 ///         tow or runs across an end cap, loops of two regions that overlap on one tow (a third
-///         tow), an end section that is not planar; (Internal) if OpenCASCADE fails.
+///         tow), a region inside another's island, loops that leave no v around a tow free for
+///         its face's seam, an end section that is not planar; (Internal) if OpenCASCADE fails.
 TOWGEOM_EXPORT TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult& resolved,
                                        const BrepOptions& options = {});
 

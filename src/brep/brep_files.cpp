@@ -16,8 +16,8 @@
 
 #include <unistd.h>
 
-#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -32,17 +32,31 @@ TOWGEOM_BEGIN_NAMESPACE
 
 namespace {
 
+/// A new empty file named @p prefix + 6 random characters + @p suffix (mkstemps: no other
+/// writer, thread or process, gets the same name); its name.
+std::string uniqueFile(const std::string& prefix, const std::string& suffix)
+{
+    std::string name = prefix + "XXXXXX" + suffix;
+    const int fd = ::mkstemps(name.data(), static_cast<int>(suffix.size()));
+    if (fd < 0) throw Error(ErrorCode::WriteFailed, "cannot create a temporary file", prefix + "XXXXXX" + suffix);
+    ::close(fd);
+    return name;
+}
+
 /// Writes @p path through @p write (given a temporary path next to it), then renames the
 /// temporary into place; on any failure the temporary is removed and nothing is left.
 void writeReplacing(const std::string& path, const std::function<bool(const std::string&)>& write)
 {
-    const std::string temporary = path + ".towgeom-" + std::to_string(::getpid()) + ".tmp";
+    const std::string temporary = uniqueFile(path + ".towgeom-", ".tmp");
     bool ok = false;
     std::string why = "write failed";
     try {
         ok = write(temporary);
     } catch (const Standard_Failure& e) {
         why = std::string("OpenCASCADE failed writing it: ") + e.GetMessageString();
+    } catch (...) {
+        std::remove(temporary.c_str());
+        throw;
     }
     if (ok && std::rename(temporary.c_str(), path.c_str()) == 0) return;
     std::remove(temporary.c_str());
@@ -81,14 +95,47 @@ std::mutex& stepMutex()
     return m;
 }
 
+/// The STEP writer's process-wide parameters this file sets, restored when it goes.
+class StepParameters {
+public:
+    StepParameters() : schema_(Interface_Static::CVal("write.step.schema")), names_(Interface_Static::IVal("write.stepcaf.subshapes.name"))
+    {
+        Interface_Static::SetCVal("write.step.schema", "AP214IS");
+        Interface_Static::SetIVal("write.stepcaf.subshapes.name", 1);
+    }
+    ~StepParameters()
+    {
+        Interface_Static::SetCVal("write.step.schema", schema_.c_str());
+        Interface_Static::SetIVal("write.stepcaf.subshapes.name", names_);
+    }
+    StepParameters(const StepParameters&) = delete;
+    StepParameters& operator=(const StepParameters&) = delete;
+
+private:
+    std::string schema_;
+    int names_;
+};
+
+/// An XDE document, closed when it goes.
+class XdeDocument {
+public:
+    XdeDocument() { XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", doc_); }
+    ~XdeDocument() { XCAFApp_Application::GetApplication()->Close(doc_); }
+    XdeDocument(const XdeDocument&) = delete;
+    XdeDocument& operator=(const XdeDocument&) = delete;
+    const Handle(TDocStd_Document)& get() const { return doc_; }
+
+private:
+    Handle(TDocStd_Document) doc_;
+};
+
 /// Writes @p impl's compound as STEP to @p file; false when OCCT could not.
 bool writeStepFile(const TrimmedBrep::Impl& impl, const std::string& file)
 {
     const std::lock_guard<std::mutex> lock(stepMutex());
     const QuietMessenger quiet;
-    Handle(TDocStd_Document) doc;
-    XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", doc);
-    const Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+    const XdeDocument doc;
+    const Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc.get()->Main());
     // One shape (the compound, not an assembly) whose sub-shapes, the solids, carry names.
     const TDF_Label root = shapes->AddShape(impl.compound, Standard_False);
     TDataStd_Name::Set(root, "textile");
@@ -96,14 +143,10 @@ bool writeStepFile(const TrimmedBrep::Impl& impl, const std::string& file)
         const TDF_Label sub = shapes->AddSubShape(root, impl.solids[k]);
         if (!sub.IsNull()) TDataStd_Name::Set(sub, TCollection_ExtendedString(impl.names[k].c_str(), Standard_True));
     }
-    STEPCAFControl_Writer writer;  // first: it registers the parameters set below
-    Interface_Static::SetCVal("write.step.schema", "AP214IS");
-    Interface_Static::SetIVal("write.stepcaf.subshapes.name", 1);
+    STEPCAFControl_Writer writer;  // first: it registers the parameters set next
+    const StepParameters parameters;
     writer.SetNameMode(Standard_True);
-    const bool ok = writer.Transfer(doc, STEPControl_AsIs) && writer.Write(file.c_str()) == IFSelect_RetDone;
-    Interface_Static::SetIVal("write.stepcaf.subshapes.name", 0);
-    XCAFApp_Application::GetApplication()->Close(doc);
-    return ok;
+    return writer.Transfer(doc.get(), STEPControl_AsIs) && writer.Write(file.c_str()) == IFSelect_RetDone;
 }
 
 }  // namespace
@@ -126,27 +169,35 @@ void TrimmedBrep::writeBrep(const std::string& path) const
 
 void TrimmedBrep::writeStep(std::ostream& out) const
 {
-    const std::string file =
-        (std::filesystem::temp_directory_path() / ("towgeom-" + std::to_string(::getpid()) + "-" +
-                                                   std::to_string(reinterpret_cast<std::uintptr_t>(this)) + ".step"))
-            .string();
+    const std::string file = uniqueFile((std::filesystem::temp_directory_path() / "towgeom-").string(), ".step");
     bool ok = false;
-    std::string why = "cannot write a temporary STEP file";
+    std::string why = "cannot write a temporary STEP file " + file;
     try {
         ok = writeStepFile(*impl_, file);
     } catch (const Standard_Failure& e) {
         why = std::string("OpenCASCADE failed writing STEP: ") + e.GetMessageString();
+    } catch (...) {
+        std::remove(file.c_str());
+        throw;
     }
     if (ok) {
         std::ifstream in(file, std::ios::binary);
         out << in.rdbuf();
         ok = static_cast<bool>(in) && static_cast<bool>(out);
-        why = "cannot copy the temporary STEP file " + file;
+        why = "cannot copy the temporary STEP file " + file + " to the stream";
     }
     std::remove(file.c_str());
     if (!ok) throw Error(ErrorCode::WriteFailed, why);
 }
 
-void TrimmedBrep::writeBrep(std::ostream& out) const { BRepTools::Write(impl_->compound, out); }
+void TrimmedBrep::writeBrep(std::ostream& out) const
+{
+    try {
+        BRepTools::Write(impl_->compound, out);
+    } catch (const Standard_Failure& e) {
+        throw Error(ErrorCode::WriteFailed, std::string("OpenCASCADE failed writing BREP: ") + e.GetMessageString());
+    }
+    if (!out) throw Error(ErrorCode::WriteFailed, "the BREP stream could not be written");
+}
 
 TOWGEOM_END_NAMESPACE

@@ -92,9 +92,11 @@ double seamOf(const std::vector<TowSurface>& tows, const std::vector<Intersectio
         ranges.emplace_back(lo - shift, hi - shift);
     }
     std::sort(ranges.begin(), ranges.end());
-    // Merge on the circle: sweep, tracking how far the covered run reaches.
+    // Merge on the circle: sweep, tracking how far the covered run reaches (from the start,
+    // ranges that run past vMin + period and wrap over the circle's start count too).
     double bestGap = -1.0, bestSeam = r.vMin;
     double reach = ranges.front().second;
+    for (const auto& x : ranges) reach = std::max(reach, x.second - period);
     for (std::size_t k = 1; k <= ranges.size(); ++k) {
         const double next = k < ranges.size() ? ranges[k].first : ranges.front().first + period;
         if (next - reach > bestGap) {
@@ -103,9 +105,15 @@ double seamOf(const std::vector<TowSurface>& tows, const std::vector<Intersectio
         }
         if (k < ranges.size()) reach = std::max(reach, ranges[k].second);
     }
-    if (!(bestGap > 1e-6 * period))
+    // A margin for the loops' (u,v) curves, which may bulge a little past their points.
+    if (!(bestGap > 1e-3 * period))
         throw Error(ErrorCode::Unsupported, "tow '" + tows[t].name() + "': its loops cover every v around it, so no seam of "
                                             "its face avoids them (the trimmed B-rep needs a seam no loop crosses)");
+    for (const auto& x : ranges) {  // no loop crosses the seam, one period on or back
+        const double k = std::ceil((x.first - bestSeam) / period);
+        if (bestSeam + k * period < x.second)
+            throw Error(ErrorCode::Internal, "tow '" + tows[t].name() + "': the seam chosen for its face crosses a loop");
+    }
     return bestSeam;
 }
 
@@ -123,9 +131,11 @@ std::vector<UV> uvOn(const std::vector<LoopPoint>& points, LoopSide side, double
 }
 
 /// Exact points of a loop per point it has, for its edge's curves: cubic interpolation through
-/// the loop's own points (spaced for the chordal tolerance) strays ~1e-6 of the tow size from the
-/// surfaces; through four times as many, ~250 times less. (Approximated curves with fewer poles
-/// are not periodic, and OCCT's STEP reader heals their faces into pieces.)
+/// the loop's own points (spaced for the chordal tolerance) strays up to ~5e-6 of the tow size
+/// from the surfaces, and the STEP file's volumes off by 3e-6; through twice as many, 16 times
+/// less (within 1e-6). Each point is a pole of the curves, and OCCT's integrals over a trimmed
+/// face slow down with them: four times as many took six times as long. (Approximated curves with
+/// fewer poles are not periodic, and OCCT's STEP reader heals their faces into pieces.)
 constexpr double kEdgeDensity = 2.0;
 
 /// The edge of closed loop @p l: a periodic B-spline through its exact points (kEdgeDensity per
@@ -306,20 +316,15 @@ TopoDS_Face capFace(const Handle(Geom_BSplineSurface)& s, double u, double v0, d
     return face;
 }
 
-/// A face's share of its solid's volume (divergence theorem about @p origin, the sign of its
-/// orientation) and its area, by OCCT's adaptive Gauss integration (BRepGProp).
-struct Measure {
-    double volume = 0.0;
-    double area = 0.0;
-};
+/// The relative error of OCCT's adaptive integrals of volumes and areas.
+constexpr double kMeasureEps = 1e-9;
 
-Measure measure(const TopoDS_Face& face, const gp_Pnt& origin)
+/// The area of @p shape's faces (BRepGProp).
+double areaOf(const TopoDS_Shape& shape)
 {
-    constexpr double kEps = 1e-8;  // relative error of the integrals
-    GProp_GProps v(origin), a(origin);
-    BRepGProp::VolumeProperties(face, v, kEps);
-    BRepGProp::SurfaceProperties(face, a, kEps);
-    return {v.Mass(), a.Mass()};
+    GProp_GProps a;
+    BRepGProp::SurfaceProperties(shape, a, kMeasureEps);
+    return a.Mass();
 }
 
 /// The largest tolerance of @p shape's edges and vertices.
@@ -351,7 +356,10 @@ void checkSupported(const std::vector<TowSurface>& tows, const ResolveResult& r)
         throw Error(ErrorCode::Unsupported, "the trimmed B-rep is not built where three tows meet (" +
                                                 std::to_string(r.mesh.triplePoints.size()) + " triple points)");
     const auto check = [&](std::size_t k) {
-        const IntersectionLoop& l = r.intersections.loops.at(k);
+        if (k >= r.intersections.loops.size())
+            throw Error(ErrorCode::InvalidArgument, "trimmedBrep: a region names loop " + std::to_string(k) + " of " +
+                                                        std::to_string(r.intersections.loops.size()));
+        const IntersectionLoop& l = r.intersections.loops[k];
         const std::string what = "the loop of " + pairName(tows, l);
         if (!l.closed()) throw Error(ErrorCode::Internal, what + " bounds a region but is open");
         if (l.windsAround(LoopSide::A) || l.windsAround(LoopSide::B))
@@ -363,6 +371,9 @@ void checkSupported(const std::vector<TowSurface>& tows, const ResolveResult& r)
     for (const ConnectedRegion& g : r.mesh.regions) {
         if (g.surface != SharedSurface::Primary) throw Error(ErrorCode::Internal, "a connect region off the primary's surface");
         check(g.loop);
+        const IntersectionLoop& l = r.intersections.loops[g.loop];
+        if (std::minmax(g.primary, g.secondary) != std::minmax(l.towA(), l.towB()))
+            throw Error(ErrorCode::InvalidArgument, "trimmedBrep: a region's tows are not those of its loop");
         for (std::size_t h : g.holes) check(h);
     }
 }
@@ -421,17 +432,30 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
             for (std::size_t t : {g.primary, g.secondary}) on[t].push_back({k, sideOfTow(loops[k], t)});
     std::vector<double> seam(tows.size());
     for (std::size_t t = 0; t < tows.size(); ++t) seam[t] = seamOf(tows, loops, on[t], t);
-    // Loops of different regions on one tow must not meet (a third tow's overlap).
+    // Loops on one tow must not meet or nest, but for a region's islands inside its loop: loops
+    // of two pairs that do are a third tow's overlap; a region inside another's island (loops
+    // nested three deep) is not built either.
+    const auto holeOf = [&](std::size_t hole, std::size_t loop) {
+        return std::any_of(r.mesh.regions.begin(), r.mesh.regions.end(), [&](const ConnectedRegion& g) {
+            return g.loop == loop && std::find(g.holes.begin(), g.holes.end(), hole) != g.holes.end();
+        });
+    };
     for (std::size_t t = 0; t < tows.size(); ++t) {
         const double period = tows[t].parameterRange().vPeriod();
         for (std::size_t i = 0; i < on[t].size(); ++i)
             for (std::size_t j = i + 1; j < on[t].size(); ++j) {
-                const IntersectionLoop &a = loops[on[t][i].loop], &b = loops[on[t][j].loop];
-                if (a.towA() == b.towA() && a.towB() == b.towB()) continue;  // holes of one region: nested by design
-                if (overlapInUv(uvOn(a.points(), on[t][i].side, seam[t], period), uvOn(b.points(), on[t][j].side, seam[t], period)))
-                    throw Error(ErrorCode::Unsupported, "on tow '" + tows[t].name() + "' the loops of " + pairName(tows, a) + " and of " +
-                                                            pairName(tows, b) + " overlap (three tows overlap there): not built as a "
-                                                            "trimmed B-rep yet");
+                const std::size_t li = on[t][i].loop, lj = on[t][j].loop;
+                if (holeOf(li, lj) || holeOf(lj, li)) continue;
+                const IntersectionLoop &a = loops[li], &b = loops[lj];
+                if (!overlapInUv(uvOn(a.points(), on[t][i].side, seam[t], period), uvOn(b.points(), on[t][j].side, seam[t], period)))
+                    continue;
+                if (a.towA() == b.towA() && a.towB() == b.towB())
+                    throw Error(ErrorCode::Unsupported, "on tow '" + tows[t].name() + "' loops of " + pairName(tows, a) +
+                                                            " lie inside one another more than two deep (a region inside "
+                                                            "another's island): not built as a trimmed B-rep yet");
+                throw Error(ErrorCode::Unsupported, "on tow '" + tows[t].name() + "' the loops of " + pairName(tows, a) + " and of " +
+                                                        pairName(tows, b) + " overlap (three tows overlap there): not built as a "
+                                                        "trimmed B-rep yet");
             }
     }
 
@@ -478,36 +502,38 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
             const ParameterRange pr = tow.parameterRange();
             TopoDS_Edge rims[2];
             TopoDS_Face face = tubeFace(s, pr, seam[t], tolerance, rims);
-            // The solid's volume and area, face by face: the whole tow closed by its caps (its exact
-            // volume and area, TowSurface's own integrals) less the disc inside each outer loop on
-            // it, plus the faces inside loops (shared faces, islands); those by OCCT's adaptive
-            // integration on small faces (over the tube's face with the loops as holes it takes
-            // OCCT seconds per tow).
-            const BoundingBox box = tow.boundingBox();
-            const gp_Pnt origin = detail::toOcct(0.5 * (box.min + box.max));
-            Measure total{tow.volume(), tow.area()};
+            // The solid's volume and area: the whole tow closed by its caps (its exact volume and
+            // area, TowSurface's own integrals), less the disc of its surface inside each outer
+            // loop on it, plus the faces inside loops (shared faces, islands). The discs (reversed)
+            // and those faces close up around what changed: BRepGProp integrates them in one
+            // call, about one point (a face's volume alone is taken about a point of its own), on
+            // small faces (over the tube's face with the loops as holes it takes seconds per tow).
+            TopoDS_Compound change;
+            b.MakeCompound(change);
+            double area = tow.area();
             for (const LoopOnTow& x : on[t]) {
                 const bool outer = std::any_of(r.mesh.regions.begin(), r.mesh.regions.end(),
                                                [&](const ConnectedRegion& g) { return g.loop == x.loop; });
                 if (!outer) continue;  // islands lie inside an outer loop
                 b.Add(face, wire(x.loop, t, false));
-                const Measure disc = measure(insideFace(s, wire(x.loop, t, true), {}, tolerance), origin);
-                total.volume -= disc.volume;
-                total.area -= disc.area;
+                const TopoDS_Face disc = insideFace(s, wire(x.loop, t, true), {}, tolerance);
+                b.Add(change, disc.Reversed());
+                area -= areaOf(disc);
             }
             b.NaturalRestriction(face, Standard_False);
             loopCount[t] = on[t].size();
             for (const TopoDS_Face& f : faces[t]) {  // shared faces and islands
-                const Measure m = measure(f, origin);
-                total.volume += m.volume;
-                total.area += m.area;
+                b.Add(change, f);
+                area += areaOf(f);
             }
+            GProp_GProps changed;
+            BRepGProp::VolumeProperties(change, changed, kMeasureEps);
             faces[t].push_back(face);
             for (int k = 0; k < 2; ++k) {
                 const double u = k == 0 ? pr.uMin : pr.uMax;
                 faces[t].push_back(capFace(s, u, seam[t], pr.vPeriod(), rims[k], outwardAtEnd(s, u, pr.vMin, pr.vPeriod(), k == 0),
                                            tow.towSize(), tow.name(), k == 0 ? "first" : "last"));
-                total.area += measure(faces[t].back(), origin).area;
+                area += areaOf(faces[t].back());
             }
             TopoDS_Shell shell;
             b.MakeShell(shell);
@@ -522,8 +548,8 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
 
             BrepSolid& out = solids[t];
             out.name = tow.name();
-            out.volume = total.volume;
-            out.area = total.area;
+            out.volume = tow.volume() + changed.Mass();
+            out.area = area;
             out.faces = faces[t].size();
             out.sharedFaces = shared[t];
             out.loops = loopCount[t];

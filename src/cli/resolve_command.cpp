@@ -516,6 +516,12 @@ int runResolve(int argc, char** argv, int first)
         if (!quiet)
             for (const ConnectedRegion& g : mesh.regions)
                 if (!g.note.empty()) std::cerr << "towgeom resolve: note: " << g.note << "\n";
+        if (brep)  // warnings, whatever --quiet says
+            for (const BrepSolid& solid : brep->solids())
+                if (!solid.valid)
+                    std::cerr << "towgeom resolve: warning: the solid of tow '" << solid.name
+                              << "' in textile.step/.brep is not valid for OpenCASCADE's checker (BRepCheck_Analyzer; "
+                                 "largest edge tolerance " << solid.maxTolerance << "): CAD tools may refuse it\n";
         reportContacts("resolve", result.intersections, tows);
         reportUnresolved("resolve", unresolved, tows);
         return exitsUnresolved(unresolved, args.has("allow-open")) ? kExitUnresolved : kExitOk;
