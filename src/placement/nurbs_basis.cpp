@@ -1,0 +1,71 @@
+#include "placement/nurbs_basis.hpp"
+
+#include <BSplCLib.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <math_Matrix.hxx>
+
+#include <cmath>
+
+#include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
+
+BasisRow bsplineBasis(const std::vector<double>& knots, int p, double t)
+{
+    TColStd_Array1OfReal flat(1, static_cast<int>(knots.size()));
+    for (std::size_t k = 0; k < knots.size(); ++k) flat.SetValue(static_cast<int>(k) + 1, knots[k]);
+    math_Matrix basis(1, 2, 1, p + 1, 0.0);
+    int first = 0;
+    if (BSplCLib::EvalBsplineBasis(1, p + 1, flat, t, first, basis) != 0)
+        throw Error(ErrorCode::InvalidArgument, "the B-spline basis cannot be evaluated at " + std::to_string(t));
+    BasisRow row;
+    row.first = static_cast<std::size_t>(first - 1);
+    for (int k = 1; k <= p + 1; ++k) {
+        row.values.push_back(basis(1, k));
+        row.slopes.push_back(basis(2, k));
+    }
+    return row;
+}
+
+BasisRow rationalBasis(const std::vector<double>& knots, int p, const std::vector<double>& weights, double t)
+{
+    BasisRow row = bsplineBasis(knots, p, t);
+    double sum = 0.0;
+    for (std::size_t k = 0; k < row.values.size(); ++k) sum += row.values[k] * weights[row.first + k];
+    for (std::size_t k = 0; k < row.values.size(); ++k) row.values[k] *= weights[row.first + k] / sum;
+    row.slopes.clear();
+    return row;
+}
+
+void checkKnots(const std::vector<double>& knots, int p, std::size_t poles, const std::string& what)
+{
+    const std::string which = "NURBS " + what + ": ";
+    if (p < 1) throw Error(ErrorCode::InvalidArgument, which + "the degree must be at least 1");
+    if (poles < static_cast<std::size_t>(p) + 1)
+        throw Error(ErrorCode::InvalidArgument, which + "needs at least degree + 1 poles");
+    if (knots.size() != poles + static_cast<std::size_t>(p) + 1)
+        throw Error(ErrorCode::InvalidArgument, which + std::to_string(knots.size()) + " knots, not poles + degree + 1 = " +
+                                                    std::to_string(poles + static_cast<std::size_t>(p) + 1));
+    for (std::size_t k = 0; k < knots.size(); ++k) {
+        if (!std::isfinite(knots[k])) throw Error(ErrorCode::InvalidArgument, which + "a knot is not finite");
+        if (k > 0 && knots[k] < knots[k - 1]) throw Error(ErrorCode::InvalidArgument, which + "the knots decrease");
+    }
+    for (int k = 1; k <= p; ++k)
+        if (knots[static_cast<std::size_t>(k)] != knots.front() || knots[knots.size() - 1 - static_cast<std::size_t>(k)] != knots.back())
+            throw Error(ErrorCode::InvalidArgument, which + "the knot vector is not clamped (first and last knots degree + 1 times)");
+    if (!(knots.back() > knots.front())) throw Error(ErrorCode::InvalidArgument, which + "the knots span no interval");
+}
+
+void checkWeights(const std::vector<double>& weights, std::size_t poles, const std::string& what)
+{
+    if (weights.size() != poles)
+        throw Error(ErrorCode::InvalidArgument, "NURBS " + what + ": " + std::to_string(weights.size()) + " weights for " +
+                                                    std::to_string(poles) + " poles");
+    for (double w : weights)
+        if (!(w > 0.0) || !std::isfinite(w)) throw Error(ErrorCode::InvalidArgument, "NURBS " + what + ": a weight is not positive and finite");
+}
+
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

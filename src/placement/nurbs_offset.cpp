@@ -1,0 +1,346 @@
+// Offsets of NURBS curves and surfaces with the same parametrisation (Nguyen et al. 2014): the
+// offset shares the input's degree, knots and weights; its poles collocate the exact offset at
+// the Greville points (a linear system in the poles, as the rational basis is fixed by the
+// weights), and knots are inserted into the input (OpenCASCADE, exactly) where the offset strays
+// from the exact one by more than the tolerance.
+#include "towgeom/nurbs_offset.hpp"
+
+#include <BSplCLib.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Standard_Failure.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColStd_Array2OfReal.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <math_Matrix.hxx>
+
+#include <Eigen/Dense>
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+
+#include "placement/nurbs_basis.hpp"
+#include "surface/occt_convert.hpp"
+#include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+
+namespace {
+
+using detail::BasisRow;
+
+/// Distinct knots and multiplicities of a full knot vector (OCCT's form).
+void splitKnots(const std::vector<double>& full, TColStd_Array1OfReal& knots, TColStd_Array1OfInteger& mults)
+{
+    std::vector<double> k;
+    std::vector<int> m;
+    for (double x : full) {
+        if (!k.empty() && x == k.back()) ++m.back();
+        else {
+            k.push_back(x);
+            m.push_back(1);
+        }
+    }
+    knots.Resize(1, static_cast<int>(k.size()), Standard_False);
+    mults.Resize(1, static_cast<int>(m.size()), Standard_False);
+    for (std::size_t i = 0; i < k.size(); ++i) {
+        knots.SetValue(static_cast<int>(i) + 1, k[i]);
+        mults.SetValue(static_cast<int>(i) + 1, m[i]);
+    }
+}
+
+std::vector<double> fullKnots(const TColStd_Array1OfReal& knots, const TColStd_Array1OfInteger& mults)
+{
+    std::vector<double> full;
+    for (int i = knots.Lower(); i <= knots.Upper(); ++i)
+        for (int k = 0; k < mults(i); ++k) full.push_back(knots(i));
+    return full;
+}
+
+Handle(Geom_BSplineCurve) toOcct(const NurbsCurve& c)
+{
+    detail::checkKnots(c.knots, c.degree, c.poles.size(), "curve");
+    detail::checkWeights(c.weights, c.poles.size(), "curve");
+    TColgp_Array1OfPnt poles(1, static_cast<int>(c.poles.size()));
+    TColStd_Array1OfReal weights(1, static_cast<int>(c.poles.size()));
+    for (std::size_t i = 0; i < c.poles.size(); ++i) {
+        poles.SetValue(static_cast<int>(i) + 1, detail::toOcct(c.poles[i]));
+        weights.SetValue(static_cast<int>(i) + 1, c.weights[i]);
+    }
+    TColStd_Array1OfReal knots(1, 1);
+    TColStd_Array1OfInteger mults(1, 1);
+    splitKnots(c.knots, knots, mults);
+    return new Geom_BSplineCurve(poles, weights, knots, mults, c.degree);
+}
+
+NurbsCurve fromOcct(const Handle(Geom_BSplineCurve)& g)
+{
+    NurbsCurve c;
+    c.degree = g->Degree();
+    c.knots = fullKnots(g->Knots(), g->Multiplicities());
+    for (int i = 1; i <= g->NbPoles(); ++i) {
+        c.poles.push_back(detail::fromOcct(g->Pole(i)));
+        c.weights.push_back(g->Weight(i));
+    }
+    return c;
+}
+
+Handle(Geom_BSplineSurface) toOcct(const NurbsSurface& s)
+{
+    detail::checkKnots(s.uKnots, s.uDegree, s.uCount, "surface (u)");
+    detail::checkKnots(s.vKnots, s.vDegree, s.vCount, "surface (v)");
+    detail::checkWeights(s.weights, s.uCount * s.vCount, "surface");
+    if (s.poles.size() != s.uCount * s.vCount)
+        throw Error(ErrorCode::InvalidArgument, "NURBS surface: " + std::to_string(s.poles.size()) + " poles, not uCount x vCount");
+    const int nu = static_cast<int>(s.uCount), nv = static_cast<int>(s.vCount);
+    TColgp_Array2OfPnt poles(1, nu, 1, nv);
+    TColStd_Array2OfReal weights(1, nu, 1, nv);
+    for (int i = 0; i < nu; ++i)
+        for (int j = 0; j < nv; ++j) {
+            const std::size_t k = static_cast<std::size_t>(i) * s.vCount + static_cast<std::size_t>(j);
+            poles.SetValue(i + 1, j + 1, detail::toOcct(s.poles[k]));
+            weights.SetValue(i + 1, j + 1, s.weights[k]);
+        }
+    TColStd_Array1OfReal uk(1, 1), vk(1, 1);
+    TColStd_Array1OfInteger um(1, 1), vm(1, 1);
+    splitKnots(s.uKnots, uk, um);
+    splitKnots(s.vKnots, vk, vm);
+    return new Geom_BSplineSurface(poles, weights, uk, vk, um, vm, s.uDegree, s.vDegree);
+}
+
+NurbsSurface fromOcct(const Handle(Geom_BSplineSurface)& g)
+{
+    NurbsSurface s;
+    s.uDegree = g->UDegree();
+    s.vDegree = g->VDegree();
+    s.uKnots = fullKnots(g->UKnots(), g->UMultiplicities());
+    s.vKnots = fullKnots(g->VKnots(), g->VMultiplicities());
+    s.uCount = static_cast<std::size_t>(g->NbUPoles());
+    s.vCount = static_cast<std::size_t>(g->NbVPoles());
+    for (int i = 1; i <= g->NbUPoles(); ++i)
+        for (int j = 1; j <= g->NbVPoles(); ++j) {
+            s.poles.push_back(detail::fromOcct(g->Pole(i, j)));
+            s.weights.push_back(g->Weight(i, j));
+        }
+    return s;
+}
+
+/// Greville abscissae of a full knot vector: t_i = mean of knots i+1 .. i+p.
+std::vector<double> greville(const std::vector<double>& knots, int p, std::size_t n)
+{
+    std::vector<double> g(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        double s = 0.0;
+        for (int k = 1; k <= p; ++k) s += knots[i + static_cast<std::size_t>(k)];
+        g[i] = s / p;
+    }
+    return g;
+}
+
+/// The size of a control polygon: its bounding box's diagonal.
+double sizeOf(const std::vector<Point3>& poles)
+{
+    BoundingBox b;
+    for (const Point3& p : poles) b.add(p);
+    return distance(b.min, b.max);
+}
+
+double toleranceOf(const OffsetOptions& o, const std::vector<Point3>& poles)
+{
+    if (!(o.tolerance >= 0.0) || !std::isfinite(o.tolerance) || !(o.relativeTolerance > 0.0) || !std::isfinite(o.relativeTolerance) ||
+        o.maxRefinements < 0)
+        throw Error(ErrorCode::InvalidArgument, "offset: tolerance must be >= 0, relativeTolerance > 0 (finite), maxRefinements >= 0");
+    return o.tolerance > 0.0 ? o.tolerance : o.relativeTolerance * sizeOf(poles);
+}
+
+/// The distinct spans [a, b) of a full knot vector.
+std::vector<std::pair<double, double>> spans(const std::vector<double>& knots)
+{
+    std::vector<std::pair<double, double>> s;
+    for (std::size_t k = 0; k + 1 < knots.size(); ++k)
+        if (knots[k + 1] > knots[k]) s.emplace_back(knots[k], knots[k + 1]);
+    return s;
+}
+
+Eigen::MatrixXd solveDense(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b)
+{
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(a);
+    if (!lu.isInvertible()) throw Error(ErrorCode::Internal, "offset: the collocation system is singular");
+    return lu.solve(b);
+}
+
+}  // namespace
+
+Point3 NurbsCurve::point(double t) const { return detail::fromOcct(toOcct(*this)->Value(t)); }
+
+Vector3 NurbsCurve::derivative(double t) const
+{
+    gp_Pnt p;
+    gp_Vec d;
+    toOcct(*this)->D1(t, p, d);
+    return detail::fromOcct(d);
+}
+
+Point3 NurbsSurface::point(double u, double v) const { return detail::fromOcct(toOcct(*this)->Value(u, v)); }
+
+Vector3 NurbsSurface::normal(double u, double v) const
+{
+    gp_Pnt p;
+    gp_Vec du, dv;
+    toOcct(*this)->D1(u, v, p, du, dv);
+    const gp_Vec n = du.Crossed(dv);
+    if (!(n.Magnitude() > 0.0)) throw Error(ErrorCode::InvalidArgument, "NURBS surface: no normal where dS/du x dS/dv vanishes");
+    return detail::fromOcct(n.Normalized());
+}
+
+CurveOffset offsetCurve(const NurbsCurve& curve, double d, const Vector3& planeNormal, const OffsetOptions& options)
+{
+    if (!(norm(planeNormal) > 0.0) || !std::isfinite(d)) throw Error(ErrorCode::InvalidArgument, "offsetCurve: a zero plane normal or a non-finite distance");
+    const double tol = toleranceOf(options, curve.poles);
+    const Vector3 z = (1.0 / norm(planeNormal)) * planeNormal;
+    CurveOffset result;
+    try {
+        Handle(Geom_BSplineCurve) c = toOcct(curve);
+        const auto exact = [&](double t) {
+            gp_Pnt p;
+            gp_Vec dp;
+            c->D1(t, p, dp);
+            const Vector3 n = cross(detail::fromOcct(dp), z);
+            if (!(norm(n) > 0.0)) throw Error(ErrorCode::InvalidArgument, "offsetCurve: the curve's derivative vanishes (or is along the plane normal)");
+            return detail::fromOcct(p) + (d / norm(n)) * n;
+        };
+        for (int round = 0;; ++round) {
+            NurbsCurve base = fromOcct(c);
+            const std::size_t n = base.poles.size();
+            const std::vector<double> g = greville(base.knots, base.degree, n);
+            Eigen::MatrixXd a = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+            Eigen::MatrixXd rhs(static_cast<Eigen::Index>(n), 3);
+            for (std::size_t i = 0; i < n; ++i) {
+                const BasisRow row = detail::rationalBasis(base.knots, base.degree, base.weights, g[i]);
+                for (std::size_t k = 0; k < row.values.size(); ++k)
+                    a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(row.first + k)) = row.values[k];
+                const Point3 q = exact(g[i]);
+                rhs.row(static_cast<Eigen::Index>(i)) << q.x, q.y, q.z;
+            }
+            const Eigen::MatrixXd poles = solveDense(a, rhs);
+            NurbsCurve offset = base;
+            for (std::size_t i = 0; i < n; ++i)
+                offset.poles[i] = {poles(static_cast<Eigen::Index>(i), 0), poles(static_cast<Eigen::Index>(i), 1), poles(static_cast<Eigen::Index>(i), 2)};
+            const Handle(Geom_BSplineCurve) o = toOcct(offset);
+            double worst = 0.0;
+            std::vector<double> refine;
+            for (const auto& [lo, hi] : spans(base.knots)) {
+                double e = 0.0;
+                for (int k = 0; k <= 16; ++k) {
+                    const double t = lo + (hi - lo) * k / 16.0;
+                    e = std::max(e, distance(detail::fromOcct(o->Value(t)), exact(t)));
+                }
+                worst = std::max(worst, e);
+                if (e > tol) refine.push_back(0.5 * (lo + hi));
+            }
+            result.base = base;
+            result.offset = offset;
+            result.maxError = worst;
+            if (refine.empty() || round >= options.maxRefinements) break;
+            for (double t : refine) c->InsertKnot(t);
+            result.knotsInserted += refine.size();
+        }
+    } catch (const Standard_Failure& e) {
+        throw Error(ErrorCode::Internal, std::string("offsetCurve: OpenCASCADE failed: ") + e.GetMessageString());
+    }
+    return result;
+}
+
+SurfaceOffset offsetSurface(const NurbsSurface& surface, double d, const OffsetOptions& options)
+{
+    if (!std::isfinite(d)) throw Error(ErrorCode::InvalidArgument, "offsetSurface: a non-finite distance");
+    const double tol = toleranceOf(options, surface.poles);
+    SurfaceOffset result;
+    try {
+        Handle(Geom_BSplineSurface) s = toOcct(surface);
+        const auto exact = [&](double u, double v) {
+            gp_Pnt p;
+            gp_Vec du, dv;
+            s->D1(u, v, p, du, dv);
+            const gp_Vec n = du.Crossed(dv);
+            if (!(n.Magnitude() > 0.0))
+                throw Error(ErrorCode::InvalidArgument, "offsetSurface: the normal is not defined at (" + std::to_string(u) + ", " +
+                                                            std::to_string(v) + ") (dS/du x dS/dv vanishes)");
+            return detail::fromOcct(p) + (d / n.Magnitude()) * detail::fromOcct(n);
+        };
+        for (int round = 0;; ++round) {
+            NurbsSurface base = fromOcct(s);
+            const std::size_t nu = base.uCount, nv = base.vCount, n = nu * nv;
+            const std::vector<double> gu = greville(base.uKnots, base.uDegree, nu), gv = greville(base.vKnots, base.vDegree, nv);
+            // The rational basis at (u_i, v_j): B-spline products times weights over their sum.
+            std::vector<Eigen::Triplet<double>> entries;
+            Eigen::MatrixXd rhs(static_cast<Eigen::Index>(n), 3);
+            for (std::size_t i = 0; i < nu; ++i)
+                for (std::size_t j = 0; j < nv; ++j) {
+                    const std::size_t r = i * nv + j;
+                    const BasisRow bu = detail::bsplineBasis(base.uKnots, base.uDegree, gu[i]);
+                    const BasisRow bv = detail::bsplineBasis(base.vKnots, base.vDegree, gv[j]);
+                    double sum = 0.0;
+                    for (std::size_t a = 0; a < bu.values.size(); ++a)
+                        for (std::size_t b = 0; b < bv.values.size(); ++b)
+                            sum += bu.values[a] * bv.values[b] * base.weights[(bu.first + a) * nv + bv.first + b];
+                    for (std::size_t a = 0; a < bu.values.size(); ++a)
+                        for (std::size_t b = 0; b < bv.values.size(); ++b) {
+                            const std::size_t c = (bu.first + a) * nv + bv.first + b;
+                            const double value = bu.values[a] * bv.values[b] * base.weights[c] / sum;
+                            if (value != 0.0)
+                                entries.emplace_back(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c), value);
+                        }
+                    const Point3 q = exact(gu[i], gv[j]);
+                    rhs.row(static_cast<Eigen::Index>(r)) << q.x, q.y, q.z;
+                }
+            Eigen::SparseMatrix<double> a(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+            a.setFromTriplets(entries.begin(), entries.end());
+            a.makeCompressed();
+            Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+            lu.compute(a);
+            if (lu.info() != Eigen::Success) throw Error(ErrorCode::Internal, "offsetSurface: the collocation system is singular");
+            const Eigen::MatrixXd poles = lu.solve(rhs);
+            NurbsSurface offset = base;
+            for (std::size_t k = 0; k < n; ++k)
+                offset.poles[k] = {poles(static_cast<Eigen::Index>(k), 0), poles(static_cast<Eigen::Index>(k), 1), poles(static_cast<Eigen::Index>(k), 2)};
+            const Handle(Geom_BSplineSurface) o = toOcct(offset);
+            double worst = 0.0;
+            std::set<double> refineU, refineV;
+            const auto su = spans(base.uKnots), sv = spans(base.vKnots);
+            for (const auto& [u0, u1] : su)
+                for (const auto& [v0, v1] : sv) {
+                    double e = 0.0;
+                    for (int a = 0; a <= 8; ++a)
+                        for (int b = 0; b <= 8; ++b) {
+                            const double u = u0 + (u1 - u0) * a / 8.0, v = v0 + (v1 - v0) * b / 8.0;
+                            e = std::max(e, distance(detail::fromOcct(o->Value(u, v)), exact(u, v)));
+                        }
+                    worst = std::max(worst, e);
+                    if (e > tol) {
+                        refineU.insert(0.5 * (u0 + u1));
+                        refineV.insert(0.5 * (v0 + v1));
+                    }
+                }
+            result.base = base;
+            result.offset = offset;
+            result.maxError = worst;
+            if ((refineU.empty() && refineV.empty()) || round >= options.maxRefinements) break;
+            for (double u : refineU) s->InsertUKnot(u, 1, 0.0);
+            for (double v : refineV) s->InsertVKnot(v, 1, 0.0);
+            result.knotsInserted += refineU.size() + refineV.size();
+        }
+    } catch (const Standard_Failure& e) {
+        throw Error(ErrorCode::Internal, std::string("offsetSurface: OpenCASCADE failed: ") + e.GetMessageString());
+    }
+    return result;
+}
+
+TOWGEOM_END_NAMESPACE

@@ -1,0 +1,226 @@
+// Offsets with the same parametrisation and ply solids (issue 17, first part), checked against
+// closed forms (a circle's offset is a circle, a cylinder ply's volume pi((R+t)^2 - R^2) L) and,
+// on free-form input, against the exact offset computed here from finite differences of the
+// input (not from the library's normals).
+#include <catch2/catch.hpp>
+
+#include <towgeom/error.hpp>
+#include <towgeom/nurbs_offset.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "cli_runner.hpp"
+
+using namespace towgeom;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// The full circle of radius @p r about (@p cx, @p cy) in the plane z = @p z, counter-clockwise
+/// seen from +z: the rational quadratic of 9 poles (the corners of the square and the middles of
+/// its sides), parameter in [0, 1].
+NurbsCurve circle(double r, double cx, double cy, double z)
+{
+    NurbsCurve c;
+    c.degree = 2;
+    c.knots = {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1};
+    const double h = std::sqrt(0.5);
+    const double px[9] = {1, 1, 0, -1, -1, -1, 0, 1, 1}, py[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
+    for (int k = 0; k < 9; ++k) {
+        c.poles.push_back({cx + r * px[k], cy + r * py[k], z});
+        c.weights.push_back(k % 2 ? h : 1.0);
+    }
+    return c;
+}
+
+/// A cylinder of radius @p r about the z axis from z = 0 to @p length: u around (the circle),
+/// v along (degree 1). Its normal dS/du x dS/dv points outward.
+NurbsSurface cylinder(double r, double length)
+{
+    const NurbsCurve c = circle(r, 0.0, 0.0, 0.0);
+    NurbsSurface s;
+    s.uDegree = 2;
+    s.vDegree = 1;
+    s.uKnots = c.knots;
+    s.vKnots = {0, 0, 1, 1};
+    s.uCount = c.poles.size();
+    s.vCount = 2;
+    for (std::size_t i = 0; i < c.poles.size(); ++i)
+        for (double z : {0.0, length}) {
+            s.poles.push_back({c.poles[i].x, c.poles[i].y, z});
+            s.weights.push_back(c.weights[i]);
+        }
+    return s;
+}
+
+/// A bicubic saddle z = 0.3 (x^2 - y^2) over [-1, 1]^2 (poles on a 5 x 5 grid, not rational).
+NurbsSurface saddle()
+{
+    NurbsSurface s;
+    s.uDegree = s.vDegree = 3;
+    s.uKnots = s.vKnots = {0, 0, 0, 0, 0.5, 1, 1, 1, 1};
+    s.uCount = s.vCount = 5;
+    for (int i = 0; i < 5; ++i)
+        for (int j = 0; j < 5; ++j) {
+            const double x = -1.0 + 0.5 * i, y = -1.0 + 0.5 * j;
+            s.poles.push_back({x, y, 0.3 * (x * x - y * y)});
+            s.weights.push_back(1.0);
+        }
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("a circle's offset keeping its parametrisation is the concentric circle of radius R + d", "[placement][offset]")
+{
+    const NurbsCurve c = circle(2.0, 1.0, -0.5, 0.25);
+    const CurveOffset o = offsetCurve(c, 0.5, {0.0, 0.0, 1.0});
+    CHECK(o.knotsInserted == 0);
+    CHECK(o.offset.knots == c.knots);
+    CHECK(o.offset.weights == c.weights);
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> t(0.0, 1.0);
+    double worst = 0.0;
+    for (int k = 0; k < 1000; ++k) {
+        const double s = t(random);
+        const Point3 p = c.point(s), q = o.offset.point(s);
+        // On the circle of radius 2.5, on the ray from the centre through p (the same parameter).
+        worst = std::max(worst, std::abs(std::hypot(q.x - 1.0, q.y + 0.5) - 2.5));
+        worst = std::max(worst, std::abs(q.z - 0.25));
+        worst = std::max(worst, std::abs((q.x - 1.0) * (p.y + 0.5) - (q.y + 0.5) * (p.x - 1.0)));
+    }
+    INFO("largest deviation " << worst << ", maxError " << o.maxError);
+    CHECK(worst <= 1e-9);
+    CHECK(o.maxError <= 1e-9);
+    // Inward: radius 1.5.
+    const CurveOffset in = offsetCurve(c, -0.5, {0.0, 0.0, 1.0});
+    const Point3 q = in.offset.point(0.3);
+    CHECK(std::abs(std::hypot(q.x - 1.0, q.y + 0.5) - 1.5) <= 1e-9);
+}
+
+TEST_CASE("a free-form curve's offset: knots inserted until it is within the tolerance of the exact offset", "[placement][offset]")
+{
+    NurbsCurve c;
+    c.degree = 3;
+    c.knots = {0, 0, 0, 0, 0.5, 1, 1, 1, 1};
+    c.poles = {{0, 0, 0}, {1, 1.2, 0}, {2, -1, 0}, {3, 1, 0}, {4, 0, 0}};
+    c.weights = {1, 1, 1, 1, 1};
+    OffsetOptions opt;
+    opt.tolerance = 1e-7;
+    const CurveOffset o = offsetCurve(c, 0.1, {0.0, 0.0, 1.0}, opt);
+    INFO("knots inserted " << o.knotsInserted << ", maxError " << o.maxError);
+    CHECK(o.knotsInserted > 0);
+    CHECK(o.maxError <= 1e-7);
+    // Independently: q - p has length d and is normal to the curve (derivative by central
+    // differences of the input), at 1,000 random parameters.
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> t(0.001, 0.999);
+    double worstLength = 0.0, worstAngle = 0.0;
+    for (int k = 0; k < 1000; ++k) {
+        const double s = t(random), h = 1e-6;
+        const Point3 p = c.point(s), q = o.offset.point(s);
+        const Vector3 tangent = (1.0 / (2.0 * h)) * (c.point(s + h) - c.point(s - h));
+        worstLength = std::max(worstLength, std::abs(norm(q - p) - 0.1));
+        worstAngle = std::max(worstAngle, std::abs(dot(q - p, tangent)) / norm(tangent));
+    }
+    INFO("length " << worstLength << ", along the tangent " << worstAngle);
+    CHECK(worstLength <= 1.1e-7);
+    CHECK(worstAngle <= 1.1e-7);
+    // The base with the knots inserted is the same curve.
+    CHECK(distance(o.base.point(0.37), c.point(0.37)) <= 1e-12);
+}
+
+TEST_CASE("a saddle's offset is within the tolerance of the exact offset at 10,000 random points", "[placement][offset]")
+{
+    const NurbsSurface s = saddle();
+    OffsetOptions opt;
+    opt.tolerance = 1e-6;
+    const SurfaceOffset o = offsetSurface(s, 0.05, opt);
+    INFO("knots inserted " << o.knotsInserted << ", maxError " << o.maxError);
+    CHECK(o.knotsInserted > 0);
+    CHECK(o.maxError <= 1e-6);
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> t(0.001, 0.999);
+    double worst = 0.0;
+    for (int k = 0; k < 10000; ++k) {
+        const double u = t(random), v = t(random), h = 1e-6;
+        const Vector3 su = (1.0 / (2.0 * h)) * (s.point(u + h, v) - s.point(u - h, v));
+        const Vector3 sv = (1.0 / (2.0 * h)) * (s.point(u, v + h) - s.point(u, v - h));
+        const Vector3 n = cross(su, sv);
+        const Point3 exact = s.point(u, v) + (0.05 / norm(n)) * n;
+        worst = std::max(worst, distance(o.offset.point(u, v), exact));
+    }
+    INFO("largest distance from the exact offset " << worst);
+    CHECK(worst <= 1.05e-6);
+}
+
+TEST_CASE("a ply on a cylinder: the offset cylinder exactly, volume pi((R+t)^2 - R^2) L, positive Jacobian", "[placement][ply]")
+{
+    const double r = 1.0, t = 0.2, length = 3.0;
+    const NurbsSurface base = cylinder(r, length);
+    const SurfaceOffset o = offsetSurface(base, t);
+    CHECK(o.knotsInserted == 0);
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> p(0.0, 1.0);
+    double worst = 0.0;
+    for (int k = 0; k < 10000; ++k) {
+        const Point3 q = o.offset.point(p(random), p(random));
+        worst = std::max(worst, std::abs(std::hypot(q.x, q.y) - (r + t)));
+    }
+    CHECK(worst <= 1e-9);
+    const NurbsVolume ply = plySolid(o.base, o.offset);
+    const VolumeMeasure m = measureVolume(ply);
+    const double exact = kPi * ((r + t) * (r + t) - r * r) * length;
+    INFO("volume " << m.volume << ", exact " << exact << " (relative " << std::abs(m.volume - exact) / exact << "), Jacobian "
+                   << m.minJacobian << " .. " << m.maxJacobian);
+    CHECK(std::abs(m.volume - exact) <= 1e-6 * exact);
+    CHECK(m.minJacobian > 0.0);
+    // Sampled independently of the quadrature points: positive everywhere.
+    double smallest = 1e300;
+    for (int k = 0; k < 2000; ++k) smallest = std::min(smallest, ply.jacobian(p(random), p(random), p(random)));
+    CHECK(smallest > 0.0);
+
+    // The files: JSON that Python reads, VTK hexahedra that meshio reads.
+    const fs::path dir = fs::temp_directory_path() / ("towgeom_ply_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    {
+        std::ofstream json(dir / "ply.json"), vtk(dir / "ply.vtk");
+        writeNurbsVolumeJson(ply, json);
+        writeNurbsVolumeVtk(ply, vtk, 4);
+    }
+    const testing::Run py = testing::runShell(
+        "/usr/bin/python3 -c \"import json, meshio\n"
+        "j = json.load(open('" + (dir / "ply.json").string() + "'))\n"
+        "m = meshio.read('" + (dir / "ply.vtk").string() + "')\n"
+        "print(j['degrees'], j['counts'], len(j['poles']), len(m.cells_dict['hexahedron']), bool(m.point_data['jacobian'].min() > 0))\"");
+    REQUIRE(py.status == 0);
+    // 4 spans around x 4 samples, 1 span along x 4, 1 through x 2: 16 x 4 x 2 hexahedra.
+    CHECK(py.out == "[2, 1, 1] [9, 2, 2] 36 128 True\n");
+    fs::remove_all(dir);
+}
+
+TEST_CASE("offsets and plies refuse ill-formed NURBS, naming what", "[placement]")
+{
+    NurbsCurve c = circle(1.0, 0.0, 0.0, 0.0);
+    c.knots[2] = 0.1;  // not clamped
+    CHECK_THROWS_WITH(offsetCurve(c, 0.1, {0, 0, 1}), Catch::Contains("clamped"));
+    c = circle(1.0, 0.0, 0.0, 0.0);
+    c.weights[2] = 0.0;
+    CHECK_THROWS_WITH(offsetCurve(c, 0.1, {0, 0, 1}), Catch::Contains("weight"));
+    CHECK_THROWS_AS(offsetCurve(circle(1.0, 0.0, 0.0, 0.0), 0.1, {0, 0, 0}), Error);
+    const NurbsSurface a = cylinder(1.0, 2.0), b = saddle();
+    try {
+        plySolid(a, b);
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::InvalidArgument);
+    }
+}
