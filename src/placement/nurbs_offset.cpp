@@ -5,16 +5,7 @@
 // from the exact one by more than the tolerance.
 #include "towgeom/nurbs_offset.hpp"
 
-#include <BSplCLib.hxx>
-#include <Geom_BSplineCurve.hxx>
-#include <Geom_BSplineSurface.hxx>
 #include <Standard_Failure.hxx>
-#include <TColStd_Array1OfInteger.hxx>
-#include <TColStd_Array1OfReal.hxx>
-#include <TColStd_Array2OfReal.hxx>
-#include <TColgp_Array1OfPnt.hxx>
-#include <TColgp_Array2OfPnt.hxx>
-#include <math_Matrix.hxx>
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
@@ -26,6 +17,7 @@
 #include <string>
 
 #include "placement/nurbs_basis.hpp"
+#include "placement/nurbs_geometry.hpp"
 #include "surface/occt_convert.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
@@ -35,102 +27,6 @@ TOWGEOM_BEGIN_NAMESPACE
 namespace {
 
 using detail::BasisRow;
-
-/// Distinct knots and multiplicities of a full knot vector (OCCT's form).
-void splitKnots(const std::vector<double>& full, TColStd_Array1OfReal& knots, TColStd_Array1OfInteger& mults)
-{
-    std::vector<double> k;
-    std::vector<int> m;
-    for (double x : full) {
-        if (!k.empty() && x == k.back()) ++m.back();
-        else {
-            k.push_back(x);
-            m.push_back(1);
-        }
-    }
-    knots.Resize(1, static_cast<int>(k.size()), Standard_False);
-    mults.Resize(1, static_cast<int>(m.size()), Standard_False);
-    for (std::size_t i = 0; i < k.size(); ++i) {
-        knots.SetValue(static_cast<int>(i) + 1, k[i]);
-        mults.SetValue(static_cast<int>(i) + 1, m[i]);
-    }
-}
-
-std::vector<double> fullKnots(const TColStd_Array1OfReal& knots, const TColStd_Array1OfInteger& mults)
-{
-    std::vector<double> full;
-    for (int i = knots.Lower(); i <= knots.Upper(); ++i)
-        for (int k = 0; k < mults(i); ++k) full.push_back(knots(i));
-    return full;
-}
-
-Handle(Geom_BSplineCurve) toOcct(const NurbsCurve& c)
-{
-    detail::checkKnots(c.knots, c.degree, c.poles.size(), "curve");
-    detail::checkWeights(c.weights, c.poles.size(), "curve");
-    TColgp_Array1OfPnt poles(1, static_cast<int>(c.poles.size()));
-    TColStd_Array1OfReal weights(1, static_cast<int>(c.poles.size()));
-    for (std::size_t i = 0; i < c.poles.size(); ++i) {
-        poles.SetValue(static_cast<int>(i) + 1, detail::toOcct(c.poles[i]));
-        weights.SetValue(static_cast<int>(i) + 1, c.weights[i]);
-    }
-    TColStd_Array1OfReal knots(1, 1);
-    TColStd_Array1OfInteger mults(1, 1);
-    splitKnots(c.knots, knots, mults);
-    return new Geom_BSplineCurve(poles, weights, knots, mults, c.degree);
-}
-
-NurbsCurve fromOcct(const Handle(Geom_BSplineCurve)& g)
-{
-    NurbsCurve c;
-    c.degree = g->Degree();
-    c.knots = fullKnots(g->Knots(), g->Multiplicities());
-    for (int i = 1; i <= g->NbPoles(); ++i) {
-        c.poles.push_back(detail::fromOcct(g->Pole(i)));
-        c.weights.push_back(g->Weight(i));
-    }
-    return c;
-}
-
-Handle(Geom_BSplineSurface) toOcct(const NurbsSurface& s)
-{
-    detail::checkKnots(s.uKnots, s.uDegree, s.uCount, "surface (u)");
-    detail::checkKnots(s.vKnots, s.vDegree, s.vCount, "surface (v)");
-    detail::checkWeights(s.weights, s.uCount * s.vCount, "surface");
-    if (s.poles.size() != s.uCount * s.vCount)
-        throw Error(ErrorCode::InvalidArgument, "NURBS surface: " + std::to_string(s.poles.size()) + " poles, not uCount x vCount");
-    const int nu = static_cast<int>(s.uCount), nv = static_cast<int>(s.vCount);
-    TColgp_Array2OfPnt poles(1, nu, 1, nv);
-    TColStd_Array2OfReal weights(1, nu, 1, nv);
-    for (int i = 0; i < nu; ++i)
-        for (int j = 0; j < nv; ++j) {
-            const std::size_t k = static_cast<std::size_t>(i) * s.vCount + static_cast<std::size_t>(j);
-            poles.SetValue(i + 1, j + 1, detail::toOcct(s.poles[k]));
-            weights.SetValue(i + 1, j + 1, s.weights[k]);
-        }
-    TColStd_Array1OfReal uk(1, 1), vk(1, 1);
-    TColStd_Array1OfInteger um(1, 1), vm(1, 1);
-    splitKnots(s.uKnots, uk, um);
-    splitKnots(s.vKnots, vk, vm);
-    return new Geom_BSplineSurface(poles, weights, uk, vk, um, vm, s.uDegree, s.vDegree);
-}
-
-NurbsSurface fromOcct(const Handle(Geom_BSplineSurface)& g)
-{
-    NurbsSurface s;
-    s.uDegree = g->UDegree();
-    s.vDegree = g->VDegree();
-    s.uKnots = fullKnots(g->UKnots(), g->UMultiplicities());
-    s.vKnots = fullKnots(g->VKnots(), g->VMultiplicities());
-    s.uCount = static_cast<std::size_t>(g->NbUPoles());
-    s.vCount = static_cast<std::size_t>(g->NbVPoles());
-    for (int i = 1; i <= g->NbUPoles(); ++i)
-        for (int j = 1; j <= g->NbVPoles(); ++j) {
-            s.poles.push_back(detail::fromOcct(g->Pole(i, j)));
-            s.weights.push_back(g->Weight(i, j));
-        }
-    return s;
-}
 
 /// Greville abscissae of a full knot vector: t_i = mean of knots i+1 .. i+p.
 std::vector<double> greville(const std::vector<double>& knots, int p, std::size_t n)
@@ -178,23 +74,23 @@ Eigen::MatrixXd solveDense(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b)
 
 }  // namespace
 
-Point3 NurbsCurve::point(double t) const { return detail::fromOcct(toOcct(*this)->Value(t)); }
+Point3 NurbsCurve::point(double t) const { return detail::fromOcct(detail::occtCurve(*this)->Value(t)); }
 
 Vector3 NurbsCurve::derivative(double t) const
 {
     gp_Pnt p;
     gp_Vec d;
-    toOcct(*this)->D1(t, p, d);
+    detail::occtCurve(*this)->D1(t, p, d);
     return detail::fromOcct(d);
 }
 
-Point3 NurbsSurface::point(double u, double v) const { return detail::fromOcct(toOcct(*this)->Value(u, v)); }
+Point3 NurbsSurface::point(double u, double v) const { return detail::fromOcct(detail::occtSurface(*this)->Value(u, v)); }
 
 Vector3 NurbsSurface::normal(double u, double v) const
 {
     gp_Pnt p;
     gp_Vec du, dv;
-    toOcct(*this)->D1(u, v, p, du, dv);
+    detail::occtSurface(*this)->D1(u, v, p, du, dv);
     const gp_Vec n = du.Crossed(dv);
     if (!(n.Magnitude() > 0.0)) throw Error(ErrorCode::InvalidArgument, "NURBS surface: no normal where dS/du x dS/dv vanishes");
     return detail::fromOcct(n.Normalized());
@@ -207,7 +103,7 @@ CurveOffset offsetCurve(const NurbsCurve& curve, double d, const Vector3& planeN
     const Vector3 z = (1.0 / norm(planeNormal)) * planeNormal;
     CurveOffset result;
     try {
-        Handle(Geom_BSplineCurve) c = toOcct(curve);
+        Handle(Geom_BSplineCurve) c = detail::occtCurve(curve);
         const auto exact = [&](double t) {
             gp_Pnt p;
             gp_Vec dp;
@@ -217,7 +113,7 @@ CurveOffset offsetCurve(const NurbsCurve& curve, double d, const Vector3& planeN
             return detail::fromOcct(p) + (d / norm(n)) * n;
         };
         for (int round = 0;; ++round) {
-            NurbsCurve base = fromOcct(c);
+            NurbsCurve base = detail::nurbsCurve(c);
             const std::size_t n = base.poles.size();
             const std::vector<double> g = greville(base.knots, base.degree, n);
             Eigen::MatrixXd a = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
@@ -233,7 +129,7 @@ CurveOffset offsetCurve(const NurbsCurve& curve, double d, const Vector3& planeN
             NurbsCurve offset = base;
             for (std::size_t i = 0; i < n; ++i)
                 offset.poles[i] = {poles(static_cast<Eigen::Index>(i), 0), poles(static_cast<Eigen::Index>(i), 1), poles(static_cast<Eigen::Index>(i), 2)};
-            const Handle(Geom_BSplineCurve) o = toOcct(offset);
+            const Handle(Geom_BSplineCurve) o = detail::occtCurve(offset);
             double worst = 0.0;
             std::vector<double> refine;
             for (const auto& [lo, hi] : spans(base.knots)) {
@@ -264,7 +160,7 @@ SurfaceOffset offsetSurface(const NurbsSurface& surface, double d, const OffsetO
     const double tol = toleranceOf(options, surface.poles);
     SurfaceOffset result;
     try {
-        Handle(Geom_BSplineSurface) s = toOcct(surface);
+        Handle(Geom_BSplineSurface) s = detail::occtSurface(surface);
         const auto exact = [&](double u, double v) {
             gp_Pnt p;
             gp_Vec du, dv;
@@ -276,7 +172,7 @@ SurfaceOffset offsetSurface(const NurbsSurface& surface, double d, const OffsetO
             return detail::fromOcct(p) + (d / n.Magnitude()) * detail::fromOcct(n);
         };
         for (int round = 0;; ++round) {
-            NurbsSurface base = fromOcct(s);
+            NurbsSurface base = detail::nurbsSurface(s);
             const std::size_t nu = base.uCount, nv = base.vCount, n = nu * nv;
             const std::vector<double> gu = greville(base.uKnots, base.uDegree, nu), gv = greville(base.vKnots, base.vDegree, nv);
             // The rational basis at (u_i, v_j): B-spline products times weights over their sum.
@@ -311,7 +207,7 @@ SurfaceOffset offsetSurface(const NurbsSurface& surface, double d, const OffsetO
             NurbsSurface offset = base;
             for (std::size_t k = 0; k < n; ++k)
                 offset.poles[k] = {poles(static_cast<Eigen::Index>(k), 0), poles(static_cast<Eigen::Index>(k), 1), poles(static_cast<Eigen::Index>(k), 2)};
-            const Handle(Geom_BSplineSurface) o = toOcct(offset);
+            const Handle(Geom_BSplineSurface) o = detail::occtSurface(offset);
             double worst = 0.0;
             std::set<double> refineU, refineV;
             const auto su = spans(base.uKnots), sv = spans(base.vKnots);
