@@ -22,15 +22,6 @@ using namespace towgeom;
 
 namespace {
 
-/// The bundled 2/2 twill (examples/data/twill): 8 tows, 16 interpenetrations.
-std::vector<TowSurface> bundledTwill()
-{
-    std::vector<TowSurface> tows;
-    for (const char* name : {"warp_0", "warp_1", "warp_2", "warp_3", "weft_0", "weft_1", "weft_2", "weft_3"})
-        tows.push_back(TowSurface::fit(readStackFile(std::string(TOWGEOM_EXAMPLE_DATA) + "/twill/" + name + ".stw")));
-    return tows;
-}
-
 ResolveOptions atSize(double relative)
 {
     ResolveOptions o;
@@ -74,7 +65,7 @@ ErrorCode codeOf(const std::function<void()>& f)
 
 TEST_CASE("intersection report JSON: exact round trip, and the chained stages give resolveTextile()'s mesh", "[stages][json]")
 {
-    const std::vector<TowSurface> tows = bundledTwill();
+    const std::vector<TowSurface> tows = testing::bundledTwill(TOWGEOM_EXAMPLE_DATA);
     const IntersectionReport found = intersectTows(tows);
     REQUIRE(found.loops.size() == 16);
     const std::string json = jsonOf(found, tows);
@@ -145,7 +136,7 @@ TEST_CASE("intersection report JSON: exact round trip, and the chained stages gi
 TEST_CASE("meshTows alone: every tow's own closed mesh, loops shared node for node, connectRegions on it with two rankings",
           "[stages][connect]")
 {
-    const std::vector<TowSurface> tows = bundledTwill();
+    const std::vector<TowSurface> tows = testing::bundledTwill(TOWGEOM_EXAMPLE_DATA);
     const IntersectionReport found = intersectTows(tows);
     const ResolveOptions o = atSize(0.2);
     const ResolveResult meshed = meshTows(tows, found, o);
@@ -210,7 +201,7 @@ TEST_CASE("meshTows alone: every tow's own closed mesh, loops shared node for no
 TEST_CASE("connectRegions: a pair whose loop is wrong on one tow is left unresolved (RegionFailed), the rest connected",
           "[stages][connect]")
 {
-    const std::vector<TowSurface> tows = bundledTwill();
+    const std::vector<TowSurface> tows = testing::bundledTwill(TOWGEOM_EXAMPLE_DATA);
     const ResolveOptions o = atSize(0.2);
     ResolveResult meshed = meshTows(tows, intersectTows(tows), o);
     REQUIRE(meshed.mesh.loops.size() == 16);
@@ -252,7 +243,7 @@ TEST_CASE("connectRegions: a pair whose loop is wrong on one tow is left unresol
 
 TEST_CASE("connectRegions refuses meshes that do not fit the tows, naming the tow or loop", "[stages][connect]")
 {
-    const std::vector<TowSurface> tows = bundledTwill();
+    const std::vector<TowSurface> tows = testing::bundledTwill(TOWGEOM_EXAMPLE_DATA);
     const ResolveOptions o = atSize(0.3);
     const ResolveResult meshed = meshTows(tows, intersectTows(tows), o);
     const auto messageOf = [&](const ResolveResult& bad, const std::vector<TowSurface>& with) {
@@ -323,7 +314,7 @@ TEST_CASE("connectRegions refuses meshes that do not fit the tows, naming the to
 
 TEST_CASE("mesh-size study: one intersection report meshed at three sizes", "[stages]")
 {
-    const std::vector<TowSurface> tows = bundledTwill();
+    const std::vector<TowSurface> tows = testing::bundledTwill(TOWGEOM_EXAMPLE_DATA);
     const auto t0 = std::chrono::steady_clock::now();
     const IntersectionReport loops = intersectTows(tows);
     const double intersectS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -347,7 +338,7 @@ TEST_CASE("mesh-size study: one intersection report meshed at three sizes", "[st
 
 TEST_CASE("intersection report JSON: a report for other tows or a broken file is refused", "[stages][json]")
 {
-    const std::vector<TowSurface> tows = bundledTwill();
+    const std::vector<TowSurface> tows = testing::bundledTwill(TOWGEOM_EXAMPLE_DATA);
     const IntersectionReport found = intersectTows(tows);
     const std::string json = jsonOf(found, tows);
 
@@ -419,7 +410,7 @@ struct Recorder : Progress {
 
 TEST_CASE("one Progress for every stage: counted updates, and cancel() stops the stage in hand", "[stages][progress]")
 {
-    const std::vector<TowSurface> tows = bundledTwill();
+    const std::vector<TowSurface> tows = testing::bundledTwill(TOWGEOM_EXAMPLE_DATA);
     ResolveOptions o = atSize(0.3);
     o.threads = 2;
 
@@ -479,7 +470,7 @@ TEST_CASE("one Progress for every stage: counted updates, and cancel() stops the
 
 TEST_CASE("intersection report JSON: numbers out of range, far v, wrong arc lengths, repeats, huge tolerances are refused", "[stages][json]")
 {
-    const std::vector<TowSurface> tows = bundledTwill();
+    const std::vector<TowSurface> tows = testing::bundledTwill(TOWGEOM_EXAMPLE_DATA);
     const IntersectionReport found = intersectTows(tows);
     const nlohmann::json good = nlohmann::json::parse(jsonOf(found, tows));
     const auto refused = [&](const std::function<void(nlohmann::json&)>& edit) {
@@ -549,7 +540,7 @@ TEST_CASE("typed reasons: a tow through another is resolved with caps, skipped a
 
 TEST_CASE("TextileMesh: each triangle's fibre direction and each node's (u,v) on the tows it lies on", "[stages][fibre]")
 {
-    const std::vector<TowSurface> tows = bundledTwill();
+    const std::vector<TowSurface> tows = testing::bundledTwill(TOWGEOM_EXAMPLE_DATA);
     const ResolveResult r = resolveTextile(tows, atSize(0.2));
     const TextileMesh& mesh = r.mesh;
     for (std::size_t t = 0; t < tows.size(); ++t) {
@@ -590,7 +581,7 @@ TEST_CASE("TextileMesh: each triangle's fibre direction and each node's (u,v) on
 
 TEST_CASE("intersection loops from the host's own points: refined onto both surfaces, resolved like intersectTows()'s", "[stages][host-loops]")
 {
-    const std::vector<TowSurface> tows = bundledTwill();
+    const std::vector<TowSurface> tows = testing::bundledTwill(TOWGEOM_EXAMPLE_DATA);
     const IntersectionReport found = intersectTows(tows);
     // Every 4th exact point, moved off the curve by 1 % of the tow size: a coarser, noisier
     // polyline such as another program gives.
@@ -624,7 +615,7 @@ TEST_CASE("intersection loops from the host's own points: refined onto both surf
 
 TEST_CASE("reports: writeResolveReport and writeDetectReport give the CLI's JSON, numbers exact, bad input refused", "[stages][report]")
 {
-    const std::vector<TowSurface> tows = bundledTwill();
+    const std::vector<TowSurface> tows = testing::bundledTwill(TOWGEOM_EXAMPLE_DATA);
     const IntersectionReport found = intersectTows(tows);
     const ResolveResult r = resolveTextile(tows, found, atSize(0.3));
     std::ostringstream out;

@@ -28,14 +28,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<TowSurface> bundledTwill()
-{
-    std::vector<TowSurface> tows;
-    for (const char* name : {"warp_0", "warp_1", "warp_2", "warp_3", "weft_0", "weft_1", "weft_2", "weft_3"})
-        tows.push_back(TowSurface::fit(readStackFile(std::string(TOWGEOM_EXAMPLE_DATA) + "/twill/" + name + ".stw")));
-    return tows;
-}
-
 fs::path freshDirectory(const std::string& name)
 {
     const fs::path dir = fs::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
@@ -51,7 +43,7 @@ double relative(double a, double b) { return std::abs(a - b) / std::abs(b); }
 TEST_CASE("trimmed B-rep of the bundled twill: valid named solids, exact volumes, shared faces, Gmsh meshes the STEP",
           "[brep]")
 {
-    const std::vector<TowSurface> tows = bundledTwill();
+    const std::vector<TowSurface> tows = testing::bundledTwill(TOWGEOM_EXAMPLE_DATA);
     const ResolveResult r = resolveTextile(tows);
     REQUIRE(r.mesh.regions.size() == 16);
     const TrimmedBrep brep = trimmedBrep(tows, r);
@@ -162,7 +154,7 @@ TEST_CASE("trimmed B-rep of a ring-shaped overlap: the island is a face of both 
 
 TEST_CASE("trimmed B-rep: what is not built yet is refused, naming it", "[brep]")
 {
-    const std::vector<TowSurface> tows = bundledTwill();
+    const std::vector<TowSurface> tows = testing::bundledTwill(TOWGEOM_EXAMPLE_DATA);
     ResolveOptions o;
     o.method = ResolutionMethod::Symmetric;
     const ResolveResult symmetric = resolveTextile(tows, o);

@@ -1,5 +1,6 @@
 #include "synthetic_tows.hpp"
 
+#include <towgeom/stack_reader.hpp>
 #include <towgeom/weave.hpp>
 
 #include <cmath>
@@ -160,6 +161,14 @@ std::vector<TowSurface> fitAll(const std::vector<TowStack>& stacks)
 {
     std::vector<TowSurface> tows;
     for (const TowStack& s : stacks) tows.push_back(TowSurface::fit(s));
+    return tows;
+}
+
+std::vector<TowSurface> bundledTwill(const std::string& exampleData)
+{
+    std::vector<TowSurface> tows;
+    for (const char* name : {"warp_0", "warp_1", "warp_2", "warp_3", "weft_0", "weft_1", "weft_2", "weft_3"})
+        tows.push_back(TowSurface::fit(readStackFile(exampleData + "/twill/" + name + ".stw")));
     return tows;
 }
 

@@ -80,4 +80,7 @@ std::vector<TowSurface> fitAll(const std::vector<TowStack>& stacks);
 /// The generator's 4x4 2/2 twill (overlap 0.08, default sampling), fitted: 8 tows, 16 loops.
 std::vector<TowSurface> fittedTwill22();
 
+/// The bundled 2/2 twill (@p exampleData/twill, the README's example): 8 tows, 16 interpenetrations.
+std::vector<TowSurface> bundledTwill(const std::string& exampleData);
+
 }  // namespace towgeom::testing
