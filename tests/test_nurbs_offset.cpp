@@ -120,6 +120,7 @@ TEST_CASE("a free-form curve's offset: knots inserted until it is within the tol
     INFO("knots inserted " << o.knotsInserted << ", maxError " << o.maxError);
     CHECK(o.knotsInserted > 0);
     CHECK(o.maxError <= 1e-7);
+    CHECK(o.converged);
     // Independently: q - p has length d and is normal to the curve (derivative by central
     // differences of the input), at 1,000 random parameters.
     std::mt19937 random(11);
@@ -208,8 +209,65 @@ TEST_CASE("a ply on a cylinder: the offset cylinder exactly, volume pi((R+t)^2 -
     fs::remove_all(dir);
 }
 
+TEST_CASE("a curve with a corner: the offset cannot converge there, says so and stops", "[placement][offset]")
+{
+    // An L of two straight quadratic pieces meeting at a double knot: the exact offset jumps.
+    NurbsCurve c;
+    c.degree = 2;
+    c.knots = {0, 0, 0, 0.5, 0.5, 1, 1, 1};
+    c.poles = {{0, 0, 0}, {0.5, 0, 0}, {1, 0, 0}, {1, 0.5, 0}, {1, 1, 0}};
+    c.weights = {2, 2, 2, 2, 2};  // equal weights: not rational, kept as given
+    const CurveOffset o = offsetCurve(c, 0.1, {0.0, 0.0, 1.0});
+    INFO("knots inserted " << o.knotsInserted << ", maxError " << o.maxError);
+    CHECK_FALSE(o.converged);
+    CHECK(o.maxError > 0.01);
+    CHECK(o.knotsInserted < 200);
+    CHECK(o.offset.weights == std::vector<double>(o.offset.poles.size(), 2.0));
+}
+
+TEST_CASE("a ply offset to the inside: a negative Jacobian of one sign, the same volume", "[placement][ply]")
+{
+    const double r = 1.0, t = 0.2, length = 3.0;
+    const NurbsSurface base = cylinder(r, length);
+    const SurfaceOffset o = offsetSurface(base, -t);
+    CHECK(o.converged);
+    const VolumeMeasure m = measureVolume(plySolid(o.base, o.offset));
+    const double exact = kPi * (r * r - (r - t) * (r - t)) * length;
+    CHECK(std::abs(m.volume - exact) <= 1e-9 * exact);
+    CHECK(m.maxJacobian < 0.0);
+}
+
 TEST_CASE("offsets and plies refuse ill-formed NURBS, naming what", "[placement]")
 {
+    {
+        NurbsCurve c;  // an inner knot three times on a quadratic: not continuous
+        c.degree = 2;
+        c.knots = {0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1};
+        c.poles = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {2, 1, 0}, {2, 2, 0}, {3, 2, 0}};
+        c.weights.assign(6, 1.0);
+        CHECK_THROWS_WITH(c.point(0.3), Catch::Contains("more than degree times"));
+    }
+    {
+        // A sphere's pole: no normal there (dS/du vanishes up to rounding only).
+        NurbsSurface s;
+        s.uDegree = 2;
+        s.vDegree = 2;
+        s.uKnots = {0, 0, 0, 1, 1, 1};
+        s.vKnots = {0, 0, 0, 1, 1, 1};
+        s.uCount = s.vCount = 3;
+        const double h = std::sqrt(0.5);
+        const Point3 c{0.3, 0.7, 0.2};
+        // An octant of the unit sphere about c: the row u = 0 collapsed onto its pole.
+        const Point3 p[3][3] = {{{0, 0, 1}, {0, 0, 1}, {0, 0, 1}}, {{1, 0, 1}, {1, 1, 1}, {0, 1, 1}}, {{1, 0, 0}, {1, 1, 0}, {0, 1, 0}}};
+        const double w[3] = {1, h, 1};
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                s.poles.push_back(c + p[i][j]);
+                s.weights.push_back(w[i] * w[j]);
+            }
+        CHECK_THROWS_WITH(s.normal(0.0, 0.5), Catch::Contains("no normal"));
+    }
+
     NurbsCurve c = circle(1.0, 0.0, 0.0, 0.0);
     c.knots[2] = 0.1;  // not clamped
     CHECK_THROWS_WITH(offsetCurve(c, 0.1, {0, 0, 1}), Catch::Contains("clamped"));

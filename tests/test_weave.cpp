@@ -266,7 +266,7 @@ TEST_CASE("the generator's unit cell: one repeat where the textile repeats exact
         double crimp;   // 0: the default
         bool resolve;   // resolve with the cell (the periodic check must accept it)
     };
-    for (const Case k : {Case{WeaveKind::Twill, 2, 2, 1, 6, 6, 4, 4, 0.0, true}, Case{WeaveKind::Twill, 2, 2, 1, 4, 4, 0, 0, 0.0, false},
+    for (const Case& k : {Case{WeaveKind::Twill, 2, 2, 1, 6, 6, 4, 4, 0.0, true}, Case{WeaveKind::Twill, 2, 2, 1, 4, 4, 0, 0, 0.0, false},
                          Case{WeaveKind::Twill, 2, 2, 2, 4, 6, 4, 2, 0.0, true}, Case{WeaveKind::Plain, 1, 1, 1, 4, 4, 2, 2, 0.0, false},
                          Case{WeaveKind::Satin, 5, 1, 2, 7, 7, 5, 5, 0.0, false}, Case{WeaveKind::Basket, 2, 2, 1, 6, 6, 4, 4, 0.0, false},
                          // groups of one are the plain weave (index -1 once fell in the wrong group)

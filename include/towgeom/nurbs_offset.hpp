@@ -78,6 +78,10 @@ struct CurveOffset {
     NurbsCurve offset;   ///< the offset: the same degree, knots and weights as base
     double maxError = 0.0;         ///< the largest |offset(t) - (C(t) + d n(t))| sampled
     std::size_t knotsInserted = 0;  ///< knots inserted into the input
+    /// Whether maxError met the tolerance. Not where the exact offset jumps (the curve turns a
+    /// corner at a knot): refinement stops after two rounds in a row that cut the error by less
+    /// than 5 %, or after OffsetOptions::maxRefinements rounds.
+    bool converged = false;
 };
 
 /// An offset surface and how well it meets the exact offset.
@@ -86,6 +90,8 @@ struct SurfaceOffset {
     NurbsSurface offset;  ///< the offset: the same degrees, knots and weights as base
     double maxError = 0.0;         ///< the largest |offset(u,v) - (S(u,v) + d n(u,v))| sampled
     std::size_t knotsInserted = 0;  ///< knots inserted into the input, both directions
+    /// Whether maxError met the tolerance (not at a crease: see CurveOffset::converged).
+    bool converged = false;
 };
 
 /// Offsets the planar curve @p curve by @p distance in its plane (normal @p planeNormal): the
@@ -93,9 +99,9 @@ struct SurfaceOffset {
 /// curve seen from planeNormal for d > 0). The offset is a NURBS with the same degree, knots and
 /// weights (Nguyen et al. 2014: the same parametrisation, as isogeometric analysis needs): its
 /// poles collocate the exact offset at the Greville points; where it strays further than the
-/// tolerance from the exact offset (sampled 16 times per span), the span's middle knot is
-/// inserted into the input (exactly: OpenCASCADE) and the poles solved again. A circle's offset
-/// is the concentric circle, to rounding.
+/// tolerance from the exact offset (sampled at 17 points per span), the span's middle knot is
+/// inserted into the input (exactly: OpenCASCADE) and the poles solved again, until
+/// CurveOffset::converged. A circle's offset is the concentric circle, to rounding.
 /// @throws towgeom::Error (InvalidArgument) for an ill-formed curve, a zero normal or a curve
 ///         whose derivative vanishes; (Internal) if the collocation system is singular.
 TOWGEOM_EXPORT CurveOffset offsetCurve(const NurbsCurve& curve, double distance, const Vector3& planeNormal,
@@ -104,7 +110,7 @@ TOWGEOM_EXPORT CurveOffset offsetCurve(const NurbsCurve& curve, double distance,
 /// Offsets @p surface by @p distance along its unit normal (NurbsSurface::normal()), as
 /// offsetCurve() does a curve: the same degrees, knots and weights; poles collocating the exact
 /// offset at the Greville points; knots inserted where it strays further than the tolerance
-/// (sampled 8 x 8 times per knot-span element).
+/// (sampled at 9 x 9 points per knot-span element), until SurfaceOffset::converged.
 /// @throws towgeom::Error (InvalidArgument) for an ill-formed surface or a degenerate normal;
 ///         (Internal) if the collocation system is singular.
 TOWGEOM_EXPORT SurfaceOffset offsetSurface(const NurbsSurface& surface, double distance, const OffsetOptions& options = {});
@@ -117,24 +123,30 @@ TOWGEOM_EXPORT NurbsVolume plySolid(const NurbsSurface& base, const NurbsSurface
 
 /// What measureVolume() found.
 struct VolumeMeasure {
-    double volume = 0.0;       ///< the integral of the Jacobian over the parameter box
+    /// The absolute value of the integral of the Jacobian over the parameter box: the volume
+    /// when the Jacobian keeps one sign (its sign is the map's orientation: negative for a ply
+    /// offset to the inside).
+    double volume = 0.0;
     double minJacobian = 0.0;  ///< the smallest Jacobian at the quadrature points
     double maxJacobian = 0.0;  ///< the largest
 };
 
 /// The volume of @p volume by Gauss-Legendre quadrature, @p points per knot span in each
-/// direction, and the range of its Jacobian at those points (positive everywhere: the map does
-/// not fold).
+/// direction, and the range of its Jacobian at those points (of one sign everywhere: the map
+/// does not fold). @throws towgeom::Error (InvalidArgument) for an ill-formed volume or points
+/// outside 1 to 40.
 TOWGEOM_EXPORT VolumeMeasure measureVolume(const NurbsVolume& volume, int points = 8);
 
 /// Writes @p volume as JSON for IGA codes: {"degrees":[p,q,r], "knots":[[..],[..],[..]],
 /// "counts":[nu,nv,nw], "poles":[[x,y,z,w],...]} (poles in NurbsVolume's order; x, y, z not
-/// multiplied by the weight).
+/// multiplied by the weight). @throws towgeom::Error (InvalidArgument) for an ill-formed volume;
+/// (WriteFailed) when the stream fails.
 TOWGEOM_EXPORT void writeNurbsVolumeJson(const NurbsVolume& volume, std::ostream& out);
 
-/// Writes @p volume sampled on a grid of @p samples x @p samples x 2 hexahedra per knot-span
-/// element (at least one through the thickness) as legacy VTK (ParaView), with the Jacobian as
-/// point data.
+/// Writes @p volume sampled on a grid of @p samples x @p samples x max(1, @p samples / 2)
+/// hexahedra per knot-span element as legacy VTK (ParaView), with the Jacobian as point data.
+/// @throws towgeom::Error (InvalidArgument) for an ill-formed volume or samples outside 1 to 64;
+///         (WriteFailed) when the stream fails.
 TOWGEOM_EXPORT void writeNurbsVolumeVtk(const NurbsVolume& volume, std::ostream& out, int samples = 4);
 
 /// @}

@@ -52,10 +52,28 @@ void checkKnots(const std::vector<double>& knots, int p, std::size_t poles, cons
         if (!std::isfinite(knots[k])) throw Error(ErrorCode::InvalidArgument, which + "a knot is not finite");
         if (k > 0 && knots[k] < knots[k - 1]) throw Error(ErrorCode::InvalidArgument, which + "the knots decrease");
     }
-    for (int k = 1; k <= p; ++k)
-        if (knots[static_cast<std::size_t>(k)] != knots.front() || knots[knots.size() - 1 - static_cast<std::size_t>(k)] != knots.back())
+    if (p > BSplCLib::MaxDegree()) throw Error(ErrorCode::InvalidArgument, which + "a degree over " + std::to_string(BSplCLib::MaxDegree()));
+    // Clamped: the first and last knots exactly p + 1 times; inside, no knot more than p times
+    // (the curve stays continuous) and distinct knots apart.
+    const std::size_t q = static_cast<std::size_t>(p);
+    for (std::size_t k = 0; k < knots.size();) {
+        std::size_t m = 1;
+        while (k + m < knots.size() && knots[k + m] == knots[k]) ++m;
+        const bool end = k == 0 || k + m == knots.size();
+        if (end && m != q + 1)
             throw Error(ErrorCode::InvalidArgument, which + "the knot vector is not clamped (first and last knots degree + 1 times)");
-    if (!(knots.back() > knots.front())) throw Error(ErrorCode::InvalidArgument, which + "the knots span no interval");
+        if (!end && m > q) throw Error(ErrorCode::InvalidArgument, which + "an inner knot repeated more than degree times");
+        if (k + m < knots.size() && !(knots[k + m] - knots[k] > 1e-12 * (std::abs(knots.back()) + std::abs(knots.front()) + 1.0)))
+            throw Error(ErrorCode::InvalidArgument, which + "two distinct knots closer than 1e-12 of the range");
+        k += m;
+    }
+}
+
+void checkPoles(const std::vector<Point3>& poles, const std::string& what)
+{
+    for (const Point3& p : poles)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            throw Error(ErrorCode::InvalidArgument, "NURBS " + what + ": a pole is not finite");
 }
 
 void checkWeights(const std::vector<double>& weights, std::size_t poles, const std::string& what)

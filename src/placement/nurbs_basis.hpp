@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "towgeom/point.hpp"
 #include "towgeom/export.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
@@ -26,6 +27,8 @@ BasisRow rationalBasis(const std::vector<double>& knots, int p, const std::vecto
 /// Refuses (InvalidArgument, naming @p what) a knot vector that is not a clamped, non-decreasing,
 /// finite full knot vector of degree @p p for @p poles poles.
 void checkKnots(const std::vector<double>& knots, int p, std::size_t poles, const std::string& what);
+/// Refuses poles that are not finite.
+void checkPoles(const std::vector<Point3>& poles, const std::string& what);
 /// Refuses weights that are not @p poles positive finite numbers.
 void checkWeights(const std::vector<double>& weights, std::size_t poles, const std::string& what);
 

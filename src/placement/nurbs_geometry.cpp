@@ -53,6 +53,7 @@ Handle(Geom_BSplineCurve) occtCurve(const NurbsCurve& c)
 {
     checkKnots(c.knots, c.degree, c.poles.size(), "curve");
     checkWeights(c.weights, c.poles.size(), "curve");
+    checkPoles(c.poles, "curve");
     TColgp_Array1OfPnt poles(1, static_cast<int>(c.poles.size()));
     TColStd_Array1OfReal weights(1, static_cast<int>(c.poles.size()));
     for (std::size_t i = 0; i < c.poles.size(); ++i) {
@@ -82,6 +83,7 @@ Handle(Geom_BSplineSurface) occtSurface(const NurbsSurface& s)
     checkKnots(s.uKnots, s.uDegree, s.uCount, "surface (u)");
     checkKnots(s.vKnots, s.vDegree, s.vCount, "surface (v)");
     checkWeights(s.weights, s.uCount * s.vCount, "surface");
+    checkPoles(s.poles, "surface");
     if (s.poles.size() != s.uCount * s.vCount)
         throw Error(ErrorCode::InvalidArgument, "NURBS surface: " + std::to_string(s.poles.size()) + " poles, not uCount x vCount");
     const int nu = static_cast<int>(s.uCount), nv = static_cast<int>(s.vCount);

@@ -7,7 +7,6 @@
 
 #include <Standard_Failure.hxx>
 
-#include <Eigen/Dense>
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 
@@ -65,35 +64,66 @@ std::vector<std::pair<double, double>> spans(const std::vector<double>& knots)
     return s;
 }
 
-Eigen::MatrixXd solveDense(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b)
+/// Solves the collocation system (a row per collocation point, p + 1 or (p + 1)(q + 1) entries).
+Eigen::MatrixXd solveSparse(std::size_t n, const std::vector<Eigen::Triplet<double>>& entries, const Eigen::MatrixXd& rhs)
 {
-    const Eigen::FullPivLU<Eigen::MatrixXd> lu(a);
-    if (!lu.isInvertible()) throw Error(ErrorCode::Internal, "offset: the collocation system is singular");
-    return lu.solve(b);
+    Eigen::SparseMatrix<double> a(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+    a.setFromTriplets(entries.begin(), entries.end());
+    a.makeCompressed();
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+    lu.compute(a);
+    if (lu.info() != Eigen::Success) throw Error(ErrorCode::Internal, "offset: the collocation system is singular");
+    return lu.solve(rhs);
+}
+
+/// Whether the cross product @p n of two vectors of lengths @p a and @p b is too small to give a
+/// direction (relative: at a collapsed row of poles it is zero only up to rounding).
+bool degenerate(double n, double a, double b) { return !(n > 1e-10 * a * b); }
+
+/// Runs @p f, OpenCASCADE's failures (on input the checks let through) as InvalidArgument.
+template <class F>
+auto guardedEvaluation(const char* what, F f)
+{
+    try {
+        return f();
+    } catch (const Standard_Failure& e) {
+        throw Error(ErrorCode::InvalidArgument, std::string(what) + ": OpenCASCADE refused the NURBS: " + e.GetMessageString());
+    }
 }
 
 }  // namespace
 
-Point3 NurbsCurve::point(double t) const { return detail::fromOcct(detail::occtCurve(*this)->Value(t)); }
+Point3 NurbsCurve::point(double t) const
+{
+    return guardedEvaluation("NurbsCurve::point", [&] { return detail::fromOcct(detail::occtCurve(*this)->Value(t)); });
+}
 
 Vector3 NurbsCurve::derivative(double t) const
 {
-    gp_Pnt p;
-    gp_Vec d;
-    detail::occtCurve(*this)->D1(t, p, d);
-    return detail::fromOcct(d);
+    return guardedEvaluation("NurbsCurve::derivative", [&] {
+        gp_Pnt p;
+        gp_Vec d;
+        detail::occtCurve(*this)->D1(t, p, d);
+        return detail::fromOcct(d);
+    });
 }
 
-Point3 NurbsSurface::point(double u, double v) const { return detail::fromOcct(detail::occtSurface(*this)->Value(u, v)); }
+Point3 NurbsSurface::point(double u, double v) const
+{
+    return guardedEvaluation("NurbsSurface::point", [&] { return detail::fromOcct(detail::occtSurface(*this)->Value(u, v)); });
+}
 
 Vector3 NurbsSurface::normal(double u, double v) const
 {
-    gp_Pnt p;
-    gp_Vec du, dv;
-    detail::occtSurface(*this)->D1(u, v, p, du, dv);
-    const gp_Vec n = du.Crossed(dv);
-    if (!(n.Magnitude() > 0.0)) throw Error(ErrorCode::InvalidArgument, "NURBS surface: no normal where dS/du x dS/dv vanishes");
-    return detail::fromOcct(n.Normalized());
+    return guardedEvaluation("NurbsSurface::normal", [&] {
+        gp_Pnt p;
+        gp_Vec du, dv;
+        detail::occtSurface(*this)->D1(u, v, p, du, dv);
+        const gp_Vec n = du.Crossed(dv);
+        if (degenerate(n.Magnitude(), du.Magnitude(), dv.Magnitude()))
+            throw Error(ErrorCode::InvalidArgument, "NURBS surface: no normal where dS/du x dS/dv vanishes (a pole of the surface?)");
+        return detail::fromOcct(n.Normalized());
+    });
 }
 
 CurveOffset offsetCurve(const NurbsCurve& curve, double d, const Vector3& planeNormal, const OffsetOptions& options)
@@ -109,23 +139,27 @@ CurveOffset offsetCurve(const NurbsCurve& curve, double d, const Vector3& planeN
             gp_Vec dp;
             c->D1(t, p, dp);
             const Vector3 n = cross(detail::fromOcct(dp), z);
-            if (!(norm(n) > 0.0)) throw Error(ErrorCode::InvalidArgument, "offsetCurve: the curve's derivative vanishes (or is along the plane normal)");
+            if (degenerate(norm(n), dp.Magnitude(), 1.0) || !(dp.Magnitude() > 0.0))
+                throw Error(ErrorCode::InvalidArgument, "offsetCurve: the curve's derivative vanishes (or is along the plane normal)");
             return detail::fromOcct(p) + (d / norm(n)) * n;
         };
+        int flat = 0;  // rounds in a row that did not cut the error
         for (int round = 0;; ++round) {
             NurbsCurve base = detail::nurbsCurve(c);
+            // OCCT keeps no weights for a curve whose weights are all equal: give back the input's.
+            if (!c->IsRational()) base.weights.assign(base.poles.size(), curve.weights.front());
             const std::size_t n = base.poles.size();
             const std::vector<double> g = greville(base.knots, base.degree, n);
-            Eigen::MatrixXd a = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+            std::vector<Eigen::Triplet<double>> a;
             Eigen::MatrixXd rhs(static_cast<Eigen::Index>(n), 3);
             for (std::size_t i = 0; i < n; ++i) {
                 const BasisRow row = detail::rationalBasis(base.knots, base.degree, base.weights, g[i]);
                 for (std::size_t k = 0; k < row.values.size(); ++k)
-                    a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(row.first + k)) = row.values[k];
+                    if (row.values[k] != 0.0) a.emplace_back(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(row.first + k), row.values[k]);
                 const Point3 q = exact(g[i]);
                 rhs.row(static_cast<Eigen::Index>(i)) << q.x, q.y, q.z;
             }
-            const Eigen::MatrixXd poles = solveDense(a, rhs);
+            const Eigen::MatrixXd poles = solveSparse(n, a, rhs);
             NurbsCurve offset = base;
             for (std::size_t i = 0; i < n; ++i)
                 offset.poles[i] = {poles(static_cast<Eigen::Index>(i), 0), poles(static_cast<Eigen::Index>(i), 1), poles(static_cast<Eigen::Index>(i), 2)};
@@ -143,8 +177,13 @@ CurveOffset offsetCurve(const NurbsCurve& curve, double d, const Vector3& planeN
             }
             result.base = base;
             result.offset = offset;
+            // Where the exact offset is not continuous (the curve turns a corner at a knot) no
+            // refinement helps: stop after two rounds in a row that did not cut the error by 5 %.
+            flat = round > 0 && worst > 0.95 * result.maxError ? flat + 1 : 0;
+            const bool stalled = flat >= 2;
             result.maxError = worst;
-            if (refine.empty() || round >= options.maxRefinements) break;
+            result.converged = refine.empty();
+            if (refine.empty() || round >= options.maxRefinements || stalled) break;
             for (double t : refine) c->InsertKnot(t);
             result.knotsInserted += refine.size();
         }
@@ -166,11 +205,12 @@ SurfaceOffset offsetSurface(const NurbsSurface& surface, double d, const OffsetO
             gp_Vec du, dv;
             s->D1(u, v, p, du, dv);
             const gp_Vec n = du.Crossed(dv);
-            if (!(n.Magnitude() > 0.0))
+            if (degenerate(n.Magnitude(), du.Magnitude(), dv.Magnitude()))
                 throw Error(ErrorCode::InvalidArgument, "offsetSurface: the normal is not defined at (" + std::to_string(u) + ", " +
                                                             std::to_string(v) + ") (dS/du x dS/dv vanishes)");
             return detail::fromOcct(p) + (d / n.Magnitude()) * detail::fromOcct(n);
         };
+        int flat = 0;  // rounds in a row that did not cut the error
         for (int round = 0;; ++round) {
             NurbsSurface base = detail::nurbsSurface(s);
             const std::size_t nu = base.uCount, nv = base.vCount, n = nu * nv;
@@ -197,13 +237,7 @@ SurfaceOffset offsetSurface(const NurbsSurface& surface, double d, const OffsetO
                     const Point3 q = exact(gu[i], gv[j]);
                     rhs.row(static_cast<Eigen::Index>(r)) << q.x, q.y, q.z;
                 }
-            Eigen::SparseMatrix<double> a(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-            a.setFromTriplets(entries.begin(), entries.end());
-            a.makeCompressed();
-            Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
-            lu.compute(a);
-            if (lu.info() != Eigen::Success) throw Error(ErrorCode::Internal, "offsetSurface: the collocation system is singular");
-            const Eigen::MatrixXd poles = lu.solve(rhs);
+            const Eigen::MatrixXd poles = solveSparse(n, entries, rhs);
             NurbsSurface offset = base;
             for (std::size_t k = 0; k < n; ++k)
                 offset.poles[k] = {poles(static_cast<Eigen::Index>(k), 0), poles(static_cast<Eigen::Index>(k), 1), poles(static_cast<Eigen::Index>(k), 2)};
@@ -227,8 +261,11 @@ SurfaceOffset offsetSurface(const NurbsSurface& surface, double d, const OffsetO
                 }
             result.base = base;
             result.offset = offset;
+            flat = round > 0 && worst > 0.95 * result.maxError ? flat + 1 : 0;  // a crease: see offsetCurve()
+            const bool stalled = flat >= 2;
             result.maxError = worst;
-            if ((refineU.empty() && refineV.empty()) || round >= options.maxRefinements) break;
+            result.converged = refineU.empty() && refineV.empty();
+            if (result.converged || round >= options.maxRefinements || stalled) break;
             for (double u : refineU) s->InsertUKnot(u, 1, 0.0);
             for (double v : refineV) s->InsertVKnot(v, 1, 0.0);
             result.knotsInserted += refineU.size() + refineV.size();

@@ -30,6 +30,7 @@ void checkVolume(const NurbsVolume& vol)
     const std::size_t n = vol.count[0] * vol.count[1] * vol.count[2];
     if (vol.poles.size() != n) throw Error(ErrorCode::InvalidArgument, "NURBS volume: the poles are not count[0] x count[1] x count[2]");
     detail::checkWeights(vol.weights, n, "volume");
+    detail::checkPoles(vol.poles, "volume");
 }
 
 VolumePoint evaluate(const NurbsVolume& vol, double u, double v, double w)
