@@ -13,7 +13,9 @@ find_package(nlohmann_json 3.11 REQUIRED CONFIG)
 # The OCCT toolkits towgeom links (OCCT's imported targets carry no include directories).
 set(TOWGEOM_OCCT_LIBRARIES TKernel TKMath TKG2d TKG3d TKGeomBase TKGeomAlgo
   # the trimmed B-rep (src/brep): topology, its checks and properties, STEP through XDE
-  TKBRep TKTopAlgo TKSTEP TKXDESTEP TKXSBase TKXCAF TKLCAF TKCAF)
+  TKBRep TKTopAlgo TKSTEP TKXDESTEP TKXSBase TKXCAF TKLCAF TKCAF
+  # fibre placement: the tool surface from STEP or IGES
+  TKIGES)
 
 # Gmsh (libgmsh-dev) meshes the tows' volumes (src/volume): its C API header is needed to build;
 # the library is loaded when first used (dlopen of libgmsh.so.4.8), not linked, so programs that

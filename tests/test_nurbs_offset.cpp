@@ -17,6 +17,7 @@
 #include <string>
 
 #include "cli_runner.hpp"
+#include "occt_reference.hpp"
 
 using namespace towgeom;
 namespace fs = std::filesystem;
@@ -367,4 +368,39 @@ TEST_CASE("courses along a cylinder's axis: no error, and on a saddle Eq. 2 agai
     exact.method = SurfaceOffsetMethod::Geodesic;
     const SurfaceOffsetStep geodesic = offsetOnSurface(s, curveOnSurface(s, mid), d, exact);
     for (double g : geodesic.geodesicDistance) CHECK(std::abs(g - d) <= 1e-7);
+}
+
+TEST_CASE("towgeom ply: a tool surface from STEP or IGES, stacked plies of exact volume, refusals", "[placement][ply][cli]")
+{
+    const fs::path dir = fs::temp_directory_path() / ("towgeom_ply_cli_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const double r = 1.5, h = 2.0, t = 0.1;
+    for (const char* name : {"tool.step", "tool.igs"}) {
+        const fs::path tool = dir / name, out = dir / (std::string(name) + ".out");
+        testing::writeCylinderFace(tool.string(), r, h);
+        const testing::Run run = testing::cli("ply '" + tool.string() + "' --thickness 0.1 --layers 2 --out '" + out.string() + "' --quiet");
+        INFO(name << ": " << run.err << run.out);
+        REQUIRE(run.status == 0);
+        // Two plies: the annuli R..R+t and R+t..R+2t (the cylinder's face normal points outward).
+        const double first = kPi * ((r + t) * (r + t) - r * r) * h, second = kPi * ((r + 2 * t) * (r + 2 * t) - (r + t) * (r + t)) * h;
+        const auto volumeAt = [&](std::size_t k) {
+            std::size_t at = 0;
+            for (std::size_t n = 0; n <= k; ++n) at = run.out.find("\"volume\":", at + 1);
+            return std::stod(run.out.substr(at + 9));
+        };
+        CHECK(std::abs(volumeAt(0) - first) <= 1e-6 * first);
+        CHECK(std::abs(volumeAt(1) - second) <= 1e-6 * second);
+        CHECK(testing::count(run.out, "\"converged\":true") == 2);
+        CHECK(fs::exists(out / "ply_1.json"));
+        CHECK(fs::exists(out / "ply_2.vtk"));
+    }
+    const testing::Run past = testing::cli("ply '" + (dir / "tool.step").string() + "' --thickness 0.1 --face 3 --out '" + (dir / "x").string() + "'");
+    CHECK(past.status == 2);
+    CHECK(past.err.find("has 1 face(s)") != std::string::npos);
+    CHECK_FALSE(fs::exists(dir / "x"));
+    const testing::Run missing = testing::cli("ply '" + (dir / "none.step").string() + "' --thickness 0.1 --out '" + (dir / "x").string() + "'");
+    CHECK(missing.status == 2);
+    CHECK(missing.err.find("[file_not_found]") != std::string::npos);
+    fs::remove_all(dir);
 }

@@ -27,6 +27,7 @@
 #include "towgeom/knot_span_classification.hpp"
 #include "towgeom/trimmed_brep.hpp"
 #include "towgeom/nurbs_offset.hpp"
+#include "towgeom/placement_surface.hpp"
 #include "towgeom/surface_offset_curves.hpp"
 #include "towgeom/mesh_tows.hpp"
 #include "towgeom/method_comparison.hpp"

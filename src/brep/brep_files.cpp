@@ -3,9 +3,6 @@
 // target's directory and renamed into place.
 #include <BRepTools.hxx>
 #include <Interface_Static.hxx>
-#include <Message.hxx>
-#include <Message_Messenger.hxx>
-#include <Message_Printer.hxx>
 #include <STEPCAFControl_Writer.hxx>
 #include <Standard_Failure.hxx>
 #include <TDataStd_Name.hxx>
@@ -24,6 +21,7 @@
 #include <mutex>
 #include <vector>
 
+#include "brep/quiet_messenger.hpp"
 #include "brep/trimmed_brep_impl.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
@@ -62,31 +60,6 @@ void writeReplacing(const std::string& path, const std::function<bool(const std:
     std::remove(temporary.c_str());
     throw Error(ErrorCode::WriteFailed, ok ? "cannot move the written file into place" : why, path);
 }
-
-/// Silences OCCT's default messenger (the STEP writer prints its statistics to stdout) while it
-/// lives; the printers' levels are restored after.
-class QuietMessenger {
-public:
-    QuietMessenger()
-    {
-        const Message_SequenceOfPrinters& printers = Message::DefaultMessenger()->Printers();
-        for (int k = 1; k <= printers.Length(); ++k) {
-            levels_.push_back(printers(k)->GetTraceLevel());
-            printers(k)->SetTraceLevel(Message_Fail);
-        }
-    }
-    ~QuietMessenger()
-    {
-        const Message_SequenceOfPrinters& printers = Message::DefaultMessenger()->Printers();
-        for (int k = 1; k <= printers.Length() && k <= static_cast<int>(levels_.size()); ++k)
-            printers(k)->SetTraceLevel(levels_[static_cast<std::size_t>(k - 1)]);
-    }
-    QuietMessenger(const QuietMessenger&) = delete;
-    QuietMessenger& operator=(const QuietMessenger&) = delete;
-
-private:
-    std::vector<Message_Gravity> levels_;
-};
 
 /// Interface_Static is process-wide: one STEP writer at a time.
 std::mutex& stepMutex()
@@ -133,7 +106,7 @@ private:
 bool writeStepFile(const TrimmedBrep::Impl& impl, const std::string& file)
 {
     const std::lock_guard<std::mutex> lock(stepMutex());
-    const QuietMessenger quiet;
+    const detail::QuietMessenger quiet;
     const XdeDocument doc;
     const Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc.get()->Main());
     // One shape (the compound, not an assembly) whose sub-shapes, the solids, carry names.

@@ -23,6 +23,9 @@ int runResolve(int argc, char** argv, int first);
 /// `towgeom generate --weave KIND --out DIR [options]`.
 int runGenerate(int argc, char** argv, int first);
 
+/// `towgeom ply SURFACE.step --thickness T --out DIR [options]`.
+int runPly(int argc, char** argv, int first);
+
 /// Prints one line "towgeom COMMAND: message" on stderr and returns the exit code for @p e.
 int reportError(const char* command, const std::exception& e);
 

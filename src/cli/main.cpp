@@ -23,6 +23,8 @@ Commands:
             (shared connected regions; STL, VTK, Gmsh .msh, Abaqus .inp, report.json)
   generate  generate a woven textile (plain, twill, satin, basket, 3D orthogonal) as tow
             stacks, with controlled overlap or flattened to just touching
+  ply       fibre placement: plies on a tool surface (STEP, IGES) as trivariate NURBS for
+            isogeometric analysis (offsets keeping the surface's parametrisation)
 
 Run 'towgeom COMMAND --help' for a command's options, inputs and outputs.
 
@@ -87,6 +89,7 @@ int main(int argc, char** argv)
         if (!std::strcmp(command, "detect")) return runDetect(argc, argv, 2);
         if (!std::strcmp(command, "resolve")) return runResolve(argc, argv, 2);
         if (!std::strcmp(command, "generate")) return runGenerate(argc, argv, 2);
+        if (!std::strcmp(command, "ply")) return runPly(argc, argv, 2);
     } catch (...) {
         // Commands report their own errors; this is the last guard against an unknown one.
         std::cerr << "towgeom " << command << ": internal error (unexpected exception) [internal]\n";

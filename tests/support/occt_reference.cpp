@@ -3,7 +3,12 @@
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <IGESControl_Writer.hxx>
+#include <STEPControl_Writer.hxx>
 #include <BRep_Builder.hxx>
 #include <GProp_GProps.hxx>
 #include <Interface_Static.hxx>
@@ -91,6 +96,24 @@ ReadShapes readStep(const std::string& path)
 }
 
 ReadShapes readBrep(const std::string& path, bool volumes) { return describe(brepShape(path), {}, volumes); }
+
+void writeCylinderFace(const std::string& path, double radius, double height)
+{
+    const TopoDS_Shape cylinder = BRepPrimAPI_MakeCylinder(radius, height).Shape();
+    TopoDS_Shape lateral;
+    for (TopExp_Explorer x(cylinder, TopAbs_FACE); x.More(); x.Next())
+        if (!Handle(Geom_CylindricalSurface)::DownCast(BRep_Tool::Surface(TopoDS::Face(x.Current()))).IsNull()) lateral = x.Current();
+    if (path.size() > 4 && path.substr(path.size() - 4) == ".igs") {
+        IGESControl_Writer writer("MM", 1);
+        writer.AddShape(lateral);
+        writer.ComputeModel();
+        if (!writer.Write(path.c_str())) throw std::runtime_error("cannot write IGES " + path);
+        return;
+    }
+    STEPControl_Writer writer;
+    if (writer.Transfer(lateral, STEPControl_AsIs) != IFSelect_RetDone || writer.Write(path.c_str()) != IFSelect_RetDone)
+        throw std::runtime_error("cannot write STEP " + path);
+}
 
 double commonVolume(const std::string& path, std::size_t i, std::size_t j)
 {

@@ -30,6 +30,10 @@ ReadShapes readStep(const std::string& path);
 /// Reads @p path with OCCT's BREP reader; volumes only when @p volumes (seconds per trimmed
 /// solid), else 0.
 ReadShapes readBrep(const std::string& path, bool volumes = true);
+/// Writes the lateral face of a cylinder of @p radius about the z axis from z = 0 to @p height
+/// (OCCT's primitive) alone to the STEP file @p path, or IGES when the path ends in .igs.
+void writeCylinderFace(const std::string& path, double radius, double height);
+
 /// The volume of the common part of solids @p i and @p j of the BREP file @p path
 /// (BRepAlgoAPI_Common).
 double commonVolume(const std::string& path, std::size_t i, std::size_t j);
