@@ -7,6 +7,8 @@
 #include <towgeom/error.hpp>
 #include <towgeom/nurbs_offset.hpp>
 #include <towgeom/surface_offset_curves.hpp>
+#include <towgeom/tow_intersection.hpp>
+#include <towgeom/tow_ribbon.hpp>
 
 #include <cmath>
 #include <cstdlib>
@@ -403,4 +405,47 @@ TEST_CASE("towgeom ply: a tool surface from STEP or IGES, stacked plies of exact
     CHECK(missing.status == 2);
     CHECK(missing.err.find("[file_not_found]") != std::string::npos);
     fs::remove_all(dir);
+}
+
+TEST_CASE("a course of tows on a cylinder as .stw ribbons: detect finds an overlap at every boundary when too narrow, none when apart",
+          "[placement][ribbon]")
+{
+    const double width = 0.3;
+    const NurbsSurface s = cylinder(2.0, 3.0);
+    std::vector<UV> line;
+    for (int k = 0; k < 19; ++k) line.push_back({0.02, 0.95 - 0.05 * k});
+    CrossSection section;
+    section.shape = SectionShape::Racetrack;
+    section.width = width;
+    section.height = 0.05;
+    SurfaceOffsetOptions exact;
+    exact.method = SurfaceOffsetMethod::Geodesic;
+    for (const double spacing : {0.9 * width, 1.1 * width}) {
+        std::vector<TowSurface> tows;
+        CurveOnSurface centre = curveOnSurface(s, line);
+        for (int k = 0; k < 3; ++k) {
+            tows.push_back(TowSurface::fit(towRibbon(s, centre, section, 16, "tow" + std::to_string(k))));
+            // The next tow a step shorter at both ends (staggered ends, as a course's tows are
+            // cut: where two tows' ends met in one plane their caps would touch flat).
+            centre = offsetOnSurface(s, centre, spacing, exact).curve;
+            centre.uv = std::vector<UV>(centre.uv.begin() + 1, centre.uv.end() - 1);
+            centre.points = std::vector<Point3>(centre.points.begin() + 1, centre.points.end() - 1);
+        }
+        const IntersectionReport r = intersectTows(tows);
+        std::size_t boundary[2] = {0, 0}, other = 0;
+        for (const IntersectionLoop& l : r.loops) {
+            if (l.towB() == l.towA() + 1 && l.closed()) ++boundary[l.towA()];
+            else ++other;
+        }
+        INFO("spacing " << spacing << ": loops " << r.loops.size() << " (" << boundary[0] << ", " << boundary[1] << "), findings "
+                        << r.findings.size());
+        if (spacing < width) {
+            CHECK(boundary[0] >= 1);
+            CHECK(boundary[1] >= 1);
+            CHECK(other == 0);
+        } else {
+            CHECK(r.loops.empty());
+            CHECK(r.findings.empty());
+        }
+    }
 }

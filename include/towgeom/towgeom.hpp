@@ -28,6 +28,7 @@
 #include "towgeom/trimmed_brep.hpp"
 #include "towgeom/nurbs_offset.hpp"
 #include "towgeom/placement_surface.hpp"
+#include "towgeom/tow_ribbon.hpp"
 #include "towgeom/surface_offset_curves.hpp"
 #include "towgeom/mesh_tows.hpp"
 #include "towgeom/method_comparison.hpp"
