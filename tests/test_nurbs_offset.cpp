@@ -10,6 +10,7 @@
 #include <towgeom/tow_intersection.hpp>
 #include <towgeom/tow_ribbon.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -327,6 +328,34 @@ TEST_CASE("courses around a cylinder: 50 tangent-and-project offsets lose what S
     }
 }
 
+TEST_CASE("geodesics on a skewed, unevenly parametrised plane are its straight chords", "[placement][courses]")
+{
+    // A tilted plane whose u runs unevenly (quadratic, poles at 0, 0.2, 1) and whose v is skewed:
+    // S_u . S_v != 0 and S_uu != 0, yet every geodesic is a straight line.
+    NurbsSurface s;
+    s.uDegree = 2;
+    s.vDegree = 1;
+    s.uKnots = {0, 0, 0, 1, 1, 1};
+    s.vKnots = {0, 0, 1, 1};
+    s.uCount = 3;
+    s.vCount = 2;
+    for (const double x : {0.0, 0.2, 1.0})
+        for (const double y : {0.0, 1.0}) {
+            const double px = x + 0.5 * y;
+            s.poles.push_back({px, y, 0.1 * px + 0.2 * y});
+            s.weights.push_back(1.0);
+        }
+    std::mt19937 random(9);
+    std::uniform_real_distribution<double> p(0.2, 0.8), q(-0.15, 0.15);
+    double worst = 0.0;
+    for (int k = 0; k < 100; ++k) {
+        const UV a{p(random), p(random)}, b{std::clamp(a.u + q(random), 0.0, 1.0), std::clamp(a.v + q(random), 0.0, 1.0)};
+        worst = std::max(worst, std::abs(geodesicDistance(s, a, b) - distance(s.point(a.u, a.v), s.point(b.u, b.v))));
+    }
+    INFO("largest difference from the chord " << worst);
+    CHECK(worst <= 1e-9);
+}
+
 TEST_CASE("courses along a cylinder's axis: no error, and on a saddle Eq. 2 against the measured geodesic", "[placement][courses]")
 {
     // Along the axis: the offsets of a circle are circles d apart.
@@ -396,6 +425,18 @@ TEST_CASE("towgeom ply: a tool surface from STEP or IGES, stacked plies of exact
         CHECK(testing::count(run.out, "\"converged\":true") == 2);
         CHECK(fs::exists(out / "ply_1.json"));
         CHECK(fs::exists(out / "ply_2.vtk"));
+    }
+    // A half cylinder whose angles start below 0 (OCCT moves them by a period when it converts).
+    {
+        const fs::path half = dir / "half.step", out = dir / "half.out";
+        testing::writeCylinderFace(half.string(), r, h, -kPi / 2, kPi / 2);
+        const testing::Run run = testing::cli("ply '" + half.string() + "' --thickness 0.1 --out '" + out.string() + "' --quiet");
+        INFO(run.err << run.out);
+        REQUIRE(run.status == 0);
+        const double expected = 0.5 * kPi * ((r + t) * (r + t) - r * r) * h;
+        const std::size_t at = run.out.find("\"volume\":");
+        REQUIRE(at != std::string::npos);
+        CHECK(std::abs(std::stod(run.out.substr(at + 9)) - expected) <= 1e-6 * expected);
     }
     const testing::Run past = testing::cli("ply '" + (dir / "tool.step").string() + "' --thickness 0.1 --face 3 --out '" + (dir / "x").string() + "'");
     CHECK(past.status == 2);

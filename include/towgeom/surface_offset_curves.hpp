@@ -38,8 +38,8 @@ enum class SurfaceOffsetMethod {
 /// Options of offsetOnSurface().
 struct SurfaceOffsetOptions {
     SurfaceOffsetMethod method = SurfaceOffsetMethod::ProjectTangent;  ///< how points move
-    /// RK4 steps per geodesic (the exact method's and the measurement's): the error falls as the
-    /// fourth power.
+    /// The largest RK4 step of a geodesic is its length over this (the steps adapt below it:
+    /// two half steps must agree to 1e-12 of the parameter box).
     int geodesicSteps = 64;
 };
 
@@ -52,22 +52,27 @@ struct SurfaceOffsetStep {
     std::vector<double> geodesicDistance;
 };
 
-/// Offsets @p curve on @p surface by @p distance, to the right of the curve seen from the
+/// Offsets @p curve on @p surface by @p distance, to the left of the curve seen from the
 /// surface's normal side (O = N x T for d > 0), each point separately (see
 /// SurfaceOffsetMethod), and measures each offset point's true distance along the surface.
 /// @throws towgeom::Error (InvalidArgument) for fewer than 2 points, points off the surface's
 ///         parameter range, a normal or tangent that vanishes, or an offset that leaves the
-///         surface.
+///         surface or would cross a closed surface's seam (the surface's (u,v) box is all there
+///         is); (Internal) if OpenCASCADE fails.
 TOWGEOM_EXPORT SurfaceOffsetStep offsetOnSurface(const NurbsSurface& surface, const CurveOnSurface& curve, double distance,
                                                  const SurfaceOffsetOptions& options = {});
 
 /// The curve on @p surface through the parameters @p uv (their positions filled in).
+/// @throws towgeom::Error (InvalidArgument) for a parameter off the surface's range or an
+///         ill-formed surface.
 TOWGEOM_EXPORT CurveOnSurface curveOnSurface(const NurbsSurface& surface, const std::vector<UV>& uv);
 
-/// The length of the shortest geodesic on @p surface between the points at @p from and @p to
-/// (a geodesic shot from @p from, its direction and length corrected by Newton's method until
-/// it ends at @p to): for points closer than the surface's radii of curvature.
-/// @throws towgeom::Error (InvalidArgument) when shooting does not converge.
+/// The length of the geodesic on @p surface from the point at @p from to the one at @p to that
+/// leaves nearest the chord's direction (shot from @p from, its direction and length corrected by
+/// Newton's method until it ends at @p to): the shortest one for points closer than the
+/// surface's radii of curvature. @p steps as SurfaceOffsetOptions::geodesicSteps.
+/// @throws towgeom::Error (InvalidArgument) when shooting does not converge or a geodesic leaves
+///         the surface's parameter range; (Internal) if OpenCASCADE fails.
 TOWGEOM_EXPORT double geodesicDistance(const NurbsSurface& surface, const UV& from, const UV& to, int steps = 64);
 
 /// @}

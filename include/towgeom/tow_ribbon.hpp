@@ -1,6 +1,7 @@
 /// @file tow_ribbon.hpp
 /// @brief towRibbon(): a fibre-placement tow laid on a surface as a tow stack (.stw), so that
-/// towgeom's own intersection finds the gaps and overlaps between tows before the part is made.
+/// towgeom's own intersection finds the overlaps between tows before the part is made (a gap
+/// gives no intersection: measure it between the centrelines).
 #pragma once
 
 #include <cstddef>
@@ -18,9 +19,10 @@ TOWGEOM_BEGIN_NAMESPACE
 
 /// The tow of cross-section @p section laid on @p surface along @p centreline: at each of the
 /// centreline's points a section of @p points points, its width along O = N x T (N the surface's
-/// normal, T the centreline's tangent), its height along N, resting on the surface (its centre
-/// half its height above the centreline). The sections are flat: across a curved surface the
-/// tow's edges stand off it by about width^2 kappa / 8.
+/// normal, T the centreline's tangent), its height along N, resting on the surface (its lowest
+/// point on the centreline). The sections are flat: across a surface curving away from the
+/// normal side the tow's edges stand off it by about width^2 kappa / 8, across one curving
+/// towards it they sink into it by as much.
 /// @throws towgeom::Error (InvalidArgument) for fewer than TowStack::kMinSections centreline
 ///         points, fewer than TowStack::kMinPointsPerSection points, an invalid section, or a
 ///         normal or tangent that vanishes.

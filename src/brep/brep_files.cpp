@@ -61,13 +61,6 @@ void writeReplacing(const std::string& path, const std::function<bool(const std:
     throw Error(ErrorCode::WriteFailed, ok ? "cannot move the written file into place" : why, path);
 }
 
-/// Interface_Static is process-wide: one STEP writer at a time.
-std::mutex& stepMutex()
-{
-    static std::mutex m;
-    return m;
-}
-
 /// The STEP writer's process-wide parameters this file sets, restored when it goes.
 class StepParameters {
 public:
@@ -105,7 +98,7 @@ private:
 /// Writes @p impl's compound as STEP to @p file; false when OCCT could not.
 bool writeStepFile(const TrimmedBrep::Impl& impl, const std::string& file)
 {
-    const std::lock_guard<std::mutex> lock(stepMutex());
+    const std::lock_guard<std::mutex> lock(detail::dataExchangeMutex());
     const detail::QuietMessenger quiet;
     const XdeDocument doc;
     const Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc.get()->Main());

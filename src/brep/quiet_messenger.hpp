@@ -1,11 +1,13 @@
 // OCCT's default messenger silenced while a QuietMessenger lives (its data exchange prints
-// statistics to stdout, which a command-line tool writes its JSON to).
+// statistics to stdout, which a command-line tool writes its JSON to), and the lock that keeps
+// OCCT's data exchange (process-wide parameters, the messenger) to one thread at a time.
 #pragma once
 
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_Printer.hxx>
 
+#include <mutex>
 #include <vector>
 
 #include "towgeom/export.hpp"
@@ -13,7 +15,15 @@
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
 
-/// Silences OCCT's default messenger while it lives; the printers' levels are restored after.
+/// Held around every use of OCCT's STEP and IGES readers and writers: their parameters
+/// (Interface_Static) and the default messenger are process-wide.
+inline std::mutex& dataExchangeMutex()
+{
+    static std::mutex m;
+    return m;
+}
+
+/// Silences OCCT's default messenger while it lives (hold dataExchangeMutex()); the printers' levels are restored after.
 class QuietMessenger {
 public:
     QuietMessenger()

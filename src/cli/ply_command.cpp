@@ -40,7 +40,8 @@ and prints one JSON object on stdout:
   converged       false where no refinement meets --tolerance (a crease in the surface)
 
 Options:
-  --thickness T   ply thickness, in the file's units (negative: on the other side)
+  --thickness T   ply thickness in millimetres (OpenCASCADE reads STEP and IGES lengths as
+                  mm, whatever unit the file uses); negative: on the other side
   --face N        which face of the file (0-based, default 0)
   --layers K      plies stacked (default 1)
   --tolerance E   largest distance of an offset from the exact one (default: 1e-6 x the
@@ -51,7 +52,8 @@ Options:
   -h, --help      this help
 
 Exit status: 0 success (even unconverged: see "converged"); 2 invalid input or usage (one
-line on stderr naming the file); 1 an output file could not be written.
+line on stderr naming the file); 1 an output file could not be written, or an internal
+failure of OpenCASCADE.
 
 Example:
   towgeom ply tool.step --thickness 0.25 --layers 4 --out plies

@@ -8,7 +8,6 @@
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <IGESControl_Reader.hxx>
-#include <Interface_Static.hxx>
 #include <STEPControl_Reader.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
@@ -19,6 +18,7 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 
 #include "brep/quiet_messenger.hpp"
 #include "placement/nurbs_geometry.hpp"
@@ -46,6 +46,7 @@ TopoDS_Shape readShape(const std::string& path)
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw Error(ErrorCode::FileNotFound, "no such file", path);
     if (!std::ifstream(path)) throw Error(ErrorCode::FileUnreadable, "cannot be opened for reading", path);
+    const std::lock_guard<std::mutex> lock(detail::dataExchangeMutex());
     const detail::QuietMessenger quiet;
     if (step) {
         STEPControl_Reader reader;
@@ -74,16 +75,24 @@ PlacementSurface readPlacementSurface(const std::string& path, std::size_t which
         double u0, u1, v0, v1;
         BRepTools::UVBounds(face, u0, u1, v0, v1);
         const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+        // The face's box within the surface's range where the surface is not periodic (a face's
+        // curves may run past it by a tolerance); a periodic direction is moved into range by the
+        // trimming itself.
+        double su0, su1, sv0, sv1;
+        surface->Bounds(su0, su1, sv0, sv1);
+        if (!surface->IsUPeriodic()) u0 = std::max(u0, su0), u1 = std::min(u1, su1);
+        if (!surface->IsVPeriodic()) v0 = std::max(v0, sv0), v1 = std::min(v1, sv1);
         Handle(Geom_BSplineSurface) b = GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(surface, u0, u1, v0, v1));
         if (b.IsNull()) throw Error(ErrorCode::InvalidArgument, "face " + std::to_string(which) + "'s surface has no B-spline form", path);
         b = Handle(Geom_BSplineSurface)::DownCast(b->Copy());
-        // Clamped over the face's box: a periodic conversion (a cylinder's u) is opened, then cut
-        // to the box, which gives its ends full multiplicity.
-        if (b->IsUPeriodic()) b->SetUNotPeriodic();
-        if (b->IsVPeriodic()) b->SetVNotPeriodic();
+        // Clamped over its own range (the face's box, possibly moved by whole periods): a periodic
+        // conversion (a full cylinder's u) is opened, then cut back to that range, which gives its
+        // ends full multiplicity.
         double bu0, bu1, bv0, bv1;
         b->Bounds(bu0, bu1, bv0, bv1);
-        b->Segment(std::max(u0, bu0), std::min(u1, bu1), std::max(v0, bv0), std::min(v1, bv1));
+        if (b->IsUPeriodic()) b->SetUNotPeriodic();
+        if (b->IsVPeriodic()) b->SetVNotPeriodic();
+        b->Segment(bu0, bu1, bv0, bv1);
         if (face.Orientation() == TopAbs_REVERSED) b->UReverse();  // the normal out of the face's material
         PlacementSurface p;
         p.surface = detail::nurbsSurface(b);

@@ -34,7 +34,8 @@ Frame frameAt(const Handle(Geom_BSplineSurface)& s, double u, double v)
     Frame f;
     s->D1(u, v, f.p, f.su, f.sv);
     f.n = f.su.Crossed(f.sv);
-    if (!(f.n.Magnitude() > 0.0)) throw Error(ErrorCode::InvalidArgument, "the surface has no normal at (" + std::to_string(u) + ", " + std::to_string(v) + ")");
+    // Relative: at a collapsed row of poles the cross product vanishes only up to rounding.
+    if (!(f.n.Magnitude() > 1e-10 * f.su.Magnitude() * f.sv.Magnitude())) throw Error(ErrorCode::InvalidArgument, "the surface has no normal at (" + std::to_string(u) + ", " + std::to_string(v) + ")");
     f.n.Normalize();
     return f;
 }
@@ -44,7 +45,7 @@ std::array<double, 2> parameterRates(const Frame& f, const gp_Vec& t)
 {
     const double e = f.su.Dot(f.su), g = f.sv.Dot(f.sv), c = f.su.Dot(f.sv);
     const double a = f.su.Dot(t), b = f.sv.Dot(t), det = e * g - c * c;
-    if (!(det > 0.0)) throw Error(ErrorCode::InvalidArgument, "the surface's parametrisation is singular there");
+    if (!(det > 1e-20 * e * g)) throw Error(ErrorCode::InvalidArgument, "the surface's parametrisation is singular there");
     return {(g * a - c * b) / det, (e * b - c * a) / det};
 }
 
@@ -57,6 +58,7 @@ State rates(const Handle(Geom_BSplineSurface)& s, const State& x)
     s->D2(x[0], x[1], p, su, sv, suu, svv, suv);
     const gp_Vec a = suu * (x[2] * x[2]) + suv * (2.0 * x[2] * x[3]) + svv * (x[3] * x[3]);
     const double e = su.Dot(su), g = sv.Dot(sv), c = su.Dot(sv), det = e * g - c * c;
+    if (!(det > 1e-20 * e * g)) throw Error(ErrorCode::InvalidArgument, "a geodesic reaches a point where the surface's parametrisation is singular");
     const double r1 = -su.Dot(a), r2 = -sv.Dot(a);
     return {x[2], x[3], (g * r1 - c * r2) / det, (e * r2 - c * r1) / det};
 }
@@ -212,6 +214,12 @@ SurfaceOffsetStep offsetOnSurface(const NurbsSurface& surface, const CurveOnSurf
                 if (!projection.IsDone() || projection.NbPoints() == 0)
                     throw Error(ErrorCode::InvalidArgument, "offsetOnSurface: an offset point does not project onto the surface");
                 projection.LowerDistanceParameters(moved.u, moved.v);
+                // The nearest foot may lie on another part of the surface (the true one past the
+                // surface's edge, or across a closed surface's seam): a foot farther from the
+                // point than twice the step is not this offset.
+                if (s->Value(moved.u, moved.v).Distance(f.p) > 2.0 * std::abs(d))
+                    throw Error(ErrorCode::InvalidArgument, "offsetOnSurface: an offset point's nearest point on the surface is not "
+                                                            "near it (the offset leaves the surface, or crosses its seam)");
             }
             out.curve.uv.push_back(moved);
             out.curve.points.push_back(detail::fromOcct(s->Value(moved.u, moved.v)));

@@ -3,7 +3,9 @@
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <gp_Ax3.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom_CylindricalSurface.hxx>
@@ -97,12 +99,16 @@ ReadShapes readStep(const std::string& path)
 
 ReadShapes readBrep(const std::string& path, bool volumes) { return describe(brepShape(path), {}, volumes); }
 
-void writeCylinderFace(const std::string& path, double radius, double height)
+void writeCylinderFace(const std::string& path, double radius, double height, double fromAngle, double toAngle)
 {
-    const TopoDS_Shape cylinder = BRepPrimAPI_MakeCylinder(radius, height).Shape();
     TopoDS_Shape lateral;
-    for (TopExp_Explorer x(cylinder, TopAbs_FACE); x.More(); x.Next())
-        if (!Handle(Geom_CylindricalSurface)::DownCast(BRep_Tool::Surface(TopoDS::Face(x.Current()))).IsNull()) lateral = x.Current();
+    if (fromAngle < toAngle) {
+        lateral = BRepBuilderAPI_MakeFace(new Geom_CylindricalSurface(gp_Ax3(), radius), fromAngle, toAngle, 0.0, height, 1e-7).Face();
+    } else {
+        const TopoDS_Shape cylinder = BRepPrimAPI_MakeCylinder(radius, height).Shape();
+        for (TopExp_Explorer x(cylinder, TopAbs_FACE); x.More(); x.Next())
+            if (!Handle(Geom_CylindricalSurface)::DownCast(BRep_Tool::Surface(TopoDS::Face(x.Current()))).IsNull()) lateral = x.Current();
+    }
     if (path.size() > 4 && path.substr(path.size() - 4) == ".igs") {
         IGESControl_Writer writer("MM", 1);
         writer.AddShape(lateral);

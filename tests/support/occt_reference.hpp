@@ -31,8 +31,10 @@ ReadShapes readStep(const std::string& path);
 /// solid), else 0.
 ReadShapes readBrep(const std::string& path, bool volumes = true);
 /// Writes the lateral face of a cylinder of @p radius about the z axis from z = 0 to @p height
-/// (OCCT's primitive) alone to the STEP file @p path, or IGES when the path ends in .igs.
-void writeCylinderFace(const std::string& path, double radius, double height);
+/// (OCCT's primitive) alone to the STEP file @p path, or IGES when the path ends in .igs; with
+/// @p fromAngle < @p toAngle only the part between those angles (a face on OCCT's cylindrical
+/// surface).
+void writeCylinderFace(const std::string& path, double radius, double height, double fromAngle = 0.0, double toAngle = 0.0);
 
 /// The volume of the common part of solids @p i and @p j of the BREP file @p path
 /// (BRepAlgoAPI_Common).
