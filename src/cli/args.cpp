@@ -81,20 +81,16 @@ double Args::positive(const std::string& name) const
     return *x;
 }
 
-std::size_t Args::threads() const
+std::size_t Args::whole(const std::string& name, std::size_t fallback, double lo, double hi, const char* range) const
 {
-    const auto n = number("threads");
-    if (!n) return 0;
-    if (!(*n >= 1.0 && *n <= 1024.0) || std::floor(*n) != *n) throw UsageError("--threads must be a whole number from 1 to 1024");
+    const auto n = number(name);
+    if (!n) return fallback;
+    if (!(*n >= lo && *n <= hi) || std::floor(*n) != *n) throw UsageError("--" + name + " must be a whole number from " + range);
     return static_cast<std::size_t>(*n);
 }
 
-std::size_t Args::maxTriangles(std::size_t fallback) const
-{
-    const auto n = number("max-triangles");
-    if (!n) return fallback;
-    if (!(*n >= 1.0 && *n <= 1e15) || std::floor(*n) != *n) throw UsageError("--max-triangles must be a whole number from 1 to 1e15");
-    return static_cast<std::size_t>(*n);
-}
+std::size_t Args::threads() const { return whole("threads", 0, 1.0, 1024.0, "1 to 1024"); }
+
+std::size_t Args::maxTriangles(std::size_t fallback) const { return whole("max-triangles", fallback, 1.0, 1e15, "1 to 1e15"); }
 
 }  // namespace towgeom::cli

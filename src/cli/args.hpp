@@ -40,6 +40,9 @@ public:
     std::optional<double> number(const std::string& name) const;
     /// The value of @p name as a positive finite number, 0 when absent (meaning "default").
     double positive(const std::string& name) const;
+    /// The value of @p name as a whole number from @p lo to @p hi (@p range says so in the
+    /// error), @p fallback when absent.
+    std::size_t whole(const std::string& name, std::size_t fallback, double lo, double hi, const char* range) const;
     /// --threads N as a whole number from 1 to 1024, 0 when absent (all hardware threads).
     std::size_t threads() const;
     /// --max-triangles N as a whole number from 1 to 1e15; @p fallback when absent.

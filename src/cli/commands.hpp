@@ -26,6 +26,9 @@ int runGenerate(int argc, char** argv, int first);
 /// `towgeom ply SURFACE.step --thickness T --out DIR [options]`.
 int runPly(int argc, char** argv, int first);
 
+/// `towgeom courses SURFACE.step --reference REF --tow-width W --out DIR [options]`.
+int runCourses(int argc, char** argv, int first);
+
 /// Prints one line "towgeom COMMAND: message" on stderr and returns the exit code for @p e.
 int reportError(const char* command, const std::exception& e);
 

@@ -25,6 +25,9 @@ Commands:
             stacks, with controlled overlap or flattened to just touching
   ply       fibre placement: plies on a tool surface (STEP, IGES) as trivariate NURBS for
             isogeometric analysis (offsets keeping the surface's parametrisation)
+  courses   fibre placement: courses of tows on a tool surface offset from a reference
+            curve (Schueler et al. or exact geodesics), laminate-family plies at an angle,
+            gaps and overlaps between tows, tows as .stw ribbons for detect
 
 Run 'towgeom COMMAND --help' for a command's options, inputs and outputs.
 
@@ -90,6 +93,7 @@ int main(int argc, char** argv)
         if (!std::strcmp(command, "resolve")) return runResolve(argc, argv, 2);
         if (!std::strcmp(command, "generate")) return runGenerate(argc, argv, 2);
         if (!std::strcmp(command, "ply")) return runPly(argc, argv, 2);
+        if (!std::strcmp(command, "courses")) return runCourses(argc, argv, 2);
     } catch (...) {
         // Commands report their own errors; this is the last guard against an unknown one.
         std::cerr << "towgeom " << command << ": internal error (unexpected exception) [internal]\n";

@@ -76,14 +76,8 @@ int runPly(int argc, char** argv, int first)
         if (!thickness || *thickness == 0.0) throw UsageError("--thickness T is needed, not 0");
         const auto outDir = args.value("out");
         if (!outDir) throw UsageError("--out DIR is needed");
-        const auto whole = [&](const char* name, double fallback, double lo, double hi) {
-            const double x = args.number(name).value_or(fallback);
-            if (!(x >= lo && x <= hi) || x != static_cast<double>(static_cast<long>(x)))
-                throw UsageError(std::string("--") + name + " takes a whole number from " + std::to_string(static_cast<long>(lo)) + " to " +
-                                 std::to_string(static_cast<long>(hi)));
-            return static_cast<std::size_t>(x);
-        };
-        const std::size_t face = whole("face", 0, 0, 1e6), layers = whole("layers", 1, 1, 1000), samples = whole("samples", 4, 1, 64);
+        const std::size_t face = args.whole("face", 0, 0, 1e6, "0 to 1000000"), layers = args.whole("layers", 1, 1, 1000, "1 to 1000"),
+                          samples = args.whole("samples", 4, 1, 64, "1 to 64");
         OffsetOptions options;
         options.tolerance = args.positive("tolerance");
         const bool quiet = args.has("quiet");

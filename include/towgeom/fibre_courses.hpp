@@ -1,0 +1,135 @@
+/// @file fibre_courses.hpp
+/// @brief layCourses(): the tows of fibre-placement courses on a NURBS surface, offset from a
+/// reference curve as Schueler, Miller & Hale (2004) do (or exactly, by geodesics), each tow's
+/// edges as curves on the surface, and the gap or overlap between neighbouring tows measured
+/// along the surface.
+#pragma once
+
+#include <cstddef>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "towgeom/nurbs_offset.hpp"
+#include "towgeom/surface_offset_curves.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+
+/// @addtogroup placement
+/// @{
+
+/// Options of layCourses(). Lengths are in the surface's units.
+struct CourseOptions {
+    double towWidth = 0.0;         ///< W > 0: the width of the band one tow covers on the surface
+    std::size_t towsPerCourse = 1;  ///< N >= 1 tows laid side by side in one pass of the head
+    std::size_t courses = 1;       ///< K >= 1 courses, each to the left of the last
+    /// The distance along the surface between neighbouring tows' centrelines; 0: towWidth (tows
+    /// edge to edge). Less gives overlaps, more gaps.
+    double spacing = 0.0;
+    /// How centrelines are placed: SurfaceOffsetMethod::ProjectTangent (Schueler et al., with
+    /// their per-step error) or Geodesic (exact).
+    SurfaceOffsetMethod method = SurfaceOffsetMethod::ProjectTangent;
+    /// The largest difference allowed between an offset step's distance and the true distance
+    /// along the surface; 0: 1e-3 x towWidth. CoursePlan::withinTolerance says whether every
+    /// step met it (it is a check, not a refinement: the method decides the placement).
+    double tolerance = 0.0;
+    int geodesicSteps = 64;  ///< as SurfaceOffsetOptions::geodesicSteps
+};
+
+/// One offset step of the plan: a curve placed at a distance from another, point by point.
+struct CourseStep {
+    std::string from;    ///< the curve it was offset from ("reference", or a course's name)
+    double distance = 0.0;  ///< the distance asked for (negative: to the right)
+    /// Per point, the true distance along the surface from the point it was offset from (the
+    /// geodesic between the two).
+    std::vector<double> geodesicDistance;
+    /// Per point, Schueler's Eq. 2 estimate of the shortfall |distance| - geodesicDistance.
+    std::vector<double> estimatedError;
+};
+
+/// A course's centreline, the middle of its N tows.
+struct CourseCentre {
+    std::string name;       ///< "c1", "c2", ...
+    CurveOnSurface curve;   ///< its points
+    CourseStep step;        ///< how it was placed (the first course's is the reference itself: no points)
+};
+
+/// One tow of the plan.
+struct TowPath {
+    std::string name;            ///< "c<course>_t<tow>", both from 1, tows from right to left
+    std::size_t course = 0;      ///< its course, from 0
+    CurveOnSurface centreline;   ///< where the head lays its middle
+    CourseStep step;             ///< how the centreline was placed from its course's centreline
+    /// Its right edge: the centreline's exact (geodesic) offset by -W/2. With the left edge, the
+    /// band the tow covers, W wide along the surface whatever the planning method.
+    CurveOnSurface right;
+    CurveOnSurface left;  ///< its left edge: the centreline's geodesic offset by +W/2
+    /// The right edge as a curve on the surface: the cubic B-spline in the surface's (u,v)
+    /// interpolating its points (OpenCASCADE), poles given as (u, v, 0), parameter the (u,v)
+    /// chord length.
+    NurbsCurve rightCurve;
+    NurbsCurve leftCurve;  ///< the left edge likewise
+};
+
+/// The gap (positive) or overlap (negative) between two neighbouring tows, measured along the
+/// surface: from each centreline point of the right-hand tow, the geodesic perpendicular to it
+/// (to its left) is followed until it meets the left-hand tow's centreline; its length less W.
+struct TowGap {
+    std::size_t right = 0;  ///< the right-hand tow's index in CoursePlan::tows
+    std::size_t left = 0;   ///< the left-hand tow's index (right + 1)
+    bool betweenCourses = false;      ///< the last tow of one course and the first of the next
+    /// Per centreline point of the right-hand tow, the width: gap > 0, overlap < 0; NaN where the
+    /// perpendicular does not meet the other tow (past its ends, or off the surface).
+    std::vector<double> width;
+    double minWidth = 0.0;  ///< the smallest width measured (NaN if none)
+    double maxWidth = 0.0;  ///< the largest width measured (NaN if none)
+    std::size_t measured = 0;               ///< points where the width was measured
+};
+
+/// What layCourses() lays.
+struct CoursePlan {
+    CurveOnSurface reference;            ///< the reference curve: the first course's centreline
+    std::vector<CourseCentre> courses;   ///< K course centrelines, each offset N x spacing from the last
+    std::vector<TowPath> tows;           ///< K x N tows, course by course, right to left
+    std::vector<TowGap> gaps;            ///< between each tow and the next (K N - 1)
+    double towWidth = 0.0;   ///< W as used
+    double spacing = 0.0;    ///< the spacing as used
+    double tolerance = 0.0;  ///< the tolerance as used
+    SurfaceOffsetMethod method = SurfaceOffsetMethod::ProjectTangent;  ///< as used
+    double largestStepError = 0.0;  ///< the largest | |d| - true distance | over every step
+    bool withinTolerance = true;    ///< whether largestStepError <= tolerance
+};
+
+/// Lays @p options.courses courses of @p options.towsPerCourse tows on @p surface from
+/// @p reference, the first course's centreline; all to the reference's left (O = N x T, N the
+/// surface's normal, T the reference's direction). Course k + 1's centreline is course k's
+/// offset by N x spacing; each tow's centreline is its course centreline's offset by
+/// (i - (N - 1) / 2) x spacing (one step each, as a head lays a course: the step's error does not
+/// add up across a course, but from course to course it does). Each tow's edges are then its
+/// centreline's exact offsets by -+W/2, and the gaps between neighbours are measured
+/// (TowGap). Every curve has the reference's number of points, point i of each offset from point
+/// i of the curve before.
+/// @throws towgeom::Error (InvalidArgument) for a non-positive width, no tows or courses, a
+///         negative spacing or tolerance, a reference of fewer than 4 points, or an offset that
+///         leaves the surface (the message names the course or tow); (Internal) if OpenCASCADE
+///         fails.
+TOWGEOM_EXPORT CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& reference, const CourseOptions& options);
+
+/// Writes @p plan as JSON: {"method", "tow_width", "spacing", "tolerance", "largest_step_error",
+/// "within_tolerance", "courses":[{"name", "from", "distance", "points", "geodesic_distance",
+/// "estimated_error"}], "tows":[{"name", "course", "distance", "centreline":{"uv","points"},
+/// "right", "left", "right_curve":{"degree","knots","poles"}, "left_curve", "geodesic_distance",
+/// "estimated_error"}], "gaps":[{"right", "left", "between_courses", "min", "max", "measured",
+/// "width"}]} (NaN widths as null). @throws towgeom::Error (WriteFailed) when the stream fails.
+TOWGEOM_EXPORT void writeCoursePlanJson(const CoursePlan& plan, std::ostream& out);
+
+/// Writes @p plan's centrelines and edges as legacy VTK polylines (ParaView), cell data "tow"
+/// (index in CoursePlan::tows) and "kind" (0 centreline, 1 right edge, 2 left edge), point data
+/// "gap" (each tow centreline point's width to the tow on its left; 0 elsewhere and where not
+/// measured). @throws towgeom::Error (WriteFailed) when the stream fails.
+TOWGEOM_EXPORT void writeCoursePlanVtk(const CoursePlan& plan, std::ostream& out);
+
+/// @}
+
+TOWGEOM_END_NAMESPACE

@@ -1,0 +1,61 @@
+/// @file laminate_family.hpp
+/// @brief fixedAngleCurve(): the reference of a laminate family's ply, a curve on the surface
+/// that crosses every 0° tow at a fixed angle theta (Schueler, Miller & Hale 2004); lay its
+/// courses with layCourses().
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "towgeom/nurbs_offset.hpp"
+#include "towgeom/surface_offset_curves.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+
+/// @addtogroup placement
+/// @{
+
+/// Options of fixedAngleCurve().
+struct FixedAngleOptions {
+    /// Where the curve starts on the first 0° curve, as a fraction of its points' index range
+    /// (0 its first point, 1 its last).
+    double start = 0.5;
+    /// The curve's step along the surface; 0: 1/20 of the smallest distance between neighbouring
+    /// 0° curves at the start. Its points are this far apart.
+    double step = 0.0;
+};
+
+/// Where a fixed-angle curve crosses a 0° curve.
+struct FamilyCrossing {
+    std::size_t curve = 0;  ///< the 0° curve's index
+    UV uv;                  ///< the crossing's parameters on the surface
+    double angle = 0.0;     ///< the angle between the two curves' tangents there, degrees
+};
+
+/// A fixed-angle curve and its crossings.
+struct FixedAngleCurve {
+    CurveOnSurface curve;                 ///< its points, from the first 0° curve to the last
+    std::vector<FamilyCrossing> crossings;  ///< one per 0° curve, in order
+};
+
+/// The curve on @p surface that leaves @p zeroFamily's first curve at @p options.start and
+/// crosses every curve of the family at @p thetaDegrees from its direction (measured from the 0°
+/// tangent towards the family's next curve, in (0°, 180°)), until it meets the family's last
+/// curve. The family is a set of 0° curves (such as the centrelines layCourses() lays, or a
+/// reference and its offsets) with the same number of points, point i of each corresponding to
+/// point i of the others. Between two curves the 0° direction is interpolated: each curve is a
+/// cubic B-spline in (u,v) of a parameter shared by all (the point index), and the 0° field at
+/// fraction f between curves k and k + 1 is the tangent of (1 - f) C_k + f C_{k+1}: on each
+/// curve, that curve's own tangent. The curve is the field's integral curve at angle theta
+/// (RK4 along the surface).
+/// @throws towgeom::Error (InvalidArgument) for fewer than 2 curves, curves of different or
+///         fewer than 4 points, theta outside (0, 180), a start outside [0, 1], a negative step,
+///         or a curve that leaves the family's ends or the surface before reaching the last
+///         curve; (Internal) if OpenCASCADE fails.
+TOWGEOM_EXPORT FixedAngleCurve fixedAngleCurve(const NurbsSurface& surface, const std::vector<CurveOnSurface>& zeroFamily,
+                                               double thetaDegrees, const FixedAngleOptions& options = {});
+
+/// @}
+
+TOWGEOM_END_NAMESPACE

@@ -1,0 +1,228 @@
+// Fibre-placement courses: centrelines offset from a reference (Schueler et al. or geodesic),
+// each tow's edges at exactly W/2 along the surface, and the gap between neighbours measured
+// along geodesics perpendicular to the right-hand tow.
+#include "towgeom/fibre_courses.hpp"
+
+#include <Geom2dAPI_Interpolate.hxx>
+#include <Geom2d_BSplineCurve.hxx>
+#include <Standard_Failure.hxx>
+#include <TColStd_HArray1OfReal.hxx>
+#include <TColgp_HArray1OfPnt2d.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <tuple>
+
+#include "placement/geodesics.hpp"
+#include "placement/nurbs_geometry.hpp"
+#include "surface/occt_convert.hpp"
+#include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// @p curve offset by @p d from the curve named @p from, with the step's record.
+std::pair<CurveOnSurface, CourseStep> offsetStep(const NurbsSurface& surface, const CurveOnSurface& curve, const std::string& from, double d,
+                                                 SurfaceOffsetMethod method, int steps, const std::string& what)
+{
+    CourseStep step;
+    step.from = from;
+    step.distance = d;
+    if (d == 0.0) {
+        step.geodesicDistance.assign(curve.uv.size(), 0.0);
+        step.estimatedError.assign(curve.uv.size(), 0.0);
+        return {curve, step};
+    }
+    SurfaceOffsetOptions o;
+    o.method = method;
+    o.geodesicSteps = steps;
+    try {
+        SurfaceOffsetStep s = offsetOnSurface(surface, curve, d, o);
+        step.geodesicDistance = std::move(s.geodesicDistance);
+        step.estimatedError = std::move(s.estimatedError);
+        return {std::move(s.curve), step};
+    } catch (const Error& e) {
+        throw Error(e.code(), what + ": " + e.what());
+    }
+}
+
+/// The cubic B-spline in (u,v) through @p uv (chord-length parameters), poles as (u, v, 0).
+NurbsCurve parameterCurve(const std::vector<UV>& uv)
+{
+    const int n = static_cast<int>(uv.size());
+    Handle(TColgp_HArray1OfPnt2d) points = new TColgp_HArray1OfPnt2d(1, n);
+    Handle(TColStd_HArray1OfReal) params = new TColStd_HArray1OfReal(1, n);
+    double t = 0.0;
+    for (int i = 0; i < n; ++i) {
+        if (i > 0) t += std::hypot(uv[i].u - uv[i - 1].u, uv[i].v - uv[i - 1].v);
+        points->SetValue(i + 1, gp_Pnt2d(uv[i].u, uv[i].v));
+        params->SetValue(i + 1, t);
+    }
+    Geom2dAPI_Interpolate interpolate(points, params, Standard_False, 1e-14);
+    interpolate.Perform();
+    if (!interpolate.IsDone()) throw Error(ErrorCode::Internal, "an edge's (u,v) curve could not be interpolated");
+    const Handle(Geom2d_BSplineCurve) c = interpolate.Curve();
+    NurbsCurve out;
+    out.degree = c->Degree();
+    for (int i = 1; i <= c->NbKnots(); ++i)
+        for (int m = 0; m < c->Multiplicity(i); ++m) out.knots.push_back(c->Knot(i));
+    for (int i = 1; i <= c->NbPoles(); ++i) {
+        out.poles.push_back({c->Pole(i).X(), c->Pole(i).Y(), 0.0});
+        out.weights.push_back(c->Weight(i));
+    }
+    return out;
+}
+
+/// Signed distance in (u,v) of @p p from the polyline @p line (positive to its left) and whether
+/// its nearest point lies within the polyline (not beyond an end).
+std::pair<double, bool> sideOf(const std::vector<UV>& line, const UV& p)
+{
+    double best = std::numeric_limits<double>::infinity(), signedBest = 0.0;
+    bool within = false;
+    for (std::size_t k = 0; k + 1 < line.size(); ++k) {
+        const double ax = line[k].u, ay = line[k].v, dx = line[k + 1].u - ax, dy = line[k + 1].v - ay;
+        const double len2 = dx * dx + dy * dy;
+        if (!(len2 > 0.0)) continue;
+        const double raw = ((p.u - ax) * dx + (p.v - ay) * dy) / len2, t = std::clamp(raw, 0.0, 1.0);
+        const double d = std::hypot(p.u - (ax + t * dx), p.v - (ay + t * dy));
+        if (d < best) {
+            best = d;
+            signedBest = (dx * (p.v - ay) - dy * (p.u - ax)) / std::sqrt(len2);
+            const double slack = 1e-9;
+            within = (k > 0 || raw >= -slack) && (k + 2 < line.size() || raw <= 1.0 + slack);
+        }
+    }
+    return {signedBest, within};
+}
+
+/// The width between tow @p a (right) and tow @p b (left) at each of a's centreline points.
+TowGap measureGap(const Handle(Geom_BSplineSurface)& s, const TowPath& a, const TowPath& b, double width, double spacing, int steps)
+{
+    TowGap gap;
+    const std::size_t n = a.centreline.uv.size();
+    gap.width.assign(n, kNaN);
+    for (std::size_t i = 0; i < n; ++i) {
+        try {
+            const UV at = a.centreline.uv[i];
+            const detail::Frame f = detail::frameAt(s, at.u, at.v);
+            gp_Vec t(detail::toOcct(a.centreline.points[i > 0 ? i - 1 : i]), detail::toOcct(a.centreline.points[i + 1 < n ? i + 1 : i]));
+            t -= f.n * t.Dot(f.n);
+            if (!(t.Magnitude() > 0.0)) continue;
+            const gp_Vec o = f.n.Crossed(t.Normalized());
+            const auto g = [&](double length) { return sideOf(b.centreline.uv, detail::shootGeodesic(s, at, o, length, steps)).first; };
+            // Bracket the crossing: the point itself lies to the right of b.
+            double lo = 0.0, glo = sideOf(b.centreline.uv, at).first, hi = spacing, ghi = g(hi);
+            if (!(glo < 0.0)) continue;
+            for (int grow = 0; ghi < 0.0 && grow < 4; ++grow) lo = hi, glo = ghi, hi *= 1.5, ghi = g(hi);
+            if (!(ghi >= 0.0)) continue;
+            // Illinois regula falsi.
+            double x = hi;
+            int side = 0;
+            for (int it = 0; it < 100 && ghi != 0.0 && hi - lo > 1e-12 * spacing; ++it) {
+                x = (lo * ghi - hi * glo) / (ghi - glo);
+                const double gx = g(x);
+                if (gx == 0.0) break;
+                if (gx < 0.0) {
+                    lo = x, glo = gx;
+                    if (side == -1) ghi *= 0.5;
+                    side = -1;
+                } else {
+                    hi = x, ghi = gx;
+                    if (side == 1) glo *= 0.5;
+                    side = 1;
+                }
+            }
+            if (!sideOf(b.centreline.uv, detail::shootGeodesic(s, at, o, x, steps)).second) continue;
+            gap.width[i] = x - width;
+        } catch (const Error&) {
+            // The perpendicular leaves the surface: not measured here.
+        }
+    }
+    gap.minWidth = std::numeric_limits<double>::infinity();
+    gap.maxWidth = -gap.minWidth;
+    for (const double w : gap.width)
+        if (!std::isnan(w)) {
+            ++gap.measured;
+            gap.minWidth = std::min(gap.minWidth, w);
+            gap.maxWidth = std::max(gap.maxWidth, w);
+        }
+    if (gap.measured == 0) gap.minWidth = gap.maxWidth = kNaN;
+    return gap;
+}
+
+double largestError(const CourseStep& step)
+{
+    double worst = 0.0;
+    for (const double g : step.geodesicDistance) worst = std::max(worst, std::abs(std::abs(step.distance) - g));
+    return worst;
+}
+
+}  // namespace
+
+CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& reference, const CourseOptions& options)
+{
+    const double w = options.towWidth;
+    if (!(w > 0.0) || !std::isfinite(w)) throw Error(ErrorCode::InvalidArgument, "layCourses: the tow width must be positive");
+    if (options.towsPerCourse < 1 || options.courses < 1) throw Error(ErrorCode::InvalidArgument, "layCourses: at least one tow and one course");
+    if (!(options.spacing >= 0.0) || !std::isfinite(options.spacing) || !(options.tolerance >= 0.0))
+        throw Error(ErrorCode::InvalidArgument, "layCourses: the spacing and tolerance must be 0 or more");
+    if (reference.uv.size() < 4 || reference.points.size() != reference.uv.size())
+        throw Error(ErrorCode::InvalidArgument, "layCourses: a reference of at least 4 points, each with its (u,v)");
+    const Handle(Geom_BSplineSurface) s = detail::occtSurface(surface);
+    CoursePlan plan;
+    plan.reference = reference;
+    plan.towWidth = w;
+    plan.spacing = options.spacing > 0.0 ? options.spacing : w;
+    plan.tolerance = options.tolerance > 0.0 ? options.tolerance : 1e-3 * w;
+    plan.method = options.method;
+    const std::size_t nTows = options.towsPerCourse;
+    const int steps = options.geodesicSteps;
+    try {
+        for (std::size_t c = 0; c < options.courses; ++c) {
+            CourseCentre centre;
+            centre.name = "c" + std::to_string(c + 1);
+            if (c == 0) {
+                centre.curve = reference;
+                centre.step.from = "reference";
+            } else {
+                const CourseCentre& last = plan.courses.back();
+                std::tie(centre.curve, centre.step) =
+                    offsetStep(surface, last.curve, last.name, nTows * plan.spacing, options.method, steps, "course " + centre.name);
+            }
+            plan.courses.push_back(centre);
+            for (std::size_t i = 0; i < nTows; ++i) {
+                TowPath tow;
+                tow.name = centre.name + "_t" + std::to_string(i + 1);
+                tow.course = c;
+                const double d = (static_cast<double>(i) - 0.5 * static_cast<double>(nTows - 1)) * plan.spacing;
+                std::tie(tow.centreline, tow.step) = offsetStep(surface, centre.curve, centre.name, d, options.method, steps, "tow " + tow.name);
+                tow.right = offsetStep(surface, tow.centreline, tow.name, -0.5 * w, SurfaceOffsetMethod::Geodesic, steps, "tow " + tow.name + "'s right edge").first;
+                tow.left = offsetStep(surface, tow.centreline, tow.name, 0.5 * w, SurfaceOffsetMethod::Geodesic, steps, "tow " + tow.name + "'s left edge").first;
+                tow.rightCurve = parameterCurve(tow.right.uv);
+                tow.leftCurve = parameterCurve(tow.left.uv);
+                plan.tows.push_back(std::move(tow));
+            }
+        }
+        for (std::size_t j = 0; j + 1 < plan.tows.size(); ++j) {
+            TowGap gap = measureGap(s, plan.tows[j], plan.tows[j + 1], w, plan.spacing, steps);
+            gap.right = j;
+            gap.left = j + 1;
+            gap.betweenCourses = plan.tows[j].course != plan.tows[j + 1].course;
+            plan.gaps.push_back(std::move(gap));
+        }
+    } catch (const Standard_Failure& e) {
+        throw Error(ErrorCode::Internal, std::string("layCourses: OpenCASCADE failed: ") + e.GetMessageString());
+    }
+    for (const CourseCentre& c : plan.courses) plan.largestStepError = std::max(plan.largestStepError, largestError(c.step));
+    for (const TowPath& t : plan.tows) plan.largestStepError = std::max(plan.largestStepError, largestError(t.step));
+    plan.withinTolerance = plan.largestStepError <= plan.tolerance;
+    return plan;
+}
+
+TOWGEOM_END_NAMESPACE

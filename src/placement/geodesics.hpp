@@ -1,0 +1,45 @@
+// Geodesics on a NURBS surface (OCCT's exact derivatives): the local frame, the geodesic
+// equation integrated by adaptive RK4, shooting to a target, the normal curvature along a direction.
+#pragma once
+
+#include <Geom_BSplineSurface.hxx>
+#include <gp_Pnt.hxx>
+#include <gp_Vec.hxx>
+
+#include <array>
+
+#include "towgeom/point.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
+
+/// A surface's point, first derivatives and unit normal at a parameter.
+struct Frame {
+    gp_Pnt p;
+    gp_Vec su, sv, n;  ///< n: unit normal
+};
+
+/// The frame at (@p u, @p v). @throws towgeom::Error (InvalidArgument) where the normal vanishes.
+Frame frameAt(const Handle(Geom_BSplineSurface)& s, double u, double v);
+
+/// (du, dv) with S_u du + S_v dv the tangent-plane part of @p t. @throws towgeom::Error
+/// (InvalidArgument) where the parametrisation is singular.
+std::array<double, 2> parameterRates(const Frame& f, const gp_Vec& t);
+
+/// Whether (@p u, @p v) lies in the surface's parameter box.
+bool insideParameters(const Handle(Geom_BSplineSurface)& s, double u, double v);
+
+/// The end of the geodesic of length @p length from @p from in the 3D tangent direction @p t
+/// (adaptive RK4, at most length / @p steps per step). @throws towgeom::Error (InvalidArgument)
+/// when it leaves the surface's parameter box or meets a singular point.
+UV shootGeodesic(const Handle(Geom_BSplineSurface)& s, const UV& from, const gp_Vec& t, double length, int steps);
+
+/// The normal curvature of @p s at (@p u, @p v) along the tangent direction @p t.
+double normalCurvature(const Handle(Geom_BSplineSurface)& s, double u, double v, const gp_Vec& t);
+
+/// The length of the geodesic from @p from to @p to (see towgeom::geodesicDistance()).
+double geodesicDistanceOn(const Handle(Geom_BSplineSurface)& s, const UV& from, const UV& to, int steps);
+
+}  // namespace detail
+TOWGEOM_END_NAMESPACE

@@ -1,0 +1,112 @@
+// A course's reference curve: points projected onto the surface, or the surface cut by a plane
+// (OCCT's surface-surface intersection, sampled evenly by arc length).
+#include "towgeom/reference_curve.hpp"
+
+#include <GCPnts_UniformAbscissa.hxx>
+#include <GeomAPI_IntSS.hxx>
+#include <GeomAPI_ProjectPointOnCurve.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <GeomAdaptor_Curve.hxx>
+#include <Geom_Plane.hxx>
+#include <Standard_Failure.hxx>
+#include <gp_Pln.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "placement/nurbs_geometry.hpp"
+#include "surface/occt_convert.hpp"
+#include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+
+namespace {
+
+/// The diagonal of the box of @p s's poles.
+double netSize(const NurbsSurface& s)
+{
+    Point3 lo = s.poles.front(), hi = lo;
+    for (const Point3& p : s.poles) {
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    }
+    return distance(lo, hi);
+}
+
+/// The (u,v) of @p p's nearest point on @p s and its distance.
+std::pair<UV, double> nearest(const Handle(Geom_BSplineSurface)& s, const gp_Pnt& p)
+{
+    GeomAPI_ProjectPointOnSurf projection(p, s);
+    if (!projection.IsDone() || projection.NbPoints() == 0) return {UV{}, std::numeric_limits<double>::infinity()};
+    UV uv;
+    projection.LowerDistanceParameters(uv.u, uv.v);
+    return {uv, projection.LowerDistance()};
+}
+
+}  // namespace
+
+CurveOnSurface referenceFromPoints(const NurbsSurface& surface, const std::vector<Point3>& points, double maxDistance)
+{
+    if (points.size() < 2) throw Error(ErrorCode::InvalidArgument, "referenceFromPoints: at least 2 points");
+    if (!(maxDistance >= 0.0)) throw Error(ErrorCode::InvalidArgument, "referenceFromPoints: a distance of 0 or more");
+    const Handle(Geom_BSplineSurface) s = detail::occtSurface(surface);
+    const double allowed = maxDistance > 0.0 ? maxDistance : 1e-3 * netSize(surface);
+    std::vector<UV> uv;
+    try {
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const auto [at, away] = nearest(s, detail::toOcct(points[i]));
+            if (!(away <= allowed))
+                throw Error(ErrorCode::InvalidArgument, "referenceFromPoints: point " + std::to_string(i) + " lies " + std::to_string(away) +
+                                                            " from the surface (more than " + std::to_string(allowed) + ")");
+            if (!uv.empty() && at.u == uv.back().u && at.v == uv.back().v)
+                throw Error(ErrorCode::InvalidArgument, "referenceFromPoints: points " + std::to_string(i - 1) + " and " + std::to_string(i) +
+                                                            " have the same nearest point on the surface");
+            uv.push_back(at);
+        }
+    } catch (const Standard_Failure& e) {
+        throw Error(ErrorCode::Internal, std::string("referenceFromPoints: OpenCASCADE failed: ") + e.GetMessageString());
+    }
+    return curveOnSurface(surface, uv);
+}
+
+CurveOnSurface referenceFromPlane(const NurbsSurface& surface, const Point3& origin, const Vector3& normal, std::size_t points, bool reverse)
+{
+    if (!(norm(normal) > 0.0)) throw Error(ErrorCode::InvalidArgument, "referenceFromPlane: the plane's normal is zero");
+    if (points < 2) throw Error(ErrorCode::InvalidArgument, "referenceFromPlane: at least 2 points");
+    const Handle(Geom_BSplineSurface) s = detail::occtSurface(surface);
+    const double size = netSize(surface);
+    std::vector<UV> uv;
+    try {
+        const gp_Pnt o = detail::toOcct(origin);
+        const Handle(Geom_Plane) plane = new Geom_Plane(gp_Pln(o, gp_Dir(normal.x, normal.y, normal.z)));
+        GeomAPI_IntSS cut(s, plane, 1e-9 * size);
+        if (!cut.IsDone() || cut.NbLines() == 0) throw Error(ErrorCode::InvalidArgument, "referenceFromPlane: the plane does not cut the surface");
+        Handle(Geom_Curve) best;
+        double bestDistance = std::numeric_limits<double>::infinity();
+        for (int k = 1; k <= cut.NbLines(); ++k) {
+            const Handle(Geom_Curve) c = cut.Line(k);
+            GeomAPI_ProjectPointOnCurve onCurve(o, c);
+            const double d = onCurve.NbPoints() > 0 ? onCurve.LowerDistance()
+                                                    : std::min(o.Distance(c->Value(c->FirstParameter())), o.Distance(c->Value(c->LastParameter())));
+            if (d < bestDistance) bestDistance = d, best = c;
+        }
+        GeomAdaptor_Curve adaptor(best);
+        GCPnts_UniformAbscissa sampler(adaptor, static_cast<int>(points), 1e-9 * size);
+        if (!sampler.IsDone() || sampler.NbPoints() != static_cast<int>(points))
+            throw Error(ErrorCode::Internal, "referenceFromPlane: the intersection curve could not be sampled");
+        for (int k = 1; k <= sampler.NbPoints(); ++k) {
+            const auto [at, away] = nearest(s, best->Value(sampler.Parameter(k)));
+            if (!(away <= 1e-6 * size)) throw Error(ErrorCode::Internal, "referenceFromPlane: an intersection point lies off the surface");
+            uv.push_back(at);
+        }
+    } catch (const Standard_Failure& e) {
+        throw Error(ErrorCode::Internal, std::string("referenceFromPlane: OpenCASCADE failed: ") + e.GetMessageString());
+    }
+    if (reverse) std::reverse(uv.begin(), uv.end());
+    return curveOnSurface(surface, uv);
+}
+
+TOWGEOM_END_NAMESPACE
