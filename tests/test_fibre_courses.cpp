@@ -101,13 +101,23 @@ TEST_CASE("courses around a cylinder: Schueler's steps give the closed-form over
         }
         CHECK(plan.gaps[2].betweenCourses);
         CHECK_FALSE(plan.gaps[1].betweenCourses);
-        // Eq. 2 is exact on a cylinder's circular section: the estimate equals the measured loss.
-        for (const TowPath& t : plan.tows)
-            for (std::size_t i = 0; i < t.step.estimatedError.size(); ++i) {
-                const double loss = std::abs(t.step.distance) - t.step.geodesicDistance[i];
-                CHECK(std::abs(t.step.estimatedError[i] - (method == SurfaceOffsetMethod::Geodesic ? t.step.estimatedError[i] : loss)) <= 1e-9);
-                if (method == SurfaceOffsetMethod::Geodesic) CHECK(std::abs(loss) <= 1e-9);
+        // Eq. 2 is exact on a cylinder's circular section: the estimate is d - R atan(d / R),
+        // what a tangent step loses (a geodesic step loses nothing), for the tows' steps from
+        // their course centre and for the 3 W course steps.
+        std::vector<const CourseStep*> steps;
+        for (const TowPath& t : plan.tows) steps.push_back(&t.step);
+        for (std::size_t c = 1; c < plan.courses.size(); ++c) steps.push_back(&plan.courses[c].step);
+        std::size_t checked = 0;
+        for (const CourseStep* step : steps) {
+            const double d = std::abs(step->distance), closedForm = d - r * std::atan(d / r);
+            for (std::size_t i = 0; i < step->estimatedError.size(); ++i) {
+                const double loss = d - step->geodesicDistance[i];
+                CHECK(std::abs(step->estimatedError[i] - closedForm) <= 1e-9);
+                CHECK(std::abs(loss - (method == SurfaceOffsetMethod::Geodesic ? 0.0 : closedForm)) <= 1e-9);
+                if (d > 0.0) ++checked;
             }
+        }
+        CHECK(checked == 5 * 7);  // four tows off their course centres, one course step; 7 points each
         // The edges: W/2 either side of each centreline along the surface, and their (u,v)
         // B-splines end at the edges' ends.
         for (const TowPath& t : plan.tows) {
@@ -130,7 +140,7 @@ TEST_CASE("courses around a cylinder: Schueler's steps give the closed-form over
     }
 }
 
-TEST_CASE("a plane reference cuts the surface; points are projected onto it; both refuse what they cannot use", "[placement][courses]")
+TEST_CASE("a plane reference cuts the surface, points are projected onto it, both refuse what they cannot use", "[placement][courses]")
 {
     const NurbsSurface s = testing::cylinder(2.0, 3.0);
     // The plane z = 1.2 cuts the cylinder in a circle; the plane y = 0 in two generator lines,
@@ -237,11 +247,30 @@ TEST_CASE("a laminate family: the fixed-angle curve crosses every 0° tow at the
     {
         const NurbsSurface s = testing::cylinder(2.0, 3.0);
         const CurveOnSurface one = generatorLine(s, 0.125, 9);
-        CHECK_THROWS_AS(fixedAngleCurve(s, {one}, 45.0), Error);
-        CHECK_THROWS_AS(fixedAngleCurve(s, {one, generatorLine(s, 0.15, 9)}, 0.0), Error);
-        CHECK_THROWS_AS(fixedAngleCurve(s, {one, generatorLine(s, 0.15, 8)}, 45.0), Error);
+        const auto refused = [&](const std::vector<CurveOnSurface>& family, double theta, const std::string& why) {
+            try {
+                fixedAngleCurve(s, family, theta);
+                FAIL("no error: " << why);
+            } catch (const Error& e) {
+                INFO(e.what());
+                CHECK(e.code() == ErrorCode::InvalidArgument);
+                CHECK(std::string(e.what()).find(why) != std::string::npos);
+            }
+        };
+        refused({one}, 45.0, "at least two");
+        refused({one, generatorLine(s, 0.15, 9)}, 0.0, "an angle in (0, 180)");
+        refused({one, generatorLine(s, 0.15, 8)}, 45.0, "the same number of points");
+        CurveOnSurface repeated = generatorLine(s, 0.15, 9);
+        repeated.uv[4] = repeated.uv[3];
+        refused({one, repeated}, 45.0, "points 3 and 4 coincide");
         // At 10° the curve runs off the family's ends before it crosses to the other curve.
-        CHECK_THROWS_AS(fixedAngleCurve(s, {one, generatorLine(s, 0.2, 9)}, 10.0), Error);
+        refused({one, generatorLine(s, 0.2, 9)}, 10.0, "leaves the 0° curves' ends");
+        // A step larger than the gap between the curves is reduced: the crossing is still exact.
+        FixedAngleOptions big;
+        big.step = 5.0;
+        const FixedAngleCurve f = fixedAngleCurve(s, {one, generatorLine(s, 0.15, 9)}, 90.0, big);
+        REQUIRE(f.crossings.size() == 2);
+        for (const FamilyCrossing& c : f.crossings) CHECK(std::abs(c.angle - 90.0) <= 0.01);
     }
 }
 
@@ -316,8 +345,35 @@ TEST_CASE("towgeom courses: a half-cylinder from STEP, overlaps that detect find
     CHECK(line.status == 2);
     CHECK(line.err.find("ref.txt") != std::string::npos);
     CHECK(line.err.find("ref.txt:2:") != std::string::npos);
-    const testing::Run usage = testing::cli("courses '" + tool.string() + "' --reference plane:1,2 --tow-width 0.3 --out '" + (dir / "x").string() + "'");
-    CHECK(usage.status == 2);
+    for (const char* plane : {"plane:1,2", "plane:1x,2,0,1,0,1,0", "plane:2,0,1,0,1,0,"}) {
+        const testing::Run usage = testing::cli("courses '" + tool.string() + "' --reference " + plane + " --tow-width 0.3 --out '" + (dir / "x").string() + "'");
+        INFO(plane << ": " << usage.err);
+        CHECK(usage.status == 2);
+        CHECK(usage.err.find("takes six numbers") != std::string::npos);
+    }
+    // Points on the face's middle line, one repeated (its nearest point is the one before's),
+    // one far off the surface: each named by its line.
+    std::ofstream(bad) << "# x y z\n2 0 0.2\n2 0 0.4\n\n2 0 0.4\n2 0 0.6\n";
+    const testing::Run repeated = testing::cli("courses '" + tool.string() + "' --reference points:" + bad.string() + " --tow-width 0.3 --out '" + (dir / "x").string() + "'");
+    INFO(repeated.err);
+    CHECK(repeated.status == 2);
+    CHECK(repeated.err.find("ref.txt:5:") != std::string::npos);
+    std::ofstream(bad) << "# x y z\n2 0 0.2\n2 0 0.4\n2.5 0 0.5\n2 0 0.6\n";
+    const testing::Run far = testing::cli("courses '" + tool.string() + "' --reference points:" + bad.string() + " --tow-width 0.3 --out '" + (dir / "x").string() + "'");
+    INFO(far.err);
+    CHECK(far.status == 2);
+    CHECK(far.err.find("ref.txt:4:") != std::string::npos);
+    // A smaller plan into the same directory leaves only its own ribbons.
+    {
+        const fs::path out = dir / ("plan_" + std::to_string(w));
+        REQUIRE(fs::exists(out / "c1_t3.stw"));
+        const testing::Run two = testing::cli("courses '" + tool.string() + "' --reference plane:2,0,1,0,1,0 --tow-width 0.3 --tows 2 --quiet --out '" +
+                                              out.string() + "'");
+        INFO(two.err);
+        REQUIRE(two.status == 0);
+        CHECK(fs::exists(out / "c1_t2.stw"));
+        CHECK_FALSE(fs::exists(out / "c1_t3.stw"));
+    }
     CHECK_FALSE(fs::exists(dir / "x"));
     fs::remove_all(dir);
 }

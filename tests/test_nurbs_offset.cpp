@@ -6,6 +6,7 @@
 
 #include <towgeom/error.hpp>
 #include <towgeom/nurbs_offset.hpp>
+#include <towgeom/placement_surface.hpp>
 #include <towgeom/surface_offset_curves.hpp>
 #include <towgeom/tow_intersection.hpp>
 #include <towgeom/tow_ribbon.hpp>
@@ -440,4 +441,143 @@ TEST_CASE("a course of tows on a cylinder as .stw ribbons: detect finds an overl
             CHECK(r.findings.empty());
         }
     }
+}
+
+TEST_CASE("a tool surface by its face's name, or fitted to a point grid, and the ply on it", "[placement][ply][cli]")
+{
+    const fs::path dir = fs::temp_directory_path() / ("towgeom_tool_surface_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const double r = 1.5, h = 2.0, t = 0.1;
+    // A STEP file whose face is named: OCCT writes ADVANCED_FACE(''...); name it as a CAD
+    // system would.
+    const fs::path plain = dir / "plain.step", named = dir / "named.step";
+    testing::writeCylinderFace(plain.string(), r, h);
+    {
+        std::ifstream in(plain);
+        std::stringstream text;
+        text << in.rdbuf();
+        std::string s = text.str();
+        const std::size_t at = s.find("ADVANCED_FACE(''");
+        REQUIRE(at != std::string::npos);
+        s.replace(at, 16, "ADVANCED_FACE('mould top'");
+        std::ofstream(named) << s;
+    }
+    const PlacementSurface byName = readPlacementSurface(named.string(), "mould top");
+    CHECK(byName.name == "mould top");
+    CHECK(byName.face == 0);
+    CHECK(readPlacementSurface(named.string(), 0).name == "mould top");
+    try {
+        readPlacementSurface(named.string(), "mould bottom");
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::InvalidArgument);
+        CHECK(std::string(e.what()).find("'mould top'") != std::string::npos);  // the names there are
+    }
+    CHECK_THROWS_AS(readPlacementSurface(plain.string(), "mould top"), Error);
+    const testing::Run run = testing::cli("ply '" + named.string() + "' --face 'mould top' --thickness 0.1 --out '" + (dir / "named.out").string() + "' --quiet");
+    INFO(run.err << run.out);
+    REQUIRE(run.status == 0);
+    CHECK(run.out.find("\"face_name\":\"mould top\"") != std::string::npos);
+
+    // A grid of 11 x 9 points on a quarter of that cylinder (u around, v up: the normal
+    // outward), interpolated: every point on the surface, the ply's volume the annulus sector's.
+    const double from = -0.5, to = 0.5;
+    std::vector<Point3> grid;
+    std::ostringstream file;
+    file << "# a cylinder patch\ngrid 11 9\n";
+    for (int i = 0; i < 11; ++i)
+        for (int j = 0; j < 9; ++j) {
+            const double a = from + (to - from) * i / 10.0, z = h * j / 8.0;
+            grid.push_back({r * std::cos(a), r * std::sin(a), z});
+            file << grid.back().x << " " << grid.back().y << " " << grid.back().z << "\n";
+        }
+    const PlacementSurface fitted = fitPlacementSurface(grid, 11, 9);
+    CHECK(fitted.fitDeviation <= 1e-9);
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    double worst = 0.0;
+    for (int k = 0; k < 1000; ++k) {
+        const Point3 p = fitted.surface.point(unit(random), unit(random));
+        worst = std::max(worst, std::abs(std::hypot(p.x, p.y) - r));
+    }
+    INFO("interpolated cylinder patch: largest radial error " << worst);
+    CHECK(worst <= 2e-4);  // measured 1.1e-4 (cubic interpolation of 11 points over 1 radian)
+    const SurfaceOffset top = offsetSurface(fitted.surface, t);
+    const double sector = 0.5 * (to - from) * ((r + t) * (r + t) - r * r) * h;
+    CHECK(std::abs(measureVolume(plySolid(top.base, top.offset)).volume - sector) <= 5e-4 * sector);  // measured 2.8e-4
+    const fs::path gridFile = dir / "patch.grid";
+    std::ofstream(gridFile) << file.str();
+    const testing::Run gridRun = testing::cli("ply '" + gridFile.string() + "' --thickness 0.1 --out '" + (dir / "grid.out").string() + "' --quiet");
+    INFO(gridRun.err << gridRun.out);
+    REQUIRE(gridRun.status == 0);
+    const testing::Run quadratic = testing::cli("ply '" + gridFile.string() + "' --thickness 0.1 --through quadratic --out '" +
+                                                (dir / "quadratic.out").string() + "' --quiet");
+    INFO(quadratic.err << quadratic.out);
+    REQUIRE(quadratic.status == 0);
+    {
+        std::ifstream json(dir / "quadratic.out" / "ply_1.json");
+        std::stringstream text;
+        text << json.rdbuf();
+        CHECK(text.str().find("\"degrees\":[3,3,2]") != std::string::npos);
+        const std::size_t at = quadratic.out.find("\"volume\":");
+        REQUIRE(at != std::string::npos);
+        CHECK(std::abs(std::stod(quadratic.out.substr(at + 9)) - sector) <= 5e-4 * sector);
+    }
+    // Refusals: a short grid, a line that is not a point, too few points; nothing written.
+    std::ofstream(dir / "bad.grid") << "grid 4 4\n0 0 0\n1 0\n";
+    const testing::Run bad = testing::cli("ply '" + (dir / "bad.grid").string() + "' --thickness 0.1 --out '" + (dir / "x").string() + "'");
+    CHECK(bad.status == 2);
+    CHECK(bad.err.find("bad.grid:3:") != std::string::npos);
+    CHECK_THROWS_AS(fitPlacementSurface(grid, 11, 8), Error);
+    CHECK_THROWS_AS(fitPlacementSurface(std::vector<Point3>(9), 3, 3), Error);
+    CHECK_FALSE(fs::exists(dir / "x"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("a ply quadratic through its thickness: the middle offset at w = 1/2, the exact volume, common knots", "[placement][ply]")
+{
+    // A saddle (no closed form, but the exact offset at any point is S + d n): the middle and
+    // top offset separately insert different knots; withKnotsOf() gives them common ones.
+    const NurbsSurface s = saddle();
+    const double t = 0.1;
+    OffsetOptions o;
+    o.tolerance = 1e-5;
+    const SurfaceOffset top = offsetSurface(s, t, o);
+    const SurfaceOffset middle = offsetSurface(top.base, 0.5 * t, o);
+    if (middle.knotsInserted > 0) CHECK_THROWS_AS(plySolid(middle.base, middle.offset, top.offset), Error);  // knots differ
+    const NurbsSurface matched = withKnotsOf(top.offset, middle.base);
+    CHECK(matched.uKnots == middle.base.uKnots);
+    CHECK(matched.vKnots == middle.base.vKnots);
+    const NurbsVolume ply = plySolid(middle.base, middle.offset, matched);
+    CHECK(ply.degree[2] == 2);
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    double worstMiddle = 0.0, worstTop = 0.0, worstInsert = 0.0;
+    for (int k = 0; k < 1000; ++k) {
+        const double u = unit(random), v = unit(random);
+        const Point3 p = s.point(u, v);
+        const Vector3 n = s.normal(u, v);
+        worstMiddle = std::max(worstMiddle, distance(ply.point(u, v, 0.5), p + 0.5 * t * n));
+        worstTop = std::max(worstTop, distance(ply.point(u, v, 1.0), p + t * n));
+        worstInsert = std::max(worstInsert, distance(matched.point(u, v), top.offset.point(u, v)));  // the same surface
+    }
+    INFO("middle " << worstMiddle << ", top " << worstTop << ", knot insertion " << worstInsert);
+    CHECK(worstMiddle <= 1e-5);
+    CHECK(worstTop <= 1e-5);
+    CHECK(worstInsert <= 1e-12);
+    const VolumeMeasure m = measureVolume(ply, 3);
+    CHECK(m.minJacobian > 0.0);
+    // The volume against the linear ply's (the same top and base: they differ by the middle's
+    // departure from the average of the two, within the offsets' tolerance).
+    const double linear = measureVolume(plySolid(top.base, top.offset), 3).volume;
+    CHECK(std::abs(m.volume - linear) <= 1e-5 * linear);
+    // On a cylinder the quadratic ply is the exact annulus too.
+    const double r = 1.0, length = 3.0;
+    const NurbsSurface cyl = cylinder(r, length);
+    const SurfaceOffset ct = offsetSurface(cyl, 0.2), cm = offsetSurface(ct.base, 0.1);
+    const VolumeMeasure cv = measureVolume(plySolid(cm.base, cm.offset, withKnotsOf(ct.offset, cm.base)));
+    const double exact = kPi * ((r + 0.2) * (r + 0.2) - r * r) * length;
+    CHECK(std::abs(cv.volume - exact) <= 1e-6 * exact);
+    CHECK_THROWS_AS(withKnotsOf(middle.base, s), Error);  // the "finer" one lacks knots
 }

@@ -117,17 +117,22 @@ struct CoursePlan {
 TOWGEOM_EXPORT CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& reference, const CourseOptions& options);
 
 /// Writes @p plan as JSON: {"method", "tow_width", "spacing", "tolerance", "largest_step_error",
-/// "within_tolerance", "courses":[{"name", "from", "distance", "points", "geodesic_distance",
-/// "estimated_error"}], "tows":[{"name", "course", "distance", "centreline":{"uv","points"},
-/// "right", "left", "right_curve":{"degree","knots","poles"}, "left_curve", "geodesic_distance",
-/// "estimated_error"}], "gaps":[{"right", "left", "between_courses", "min", "max", "measured",
-/// "width"}]} (NaN widths as null). @throws towgeom::Error (WriteFailed) when the stream fails.
+/// "within_tolerance", "reference":{"uv":[[u,v],..], "points":[[x,y,z],..]}, "courses":[{"name",
+/// "from", "distance", "centreline":{"uv","points"}, "geodesic_distance", "estimated_error"}],
+/// "tows":[{"name", "course", "from", "distance", "centreline", "right", "left",
+/// "right_curve":{"degree","knots","poles":[[u,v,weight],..]}, "left_curve",
+/// "geodesic_distance", "estimated_error"}], "gaps":[{"right", "left" (the tows' names),
+/// "between_courses", "min", "max", "measured", "width"}]} ("from": the curve a step started
+/// from; NaN widths as null).
+/// @throws towgeom::Error (InvalidArgument) for a plan whose gaps do not match its tows;
+///         (WriteFailed) when the stream fails.
 TOWGEOM_EXPORT void writeCoursePlanJson(const CoursePlan& plan, std::ostream& out);
 
 /// Writes @p plan's centrelines and edges as legacy VTK polylines (ParaView), cell data "tow"
 /// (index in CoursePlan::tows) and "kind" (0 centreline, 1 right edge, 2 left edge), point data
 /// "gap" (each tow centreline point's width to the tow on its left; 0 elsewhere and where not
-/// measured). @throws towgeom::Error (WriteFailed) when the stream fails.
+/// measured). @throws towgeom::Error (InvalidArgument) for a plan whose gaps do not match its
+///         tows; (WriteFailed) when the stream fails.
 TOWGEOM_EXPORT void writeCoursePlanVtk(const CoursePlan& plan, std::ostream& out);
 
 /// @}

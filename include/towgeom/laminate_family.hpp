@@ -21,8 +21,11 @@ struct FixedAngleOptions {
     /// Where the curve starts on the first 0° curve, as a fraction of its points' index range
     /// (0 its first point, 1 its last).
     double start = 0.5;
-    /// The curve's step along the surface; 0: 1/20 of the smallest distance between neighbouring
-    /// 0° curves at the start. Its points are this far apart.
+    /// The curve's step along the surface; 0, or more than 1/4 of the smallest distance between
+    /// neighbouring 0° curves at the start: 1/20 of that distance. The curve's points are a step
+    /// apart, except around each crossing (the step that lands on a 0° curve is shorter; a point
+    /// less than half a step before a crossing is dropped, so neighbours there are up to 1.5
+    /// steps apart).
     double step = 0.0;
 };
 
@@ -45,12 +48,15 @@ struct FixedAngleCurve {
 /// curve. The family is a set of 0° curves (such as the centrelines layCourses() lays, or a
 /// reference and its offsets) with the same number of points, point i of each corresponding to
 /// point i of the others. Between two curves the 0° direction is interpolated: each curve is a
-/// cubic B-spline in (u,v) of a parameter shared by all (the point index), and the 0° field at
-/// fraction f between curves k and k + 1 is the tangent of (1 - f) C_k + f C_{k+1}: on each
-/// curve, that curve's own tangent. The curve is the field's integral curve at angle theta
-/// (RK4 along the surface).
+/// cubic B-spline C_k(t) in (u,v) of a parameter t shared by all (the point index), the curves
+/// are blended in the curve index by cubic Hermite interpolation with Catmull-Rom slopes
+/// ((C_{k+1} - C_{k-1}) / 2, one-sided at the family's first and last curve), and the 0° field
+/// is that blend's t-tangent: on each curve, that curve's own tangent, and C1 across the curves
+/// (so the fixed-angle curve's curvature has no jumps there). The curve is the field's integral
+/// curve at angle theta (RK4 along the surface), landing exactly on each 0° curve it crosses.
 /// @throws towgeom::Error (InvalidArgument) for fewer than 2 curves, curves of different or
-///         fewer than 4 points, theta outside (0, 180), a start outside [0, 1], a negative step,
+///         fewer than 4 points, non-finite or repeated consecutive points (naming the curve),
+///         theta outside (0, 180), a start outside [0, 1], a negative step,
 ///         or a curve that leaves the family's ends or the surface before reaching the last
 ///         curve; (Internal) if OpenCASCADE fails.
 TOWGEOM_EXPORT FixedAngleCurve fixedAngleCurve(const NurbsSurface& surface, const std::vector<CurveOnSurface>& zeroFamily,

@@ -121,6 +121,23 @@ TOWGEOM_EXPORT SurfaceOffset offsetSurface(const NurbsSurface& surface, double d
 ///         knots and weights.
 TOWGEOM_EXPORT NurbsVolume plySolid(const NurbsSurface& base, const NurbsSurface& top);
 
+/// The ply solid quadratic through its thickness between @p base, @p middle and @p top (an
+/// offset of base by t / 2 and one by t: the same degrees, knots and weights): the trivariate
+/// NURBS of degree 2 in w whose poles in w are base, 2 middle - (base + top) / 2 and top, so that
+/// w = 0, 1/2 and 1 give the three surfaces exactly (Nguyen et al.'s quadratic through-thickness
+/// field; where the offsets are not along straight normals, as the collocated ones are not
+/// quite, it follows the middle surface the linear ply only averages).
+/// @throws towgeom::Error (InvalidArgument) when the surfaces do not share their degrees, knots
+///         and weights (see withKnotsOf()).
+TOWGEOM_EXPORT NurbsVolume plySolid(const NurbsSurface& base, const NurbsSurface& middle, const NurbsSurface& top);
+
+/// @p surface with the knots of @p finer inserted (exactly: OpenCASCADE's knot insertion, the
+/// same surface), so that the two share their knot vectors, as plySolid() needs of surfaces
+/// offset separately (offsetSurface() inserts its own knots).
+/// @throws towgeom::Error (InvalidArgument) when @p finer's knot vectors do not contain
+///         @p surface's, or the degrees differ.
+TOWGEOM_EXPORT NurbsSurface withKnotsOf(const NurbsSurface& surface, const NurbsSurface& finer);
+
 /// What measureVolume() found.
 struct VolumeMeasure {
     /// The absolute value of the integral of the Jacobian over the parameter box: the volume

@@ -1,10 +1,11 @@
 /// @file placement_surface.hpp
-/// @brief readPlacementSurface(): a fibre-placement tool surface from a STEP or IGES file as a
-/// NurbsSurface.
+/// @brief readPlacementSurface(), fitPlacementSurface(): a fibre-placement tool surface as a
+/// NurbsSurface, from a face of a STEP or IGES file or fitted to a grid of points.
 #pragma once
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "towgeom/nurbs_offset.hpp"
 #include "towgeom/export.hpp"
@@ -14,26 +15,53 @@ TOWGEOM_BEGIN_NAMESPACE
 /// @addtogroup placement
 /// @{
 
-/// A face read from a CAD file.
+/// A tool surface: a face read from a CAD file, or a surface fitted to a grid of points.
 struct PlacementSurface {
     /// The face's surface as a clamped NURBS over the face's (u,v) box (OpenCASCADE's
     /// GeomConvert: exact for B-spline, Bezier, analytic, revolution and extrusion surfaces; other
     /// kinds, such as offset surfaces, approximated to 1e-4), its normal turned to the face's
     /// outward side (the u direction reversed when the face is reversed). The face's trimming
-    /// curves are not kept: the whole box is the surface.
+    /// curves are not kept: the whole box is the surface. For a grid, the fitted surface.
     NurbsSurface surface;
-    std::size_t faceCount = 0;  ///< faces in the file
+    std::size_t faceCount = 0;  ///< faces in the file (0 for a grid)
     std::size_t face = 0;       ///< which one this is (0-based, in the file's order)
+    /// The face's name in the file (a STEP ADVANCED_FACE's or an IGES entity's name), empty if
+    /// it has none.
+    std::string name;
+    /// For a grid: the largest distance from a grid point to the fitted surface (0 for a face).
+    double fitDeviation = 0.0;
 };
 
 /// Reads face @p face (0-based, in the order OpenCASCADE explores the file's shapes) of the STEP
-/// (.step, .stp) or IGES (.iges, .igs) file @p path. Lengths come out in millimetres: OpenCASCADE's
-/// readers convert the file's unit (a file in metres gives 1000 per metre). Safe to call from
-/// several threads (OpenCASCADE's data exchange is serialised).
+/// (.step, .stp) or IGES (.iges, .igs) file @p path, or fits the point grid of a .grid file (see
+/// fitPlacementSurface(); the file: '#' comments, a line 'grid NU NV', then NU x NV lines 'x y z',
+/// v varying fastest; interpolated, @p face must be 0). Lengths come out in millimetres from
+/// STEP and IGES: OpenCASCADE's readers convert the file's unit (a file in metres gives 1000 per
+/// metre); a grid's are its own. Safe to call from several threads (OpenCASCADE's data exchange
+/// is serialised).
 /// @throws towgeom::Error (FileNotFound, FileUnreadable naming the file) when it cannot be read
-///         as STEP or IGES; (InvalidArgument) for another extension or a face index past the
-///         file's faces (the message gives their count); (Internal) if OpenCASCADE fails.
+///         as STEP, IGES or a grid; (InvalidArgument) for another extension, a face index past
+///         the file's faces (the message gives their count) or a malformed grid (naming the
+///         line); (Internal) if OpenCASCADE fails.
 TOWGEOM_EXPORT PlacementSurface readPlacementSurface(const std::string& path, std::size_t face = 0);
+
+/// Reads the first face named @p faceName of the STEP or IGES file @p path, as
+/// readPlacementSurface() does by index.
+/// @throws towgeom::Error (InvalidArgument) when no face has that name (the message lists the
+///         names there are, or says the faces have none), and as the other overload.
+TOWGEOM_EXPORT PlacementSurface readPlacementSurface(const std::string& path, const std::string& faceName);
+
+/// A tool surface through a grid of measured points: @p uCount rows of @p vCount points, point
+/// (i, j) at @p grid[i * vCount + j] (u along the rows' order, v along each row; the normal is
+/// dS/du x dS/dv). With @p tolerance 0 the bicubic B-spline interpolating every point
+/// (OpenCASCADE's GeomAPI_PointsToBSplineSurface, chord-length parameters); otherwise its
+/// smoothing approximation (degrees 3 to 8, C2) within @p tolerance of every point, for noisy
+/// measurements. The parameters are scaled to [0, 1].
+/// @throws towgeom::Error (InvalidArgument) for fewer than 4 x 4 points, a grid of another size
+///         than uCount x vCount, non-finite coordinates, a negative tolerance or a grid
+///         OpenCASCADE cannot fit (repeated points).
+TOWGEOM_EXPORT PlacementSurface fitPlacementSurface(const std::vector<Point3>& grid, std::size_t uCount, std::size_t vCount,
+                                                    double tolerance = 0.0);
 
 /// @}
 

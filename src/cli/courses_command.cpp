@@ -2,16 +2,21 @@
 // reference curve, with their errors, the gaps and overlaps between tows, and each tow as a
 // .stw ribbon for towgeom detect.
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_text.hpp"
+#include "cli/tool_surface.hpp"
 #include "io/output_files.hpp"
 #include "towgeom/towgeom.hpp"
 
@@ -22,7 +27,8 @@ namespace {
 const char* kCoursesHelp = R"(Usage: towgeom courses SURFACE.step --reference REF --tow-width W --out DIR [options]
 
 Plans fibre-placement courses on a tool surface (a face of a STEP or IGES file, converted
-exactly to a NURBS): K courses of N tows of width W, the first course's centreline the
+exactly to a NURBS, or a .grid file of points: '#' comments, 'grid NU NV', then NU x NV
+lines 'x y z', v fastest, interpolated by a bicubic B-spline): K courses of N tows of width W, the first course's centreline the
 reference curve, each next course to the reference's left (seen from the face's outer side).
 Centrelines are offset along the surface as Schueler, Miller & Hale (2004) do: each point
 moved by d along O = N x T and projected back (their Eq. 2 estimates what a step loses on a
@@ -32,8 +38,9 @@ tow covers the band W wide about its centreline; the gap (+) or overlap (-) betw
 neighbouring tows is measured along the surface at every centreline point.
 
 With --angle THETA the plan is a laminate-family ply: the 0 degree tows are laid first (as
-above), a curve is traced from the middle of the reference across them at THETA to every one
-(integrated on the surface), and the courses are laid from that curve.
+above; at least two), a curve is traced from the middle of the first tow's centreline (c1_t1)
+across all their centrelines at THETA to every one (integrated on the surface), and the
+courses are laid from that curve.
 
 Writes, all or nothing:
 
@@ -43,11 +50,12 @@ Writes, all or nothing:
   DIR/courses.vtk   centrelines and edges as polylines for ParaView (cell data "tow",
                     "kind"; point data "gap")
   DIR/NAME.stw      each tow as a ribbon W wide and --thickness thick lying on the surface
-                    (racetrack sections): 'towgeom detect DIR/*.stw' finds the overlaps
+                    (racetrack sections), NAME c<course>_t<tow>: 'towgeom detect DIR/*.stw'
+                    finds the overlaps (ribbons of an earlier plan in DIR are removed)
 
 and prints one JSON object on stdout:
 
-  {"file", "face", "method", "tows", "courses", "tow_width", "spacing", "tolerance",
+  {"file", "face", "face_name", "method", "tows", "courses", "tow_width", "spacing", "tolerance",
    "largest_step_error", "within_tolerance", "gaps":[{"right", "left", "between_courses",
    "min", "max"}], "angle":{"theta", "crossings":[{"curve", "angle"}]} (with --angle)}
 
@@ -73,8 +81,9 @@ Options:
   --angle THETA     a laminate-family ply at THETA degrees (0 < THETA < 180) to the 0 degree
                     tows the reference and the options above lay
   --points N        points along a plane reference (default 41)
-  --thickness T     the ribbons' thickness (default W / 10)
-  --face N          which face of the file (0-based, default 0)
+  --thickness T     the ribbons' thickness, at most W (default W / 10)
+  --face N|NAME     which face of the file: its index (0-based, default 0) or its name in
+                    the file (a STEP ADVANCED_FACE's or IGES entity's name)
   --out DIR         where to write (created if needed)
   --quiet           no progress lines on stderr
   -h, --help        this help
@@ -91,25 +100,52 @@ Examples:
       --angle 45 --out plan45
 )";
 
+/// One line of a reference file: its numbers and its line number.
+struct Row {
+    std::vector<double> x;
+    std::size_t line = 0;
+};
+
 /// The numbers of each line of @p path ('#' comments, blank lines skipped), @p count per line.
-std::vector<std::vector<double>> readColumns(const std::string& path, std::size_t count)
+std::vector<Row> readColumns(const std::string& path, std::size_t count)
 {
     std::ifstream in(path);
     if (!in) throw Error(ErrorCode::FileNotFound, "cannot open the reference file", path);
-    std::vector<std::vector<double>> rows;
+    std::vector<Row> rows;
     std::string line;
     for (std::size_t number = 1; std::getline(in, line); ++number) {
         line = line.substr(0, line.find('#'));
+        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
         std::istringstream words(line);
-        std::vector<double> row;
+        Row row;
+        row.line = number;
         double x = 0.0;
-        while (words >> x) row.push_back(x);
-        if (row.empty() && words.eof() && line.find_first_not_of(" \t\r") == std::string::npos) continue;
-        if (row.size() != count || !words.eof())
+        while (words >> x) row.x.push_back(x);
+        if (row.x.size() != count || !words.eof())
             throw Error(ErrorCode::InvalidArgument, "expected " + std::to_string(count) + " numbers on the line", path, number);
         rows.push_back(row);
     }
+    if (rows.size() < 4) throw Error(ErrorCode::InvalidArgument, "a reference needs at least 4 points, the file has " + std::to_string(rows.size()), path);
     return rows;
+}
+
+/// The six numbers of "X,Y,Z,NX,NY,NZ".
+std::vector<double> planeNumbers(const std::string& text)
+{
+    std::vector<double> x;
+    std::size_t from = 0;
+    while (from <= text.size()) {
+        const std::size_t comma = std::min(text.find(',', from), text.size());
+        const std::string word = text.substr(from, comma - from);
+        double value = 0.0;
+        const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
+        if (word.empty() || ec != std::errc() || end != word.data() + word.size() || !std::isfinite(value))
+            throw UsageError("--reference plane:X,Y,Z,NX,NY,NZ takes six numbers, got '" + text + "'");
+        x.push_back(value);
+        from = comma + 1;
+    }
+    if (x.size() != 6) throw UsageError("--reference plane:X,Y,Z,NX,NY,NZ takes six numbers, got '" + text + "'");
+    return x;
 }
 
 CurveOnSurface readReference(const NurbsSurface& surface, const std::string& text, std::size_t points, bool reverse)
@@ -117,38 +153,40 @@ CurveOnSurface readReference(const NurbsSurface& surface, const std::string& tex
     const std::size_t colon = text.find(':');
     const std::string kind = text.substr(0, colon), rest = colon == std::string::npos ? "" : text.substr(colon + 1);
     if (kind == "plane") {
-        std::vector<double> x;
-        std::istringstream in(rest);
-        for (std::string word; std::getline(in, word, ',');) {
-            try {
-                std::size_t used = 0;
-                x.push_back(std::stod(word, &used));
-                if (used != word.size()) x.clear();
-            } catch (const std::exception&) {
-                x.clear();
-                break;
-            }
-        }
-        if (x.size() != 6) throw UsageError("--reference plane:X,Y,Z,NX,NY,NZ takes six numbers");
+        const std::vector<double> x = planeNumbers(rest);
         return referenceFromPlane(surface, {x[0], x[1], x[2]}, {x[3], x[4], x[5]}, points, reverse);
     }
     CurveOnSurface c;
     if (kind == "points") {
+        const std::vector<Row> rows = readColumns(rest, 3);
         std::vector<Point3> p;
-        for (const auto& r : readColumns(rest, 3)) p.push_back({r[0], r[1], r[2]});
+        for (const Row& r : rows) p.push_back({r.x[0], r.x[1], r.x[2]});
         try {
             c = referenceFromPoints(surface, p);
         } catch (const Error& e) {
-            throw Error(e.code(), e.what(), rest);
+            // "point I ..." or "points I and J ...": the line of point I, or of J.
+            std::size_t index = 0, second = 0;
+            const std::string m = e.message();
+            const std::size_t at = m.find("point");
+            if (at != std::string::npos && std::sscanf(m.c_str() + at, "points %zu and %zu", &index, &second) == 2) index = second;
+            else if (at == std::string::npos || std::sscanf(m.c_str() + at, "point %zu", &index) != 1) index = rows.size();
+            if (index < rows.size()) throw Error(e.code(), m, rest, rows[index].line);
+            throw Error(e.code(), m, rest);
         }
     } else if (kind == "uv") {
+        const std::vector<Row> rows = readColumns(rest, 2);
         std::vector<UV> uv;
-        for (const auto& r : readColumns(rest, 2)) uv.push_back({r[0], r[1]});
-        try {
-            c = curveOnSurface(surface, uv);
-        } catch (const Error& e) {
-            throw Error(e.code(), e.what(), rest);
+        for (const Row& r : rows) {
+            uv.push_back({r.x[0], r.x[1]});
+            if (uv.size() > 1 && uv.back().u == uv[uv.size() - 2].u && uv.back().v == uv[uv.size() - 2].v)
+                throw Error(ErrorCode::InvalidArgument, "the point repeats the one before it", rest, r.line);
+            try {
+                curveOnSurface(surface, {uv.back()});
+            } catch (const Error& e) {
+                throw Error(e.code(), e.message(), rest, r.line);
+            }
         }
+        c = curveOnSurface(surface, uv);
     } else {
         throw UsageError("--reference is plane:X,Y,Z,NX,NY,NZ, points:FILE or uv:FILE");
     }
@@ -198,8 +236,11 @@ int runCourses(int argc, char** argv, int first)
         if (args.has("exact")) options.method = SurfaceOffsetMethod::Geodesic;
         const auto angle = args.number("angle");
         if (angle && !(*angle > 0.0 && *angle < 180.0)) throw UsageError("--angle takes degrees between 0 and 180");
-        const std::size_t points = args.whole("points", 41, 4, 100000, "4 to 100000"), face = args.whole("face", 0, 0, 1e6, "0 to 1000000");
+        const std::size_t points = args.whole("points", 41, 4, 100000, "4 to 100000");
         const double thickness = args.has("thickness") ? args.positive("thickness") : 0.1 * options.towWidth;
+        if (thickness > options.towWidth) throw UsageError("--thickness must not exceed --tow-width (the ribbons' sections are racetracks)");
+        if (angle && options.towsPerCourse * options.courses < 2)
+            throw UsageError("--angle needs at least two 0 degree tows (--tows N x --courses K >= 2) to cross");
         const auto outDir = args.value("out");
         if (!outDir) throw UsageError("--out DIR is needed");
         const bool quiet = args.has("quiet");
@@ -208,11 +249,12 @@ int runCourses(int argc, char** argv, int first)
         };
 
         const std::string& file = args.positional().front();
-        const PlacementSurface tool = readPlacementSurface(file, face);
+        const PlacementSurface tool = readToolSurface(args, file);
         CurveOnSurface start = readReference(tool.surface, *reference, points, args.has("reverse"));
         Json report;
         report["file"] = file;
         report["face"] = tool.face;
+        report["face_name"] = tool.name;
         FixedAngleCurve family;
         if (angle) {
             say("laying the 0 degree tows");
@@ -228,7 +270,7 @@ int runCourses(int argc, char** argv, int first)
         CrossSection section;
         section.shape = SectionShape::Racetrack;
         section.width = options.towWidth;
-        section.height = std::min(thickness, options.towWidth);
+        section.height = thickness;
         std::vector<TowStack> ribbons;
         for (const TowPath& t : plan.tows) ribbons.push_back(towRibbon(tool.surface, t.centreline, section, 16, t.name));
 
@@ -257,6 +299,14 @@ int runCourses(int argc, char** argv, int first)
         writeCoursePlanVtk(plan, files.open((dir / "courses.vtk").string()));
         for (const TowStack& r : ribbons) writeStack(files.open((dir / (r.name + ".stw")).string()), r);
         files.commit();
+        // Ribbons of an earlier, larger plan in DIR would join 'detect DIR/*.stw': removed.
+        std::set<std::string> written;
+        for (const TowStack& r : ribbons) written.insert(r.name + ".stw");
+        for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+            const std::string name = entry.path().filename().string();
+            if (entry.is_regular_file() && std::regex_match(name, std::regex("c[0-9]+_t[0-9]+\\.stw")) && !written.count(name))
+                std::filesystem::remove(entry.path());
+        }
         if (!plan.withinTolerance)
             std::cerr << "towgeom courses: warning: a step is " << plan.largestStepError << " from its distance along the surface, more than --tolerance "
                       << plan.tolerance << " (--exact places them by geodesics)\n";

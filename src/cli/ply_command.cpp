@@ -1,5 +1,6 @@
 // towgeom ply: a fibre-placement ply as a trivariate NURBS between a tool surface (STEP or IGES)
 // and its offset, thin layer on layer.
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -7,6 +8,7 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_text.hpp"
+#include "cli/tool_surface.hpp"
 #include "io/output_files.hpp"
 #include "towgeom/towgeom.hpp"
 
@@ -17,21 +19,25 @@ namespace {
 const char* kPlyHelp = R"(Usage: towgeom ply SURFACE.step --thickness T --out DIR [options]
 
 Reads a tool surface (a face of a STEP or IGES file, converted exactly to a NURBS over its
-(u,v) box), offsets it by T along its outward normal keeping its parametrisation (the same
-degrees, knots and weights; knots inserted until the offset is within --tolerance of the exact
-one: Nguyen et al. 2014) and writes each ply as a trivariate NURBS, linear through its
-thickness, for isogeometric analysis. With --layers K the plies stack, each on the last one's
-top. Writes, all or nothing:
+(u,v) box, or a .grid file of points interpolated by a bicubic B-spline: '#' comments,
+'grid NU NV', then NU x NV lines 'x y z', v fastest), offsets it by T along its outward
+normal keeping its parametrisation (the same degrees, knots and weights; knots inserted until
+the offset is within --tolerance of the exact one: Nguyen et al. 2014) and writes each ply as
+a trivariate NURBS, linear through its thickness (or quadratic: --through), for isogeometric
+analysis. With --layers K the plies stack, each on the last one's top. Writes, all or nothing:
 
-  DIR/ply_K.json  the K-th ply: {"degrees":[p,q,1], "knots":[[u..],[v..],[w..]],
-                  "counts":[nu,nv,2], "poles":[[x,y,z,weight],...]} (pole (i,j,k) at
-                  (i nv + j) 2 + k)
+  DIR/ply_K.json  the K-th ply: {"degrees":[p,q,r], "knots":[[u..],[v..],[w..]],
+                  "counts":[nu,nv,r+1], "poles":[[x,y,z,weight],...]} (pole (i,j,k) at
+                  (i nv + j) (r+1) + k; r = 1 linear, 2 quadratic)
   DIR/ply_K.vtk   the ply sampled as hexahedra for ParaView, point data "jacobian"
 
 and prints one JSON object on stdout:
 
-  {"file", "face", "faces", "thickness", "plies":[{"volume", "min_jacobian", "max_jacobian",
-   "offset_error", "knots_inserted", "converged"}]}
+  {"file", "face", "faces", "face_name", "fit_deviation", "thickness", "through", "plies":[{"volume",
+   "min_jacobian", "max_jacobian", "offset_error", "knots_inserted", "converged"}]}
+
+  face_name       the face's name in the file ("" if none)
+  fit_deviation   for a .grid: the largest distance of a grid point from the surface (0 else)
 
   volume          the ply's volume (Gauss-Legendre per knot span of its Jacobian)
   min/max_jacobian  the Jacobian's range at the quadrature points: of one sign where the ply
@@ -42,10 +48,13 @@ and prints one JSON object on stdout:
 Options:
   --thickness T   ply thickness in millimetres (OpenCASCADE reads STEP and IGES lengths as
                   mm, whatever unit the file uses); negative: on the other side
-  --face N        which face of the file (0-based, default 0)
+  --face N|NAME   which face of the file: its index (0-based, default 0) or its name in the
+                  file (a STEP ADVANCED_FACE's or IGES entity's name)
   --layers K      plies stacked (default 1)
   --tolerance E   largest distance of an offset from the exact one (default: 1e-6 x the
                   size of the surface's control net)
+  --through KIND  linear (default: w degree 1, poles on the surface and its offset) or
+                  quadratic (w degree 2 through the surface, its offset by T/2 and by T)
   --samples S     VTK hexahedra per knot span along u and v (default 4; S/2 through)
   --out DIR       where to write (created if needed)
   --quiet         no progress lines on stderr
@@ -65,7 +74,7 @@ int runPly(int argc, char** argv, int first)
 {
     try {
         const Args args(argc, argv, first,
-                        {{"help"}, {"quiet"}, {"thickness", true}, {"face", true}, {"layers", true}, {"tolerance", true}, {"samples", true},
+                        {{"help"}, {"quiet"}, {"thickness", true}, {"face", true}, {"layers", true}, {"tolerance", true}, {"samples", true}, {"through", true},
                          {"out", true}});
         if (args.has("help")) {
             std::cout << kPlyHelp;
@@ -76,30 +85,50 @@ int runPly(int argc, char** argv, int first)
         if (!thickness || *thickness == 0.0) throw UsageError("--thickness T is needed, not 0");
         const auto outDir = args.value("out");
         if (!outDir) throw UsageError("--out DIR is needed");
-        const std::size_t face = args.whole("face", 0, 0, 1e6, "0 to 1000000"), layers = args.whole("layers", 1, 1, 1000, "1 to 1000"),
+        const std::size_t layers = args.whole("layers", 1, 1, 1000, "1 to 1000"),
                           samples = args.whole("samples", 4, 1, 64, "1 to 64");
         OffsetOptions options;
         options.tolerance = args.positive("tolerance");
         const bool quiet = args.has("quiet");
+        const std::string through = args.value("through").value_or("linear");
+        if (through != "linear" && through != "quadratic") throw UsageError("--through is linear or quadratic");
+        const bool quadratic = through == "quadratic";
 
         const std::string& file = args.positional().front();
-        const PlacementSurface tool = readPlacementSurface(file, face);
+        const PlacementSurface tool = readToolSurface(args, file);
         std::vector<NurbsVolume> plies;
         Json report;
         report["file"] = file;
         report["face"] = tool.face;
         report["faces"] = tool.faceCount;
+        report["face_name"] = tool.name;
+        report["fit_deviation"] = tool.fitDeviation;
         report["thickness"] = *thickness;
+        report["through"] = through;
         report["plies"] = Json::array();
         NurbsSurface base = tool.surface;
         for (std::size_t k = 0; k < layers; ++k) {
             if (!quiet) std::cerr << "towgeom ply: [" << k + 1 << "/" << layers << "] offsetting the surface\n";
             const SurfaceOffset o = offsetSurface(base, *thickness, options);
-            plies.push_back(plySolid(o.base, o.offset));
+            SurfaceOffset middle;
+            NurbsSurface top = o.offset;
+            if (quadratic) {
+                // The middle surface offset from the top's base (its knots and more), the top
+                // given the middle's extra knots: the three share their knots.
+                middle = offsetSurface(o.base, 0.5 * *thickness, options);
+                top = withKnotsOf(o.offset, middle.base);
+                plies.push_back(plySolid(middle.base, middle.offset, top));
+            } else {
+                plies.push_back(plySolid(o.base, o.offset));
+            }
             const VolumeMeasure m = measureVolume(plies.back());
-            report["plies"].push_back({{"volume", m.volume}, {"min_jacobian", m.minJacobian}, {"max_jacobian", m.maxJacobian},
-                                       {"offset_error", o.maxError}, {"knots_inserted", o.knotsInserted}, {"converged", o.converged}});
-            base = o.offset;
+            report["plies"].push_back({{"volume", m.volume},
+                                       {"min_jacobian", m.minJacobian},
+                                       {"max_jacobian", m.maxJacobian},
+                                       {"offset_error", std::max(o.maxError, middle.maxError)},
+                                       {"knots_inserted", o.knotsInserted + middle.knotsInserted},
+                                       {"converged", o.converged && (!quadratic || middle.converged)}});
+            base = top;
         }
         detail::OutputFiles files;
         files.makeDirectory(*outDir);

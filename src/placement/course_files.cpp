@@ -29,12 +29,21 @@ Json nurbsJson(const NurbsCurve& c)
     return {{"degree", c.degree}, {"knots", c.knots}, {"poles", std::move(poles)}};
 }
 
+/// Refuses a plan whose gaps do not index its tows' points.
+void checkPlan(const CoursePlan& plan)
+{
+    for (const TowGap& g : plan.gaps)
+        if (g.right >= plan.tows.size() || g.left >= plan.tows.size() || g.width.size() != plan.tows[g.right].centreline.points.size())
+            throw Error(ErrorCode::InvalidArgument, "course plan: a gap does not match its tows");
+}
+
 const char* methodName(SurfaceOffsetMethod m) { return m == SurfaceOffsetMethod::Geodesic ? "geodesic" : "project_tangent"; }
 
 }  // namespace
 
 void writeCoursePlanJson(const CoursePlan& plan, std::ostream& out)
 {
+    checkPlan(plan);
     Json j;
     j["method"] = methodName(plan.method);
     j["tow_width"] = plan.towWidth;
@@ -81,6 +90,8 @@ void writeCoursePlanJson(const CoursePlan& plan, std::ostream& out)
 
 void writeCoursePlanVtk(const CoursePlan& plan, std::ostream& out)
 {
+    checkPlan(plan);
+    const std::streamsize precision = out.precision();
     std::size_t points = 0, lines = 0, entries = 0;
     for (const TowPath& t : plan.tows)
         for (const CurveOnSurface* c : {&t.centreline, &t.right, &t.left}) {
@@ -110,11 +121,12 @@ void writeCoursePlanVtk(const CoursePlan& plan, std::ostream& out)
     for (std::size_t k = 0; k < plan.tows.size(); ++k) {
         const TowPath& t = plan.tows[k];
         for (std::size_t i = 0; i < t.centreline.points.size(); ++i) {
-            const double w = k < plan.gaps.size() ? plan.gaps[k].width[i] : 0.0;
+            const double w = k < plan.gaps.size() && plan.gaps[k].right == k ? plan.gaps[k].width[i] : 0.0;
             out << (std::isnan(w) ? 0.0 : w) << "\n";
         }
         for (std::size_t i = 0; i < t.right.points.size() + t.left.points.size(); ++i) out << "0\n";
     }
+    out.precision(precision);
     if (!out) throw Error(ErrorCode::WriteFailed, "could not write the course plan's VTK");
 }
 

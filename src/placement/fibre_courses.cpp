@@ -53,7 +53,8 @@ std::pair<CurveOnSurface, CourseStep> offsetStep(const NurbsSurface& surface, co
 }
 
 /// The cubic B-spline in (u,v) through @p uv (chord-length parameters), poles as (u, v, 0).
-NurbsCurve parameterCurve(const std::vector<UV>& uv)
+/// @throws towgeom::Error (InvalidArgument) naming @p what when the points repeat.
+NurbsCurve parameterCurve(const std::vector<UV>& uv, const std::string& what)
 {
     const int n = static_cast<int>(uv.size());
     Handle(TColgp_HArray1OfPnt2d) points = new TColgp_HArray1OfPnt2d(1, n);
@@ -64,10 +65,15 @@ NurbsCurve parameterCurve(const std::vector<UV>& uv)
         points->SetValue(i + 1, gp_Pnt2d(uv[i].u, uv[i].v));
         params->SetValue(i + 1, t);
     }
-    Geom2dAPI_Interpolate interpolate(points, params, Standard_False, 1e-14);
-    interpolate.Perform();
-    if (!interpolate.IsDone()) throw Error(ErrorCode::Internal, "an edge's (u,v) curve could not be interpolated");
-    const Handle(Geom2d_BSplineCurve) c = interpolate.Curve();
+    Handle(Geom2d_BSplineCurve) c;
+    try {
+        Geom2dAPI_Interpolate interpolate(points, params, Standard_False, 1e-14);
+        interpolate.Perform();
+        if (interpolate.IsDone()) c = interpolate.Curve();
+    } catch (const Standard_Failure&) {
+        // Points closer than the tolerance: refused below.
+    }
+    if (c.IsNull()) throw Error(ErrorCode::InvalidArgument, what + ": its points repeat (the reference's points must be distinct)");
     NurbsCurve out;
     out.degree = c->Degree();
     for (int i = 1; i <= c->NbKnots(); ++i)
@@ -170,10 +176,17 @@ CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& referen
     const double w = options.towWidth;
     if (!(w > 0.0) || !std::isfinite(w)) throw Error(ErrorCode::InvalidArgument, "layCourses: the tow width must be positive");
     if (options.towsPerCourse < 1 || options.courses < 1) throw Error(ErrorCode::InvalidArgument, "layCourses: at least one tow and one course");
-    if (!(options.spacing >= 0.0) || !std::isfinite(options.spacing) || !(options.tolerance >= 0.0))
-        throw Error(ErrorCode::InvalidArgument, "layCourses: the spacing and tolerance must be 0 or more");
+    if (!(options.spacing >= 0.0) || !std::isfinite(options.spacing) || !(options.tolerance >= 0.0) || !std::isfinite(options.tolerance))
+        throw Error(ErrorCode::InvalidArgument, "layCourses: the spacing and tolerance must be finite, 0 or more");
+    if (options.geodesicSteps < 1) throw Error(ErrorCode::InvalidArgument, "layCourses: at least one geodesic step");
     if (reference.uv.size() < 4 || reference.points.size() != reference.uv.size())
         throw Error(ErrorCode::InvalidArgument, "layCourses: a reference of at least 4 points, each with its (u,v)");
+    for (std::size_t i = 0; i < reference.uv.size(); ++i) {
+        if (!std::isfinite(reference.uv[i].u) || !std::isfinite(reference.uv[i].v))
+            throw Error(ErrorCode::InvalidArgument, "layCourses: reference point " + std::to_string(i) + " is not finite");
+        if (i > 0 && distance(reference.points[i], reference.points[i - 1]) == 0.0)
+            throw Error(ErrorCode::InvalidArgument, "layCourses: reference points " + std::to_string(i - 1) + " and " + std::to_string(i) + " coincide");
+    }
     const Handle(Geom_BSplineSurface) s = detail::occtSurface(surface);
     CoursePlan plan;
     plan.reference = reference;
@@ -204,8 +217,8 @@ CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& referen
                 std::tie(tow.centreline, tow.step) = offsetStep(surface, centre.curve, centre.name, d, options.method, steps, "tow " + tow.name);
                 tow.right = offsetStep(surface, tow.centreline, tow.name, -0.5 * w, SurfaceOffsetMethod::Geodesic, steps, "tow " + tow.name + "'s right edge").first;
                 tow.left = offsetStep(surface, tow.centreline, tow.name, 0.5 * w, SurfaceOffsetMethod::Geodesic, steps, "tow " + tow.name + "'s left edge").first;
-                tow.rightCurve = parameterCurve(tow.right.uv);
-                tow.leftCurve = parameterCurve(tow.left.uv);
+                tow.rightCurve = parameterCurve(tow.right.uv, "tow " + tow.name + "'s right edge");
+                tow.leftCurve = parameterCurve(tow.left.uv, "tow " + tow.name + "'s left edge");
                 plan.tows.push_back(std::move(tow));
             }
         }

@@ -31,8 +31,9 @@ std::array<double, 2> parameterRates(const Frame& f, const gp_Vec& t);
 bool insideParameters(const Handle(Geom_BSplineSurface)& s, double u, double v);
 
 /// The end of the geodesic of length @p length from @p from in the 3D tangent direction @p t
-/// (adaptive RK4, at most length / @p steps per step). @throws towgeom::Error (InvalidArgument)
-/// when it leaves the surface's parameter box or meets a singular point.
+/// (adaptive RK4, at most length / @p steps per step). Along the box's edge it may end up to 1e-6
+/// of the box outside it (not clamped: callers clamp what they keep). @throws towgeom::Error
+/// (InvalidArgument) when it leaves the box by more, or meets a singular point.
 UV shootGeodesic(const Handle(Geom_BSplineSurface)& s, const UV& from, const gp_Vec& t, double length, int steps);
 
 /// The normal curvature of @p s at (@p u, @p v) along the tangent direction @p t.

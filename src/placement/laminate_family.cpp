@@ -35,10 +35,14 @@ Handle(Geom2d_BSplineCurve) interpolate(const std::vector<UV>& uv, const std::ve
         points->SetValue(i + 1, gp_Pnt2d(uv[i].u, uv[i].v));
         t->SetValue(i + 1, params.empty() ? static_cast<double>(i) / (n - 1) : params[i]);
     }
-    Geom2dAPI_Interpolate c(points, t, Standard_False, 1e-14);
-    c.Perform();
-    if (!c.IsDone()) throw Error(ErrorCode::InvalidArgument, "fixedAngleCurve: a curve could not be interpolated (points repeated?)");
-    return c.Curve();
+    try {
+        Geom2dAPI_Interpolate c(points, t, Standard_False, 1e-14);
+        c.Perform();
+        if (c.IsDone()) return c.Curve();
+    } catch (const Standard_Failure&) {
+        // Points closer than the tolerance: refused below.
+    }
+    throw Error(ErrorCode::InvalidArgument, "fixedAngleCurve: a curve could not be interpolated (points repeated?)");
 }
 
 /// The family's map (t, kappa) -> (u,v) and the fixed-angle field in (t, kappa).
@@ -110,9 +114,18 @@ FixedAngleCurve fixedAngleCurve(const NurbsSurface& surface, const std::vector<C
                                 const FixedAngleOptions& options)
 {
     if (family.size() < 2) throw Error(ErrorCode::InvalidArgument, "fixedAngleCurve: at least two 0° curves");
-    for (const CurveOnSurface& c : family)
-        if (c.uv.size() < 4 || c.uv.size() != family.front().uv.size())
+    for (std::size_t k = 0; k < family.size(); ++k) {
+        const std::vector<UV>& uv = family[k].uv;
+        if (uv.size() < 4 || uv.size() != family.front().uv.size())
             throw Error(ErrorCode::InvalidArgument, "fixedAngleCurve: 0° curves of the same number of points, at least 4");
+        for (std::size_t i = 0; i < uv.size(); ++i) {
+            if (!std::isfinite(uv[i].u) || !std::isfinite(uv[i].v))
+                throw Error(ErrorCode::InvalidArgument, "fixedAngleCurve: 0° curve " + std::to_string(k) + ": point " + std::to_string(i) + " is not finite");
+            if (i > 0 && uv[i].u == uv[i - 1].u && uv[i].v == uv[i - 1].v)
+                throw Error(ErrorCode::InvalidArgument, "fixedAngleCurve: 0° curve " + std::to_string(k) + ": points " + std::to_string(i - 1) + " and " +
+                                                            std::to_string(i) + " coincide");
+        }
+    }
     if (!(thetaDegrees > 0.0 && thetaDegrees < 180.0)) throw Error(ErrorCode::InvalidArgument, "fixedAngleCurve: an angle in (0, 180) degrees");
     if (!(options.start >= 0.0 && options.start <= 1.0)) throw Error(ErrorCode::InvalidArgument, "fixedAngleCurve: a start in [0, 1]");
     if (!(options.step >= 0.0) || !std::isfinite(options.step)) throw Error(ErrorCode::InvalidArgument, "fixedAngleCurve: a step of 0 or more");
@@ -128,15 +141,14 @@ FixedAngleCurve fixedAngleCurve(const NurbsSurface& surface, const std::vector<C
             const gp_Vec2d uv = field.at(x[0], x[1])[0];
             return UV{uv.X(), uv.Y()};
         };
-        double h = options.step;
-        if (h == 0.0) {
-            double nearest = std::numeric_limits<double>::infinity();
-            for (std::size_t k = 0; k + 1 < family.size(); ++k) {
-                const UV a = point({options.start, static_cast<double>(k)}), b = point({options.start, static_cast<double>(k + 1)});
-                nearest = std::min(nearest, field.s->Value(a.u, a.v).Distance(field.s->Value(b.u, b.v)));
-            }
-            h = nearest / 20.0;
+        // At least four steps across each gap between curves (each crossing's angle is measured
+        // from three points of the curve).
+        double nearest = std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k + 1 < family.size(); ++k) {
+            const UV a = point({options.start, static_cast<double>(k)}), b = point({options.start, static_cast<double>(k + 1)});
+            nearest = std::min(nearest, field.s->Value(a.u, a.v).Distance(field.s->Value(b.u, b.v)));
         }
+        const double h = options.step > 0.0 && options.step <= nearest / 4.0 ? options.step : nearest / 20.0;
         if (!(h > 0.0)) throw Error(ErrorCode::InvalidArgument, "fixedAngleCurve: the 0° curves coincide at the start");
         std::array<double, 2> x{options.start, 0.0};
         std::vector<UV> uv{point(x)};
@@ -173,6 +185,7 @@ FixedAngleCurve fixedAngleCurve(const NurbsSurface& surface, const std::vector<C
         // of them by chord length, second-order accurate at the ends too) against the 0° curve's
         // tangent there.
         const std::vector<Point3>& p = out.curve.points;
+        if (p.size() < 3) throw Error(ErrorCode::InvalidArgument, "fixedAngleCurve: the curve has fewer than 3 points");
         for (std::size_t k = 0; k < crossingAt.size(); ++k) {
             const std::size_t i = crossingAt[k], first = std::min(i > 0 ? i - 1 : 0, p.size() - 3);
             const double t1 = distance(p[first], p[first + 1]), t2 = t1 + distance(p[first + 1], p[first + 2]), t = i == first ? 0.0 : i == first + 1 ? t1 : t2;

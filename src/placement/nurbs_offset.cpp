@@ -276,4 +276,37 @@ SurfaceOffset offsetSurface(const NurbsSurface& surface, double d, const OffsetO
     return result;
 }
 
+NurbsSurface withKnotsOf(const NurbsSurface& surface, const NurbsSurface& finer)
+{
+    if (surface.uDegree != finer.uDegree || surface.vDegree != finer.vDegree)
+        throw Error(ErrorCode::InvalidArgument, "withKnotsOf: the surfaces' degrees differ");
+    // Each knot of finer's with the multiplicity it has there, inserted up to it.
+    const auto contains = [](const std::vector<double>& big, const std::vector<double>& small) {
+        return std::includes(big.begin(), big.end(), small.begin(), small.end());
+    };
+    if (!contains(finer.uKnots, surface.uKnots) || !contains(finer.vKnots, surface.vKnots))
+        throw Error(ErrorCode::InvalidArgument, "withKnotsOf: the finer surface's knots do not contain the surface's");
+    try {
+        const Handle(Geom_BSplineSurface) s = detail::occtSurface(surface);
+        for (std::size_t i = 0; i < finer.uKnots.size();) {
+            std::size_t j = i;
+            while (j < finer.uKnots.size() && finer.uKnots[j] == finer.uKnots[i]) ++j;
+            if (i > 0 && j < finer.uKnots.size()) s->InsertUKnot(finer.uKnots[i], static_cast<int>(j - i), 0.0, Standard_False);  // interior
+            i = j;
+        }
+        for (std::size_t i = 0; i < finer.vKnots.size();) {
+            std::size_t j = i;
+            while (j < finer.vKnots.size() && finer.vKnots[j] == finer.vKnots[i]) ++j;
+            if (i > 0 && j < finer.vKnots.size()) s->InsertVKnot(finer.vKnots[i], static_cast<int>(j - i), 0.0, Standard_False);  // interior
+            i = j;
+        }
+        NurbsSurface out = detail::nurbsSurface(s);
+        if (out.uKnots != finer.uKnots || out.vKnots != finer.vKnots)
+            throw Error(ErrorCode::InvalidArgument, "withKnotsOf: the knot vectors could not be matched");
+        return out;
+    } catch (const Standard_Failure& e) {
+        throw Error(ErrorCode::Internal, std::string("withKnotsOf: OpenCASCADE failed: ") + e.GetMessageString());
+    }
+}
+
 TOWGEOM_END_NAMESPACE

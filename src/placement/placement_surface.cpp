@@ -1,5 +1,5 @@
 // A tool surface from STEP or IGES (OpenCASCADE's readers), converted exactly to a clamped
-// B-spline over the face's parameter box.
+// B-spline over the face's parameter box, found by index or by the name the file gives it.
 #include "towgeom/placement_surface.hpp"
 
 #include <BRepTools.hxx>
@@ -8,20 +8,28 @@
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <IGESControl_Reader.hxx>
+#include <IGESData_IGESEntity.hxx>
 #include <STEPControl_Reader.hxx>
 #include <Standard_Failure.hxx>
+#include <StepRepr_RepresentationItem.hxx>
+#include <TCollection_HAsciiString.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
+#include <XSControl_TransferReader.hxx>
+#include <XSControl_WorkSession.hxx>
 
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <string>
+#include <vector>
 
 #include "brep/quiet_messenger.hpp"
 #include "placement/nurbs_geometry.hpp"
+#include "placement/surface_grid.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
 
@@ -36,13 +44,43 @@ std::string lowerExtension(const std::string& path)
     return e;
 }
 
-TopoDS_Shape readShape(const std::string& path)
+/// A file's faces, in OpenCASCADE's exploration order, with their names in the file.
+struct FileFaces {
+    std::vector<TopoDS_Face> faces;
+    std::vector<std::string> names;
+};
+
+/// The name the file gives the entity @p face was made from (STEP representation items and IGES
+/// entities carry one), empty if none.
+std::string entityName(const Handle(XSControl_WorkSession)& session, const TopoDS_Face& face)
+{
+    const Handle(Standard_Transient) entity = session->TransferReader()->EntityFromShapeResult(face, 1);
+    Handle(TCollection_HAsciiString) name;
+    if (const auto item = Handle(StepRepr_RepresentationItem)::DownCast(entity); !item.IsNull()) name = item->Name();
+    else if (const auto iges = Handle(IGESData_IGESEntity)::DownCast(entity); !iges.IsNull() && iges->HasName()) name = iges->NameValue();
+    return name.IsNull() ? std::string() : std::string(name->ToCString());
+}
+
+template <class Reader>
+FileFaces facesOf(Reader& reader, const std::string& path, const char* kind)
+{
+    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) throw Error(ErrorCode::FileUnreadable, std::string("not a ") + kind + " file OpenCASCADE can read", path);
+    if (reader.TransferRoots() == 0) throw Error(ErrorCode::FileUnreadable, std::string("the ") + kind + " file holds no shape", path);
+    FileFaces out;
+    for (TopExp_Explorer x(reader.OneShape(), TopAbs_FACE); x.More(); x.Next()) {
+        out.faces.push_back(TopoDS::Face(x.Current()));
+        out.names.push_back(entityName(reader.WS(), out.faces.back()));
+    }
+    return out;
+}
+
+FileFaces readFaces(const std::string& path)
 {
     const std::string ext = lowerExtension(path);
     const bool step = ext == ".step" || ext == ".stp", iges = ext == ".iges" || ext == ".igs";
     if (!step && !iges)
-        throw Error(ErrorCode::InvalidArgument, "a placement surface is read from STEP (.step, .stp) or IGES (.iges, .igs), not '" + ext + "'",
-                    path);
+        throw Error(ErrorCode::InvalidArgument,
+                    "a placement surface is read from STEP (.step, .stp), IGES (.iges, .igs) or a point grid (.grid), not '" + ext + "'", path);
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw Error(ErrorCode::FileNotFound, "no such file", path);
     if (!std::ifstream(path)) throw Error(ErrorCode::FileUnreadable, "cannot be opened for reading", path);
@@ -50,55 +88,76 @@ TopoDS_Shape readShape(const std::string& path)
     const detail::QuietMessenger quiet;
     if (step) {
         STEPControl_Reader reader;
-        if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) throw Error(ErrorCode::FileUnreadable, "not a STEP file OpenCASCADE can read", path);
-        if (reader.TransferRoots() == 0) throw Error(ErrorCode::FileUnreadable, "the STEP file holds no shape", path);
-        return reader.OneShape();
+        return facesOf(reader, path, "STEP");
     }
     IGESControl_Reader reader;
-    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) throw Error(ErrorCode::FileUnreadable, "not an IGES file OpenCASCADE can read", path);
-    if (reader.TransferRoots() == 0) throw Error(ErrorCode::FileUnreadable, "the IGES file holds no shape", path);
-    return reader.OneShape();
+    return facesOf(reader, path, "IGES");
+}
+
+/// Face @p which of @p faces as a placement surface.
+PlacementSurface convertFace(const FileFaces& faces, std::size_t which, const std::string& path)
+{
+    const TopoDS_Face& face = faces.faces[which];
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+    // The face's box within the surface's range where the surface is not periodic (a face's
+    // curves may run past it by a tolerance); a periodic direction is moved into range by the
+    // trimming itself.
+    double su0, su1, sv0, sv1;
+    surface->Bounds(su0, su1, sv0, sv1);
+    if (!surface->IsUPeriodic()) u0 = std::max(u0, su0), u1 = std::min(u1, su1);
+    if (!surface->IsVPeriodic()) v0 = std::max(v0, sv0), v1 = std::min(v1, sv1);
+    Handle(Geom_BSplineSurface) b = GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(surface, u0, u1, v0, v1));
+    if (b.IsNull()) throw Error(ErrorCode::InvalidArgument, "face " + std::to_string(which) + "'s surface has no B-spline form", path);
+    b = Handle(Geom_BSplineSurface)::DownCast(b->Copy());
+    // Clamped over its own range (the face's box, possibly moved by whole periods): a periodic
+    // conversion (a full cylinder's u) is opened, then cut back to that range, which gives its
+    // ends full multiplicity.
+    double bu0, bu1, bv0, bv1;
+    b->Bounds(bu0, bu1, bv0, bv1);
+    if (b->IsUPeriodic()) b->SetUNotPeriodic();
+    if (b->IsVPeriodic()) b->SetVNotPeriodic();
+    b->Segment(bu0, bu1, bv0, bv1);
+    if (face.Orientation() == TopAbs_REVERSED) b->UReverse();  // the normal out of the face's material
+    PlacementSurface p;
+    p.surface = detail::nurbsSurface(b);
+    p.faceCount = faces.faces.size();
+    p.face = which;
+    p.name = faces.names[which];
+    return p;
 }
 
 }  // namespace
 
 PlacementSurface readPlacementSurface(const std::string& path, std::size_t which)
 {
+    if (lowerExtension(path) == ".grid") {
+        if (which != 0) throw Error(ErrorCode::InvalidArgument, "a point grid has one surface: face 0", path);
+        return detail::readGridSurface(path);
+    }
     try {
-        const TopoDS_Shape shape = readShape(path);
-        std::vector<TopoDS_Face> faces;
-        for (TopExp_Explorer x(shape, TopAbs_FACE); x.More(); x.Next()) faces.push_back(TopoDS::Face(x.Current()));
-        if (which >= faces.size())
-            throw Error(ErrorCode::InvalidArgument, "face " + std::to_string(which) + " asked for, the file has " + std::to_string(faces.size()) +
+        const FileFaces faces = readFaces(path);
+        if (which >= faces.faces.size())
+            throw Error(ErrorCode::InvalidArgument, "face " + std::to_string(which) + " asked for, the file has " + std::to_string(faces.faces.size()) +
                                                         " face(s) (0-based)", path);
-        const TopoDS_Face& face = faces[which];
-        double u0, u1, v0, v1;
-        BRepTools::UVBounds(face, u0, u1, v0, v1);
-        const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
-        // The face's box within the surface's range where the surface is not periodic (a face's
-        // curves may run past it by a tolerance); a periodic direction is moved into range by the
-        // trimming itself.
-        double su0, su1, sv0, sv1;
-        surface->Bounds(su0, su1, sv0, sv1);
-        if (!surface->IsUPeriodic()) u0 = std::max(u0, su0), u1 = std::min(u1, su1);
-        if (!surface->IsVPeriodic()) v0 = std::max(v0, sv0), v1 = std::min(v1, sv1);
-        Handle(Geom_BSplineSurface) b = GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(surface, u0, u1, v0, v1));
-        if (b.IsNull()) throw Error(ErrorCode::InvalidArgument, "face " + std::to_string(which) + "'s surface has no B-spline form", path);
-        b = Handle(Geom_BSplineSurface)::DownCast(b->Copy());
-        // Clamped over its own range (the face's box, possibly moved by whole periods): a periodic
-        // conversion (a full cylinder's u) is opened, then cut back to that range, which gives its
-        // ends full multiplicity.
-        double bu0, bu1, bv0, bv1;
-        b->Bounds(bu0, bu1, bv0, bv1);
-        if (b->IsUPeriodic()) b->SetUNotPeriodic();
-        if (b->IsVPeriodic()) b->SetVNotPeriodic();
-        b->Segment(bu0, bu1, bv0, bv1);
-        if (face.Orientation() == TopAbs_REVERSED) b->UReverse();  // the normal out of the face's material
-        PlacementSurface p;
-        p.surface = detail::nurbsSurface(b);
-        p.faceCount = faces.size();
-        p.face = which;
-        return p;
+        return convertFace(faces, which, path);
+    } catch (const Standard_Failure& e) {
+        throw Error(ErrorCode::Internal, std::string("OpenCASCADE failed reading the placement surface: ") + e.GetMessageString(), path);
+    }
+}
+
+PlacementSurface readPlacementSurface(const std::string& path, const std::string& faceName)
+{
+    try {
+        const FileFaces faces = readFaces(path);
+        std::string known;
+        for (std::size_t k = 0; k < faces.faces.size(); ++k) {
+            if (faces.names[k] == faceName) return convertFace(faces, k, path);
+            if (!faces.names[k].empty() && known.size() < 200) known += (known.empty() ? "'" : ", '") + faces.names[k] + "'";
+        }
+        throw Error(ErrorCode::InvalidArgument, "no face named '" + faceName + "' (" + (known.empty() ? std::string("its faces have no names") : "names: " + known) + ")",
+                    path);
     } catch (const Standard_Failure& e) {
         throw Error(ErrorCode::Internal, std::string("OpenCASCADE failed reading the placement surface: ") + e.GetMessageString(), path);
     }

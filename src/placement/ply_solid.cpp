@@ -87,30 +87,61 @@ double NurbsVolume::jacobian(double u, double v, double w) const
     return dot(p.d[0], cross(p.d[1], p.d[2]));
 }
 
-NurbsVolume plySolid(const NurbsSurface& base, const NurbsSurface& top)
+namespace {
+
+/// Whether @p a and @p b share degrees, knots, pole counts and (to rounding) weights.
+bool sameParametrisation(const NurbsSurface& a, const NurbsSurface& b)
 {
-    if (base.uDegree != top.uDegree || base.vDegree != top.vDegree || base.uKnots != top.uKnots || base.vKnots != top.vKnots ||
-        base.uCount != top.uCount || base.vCount != top.vCount || base.weights != top.weights || base.poles.size() != top.poles.size())
-        throw Error(ErrorCode::InvalidArgument, "plySolid: the two surfaces must share their degrees, knots and weights (an "
-                                                "offset from offsetSurface() and its base do)");
+    if (a.uDegree != b.uDegree || a.vDegree != b.vDegree || a.uKnots != b.uKnots || a.vKnots != b.vKnots || a.uCount != b.uCount ||
+        a.vCount != b.vCount || a.poles.size() != b.poles.size() || a.weights.size() != b.weights.size())
+        return false;
+    for (std::size_t k = 0; k < a.weights.size(); ++k)
+        if (!(std::abs(a.weights[k] - b.weights[k]) <= 1e-12 * std::abs(a.weights[k]))) return false;
+    return true;
+}
+
+/// The ply volume of degree @p layers.size() - 1 in w through the pole layers @p layers.
+NurbsVolume plyThrough(const NurbsSurface& base, const std::vector<const std::vector<Point3>*>& layers)
+{
+    const int degree = static_cast<int>(layers.size()) - 1;
     NurbsVolume vol;
     vol.degree[0] = base.uDegree;
     vol.degree[1] = base.vDegree;
-    vol.degree[2] = 1;
+    vol.degree[2] = degree;
     vol.knots[0] = base.uKnots;
     vol.knots[1] = base.vKnots;
-    vol.knots[2] = {0.0, 0.0, 1.0, 1.0};
+    vol.knots[2].assign(static_cast<std::size_t>(degree + 1), 0.0);
+    vol.knots[2].resize(static_cast<std::size_t>(2 * degree + 2), 1.0);
     vol.count[0] = base.uCount;
     vol.count[1] = base.vCount;
-    vol.count[2] = 2;
-    for (std::size_t k = 0; k < base.poles.size(); ++k) {
-        vol.poles.push_back(base.poles[k]);
-        vol.poles.push_back(top.poles[k]);
-        vol.weights.push_back(base.weights[k]);
-        vol.weights.push_back(base.weights[k]);
-    }
+    vol.count[2] = layers.size();
+    for (std::size_t k = 0; k < base.poles.size(); ++k)
+        for (const std::vector<Point3>* layer : layers) {
+            vol.poles.push_back((*layer)[k]);
+            vol.weights.push_back(base.weights[k]);
+        }
     checkVolume(vol);
     return vol;
+}
+
+}  // namespace
+
+NurbsVolume plySolid(const NurbsSurface& base, const NurbsSurface& top)
+{
+    if (!sameParametrisation(base, top))
+        throw Error(ErrorCode::InvalidArgument, "plySolid: the two surfaces must share their degrees, knots and weights (an "
+                                                "offset from offsetSurface() and its base do)");
+    return plyThrough(base, {&base.poles, &top.poles});
+}
+
+NurbsVolume plySolid(const NurbsSurface& base, const NurbsSurface& middle, const NurbsSurface& top)
+{
+    if (!sameParametrisation(base, middle) || !sameParametrisation(base, top))
+        throw Error(ErrorCode::InvalidArgument, "plySolid: the three surfaces must share their degrees, knots and weights (withKnotsOf() "
+                                                "gives surfaces offset separately common knots)");
+    std::vector<Point3> inner(base.poles.size());
+    for (std::size_t k = 0; k < inner.size(); ++k) inner[k] = 2.0 * middle.poles[k] - 0.5 * (base.poles[k] + top.poles[k]);
+    return plyThrough(base, {&base.poles, &inner, &top.poles});
 }
 
 VolumeMeasure measureVolume(const NurbsVolume& vol, int points)

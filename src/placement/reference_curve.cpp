@@ -74,14 +74,19 @@ CurveOnSurface referenceFromPoints(const NurbsSurface& surface, const std::vecto
 
 CurveOnSurface referenceFromPlane(const NurbsSurface& surface, const Point3& origin, const Vector3& normal, std::size_t points, bool reverse)
 {
-    if (!(norm(normal) > 0.0)) throw Error(ErrorCode::InvalidArgument, "referenceFromPlane: the plane's normal is zero");
-    if (points < 2) throw Error(ErrorCode::InvalidArgument, "referenceFromPlane: at least 2 points");
+    const auto finite = [](const Point3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); };
+    if (!finite(origin) || !finite(normal)) throw Error(ErrorCode::InvalidArgument, "referenceFromPlane: the plane's point and normal must be finite");
+    // Scaled by its largest component: a huge normal is still a direction.
+    const double largest = std::max({std::abs(normal.x), std::abs(normal.y), std::abs(normal.z)});
+    if (!(largest > 0.0)) throw Error(ErrorCode::InvalidArgument, "referenceFromPlane: the plane's normal is zero");
+    const Vector3 direction = (1.0 / largest) * normal;
+    if (points < 2 || points > 10000000) throw Error(ErrorCode::InvalidArgument, "referenceFromPlane: 2 to 10,000,000 points");
     const Handle(Geom_BSplineSurface) s = detail::occtSurface(surface);
     const double size = netSize(surface);
     std::vector<UV> uv;
     try {
         const gp_Pnt o = detail::toOcct(origin);
-        const Handle(Geom_Plane) plane = new Geom_Plane(gp_Pln(o, gp_Dir(normal.x, normal.y, normal.z)));
+        const Handle(Geom_Plane) plane = new Geom_Plane(gp_Pln(o, gp_Dir(direction.x, direction.y, direction.z)));
         GeomAPI_IntSS cut(s, plane, 1e-9 * size);
         if (!cut.IsDone() || cut.NbLines() == 0) throw Error(ErrorCode::InvalidArgument, "referenceFromPlane: the plane does not cut the surface");
         Handle(Geom_Curve) best;
@@ -89,8 +94,8 @@ CurveOnSurface referenceFromPlane(const NurbsSurface& surface, const Point3& ori
         for (int k = 1; k <= cut.NbLines(); ++k) {
             const Handle(Geom_Curve) c = cut.Line(k);
             GeomAPI_ProjectPointOnCurve onCurve(o, c);
-            const double d = onCurve.NbPoints() > 0 ? onCurve.LowerDistance()
-                                                    : std::min(o.Distance(c->Value(c->FirstParameter())), o.Distance(c->Value(c->LastParameter())));
+            double d = std::min(o.Distance(c->Value(c->FirstParameter())), o.Distance(c->Value(c->LastParameter())));
+            if (onCurve.NbPoints() > 0) d = std::min(d, onCurve.LowerDistance());
             if (d < bestDistance) bestDistance = d, best = c;
         }
         GeomAdaptor_Curve adaptor(best);

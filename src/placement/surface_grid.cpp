@@ -1,0 +1,108 @@
+// A tool surface fitted to a grid of points (OpenCASCADE's GeomAPI_PointsToBSplineSurface:
+// interpolation, or its smoothing approximation within a tolerance).
+#include "placement/surface_grid.hpp"
+
+#include <GeomAPI_PointsToBSplineSurface.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Standard_Failure.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "placement/nurbs_geometry.hpp"
+#include "surface/occt_convert.hpp"
+#include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+
+namespace {
+
+/// @p knots scaled from their range to [0, 1].
+void normalise(TColStd_Array1OfReal& knots)
+{
+    const double a = knots.First(), b = knots.Last();
+    for (int i = knots.Lower(); i <= knots.Upper(); ++i) knots(i) = (knots(i) - a) / (b - a);
+}
+
+}  // namespace
+
+PlacementSurface fitPlacementSurface(const std::vector<Point3>& grid, std::size_t uCount, std::size_t vCount, double tolerance)
+{
+    if (uCount < 4 || vCount < 4) throw Error(ErrorCode::InvalidArgument, "fitPlacementSurface: a grid of at least 4 x 4 points");
+    if (uCount > 100000 || vCount > 100000 || grid.size() != uCount * vCount)
+        throw Error(ErrorCode::InvalidArgument, "fitPlacementSurface: " + std::to_string(grid.size()) + " points for a grid of " + std::to_string(uCount) +
+                                                    " x " + std::to_string(vCount));
+    if (!(tolerance >= 0.0) || !std::isfinite(tolerance)) throw Error(ErrorCode::InvalidArgument, "fitPlacementSurface: a tolerance of 0 or more");
+    for (const Point3& p : grid)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            throw Error(ErrorCode::InvalidArgument, "fitPlacementSurface: a point is not finite");
+    PlacementSurface out;
+    try {
+        TColgp_Array2OfPnt points(1, static_cast<int>(uCount), 1, static_cast<int>(vCount));
+        for (std::size_t i = 0; i < uCount; ++i)
+            for (std::size_t j = 0; j < vCount; ++j) points.SetValue(static_cast<int>(i + 1), static_cast<int>(j + 1), detail::toOcct(grid[i * vCount + j]));
+        GeomAPI_PointsToBSplineSurface fit;
+        if (tolerance == 0.0) fit.Interpolate(points, Approx_ChordLength);
+        else fit.Init(points, Approx_ChordLength, 3, 8, GeomAbs_C2, tolerance);
+        if (!fit.IsDone()) throw Error(ErrorCode::InvalidArgument, "fitPlacementSurface: OpenCASCADE cannot fit the grid (repeated points?)");
+        Handle(Geom_BSplineSurface) s = Handle(Geom_BSplineSurface)::DownCast(fit.Surface()->Copy());
+        TColStd_Array1OfReal uk(1, s->NbUKnots()), vk(1, s->NbVKnots());
+        s->UKnots(uk);
+        s->VKnots(vk);
+        normalise(uk);
+        normalise(vk);
+        s->SetUKnots(uk);
+        s->SetVKnots(vk);
+        for (const Point3& p : grid) {
+            GeomAPI_ProjectPointOnSurf projection(detail::toOcct(p), s);
+            out.fitDeviation = std::max(out.fitDeviation, projection.NbPoints() > 0 ? projection.LowerDistance() : s->Value(0, 0).Distance(detail::toOcct(p)));
+        }
+        out.surface = detail::nurbsSurface(s);
+    } catch (const Standard_Failure& e) {
+        throw Error(ErrorCode::InvalidArgument, std::string("fitPlacementSurface: OpenCASCADE cannot fit the grid: ") + e.GetMessageString());
+    }
+    return out;
+}
+
+namespace detail {
+
+PlacementSurface readGridSurface(const std::string& path)
+{
+    std::ifstream in(path);
+    if (!in) throw Error(ErrorCode::FileNotFound, "cannot open the point grid", path);
+    std::size_t nu = 0, nv = 0, number = 0;
+    std::vector<Point3> points;
+    for (std::string line; std::getline(in, line);) {
+        ++number;
+        line = line.substr(0, line.find('#'));
+        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+        std::istringstream words(line);
+        if (nu == 0) {
+            std::string word;
+            if (!(words >> word >> nu >> nv) || word != "grid" || nu == 0 || nv == 0 || !(words >> std::ws).eof())
+                throw Error(ErrorCode::InvalidArgument, "expected 'grid NU NV' (the numbers of rows and of points per row)", path, number);
+            continue;
+        }
+        Point3 p;
+        if (!(words >> p.x >> p.y >> p.z) || !(words >> std::ws).eof())
+            throw Error(ErrorCode::InvalidArgument, "expected a point 'x y z'", path, number);
+        points.push_back(p);
+    }
+    if (nu == 0) throw Error(ErrorCode::InvalidArgument, "no 'grid NU NV' line", path);
+    if (points.size() != nu * nv)
+        throw Error(ErrorCode::InvalidArgument, std::to_string(points.size()) + " points for a grid of " + std::to_string(nu) + " x " + std::to_string(nv), path);
+    try {
+        return fitPlacementSurface(points, nu, nv);
+    } catch (const Error& e) {
+        throw Error(e.code(), e.what(), path);
+    }
+}
+
+}  // namespace detail
+TOWGEOM_END_NAMESPACE
