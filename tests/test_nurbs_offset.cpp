@@ -531,53 +531,90 @@ TEST_CASE("a tool surface by its face's name, or fitted to a point grid, and the
     CHECK(bad.err.find("bad.grid:3:") != std::string::npos);
     CHECK_THROWS_AS(fitPlacementSurface(grid, 11, 8), Error);
     CHECK_THROWS_AS(fitPlacementSurface(std::vector<Point3>(9), 3, 3), Error);
+    // A collapsed row (all its points one) and identical points are refused, naming them.
+    std::vector<Point3> collapsed = grid;
+    for (int j = 0; j < 9; ++j) collapsed[4 * 9 + j] = collapsed[4 * 9];
+    try {
+        fitPlacementSurface(collapsed, 11, 9);
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK(std::string(e.what()).find("row 4: points 0 and 1 coincide") != std::string::npos);
+    }
+    CHECK_THROWS_AS(fitPlacementSurface(std::vector<Point3>(16), 4, 4), Error);
+    // Approximation: within its tolerance, or refused.
+    const PlacementSurface smooth = fitPlacementSurface(grid, 11, 9, 1e-3);
+    CHECK(smooth.fitDeviation <= 1e-3);
+    for (const char* header : {"grid -1 4", "grid 4294967296 4294967296", "grid 3 3", "grid 4 4 4"}) {
+        std::ofstream(dir / "header.grid") << "# header\n" << header << "\n";
+        const testing::Run run = testing::cli("ply '" + (dir / "header.grid").string() + "' --thickness 0.1 --out '" + (dir / "x").string() + "'");
+        INFO(header << ": " << run.err);
+        CHECK(run.status == 2);
+        CHECK(run.err.find("header.grid:2:") != std::string::npos);
+    }
+    std::ofstream(dir / "long.grid") << "grid 4 4\n" << [] {
+        std::string points;
+        for (int k = 0; k < 17; ++k) points += std::to_string(k % 4) + " " + std::to_string(k / 4) + " 0\n";
+        return points;
+    }();
+    const testing::Run extra = testing::cli("ply '" + (dir / "long.grid").string() + "' --thickness 0.1 --out '" + (dir / "x").string() + "'");
+    CHECK(extra.status == 2);
+    CHECK(extra.err.find("long.grid:18:") != std::string::npos);  // the 17th point
+    CHECK_THROWS_AS(readPlacementSurface((dir / "long.grid").string(), "top"), Error);
+    const testing::Run empty = testing::cli("ply '" + named.string() + "' --face '' --thickness 0.1 --out '" + (dir / "x").string() + "'");
+    CHECK(empty.status == 2);
     CHECK_FALSE(fs::exists(dir / "x"));
     fs::remove_all(dir);
 }
 
-TEST_CASE("a ply quadratic through its thickness: the middle offset at w = 1/2, the exact volume, common knots", "[placement][ply]")
+TEST_CASE("a ply quadratic through its thickness: any middle surface at w = 1/2, common knots by exact insertion", "[placement][ply]")
 {
-    // A saddle (no closed form, but the exact offset at any point is S + d n): the middle and
-    // top offset separately insert different knots; withKnotsOf() gives them common ones.
-    const NurbsSurface s = saddle();
-    const double t = 0.1;
-    OffsetOptions o;
-    o.tolerance = 1e-5;
-    const SurfaceOffset top = offsetSurface(s, t, o);
-    const SurfaceOffset middle = offsetSurface(top.base, 0.5 * t, o);
-    if (middle.knotsInserted > 0) CHECK_THROWS_AS(plySolid(middle.base, middle.offset, top.offset), Error);  // knots differ
-    const NurbsSurface matched = withKnotsOf(top.offset, middle.base);
-    CHECK(matched.uKnots == middle.base.uKnots);
-    CHECK(matched.vKnots == middle.base.vKnots);
-    const NurbsVolume ply = plySolid(middle.base, middle.offset, matched);
+    // On a cylinder ply (rational): a middle surface that is not the average of base and top
+    // (its poles moved), which the ply must pass through at w = 1/2; w = 0 and 1 are the faces.
+    const double r = 1.0, length = 3.0, t = 0.2;
+    const SurfaceOffset o = offsetSurface(cylinder(r, length), t);
+    NurbsSurface middle = o.base;
+    for (std::size_t k = 0; k < middle.poles.size(); ++k)
+        middle.poles[k] = 0.5 * (o.base.poles[k] + o.offset.poles[k]) + Point3{0.01 * static_cast<double>(k % 3), 0.02, -0.005 * static_cast<double>(k % 2)};
+    const NurbsVolume ply = plySolid(o.base, middle, o.offset);
     CHECK(ply.degree[2] == 2);
     std::mt19937 random(5);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    double worstMiddle = 0.0, worstTop = 0.0, worstInsert = 0.0;
+    double worst = 0.0;
     for (int k = 0; k < 1000; ++k) {
         const double u = unit(random), v = unit(random);
-        const Point3 p = s.point(u, v);
-        const Vector3 n = s.normal(u, v);
-        worstMiddle = std::max(worstMiddle, distance(ply.point(u, v, 0.5), p + 0.5 * t * n));
-        worstTop = std::max(worstTop, distance(ply.point(u, v, 1.0), p + t * n));
-        worstInsert = std::max(worstInsert, distance(matched.point(u, v), top.offset.point(u, v)));  // the same surface
+        worst = std::max({worst, distance(ply.point(u, v, 0.5), middle.point(u, v)), distance(ply.point(u, v, 0.0), o.base.point(u, v)),
+                          distance(ply.point(u, v, 1.0), o.offset.point(u, v))});
     }
-    INFO("middle " << worstMiddle << ", top " << worstTop << ", knot insertion " << worstInsert);
-    CHECK(worstMiddle <= 1e-5);
-    CHECK(worstTop <= 1e-5);
-    CHECK(worstInsert <= 1e-12);
-    const VolumeMeasure m = measureVolume(ply, 3);
-    CHECK(m.minJacobian > 0.0);
-    // The volume against the linear ply's (the same top and base: they differ by the middle's
-    // departure from the average of the two, within the offsets' tolerance).
-    const double linear = measureVolume(plySolid(top.base, top.offset), 3).volume;
-    CHECK(std::abs(m.volume - linear) <= 1e-5 * linear);
-    // On a cylinder the quadratic ply is the exact annulus too.
-    const double r = 1.0, length = 3.0;
-    const NurbsSurface cyl = cylinder(r, length);
-    const SurfaceOffset ct = offsetSurface(cyl, 0.2), cm = offsetSurface(ct.base, 0.1);
-    const VolumeMeasure cv = measureVolume(plySolid(cm.base, cm.offset, withKnotsOf(ct.offset, cm.base)));
-    const double exact = kPi * ((r + 0.2) * (r + 0.2) - r * r) * length;
-    CHECK(std::abs(cv.volume - exact) <= 1e-6 * exact);
-    CHECK_THROWS_AS(withKnotsOf(middle.base, s), Error);  // the "finer" one lacks knots
+    INFO("largest distance from the three surfaces " << worst);
+    CHECK(worst <= 1e-12);
+    // With the average as middle it is the linear ply: the same volume, the annulus's.
+    NurbsSurface average = o.base;
+    for (std::size_t k = 0; k < average.poles.size(); ++k) average.poles[k] = 0.5 * (o.base.poles[k] + o.offset.poles[k]);
+    const VolumeMeasure quadratic = measureVolume(plySolid(o.base, average, o.offset)), linear = measureVolume(plySolid(o.base, o.offset));
+    const double exact = kPi * ((r + t) * (r + t) - r * r) * length;
+    CHECK(std::abs(quadratic.volume - exact) <= 1e-6 * exact);
+    CHECK(std::abs(quadratic.volume - linear.volume) <= 1e-12 * exact);
+    CHECK(quadratic.minJacobian > 0.0);
+    // Surfaces of different knots are refused; withKnotsOf() inserts a finer surface's knots
+    // (here a new double knot in u, the degree, a single one in v, and the rational circle's
+    // double knots kept): the same surface to rounding, the finer one's knot vectors.
+    const NurbsSurface s = cylinder(r, length);
+    NurbsSurface finer = s;
+    finer.uKnots.insert(finer.uKnots.begin() + 3, {0.1, 0.1});
+    finer.vKnots.insert(finer.vKnots.begin() + 2, 0.4);
+    finer.uCount += 2;
+    finer.vCount += 1;
+    finer.poles.assign(finer.uCount * finer.vCount, Point3{0, 0, 0});
+    finer.weights.assign(finer.poles.size(), 1.0);
+    CHECK_THROWS_AS(plySolid(s, finer, finer), Error);
+    const NurbsSurface matched = withKnotsOf(s, finer);
+    CHECK(matched.uKnots == finer.uKnots);
+    CHECK(matched.vKnots == finer.vKnots);
+    double moved = 0.0;
+    for (int k = 0; k < 1000; ++k) {
+        const double u = unit(random), v = unit(random);
+        moved = std::max(moved, distance(matched.point(u, v), s.point(u, v)));
+    }
+    CHECK(moved <= 1e-12);
+    CHECK_THROWS_AS(withKnotsOf(finer, s), Error);  // the "finer" one lacks knots
 }

@@ -121,12 +121,14 @@ TOWGEOM_EXPORT SurfaceOffset offsetSurface(const NurbsSurface& surface, double d
 ///         knots and weights.
 TOWGEOM_EXPORT NurbsVolume plySolid(const NurbsSurface& base, const NurbsSurface& top);
 
-/// The ply solid quadratic through its thickness between @p base, @p middle and @p top (an
-/// offset of base by t / 2 and one by t: the same degrees, knots and weights): the trivariate
-/// NURBS of degree 2 in w whose poles in w are base, 2 middle - (base + top) / 2 and top, so that
-/// w = 0, 1/2 and 1 give the three surfaces exactly (Nguyen et al.'s quadratic through-thickness
-/// field; where the offsets are not along straight normals, as the collocated ones are not
-/// quite, it follows the middle surface the linear ply only averages).
+/// The ply solid quadratic through its thickness between @p base, @p middle and @p top (the same
+/// degrees, knots and weights): the trivariate NURBS of degree 2 in w whose poles in w are base,
+/// 2 middle - (base + top) / 2 and top, so that w = 0, 1/2 and 1 give the three surfaces
+/// exactly. For a ply between a surface and its normal offset the through-thickness field is
+/// linear (offsetSurface()'s poles are affine in the distance on fixed knots): with middle the
+/// average of base and top this is the linear ply's degree elevation, the same solid for IGA
+/// codes that want quadratic functions through the thickness; another middle surface (a
+/// ply whose mid-surface is designed separately) bends the ply through it.
 /// @throws towgeom::Error (InvalidArgument) when the surfaces do not share their degrees, knots
 ///         and weights (see withKnotsOf()).
 TOWGEOM_EXPORT NurbsVolume plySolid(const NurbsSurface& base, const NurbsSurface& middle, const NurbsSurface& top);

@@ -28,7 +28,8 @@ struct PlacementSurface {
     /// The face's name in the file (a STEP ADVANCED_FACE's or an IGES entity's name), empty if
     /// it has none.
     std::string name;
-    /// For a grid: the largest distance from a grid point to the fitted surface (0 for a face).
+    /// For an approximated grid: the largest distance from a grid point to the surface (0 for a
+    /// face or an interpolated grid, which passes through its points).
     double fitDeviation = 0.0;
 };
 
@@ -54,12 +55,15 @@ TOWGEOM_EXPORT PlacementSurface readPlacementSurface(const std::string& path, co
 /// A tool surface through a grid of measured points: @p uCount rows of @p vCount points, point
 /// (i, j) at @p grid[i * vCount + j] (u along the rows' order, v along each row; the normal is
 /// dS/du x dS/dv). With @p tolerance 0 the bicubic B-spline interpolating every point
-/// (OpenCASCADE's GeomAPI_PointsToBSplineSurface, chord-length parameters); otherwise its
-/// smoothing approximation (degrees 3 to 8, C2) within @p tolerance of every point, for noisy
-/// measurements. The parameters are scaled to [0, 1].
-/// @throws towgeom::Error (InvalidArgument) for fewer than 4 x 4 points, a grid of another size
-///         than uCount x vCount, non-finite coordinates, a negative tolerance or a grid
-///         OpenCASCADE cannot fit (repeated points).
+/// (OpenCASCADE's GeomAPI_PointsToBSplineSurface, chord-length parameters; fitDeviation 0);
+/// otherwise its smoothing approximation (degrees 3 to 8, C2), for noisy measurements, whose
+/// largest distance from a point (nearest surface points) is fitDeviation and must be within
+/// @p tolerance. The parameters are scaled to [0, 1].
+/// @throws towgeom::Error (InvalidArgument) for fewer than 4 x 4 points (or more than 100000
+///         a side), a grid of another size than uCount x vCount, coordinates not finite or
+///         beyond 1e100, neighbours in a row or column that coincide (naming them), a negative
+///         tolerance, an approximation farther than the tolerance from a point, or a grid
+///         OpenCASCADE cannot fit.
 TOWGEOM_EXPORT PlacementSurface fitPlacementSurface(const std::vector<Point3>& grid, std::size_t uCount, std::size_t vCount,
                                                     double tolerance = 0.0);
 

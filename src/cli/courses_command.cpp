@@ -83,7 +83,8 @@ Options:
   --points N        points along a plane reference (default 41)
   --thickness T     the ribbons' thickness, at most W (default W / 10)
   --face N|NAME     which face of the file: its index (0-based, default 0) or its name in
-                    the file (a STEP ADVANCED_FACE's or IGES entity's name)
+                    the file (a STEP ADVANCED_FACE's or IGES entity's name; digits only
+                    are an index)
   --out DIR         where to write (created if needed)
   --quiet           no progress lines on stderr
   -h, --help        this help

@@ -49,12 +49,14 @@ Options:
   --thickness T   ply thickness in millimetres (OpenCASCADE reads STEP and IGES lengths as
                   mm, whatever unit the file uses); negative: on the other side
   --face N|NAME   which face of the file: its index (0-based, default 0) or its name in the
-                  file (a STEP ADVANCED_FACE's or IGES entity's name)
+                  file (a STEP ADVANCED_FACE's or IGES entity's name; digits only are an
+                  index)
   --layers K      plies stacked (default 1)
   --tolerance E   largest distance of an offset from the exact one (default: 1e-6 x the
                   size of the surface's control net)
   --through KIND  linear (default: w degree 1, poles on the surface and its offset) or
-                  quadratic (w degree 2 through the surface, its offset by T/2 and by T)
+                  quadratic (w degree 2: the same solid, degree-elevated, for codes that
+                  want quadratic functions through the thickness)
   --samples S     VTK hexahedra per knot span along u and v (default 4; S/2 through)
   --out DIR       where to write (created if needed)
   --quiet         no progress lines on stderr
@@ -110,14 +112,12 @@ int runPly(int argc, char** argv, int first)
         for (std::size_t k = 0; k < layers; ++k) {
             if (!quiet) std::cerr << "towgeom ply: [" << k + 1 << "/" << layers << "] offsetting the surface\n";
             const SurfaceOffset o = offsetSurface(base, *thickness, options);
-            SurfaceOffset middle;
-            NurbsSurface top = o.offset;
             if (quadratic) {
-                // The middle surface offset from the top's base (its knots and more), the top
-                // given the middle's extra knots: the three share their knots.
-                middle = offsetSurface(o.base, 0.5 * *thickness, options);
-                top = withKnotsOf(o.offset, middle.base);
-                plies.push_back(plySolid(middle.base, middle.offset, top));
+                // The linear ply's degree elevation: the middle poles the average of base and top
+                // (a normal offset's through-thickness field is linear).
+                NurbsSurface middle = o.base;
+                for (std::size_t k = 0; k < middle.poles.size(); ++k) middle.poles[k] = 0.5 * (o.base.poles[k] + o.offset.poles[k]);
+                plies.push_back(plySolid(o.base, middle, o.offset));
             } else {
                 plies.push_back(plySolid(o.base, o.offset));
             }
@@ -125,10 +125,10 @@ int runPly(int argc, char** argv, int first)
             report["plies"].push_back({{"volume", m.volume},
                                        {"min_jacobian", m.minJacobian},
                                        {"max_jacobian", m.maxJacobian},
-                                       {"offset_error", std::max(o.maxError, middle.maxError)},
-                                       {"knots_inserted", o.knotsInserted + middle.knotsInserted},
-                                       {"converged", o.converged && (!quadratic || middle.converged)}});
-            base = top;
+                                       {"offset_error", o.maxError},
+                                       {"knots_inserted", o.knotsInserted},
+                                       {"converged", o.converged}});
+            base = o.offset;
         }
         detail::OutputFiles files;
         files.makeDirectory(*outDir);

@@ -3,11 +3,8 @@
 // along geodesics perpendicular to the right-hand tow.
 #include "towgeom/fibre_courses.hpp"
 
-#include <Geom2dAPI_Interpolate.hxx>
 #include <Geom2d_BSplineCurve.hxx>
 #include <Standard_Failure.hxx>
-#include <TColStd_HArray1OfReal.hxx>
-#include <TColgp_HArray1OfPnt2d.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -17,6 +14,7 @@
 
 #include "placement/geodesics.hpp"
 #include "placement/nurbs_geometry.hpp"
+#include "placement/uv_interpolation.hpp"
 #include "surface/occt_convert.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
@@ -56,23 +54,9 @@ std::pair<CurveOnSurface, CourseStep> offsetStep(const NurbsSurface& surface, co
 /// @throws towgeom::Error (InvalidArgument) naming @p what when the points repeat.
 NurbsCurve parameterCurve(const std::vector<UV>& uv, const std::string& what)
 {
-    const int n = static_cast<int>(uv.size());
-    Handle(TColgp_HArray1OfPnt2d) points = new TColgp_HArray1OfPnt2d(1, n);
-    Handle(TColStd_HArray1OfReal) params = new TColStd_HArray1OfReal(1, n);
-    double t = 0.0;
-    for (int i = 0; i < n; ++i) {
-        if (i > 0) t += std::hypot(uv[i].u - uv[i - 1].u, uv[i].v - uv[i - 1].v);
-        points->SetValue(i + 1, gp_Pnt2d(uv[i].u, uv[i].v));
-        params->SetValue(i + 1, t);
-    }
-    Handle(Geom2d_BSplineCurve) c;
-    try {
-        Geom2dAPI_Interpolate interpolate(points, params, Standard_False, 1e-14);
-        interpolate.Perform();
-        if (interpolate.IsDone()) c = interpolate.Curve();
-    } catch (const Standard_Failure&) {
-        // Points closer than the tolerance: refused below.
-    }
+    std::vector<double> params{0.0};
+    for (std::size_t i = 1; i < uv.size(); ++i) params.push_back(params.back() + std::hypot(uv[i].u - uv[i - 1].u, uv[i].v - uv[i - 1].v));
+    const Handle(Geom2d_BSplineCurve) c = detail::interpolateUV(uv, params);
     if (c.IsNull()) throw Error(ErrorCode::InvalidArgument, what + ": its points repeat (the reference's points must be distinct)");
     NurbsCurve out;
     out.degree = c->Degree();

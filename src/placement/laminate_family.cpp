@@ -2,11 +2,8 @@
 // theta, the field interpolated between the family's curves in a shared parameter.
 #include "towgeom/laminate_family.hpp"
 
-#include <Geom2dAPI_Interpolate.hxx>
 #include <Geom2d_BSplineCurve.hxx>
 #include <Standard_Failure.hxx>
-#include <TColStd_HArray1OfReal.hxx>
-#include <TColgp_HArray1OfPnt2d.hxx>
 
 #include <array>
 #include <algorithm>
@@ -16,6 +13,7 @@
 
 #include "placement/geodesics.hpp"
 #include "placement/nurbs_geometry.hpp"
+#include "placement/uv_interpolation.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
 
@@ -25,24 +23,14 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// The cubic B-spline in (u,v) through @p uv at parameters i / (n - 1), or through @p params.
-Handle(Geom2d_BSplineCurve) interpolate(const std::vector<UV>& uv, const std::vector<double>& params)
+/// The cubic B-spline in (u,v) through @p uv at parameters i / (n - 1).
+Handle(Geom2d_BSplineCurve) interpolate(const std::vector<UV>& uv)
 {
-    const int n = static_cast<int>(uv.size());
-    Handle(TColgp_HArray1OfPnt2d) points = new TColgp_HArray1OfPnt2d(1, n);
-    Handle(TColStd_HArray1OfReal) t = new TColStd_HArray1OfReal(1, n);
-    for (int i = 0; i < n; ++i) {
-        points->SetValue(i + 1, gp_Pnt2d(uv[i].u, uv[i].v));
-        t->SetValue(i + 1, params.empty() ? static_cast<double>(i) / (n - 1) : params[i]);
-    }
-    try {
-        Geom2dAPI_Interpolate c(points, t, Standard_False, 1e-14);
-        c.Perform();
-        if (c.IsDone()) return c.Curve();
-    } catch (const Standard_Failure&) {
-        // Points closer than the tolerance: refused below.
-    }
-    throw Error(ErrorCode::InvalidArgument, "fixedAngleCurve: a curve could not be interpolated (points repeated?)");
+    std::vector<double> t;
+    for (std::size_t i = 0; i < uv.size(); ++i) t.push_back(static_cast<double>(i) / static_cast<double>(uv.size() - 1));
+    const Handle(Geom2d_BSplineCurve) c = detail::interpolateUV(uv, t);
+    if (c.IsNull()) throw Error(ErrorCode::InvalidArgument, "fixedAngleCurve: a curve could not be interpolated (points repeated?)");
+    return c;
 }
 
 /// The family's map (t, kappa) -> (u,v) and the fixed-angle field in (t, kappa).
@@ -133,7 +121,7 @@ FixedAngleCurve fixedAngleCurve(const NurbsSurface& surface, const std::vector<C
     try {
         Field field;
         field.s = detail::occtSurface(surface);
-        for (const CurveOnSurface& c : family) field.curves.push_back(interpolate(c.uv, {}));
+        for (const CurveOnSurface& c : family) field.curves.push_back(interpolate(c.uv));
         field.cosTheta = std::cos(thetaDegrees * kPi / 180.0);
         field.sinTheta = std::sin(thetaDegrees * kPi / 180.0);
         const double lastCurve = static_cast<double>(family.size() - 1);

@@ -16,6 +16,9 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
+#include <TransferBRep.hxx>
+#include <Transfer_Binder.hxx>
+#include <Transfer_TransientProcess.hxx>
 #include <XSControl_TransferReader.hxx>
 #include <XSControl_WorkSession.hxx>
 
@@ -23,6 +26,7 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -50,15 +54,44 @@ struct FileFaces {
     std::vector<std::string> names;
 };
 
-/// The name the file gives the entity @p face was made from (STEP representation items and IGES
-/// entities carry one), empty if none.
-std::string entityName(const Handle(XSControl_WorkSession)& session, const TopoDS_Face& face)
+/// @p name without an IGES short label's padding and "(subscript)".
+std::string cleanName(std::string name, bool iges)
 {
-    const Handle(Standard_Transient) entity = session->TransferReader()->EntityFromShapeResult(face, 1);
-    Handle(TCollection_HAsciiString) name;
-    if (const auto item = Handle(StepRepr_RepresentationItem)::DownCast(entity); !item.IsNull()) name = item->Name();
-    else if (const auto iges = Handle(IGESData_IGESEntity)::DownCast(entity); !iges.IsNull() && iges->HasName()) name = iges->NameValue();
-    return name.IsNull() ? std::string() : std::string(name->ToCString());
+    if (iges) {
+        const std::size_t open = name.rfind('(');
+        if (open != std::string::npos && name.back() == ')' &&
+            std::all_of(name.begin() + static_cast<long>(open) + 1, name.end() - 1, [](unsigned char c) { return std::isdigit(c) != 0; }))
+            name.erase(open);
+    }
+    while (!name.empty() && std::isspace(static_cast<unsigned char>(name.back()))) name.pop_back();
+    return name;
+}
+
+/// The names the file gives the faces it made (STEP representation items and IGES entities
+/// carry one), by the face's shared geometry (TShape: the same under any location, as in an
+/// assembly): one pass over the transfer's map.
+std::map<const TopoDS_TShape*, std::string> faceNames(const Handle(XSControl_WorkSession)& session)
+{
+    std::map<const TopoDS_TShape*, std::string> out;
+    const Handle(Transfer_TransientProcess) process = session->TransferReader()->TransientProcess();
+    if (process.IsNull()) return out;
+    for (int i = 1; i <= process->NbMapped(); ++i) {
+        const Handle(Standard_Transient)& entity = process->Mapped(i);
+        Handle(TCollection_HAsciiString) name;
+        bool iges = false;
+        if (const auto item = Handle(StepRepr_RepresentationItem)::DownCast(entity); !item.IsNull()) {
+            name = item->Name();
+        } else if (const auto e = Handle(IGESData_IGESEntity)::DownCast(entity); !e.IsNull() && e->HasName()) {
+            name = e->NameValue();
+            iges = true;
+        }
+        if (name.IsNull()) continue;
+        const TopoDS_Shape shape = TransferBRep::ShapeResult(process->MapItem(i));
+        if (shape.IsNull() || shape.ShapeType() != TopAbs_FACE) continue;
+        const std::string clean = cleanName(name->ToCString(), iges);
+        if (!clean.empty()) out.emplace(shape.TShape().get(), clean);
+    }
+    return out;
 }
 
 template <class Reader>
@@ -67,9 +100,11 @@ FileFaces facesOf(Reader& reader, const std::string& path, const char* kind)
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) throw Error(ErrorCode::FileUnreadable, std::string("not a ") + kind + " file OpenCASCADE can read", path);
     if (reader.TransferRoots() == 0) throw Error(ErrorCode::FileUnreadable, std::string("the ") + kind + " file holds no shape", path);
     FileFaces out;
+    const std::map<const TopoDS_TShape*, std::string> names = faceNames(reader.WS());
     for (TopExp_Explorer x(reader.OneShape(), TopAbs_FACE); x.More(); x.Next()) {
         out.faces.push_back(TopoDS::Face(x.Current()));
-        out.names.push_back(entityName(reader.WS(), out.faces.back()));
+        const auto it = names.find(out.faces.back().TShape().get());
+        out.names.push_back(it == names.end() ? std::string() : it->second);
     }
     return out;
 }
@@ -149,6 +184,8 @@ PlacementSurface readPlacementSurface(const std::string& path, std::size_t which
 
 PlacementSurface readPlacementSurface(const std::string& path, const std::string& faceName)
 {
+    if (lowerExtension(path) == ".grid") throw Error(ErrorCode::InvalidArgument, "a point grid has no named faces (face 0 is its surface)", path);
+    if (faceName.empty()) throw Error(ErrorCode::InvalidArgument, "an empty face name", path);
     try {
         const FileFaces faces = readFaces(path);
         std::string known;

@@ -10,6 +10,7 @@
 #include <TColgp_Array2OfPnt.hxx>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -39,9 +40,26 @@ PlacementSurface fitPlacementSurface(const std::vector<Point3>& grid, std::size_
         throw Error(ErrorCode::InvalidArgument, "fitPlacementSurface: " + std::to_string(grid.size()) + " points for a grid of " + std::to_string(uCount) +
                                                     " x " + std::to_string(vCount));
     if (!(tolerance >= 0.0) || !std::isfinite(tolerance)) throw Error(ErrorCode::InvalidArgument, "fitPlacementSurface: a tolerance of 0 or more");
-    for (const Point3& p : grid)
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-            throw Error(ErrorCode::InvalidArgument, "fitPlacementSurface: a point is not finite");
+    Point3 lo = grid.front(), hi = lo;
+    for (const Point3& p : grid) {
+        if (!(std::abs(p.x) <= 1e100 && std::abs(p.y) <= 1e100 && std::abs(p.z) <= 1e100))
+            throw Error(ErrorCode::InvalidArgument, "fitPlacementSurface: a point is not finite or beyond 1e100");
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    }
+    // Neighbours along a row or a column must be apart (a collapsed row or repeated point has
+    // no chord-length parameters; OpenCASCADE's projection would then search without end).
+    const double apart = 1e-12 * distance(lo, hi);
+    for (std::size_t i = 0; i < uCount; ++i)
+        for (std::size_t j = 0; j < vCount; ++j) {
+            const Point3& p = grid[i * vCount + j];
+            if (j > 0 && !(distance(p, grid[i * vCount + j - 1]) > apart))
+                throw Error(ErrorCode::InvalidArgument, "fitPlacementSurface: row " + std::to_string(i) + ": points " + std::to_string(j - 1) + " and " +
+                                                            std::to_string(j) + " coincide");
+            if (i > 0 && !(distance(p, grid[(i - 1) * vCount + j]) > apart))
+                throw Error(ErrorCode::InvalidArgument, "fitPlacementSurface: column " + std::to_string(j) + ": points " + std::to_string(i - 1) + " and " +
+                                                            std::to_string(i) + " coincide");
+        }
     PlacementSurface out;
     try {
         TColgp_Array2OfPnt points(1, static_cast<int>(uCount), 1, static_cast<int>(vCount));
@@ -59,9 +77,18 @@ PlacementSurface fitPlacementSurface(const std::vector<Point3>& grid, std::size_
         normalise(vk);
         s->SetUKnots(uk);
         s->SetVKnots(vk);
-        for (const Point3& p : grid) {
-            GeomAPI_ProjectPointOnSurf projection(detail::toOcct(p), s);
-            out.fitDeviation = std::max(out.fitDeviation, projection.NbPoints() > 0 ? projection.LowerDistance() : s->Value(0, 0).Distance(detail::toOcct(p)));
+        // An interpolation passes through every point; an approximation is measured (nearest
+        // surface points) and held to its tolerance.
+        if (tolerance > 0.0) {
+            for (const Point3& p : grid) {
+                GeomAPI_ProjectPointOnSurf projection(detail::toOcct(p), s);
+                if (projection.NbPoints() == 0) throw Error(ErrorCode::InvalidArgument, "fitPlacementSurface: a grid point does not project onto the fit");
+                out.fitDeviation = std::max(out.fitDeviation, projection.LowerDistance());
+            }
+            if (out.fitDeviation > tolerance)
+                throw Error(ErrorCode::InvalidArgument, "fitPlacementSurface: the approximation is " + std::to_string(out.fitDeviation) +
+                                                            " from a grid point, more than the tolerance " + std::to_string(tolerance) +
+                                                            " (noisier than that? raise it)");
         }
         out.surface = detail::nurbsSurface(s);
     } catch (const Standard_Failure& e) {
@@ -76,31 +103,40 @@ PlacementSurface readGridSurface(const std::string& path)
 {
     std::ifstream in(path);
     if (!in) throw Error(ErrorCode::FileNotFound, "cannot open the point grid", path);
-    std::size_t nu = 0, nv = 0, number = 0;
+    std::size_t nu = 0, nv = 0, number = 0, last = 0;
     std::vector<Point3> points;
+    const auto count = [&](const std::string& word) {  // a whole number from 4 to 100000
+        std::size_t used = 0, n = 0;
+        const bool digits = !word.empty() && std::all_of(word.begin(), word.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+        if (digits && word.size() <= 6) n = std::stoul(word, &used);
+        return digits && used == word.size() && n >= 4 && n <= 100000 ? n : 0;
+    };
     for (std::string line; std::getline(in, line);) {
         ++number;
         line = line.substr(0, line.find('#'));
         if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
         std::istringstream words(line);
         if (nu == 0) {
-            std::string word;
-            if (!(words >> word >> nu >> nv) || word != "grid" || nu == 0 || nv == 0 || !(words >> std::ws).eof())
-                throw Error(ErrorCode::InvalidArgument, "expected 'grid NU NV' (the numbers of rows and of points per row)", path, number);
+            std::string word, a, b;
+            if (!(words >> word >> a >> b) || word != "grid" || !(words >> std::ws).eof() || !(nu = count(a)) || !(nv = count(b)))
+                throw Error(ErrorCode::InvalidArgument, "expected 'grid NU NV' (rows, and points per row: whole numbers from 4 to 100000)", path,
+                            number);
             continue;
         }
+        if (points.size() == nu * nv) throw Error(ErrorCode::InvalidArgument, "more points than the grid's " + std::to_string(nu) + " x " + std::to_string(nv), path, number);
         Point3 p;
-        if (!(words >> p.x >> p.y >> p.z) || !(words >> std::ws).eof())
-            throw Error(ErrorCode::InvalidArgument, "expected a point 'x y z'", path, number);
+        if (!(words >> p.x >> p.y >> p.z) || !(words >> std::ws).eof()) throw Error(ErrorCode::InvalidArgument, "expected a point 'x y z'", path, number);
         points.push_back(p);
+        last = number;
     }
     if (nu == 0) throw Error(ErrorCode::InvalidArgument, "no 'grid NU NV' line", path);
     if (points.size() != nu * nv)
-        throw Error(ErrorCode::InvalidArgument, std::to_string(points.size()) + " points for a grid of " + std::to_string(nu) + " x " + std::to_string(nv), path);
+        throw Error(ErrorCode::InvalidArgument, "the file ends after " + std::to_string(points.size()) + " of the grid's " + std::to_string(nu) + " x " +
+                                                    std::to_string(nv) + " points", path, last);
     try {
         return fitPlacementSurface(points, nu, nv);
     } catch (const Error& e) {
-        throw Error(e.code(), e.what(), path);
+        throw Error(e.code(), e.message(), path);
     }
 }
 
