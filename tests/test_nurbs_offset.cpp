@@ -480,6 +480,16 @@ TEST_CASE("a tool surface by its face's name, or fitted to a point grid, and the
     REQUIRE(run.status == 0);
     CHECK(run.out.find("\"face_name\":\"mould top\"") != std::string::npos);
 
+    // IGES names: a box whose six faces share the label FACE, told apart by subscripts 1 to 6,
+    // and a face labelled SURF right-justified in its 8 columns, subscript 3 (OCCT-written
+    // files with their DE labels edited).
+    const std::string data = std::string(TOWGEOM_TEST_DATA) + "/placement/";
+    const PlacementSurface fourth = readPlacementSurface(data + "box_face_labels.igs", "FACE(4)");
+    CHECK(fourth.face == 3);
+    CHECK(fourth.faceCount == 6);
+    CHECK(readPlacementSurface(data + "face_label_right_justified.igs", "SURF(3)").name == "SURF(3)");
+    CHECK_THROWS_AS(readPlacementSurface(data + "box_face_labels.igs", "FACE"), Error);
+
     // A grid of 11 x 9 points on a quarter of that cylinder (u around, v up: the normal
     // outward), interpolated: every point on the surface, the ply's volume the annulus sector's.
     const double from = -0.5, to = 0.5;
@@ -559,9 +569,30 @@ TEST_CASE("a tool surface by its face's name, or fitted to a point grid, and the
     const testing::Run extra = testing::cli("ply '" + (dir / "long.grid").string() + "' --thickness 0.1 --out '" + (dir / "x").string() + "'");
     CHECK(extra.status == 2);
     CHECK(extra.err.find("long.grid:18:") != std::string::npos);  // the 17th point
-    CHECK_THROWS_AS(readPlacementSurface((dir / "long.grid").string(), "top"), Error);
-    const testing::Run empty = testing::cli("ply '" + named.string() + "' --face '' --thickness 0.1 --out '" + (dir / "x").string() + "'");
+    try {
+        readPlacementSurface((dir / "long.grid").string(), "top");
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK(std::string(e.what()).find("has no named faces") != std::string::npos);
+    }
+    // An empty name must not pick the unnamed face.
+    const testing::Run empty = testing::cli("ply '" + plain.string() + "' --face '' --thickness 0.1 --out '" + (dir / "x").string() + "'");
     CHECK(empty.status == 2);
+    CHECK(empty.err.find("empty string") != std::string::npos);
+    // A grid's repeated point and a huge coordinate are named by their line.
+    std::ofstream(dir / "same.grid") << [] {
+        std::string text = "grid 4 4\n";
+        for (int k = 0; k < 16; ++k) text += std::to_string(k == 5 ? 0 : k % 4) + " " + std::to_string(k / 4) + " 0\n";
+        return text;
+    }();
+    const testing::Run same = testing::cli("ply '" + (dir / "same.grid").string() + "' --thickness 0.1 --out '" + (dir / "x").string() + "'");
+    INFO(same.err);
+    CHECK(same.status == 2);
+    CHECK(same.err.find("same.grid:7:") != std::string::npos);  // point 5 (row 1, point 1) repeats point 4
+    std::ofstream(dir / "huge.grid") << "grid 4 4\n1e300 0 0\n";
+    const testing::Run huge = testing::cli("ply '" + (dir / "huge.grid").string() + "' --thickness 0.1 --out '" + (dir / "x").string() + "'");
+    CHECK(huge.status == 2);
+    CHECK(huge.err.find("huge.grid:2:") != std::string::npos);
     CHECK_FALSE(fs::exists(dir / "x"));
     fs::remove_all(dir);
 }

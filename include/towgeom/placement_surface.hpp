@@ -25,8 +25,9 @@ struct PlacementSurface {
     NurbsSurface surface;
     std::size_t faceCount = 0;  ///< faces in the file (0 for a grid)
     std::size_t face = 0;       ///< which one this is (0-based, in the file's order)
-    /// The face's name in the file (a STEP ADVANCED_FACE's or an IGES entity's name), empty if
-    /// it has none.
+    /// The face's name in the file, empty if it has none: a STEP ADVANCED_FACE's name, or an
+    /// IGES entity's Name property, else its short label with its subscript as "LABEL(n)"
+    /// (none for subscript 0; blanks at either end trimmed).
     std::string name;
     /// For an approximated grid: the largest distance from a grid point to the surface (0 for a
     /// face or an interpolated grid, which passes through its points).
@@ -46,10 +47,12 @@ struct PlacementSurface {
 ///         line); (Internal) if OpenCASCADE fails.
 TOWGEOM_EXPORT PlacementSurface readPlacementSurface(const std::string& path, std::size_t face = 0);
 
-/// Reads the first face named @p faceName of the STEP or IGES file @p path, as
-/// readPlacementSurface() does by index.
-/// @throws towgeom::Error (InvalidArgument) when no face has that name (the message lists the
-///         names there are, or says the faces have none), and as the other overload.
+/// Reads the first face named @p faceName (see PlacementSurface::name) of the STEP or IGES file
+/// @p path, as readPlacementSurface() does by index (a part placed twice in an assembly gives
+/// its faces, names and all, twice: the first placement's is read).
+/// @throws towgeom::Error (InvalidArgument) for an empty name, a .grid file (no named faces),
+///         or no face of that name (the message lists the names there are, or says the faces
+///         have none), and as the other overload.
 TOWGEOM_EXPORT PlacementSurface readPlacementSurface(const std::string& path, const std::string& faceName);
 
 /// A tool surface through a grid of measured points: @p uCount rows of @p vCount points, point

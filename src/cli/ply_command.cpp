@@ -37,7 +37,7 @@ and prints one JSON object on stdout:
    "min_jacobian", "max_jacobian", "offset_error", "knots_inserted", "converged"}]}
 
   face_name       the face's name in the file ("" if none)
-  fit_deviation   for a .grid: the largest distance of a grid point from the surface (0 else)
+  fit_deviation   0: a face is converted exactly, a .grid interpolated through its points
 
   volume          the ply's volume (Gauss-Legendre per knot span of its Jacobian)
   min/max_jacobian  the Jacobian's range at the quadrature points: of one sign where the ply
@@ -116,7 +116,7 @@ int runPly(int argc, char** argv, int first)
                 // The linear ply's degree elevation: the middle poles the average of base and top
                 // (a normal offset's through-thickness field is linear).
                 NurbsSurface middle = o.base;
-                for (std::size_t k = 0; k < middle.poles.size(); ++k) middle.poles[k] = 0.5 * (o.base.poles[k] + o.offset.poles[k]);
+                for (std::size_t i = 0; i < middle.poles.size(); ++i) middle.poles[i] = 0.5 * (o.base.poles[i] + o.offset.poles[i]);
                 plies.push_back(plySolid(o.base, middle, o.offset));
             } else {
                 plies.push_back(plySolid(o.base, o.offset));

@@ -54,17 +54,32 @@ struct FileFaces {
     std::vector<std::string> names;
 };
 
-/// @p name without an IGES short label's padding and "(subscript)".
-std::string cleanName(std::string name, bool iges)
+/// @p text without blanks at either end.
+std::string trimmed(const std::string& text)
 {
-    if (iges) {
-        const std::size_t open = name.rfind('(');
-        if (open != std::string::npos && name.back() == ')' &&
-            std::all_of(name.begin() + static_cast<long>(open) + 1, name.end() - 1, [](unsigned char c) { return std::isdigit(c) != 0; }))
-            name.erase(open);
+    const std::size_t first = text.find_first_not_of(" \t\r\n");
+    if (first == std::string::npos) return {};
+    return text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
+}
+
+/// An IGES entity's name: its Name property as written, or its short label (right-justified in
+/// 8 columns: trimmed) with its subscript as "LABEL(n)", the subscript being what tells
+/// entities of one label apart (a subscript 0 is the usual default: none).
+std::string igesName(const Handle(IGESData_IGESEntity)& e)
+{
+    const std::string value = e->NameValue()->ToCString();
+    if (e->HasShortLabel()) {
+        const std::string label = e->ShortLabel()->ToCString();
+        const bool hasSub = e->HasSubScriptNumber() && e->SubScriptNumber() != 0;  // 0: the usual default, no subscript
+        const std::string sub = hasSub ? "(" + std::to_string(e->SubScriptNumber()) + ")" : "";
+        const auto squeezed = [](std::string t) {
+            t.erase(std::remove_if(t.begin(), t.end(), [](unsigned char c) { return std::isspace(c) != 0; }), t.end());
+            return t;
+        };
+        const std::string raw = e->HasSubScriptNumber() ? "(" + std::to_string(e->SubScriptNumber()) + ")" : "";
+        if (squeezed(value) == squeezed(label + raw)) return trimmed(label) + sub;  // no Name property
     }
-    while (!name.empty() && std::isspace(static_cast<unsigned char>(name.back()))) name.pop_back();
-    return name;
+    return trimmed(value);
 }
 
 /// The names the file gives the faces it made (STEP representation items and IGES entities
@@ -77,19 +92,16 @@ std::map<const TopoDS_TShape*, std::string> faceNames(const Handle(XSControl_Wor
     if (process.IsNull()) return out;
     for (int i = 1; i <= process->NbMapped(); ++i) {
         const Handle(Standard_Transient)& entity = process->Mapped(i);
-        Handle(TCollection_HAsciiString) name;
-        bool iges = false;
+        std::string name;
         if (const auto item = Handle(StepRepr_RepresentationItem)::DownCast(entity); !item.IsNull()) {
-            name = item->Name();
+            if (!item->Name().IsNull()) name = trimmed(item->Name()->ToCString());
         } else if (const auto e = Handle(IGESData_IGESEntity)::DownCast(entity); !e.IsNull() && e->HasName()) {
-            name = e->NameValue();
-            iges = true;
+            name = igesName(e);
         }
-        if (name.IsNull()) continue;
+        if (name.empty()) continue;
         const TopoDS_Shape shape = TransferBRep::ShapeResult(process->MapItem(i));
         if (shape.IsNull() || shape.ShapeType() != TopAbs_FACE) continue;
-        const std::string clean = cleanName(name->ToCString(), iges);
-        if (!clean.empty()) out.emplace(shape.TShape().get(), clean);
+        out.emplace(shape.TShape().get(), name);
     }
     return out;
 }

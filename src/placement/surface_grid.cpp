@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -49,14 +50,16 @@ PlacementSurface fitPlacementSurface(const std::vector<Point3>& grid, std::size_
     }
     // Neighbours along a row or a column must be apart (a collapsed row or repeated point has
     // no chord-length parameters; OpenCASCADE's projection would then search without end).
-    const double apart = 1e-12 * distance(lo, hi);
+    // (hypot: no underflow of squared tiny distances.)
+    const auto gap = [](const Point3& a, const Point3& b) { return std::hypot(std::hypot(a.x - b.x, a.y - b.y), a.z - b.z); };
+    const double apart = 1e-12 * gap(lo, hi);
     for (std::size_t i = 0; i < uCount; ++i)
         for (std::size_t j = 0; j < vCount; ++j) {
             const Point3& p = grid[i * vCount + j];
-            if (j > 0 && !(distance(p, grid[i * vCount + j - 1]) > apart))
+            if (j > 0 && !(gap(p, grid[i * vCount + j - 1]) > apart))
                 throw Error(ErrorCode::InvalidArgument, "fitPlacementSurface: row " + std::to_string(i) + ": points " + std::to_string(j - 1) + " and " +
                                                             std::to_string(j) + " coincide");
-            if (i > 0 && !(distance(p, grid[(i - 1) * vCount + j]) > apart))
+            if (i > 0 && !(gap(p, grid[(i - 1) * vCount + j]) > apart))
                 throw Error(ErrorCode::InvalidArgument, "fitPlacementSurface: column " + std::to_string(j) + ": points " + std::to_string(i - 1) + " and " +
                                                             std::to_string(i) + " coincide");
         }
@@ -105,6 +108,7 @@ PlacementSurface readGridSurface(const std::string& path)
     if (!in) throw Error(ErrorCode::FileNotFound, "cannot open the point grid", path);
     std::size_t nu = 0, nv = 0, number = 0, last = 0;
     std::vector<Point3> points;
+    std::vector<std::size_t> lines;  // each point's line
     const auto count = [&](const std::string& word) {  // a whole number from 4 to 100000
         std::size_t used = 0, n = 0;
         const bool digits = !word.empty() && std::all_of(word.begin(), word.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
@@ -121,12 +125,16 @@ PlacementSurface readGridSurface(const std::string& path)
             if (!(words >> word >> a >> b) || word != "grid" || !(words >> std::ws).eof() || !(nu = count(a)) || !(nv = count(b)))
                 throw Error(ErrorCode::InvalidArgument, "expected 'grid NU NV' (rows, and points per row: whole numbers from 4 to 100000)", path,
                             number);
+            last = number;
             continue;
         }
         if (points.size() == nu * nv) throw Error(ErrorCode::InvalidArgument, "more points than the grid's " + std::to_string(nu) + " x " + std::to_string(nv), path, number);
         Point3 p;
         if (!(words >> p.x >> p.y >> p.z) || !(words >> std::ws).eof()) throw Error(ErrorCode::InvalidArgument, "expected a point 'x y z'", path, number);
+        if (!(std::abs(p.x) <= 1e100 && std::abs(p.y) <= 1e100 && std::abs(p.z) <= 1e100))
+            throw Error(ErrorCode::InvalidArgument, "a coordinate is not finite or beyond 1e100", path, number);
         points.push_back(p);
+        lines.push_back(number);
         last = number;
     }
     if (nu == 0) throw Error(ErrorCode::InvalidArgument, "no 'grid NU NV' line", path);
@@ -136,6 +144,13 @@ PlacementSurface readGridSurface(const std::string& path)
     try {
         return fitPlacementSurface(points, nu, nv);
     } catch (const Error& e) {
+        // "row I: points J and K coincide" / "column J: points I and K coincide": K's line.
+        const char* m = e.message().c_str();
+        std::size_t a = 0, b = 0, c = 0;
+        if (std::sscanf(m, "fitPlacementSurface: row %zu: points %zu and %zu", &a, &b, &c) == 3 && a * nv + c < lines.size())
+            throw Error(e.code(), e.message(), path, lines[a * nv + c]);
+        if (std::sscanf(m, "fitPlacementSurface: column %zu: points %zu and %zu", &a, &b, &c) == 3 && c * nv + a < lines.size())
+            throw Error(e.code(), e.message(), path, lines[c * nv + a]);
         throw Error(e.code(), e.message(), path);
     }
 }
