@@ -105,7 +105,12 @@ TowGap measureGap(const Handle(Geom_BSplineSurface)& s, const TowPath& a, const 
             t -= f.n * t.Dot(f.n);
             if (!(t.Magnitude() > 0.0)) continue;
             const gp_Vec o = f.n.Crossed(t.Normalized());
-            const auto g = [&](double length) { return sideOf(b.centreline.uv, detail::shootGeodesic(s, at, o, length, steps)).first; };
+            bool within = false;  // whether the last shot's nearest point on b lies within b
+            const auto g = [&](double length) {
+                const auto [side, inside] = sideOf(b.centreline.uv, detail::shootGeodesic(s, at, o, length, steps));
+                within = inside;
+                return side;
+            };
             // Bracket the crossing: the point itself lies to the right of b.
             double lo = 0.0, glo = sideOf(b.centreline.uv, at).first, hi = spacing, ghi = g(hi);
             if (!(glo < 0.0)) continue;
@@ -128,7 +133,7 @@ TowGap measureGap(const Handle(Geom_BSplineSurface)& s, const TowPath& a, const 
                     side = 1;
                 }
             }
-            if (!sideOf(b.centreline.uv, detail::shootGeodesic(s, at, o, x, steps)).second) continue;
+            if (!within) continue;  // the last shot was at x (g(hi) before the loop, g(x) in it)
             gap.width[i] = x - width;
         } catch (const Error&) {
             // The perpendicular leaves the surface: not measured here.

@@ -28,12 +28,9 @@ namespace {
 /// The diagonal of the box of @p s's poles.
 double netSize(const NurbsSurface& s)
 {
-    Point3 lo = s.poles.front(), hi = lo;
-    for (const Point3& p : s.poles) {
-        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-    }
-    return distance(lo, hi);
+    BoundingBox box;
+    for (const Point3& p : s.poles) box.add(p);
+    return distance(box.min, box.max);
 }
 
 /// The (u,v) of @p p's nearest point on @p s and its distance.
