@@ -36,8 +36,9 @@ endif()
 # environment come last and win. A sanitizer report exits with status 86, which no test
 # expects (the CLI's own codes are 0, 1 and 2), so a report can never pass for an expected
 # failure. LeakSanitizer is on (ASan's default on Linux), stated so that it stays on.
-# LeakSanitizer suppresses OpenCASCADE's process-lifetime statics of its data exchange (STEP,
-# IGES: tests/sanitizer/lsan_occt.supp says why); nothing else is suppressed (OCCT allocates
+# LeakSanitizer suppresses what is allocated inside OpenCASCADE's toolkits (its process-lifetime
+# statics of STEP, IGES and XCAF: tests/sanitizer/lsan_occt.supp says why); nothing else is
+# suppressed (OCCT allocates
 # through malloc/free, so ASan sees no new/free mismatch).
 if(TOWGEOM_SANITIZE)
   set(asan "exitcode=86:detect_leaks=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1")
