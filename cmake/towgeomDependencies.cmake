@@ -12,8 +12,9 @@ find_package(nlohmann_json 3.11 REQUIRED CONFIG)
 
 # The OCCT toolkits towgeom links (OCCT's imported targets carry no include directories).
 set(TOWGEOM_OCCT_LIBRARIES TKernel TKMath TKG2d TKG3d TKGeomBase TKGeomAlgo
-  # the trimmed B-rep (src/brep): topology, its checks and properties, STEP through XDE
-  TKBRep TKTopAlgo TKSTEP TKXDESTEP TKXSBase TKXCAF TKLCAF TKCAF
+  # the trimmed B-rep (src/brep): topology, its checks and properties, STEP through XDE, and
+  # booleans (TKBO, a box from TKPrim) to clip it to a cell
+  TKBRep TKTopAlgo TKSTEP TKXDESTEP TKXSBase TKXCAF TKLCAF TKCAF TKBO TKPrim
   # fibre placement: the tool surface from STEP or IGES
   TKIGES)
 

@@ -17,6 +17,7 @@
 
 #include "cli_runner.hpp"
 #include "mesh_checks.hpp"
+#include "occt_reference.hpp"
 #include "synthetic_tows.hpp"
 
 namespace fs = std::filesystem;
@@ -639,6 +640,38 @@ TEST_CASE("towgeom resolve --formats step,brep: the exact solids, named, that Gm
     CHECK(refused.status == 2);
     CHECK(refused.err.find("--method connect") != std::string::npos);
     CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("towgeom resolve --cell --formats step,brep: the exact solids clipped to the box, the one outside left out", "[cli][resolve][brep][cell]")
+{
+    const fs::path dir = scratch("brep_cell");
+    fs::create_directories(dir);
+    testing::Sampling s;
+    s.points = 48;
+    std::string files;
+    // Two crossing tubes cut by the box's x and y faces, a third wholly outside it.
+    for (const TowStack& t : {testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "x"), testing::tubeAlongY(0.4, 0.7, s, "y"),
+                              testing::tubeAlongX(0.3, 4.0, 0.0, 3.0, 0.0, s, "far")}) {
+        std::ofstream o(dir / (t.name + ".stw"));
+        writeStack(o, t);
+        files += " '" + (dir / (t.name + ".stw")).string() + "'";
+    }
+    const fs::path out = dir / "out";
+    const Run r = cli("resolve" + files + " --out '" + out.string() + "' --cell 0.5,-1.5,-1,3.5,1.5,1.5 --formats step,brep --quiet");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.err.find("not valid") == std::string::npos);
+    const testing::ReadShapes step = testing::readStep((out / "textile.step").string());
+    REQUIRE(step.solids.size() == 2);
+    CHECK(step.solids[0].name == "x");
+    CHECK(step.solids[1].name == "y");
+    const double pi = std::acos(-1.0);
+    CHECK(std::abs(step.solids[0].volume - pi * 0.25 * 3.0) <= 1e-4 * pi * 0.25 * 3.0);  // the x tube between x = 0.5 and 3.5
+    for (const testing::ReadSolid& solid : step.solids) CHECK(solid.valid);
+    const testing::ReadShapes brep = testing::readBrep((out / "textile.brep").string(), false);
+    REQUIRE(brep.solids.size() == 2);
+    REQUIRE(brep.sharedFaces.size() == 1);
+    CHECK(brep.sharedFaces[0].second == 1);
 }
 
 TEST_CASE("towgeom resolve --cell DIR/textile.json takes the generator's periodic unit cell", "[cli][resolve][cell]")

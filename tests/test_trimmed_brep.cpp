@@ -8,6 +8,7 @@
 #include <towgeom/resolve.hpp>
 #include <towgeom/stack_reader.hpp>
 #include <towgeom/trimmed_brep.hpp>
+#include <towgeom/weave.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -102,6 +103,154 @@ TEST_CASE("trimmed B-rep of the bundled twill: valid named solids, exact volumes
     // Gmsh's OpenCASCADE kernel imports the STEP file and meshes every volume.
     const std::string msh = (dir / "twill.msh").string(), log = (dir / "gmsh.log").string();
     const std::string command = "gmsh '" + step + "' -3 -clmax 0.2 -format msh4 -o '" + msh + "' > '" + log + "' 2>&1";
+    const int status = std::system(command.c_str());
+    std::ifstream in(log);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    INFO(text.substr(text.size() > 3000 ? text.size() - 3000 : 0));
+    CHECK(status == 0);
+    CHECK(text.find("Error") == std::string::npos);
+    CHECK(fs::exists(msh));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("trimmed B-rep clipped to a cell: two crossing tubes cut by the box, a third outside", "[brep][cell]")
+{
+    testing::Sampling s;
+    s.points = 48;
+    const std::vector<TowSurface> tows = {TowSurface::fit(testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "x")),
+                                          TowSurface::fit(testing::tubeAlongY(0.4, 0.7, s, "y")),
+                                          TowSurface::fit(testing::tubeAlongX(0.3, 4.0, 0.0, 3.0, 0.0, s, "far"))};
+    ResolveOptions o;
+    Cell cell;
+    cell.min = {0.5, -1.5, -1.0};
+    cell.max = {3.5, 1.5, 1.5};
+    o.cell = cell;
+    const ResolveResult r = resolveTextile(tows, o);
+    REQUIRE(r.mesh.regions.size() == 1);
+    const TrimmedBrep brep = trimmedBrep(tows, r);
+    const fs::path dir = freshDirectory("towgeom_brep_cell_tubes");
+    const std::string file = (dir / "cell.brep").string(), wholeFile = (dir / "whole.brep").string();
+    brep.writeBrep(file);
+    ResolveResult whole = r;
+    whole.mesh.regions.clear();
+    whole.mesh.cell.reset();
+    trimmedBrep(tows, whole).writeBrep(wholeFile);
+    const std::array<double, 3> lo{cell.min.x, cell.min.y, cell.min.z}, hi{cell.max.x, cell.max.y, cell.max.z};
+    const double exactX = testing::boxCommonVolume(wholeFile, 0, lo, hi);
+    const double exactY = testing::boxCommonVolume(wholeFile, 1, lo, hi) - testing::commonVolume(wholeFile, 1, 0);
+    const double pi = std::acos(-1.0);
+    const testing::ReadShapes back = testing::readBrep(file);
+    REQUIRE(back.solids.size() == 2);  // "far" has no solid
+    const BrepSolid &x = brep.solids()[0], &y = brep.solids()[1], &far = brep.solids()[2];
+    INFO("x: volume " << x.volume << " (" << exactX << "), area " << x.area << "; y: volume " << y.volume << " (" << exactY << ")");
+    CHECK(x.valid);
+    CHECK(y.valid);
+    CHECK(back.solids[0].valid);
+    CHECK(back.solids[1].valid);
+    CHECK(relative(x.volume, exactX) <= 1e-6);
+    CHECK(relative(y.volume, exactY) <= 1e-6);
+    CHECK(relative(back.solids[0].volume, exactX) <= 1e-6);
+    CHECK(relative(back.solids[1].volume, exactY) <= 1e-6);
+    // The x tube (the primary: its own surface, the shared face included) between x = 0.5 and
+    // 3.5: a cylinder of radius 0.5 and length 3, up to the fit of its 48-point sections.
+    CHECK(relative(x.volume, pi * 0.25 * 3.0) <= 1e-4);
+    CHECK(relative(x.area, 2.0 * pi * 0.5 * 3.0 + 2.0 * pi * 0.25) <= 1e-4);
+    CHECK(x.faces == 4);  // the tube, the shared face, 2 cut faces
+    CHECK(y.faces == 4);
+    CHECK(x.sharedFaces == 1);
+    CHECK(far.faces == 0);
+    CHECK(far.volume == 0.0);
+    CHECK(far.area == 0.0);
+    REQUIRE(back.sharedFaces.size() == 1);
+    CHECK(back.sharedFaces[0].second == 1);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("trimmed B-rep of a periodic twill cell: solids clipped by the box, cut faces on its planes, shared faces kept", "[brep][cell]")
+{
+    // The 6x6 2/2 twill clipped to its 4x4 repeat (test_volume_mesh): 8 tows cut by two opposite
+    // faces each, 4 wholly outside; 16 regions inside, 20 loops outside (skipped, not trimmed).
+    WeaveOptions w;
+    w.kind = WeaveKind::Twill;
+    w.floatOver = w.floatUnder = 2;
+    w.warps = w.wefts = 6;
+    w.overlap = 0.08;
+    std::vector<TowSurface> tows;
+    for (const TowStack& s : generateWeave(w).stacks()) tows.push_back(TowSurface::fit(s));
+    ResolveOptions o;
+    o.mesh.edgeLength = 0.2;
+    Cell cell;
+    cell.min = {0.5, 0.5, -0.5};
+    cell.max = {4.5, 4.5, 0.5};
+    cell.periodic = true;
+    o.cell = cell;
+    const ResolveResult r = resolveTextile(tows, o);
+    REQUIRE(r.mesh.regions.size() == 16);
+    const TrimmedBrep brep = trimmedBrep(tows, r);
+    REQUIRE(brep.solids().size() == tows.size());
+    CHECK(brep.sharedFaceCount() == 16);
+    const fs::path dir = freshDirectory("towgeom_brep_cell");
+    const std::string step = (dir / "cell.step").string(), brepFile = (dir / "cell.brep").string();
+    brep.writeStep(step);
+    brep.writeBrep(brepFile);
+
+    // References: the untrimmed, unclipped tows (no regions, no cell) by OCCT booleans: each
+    // tow's part inside the box less its overlaps with the tows above it there. The warps are
+    // primaries (nothing to subtract); of the wefts one (weft_1) is measured so (each overlap is
+    // an OCCT boolean of two tows, seconds each); every solid is also measured on the STEP file.
+    ResolveResult whole = r;
+    whole.mesh.regions.clear();
+    whole.mesh.cell.reset();
+    const std::string wholeFile = (dir / "whole.brep").string();
+    trimmedBrep(tows, whole).writeBrep(wholeFile);
+    const std::array<double, 3> lo{cell.min.x, cell.min.y, cell.min.z}, hi{cell.max.x, cell.max.y, cell.max.z};
+    std::vector<double> exact(tows.size(), -1.0);  // -1: not measured
+    for (std::size_t t = 0; t < tows.size(); ++t)
+        if (tows[t].name().rfind("warp", 0) == 0 || tows[t].name() == "weft_1") exact[t] = testing::boxCommonVolume(wholeFile, t, lo, hi);
+    std::size_t subtracted = 0;
+    for (const ConnectedRegion& g : r.mesh.regions)
+        if (tows[g.secondary].name() == "weft_1") {
+            exact[g.secondary] -= testing::commonVolume(wholeFile, g.secondary, g.primary);
+            ++subtracted;
+        }
+    CHECK(subtracted == 4);
+
+    const testing::ReadShapes fromBrep = testing::readBrep(brepFile, false);  // the tubes' test measures read-back volumes
+    std::size_t inside = 0;
+    double tows_volume = 0.0;
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        const BrepSolid& s = brep.solids()[t];
+        INFO(s.name << ": volume " << s.volume << ", exact " << exact[t] << ", mesh " << r.tows[t].volumeAfter << ", faces "
+                    << s.faces << ", shared " << s.sharedFaces);
+        if (r.mesh.tows[t].triangles.empty()) {  // wholly outside: no solid
+            CHECK(s.faces == 0);
+            CHECK(s.volume == 0.0);
+            if (exact[t] >= 0.0) CHECK(exact[t] <= 1e-12);
+            continue;
+        }
+        REQUIRE(inside < fromBrep.solids.size());
+        CHECK(fromBrep.solids[inside].valid);
+        CHECK(s.valid);
+        if (exact[t] >= 0.0) CHECK(relative(s.volume, exact[t]) <= 1e-6);
+        // The faceted mesh at h = 0.2 lies inside the exact solid: its chords cut off about 3 %.
+        CHECK(r.tows[t].volumeAfter < s.volume);
+        CHECK(relative(s.volume, r.tows[t].volumeAfter) <= 0.04);
+        CHECK(s.faces == 7);  // the tube, 4 shared faces, 2 cut faces on the box
+        CHECK(s.sharedFaces == 4);
+        tows_volume += s.volume;
+        ++inside;
+    }
+    CHECK(inside == 8);
+    CHECK(fromBrep.solids.size() == 8);
+    CHECK(tows_volume < cell.volume());
+    std::size_t shared = 0;
+    for (const auto& entry : fromBrep.sharedFaces) shared += entry.second;
+    CHECK(shared == 16);
+
+    // Gmsh's OpenCASCADE kernel reads the STEP file (-0: the model as read, written back as
+    // BREP; the bundled twill's test meshes its STEP file).
+    const std::string msh = (dir / "gmsh.brep").string(), log = (dir / "gmsh.log").string();
+    const std::string command = "gmsh '" + step + "' -0 -o '" + msh + "' > '" + log + "' 2>&1";
     const int status = std::system(command.c_str());
     std::ifstream in(log);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -36,13 +36,15 @@ struct BrepSolid {
     std::string name;           ///< the tow's name
     /// The solid's volume: the tow's exact volume (TowSurface::volume()) changed by what its
     /// loops cut out and put in (OpenCASCADE's BRepGProp over the faces inside the loops, 1e-9
-    /// relative).
+    /// relative) and, with a cell, less what the box cuts off (BRepGProp over those parts).
     double volume = 0.0;
     double area = 0.0;          ///< the area of its boundary (computed as the volume is)
-    std::size_t faces = 0;      ///< faces of its shell: its own (tube pieces, caps) and the shared ones
+    /// Faces of its shell: its own (tube pieces, caps or cut faces on a cell's box) and the
+    /// shared ones; 0 for a tow wholly outside the cell (no solid).
+    std::size_t faces = 0;
     std::size_t sharedFaces = 0;  ///< faces it shares with another tow's solid (the same face in both)
     std::size_t loops = 0;      ///< intersection loops on its boundary (trimming curves)
-    bool valid = false;         ///< BRepCheck_Analyzer accepts the solid
+    bool valid = false;         ///< BRepCheck_Analyzer accepts the solid (false where there is none: faces 0)
     double maxTolerance = 0.0;  ///< the largest tolerance of its edges and vertices, in your units
 };
 
@@ -93,6 +95,13 @@ private:
 ///   the islands of ConnectedRegion::holes), in the primary's solid as it is and in the
 ///   secondary's reversed; each island stays a face of both tows' own surfaces,
 /// - its two planar end caps (the end sections' planes).
+///
+/// With a cell (ResolveOptions::cell), each solid is then clipped to the cell's box by
+/// OpenCASCADE's boolean common: where the box cuts a tow its caps are the cut faces on the
+/// box's planes (the cell faces after clipping), and a tow wholly outside the box has no solid
+/// (BrepSolid::faces 0, volume 0; it is left out of the compound and the files). Faces the box
+/// does not cut stay as they are, so the shared faces (every region lies inside the cell: no
+/// loop crosses a face) stay shared. The matrix (the box minus the tows) is not built.
 /// Each loop is one edge: a periodic B-spline through its points (chord-length parameters) with a
 /// periodic B-spline curve through its (u,v) points on each of the two surfaces, made same-
 /// parameter by OpenCASCADE. BrepSolid::valid says whether OpenCASCADE's checker accepts each
@@ -112,7 +121,7 @@ private:
 ///
 /// @throws towgeom::Error (InvalidArgument) when @p resolved is not of @p tows; (Unsupported)
 ///         naming the tow or tow pair for what this version does not build yet: other methods
-///         than Connect, a cell (ResolveOptions::cell), triple points, a loop that winds around a
+///         than Connect, a tow the cell's box cuts into more than one solid, triple points, a loop that winds around a
 ///         tow or runs across an end cap, loops of two regions that overlap on one tow (a third
 ///         tow), a region inside another's island, loops that leave no v around a tow free for
 ///         its face's seam, an end section that is not planar; (Internal) if OpenCASCADE fails.

@@ -33,6 +33,7 @@
 #include <cmath>
 #include <map>
 
+#include "brep/cell_clip.hpp"
 #include "brep/trimmed_brep_impl.hpp"
 #include "surface/occt_convert.hpp"
 #include "surface/tow_surface_impl.hpp"
@@ -349,9 +350,6 @@ void checkSupported(const std::vector<TowSurface>& tows, const ResolveResult& r)
     if (r.method != ResolutionMethod::Connect)
         throw Error(ErrorCode::Unsupported, "the trimmed B-rep is built for the connect method only (the symmetric method's "
                                             "mid-surfaces and the shrunk tows are not B-spline faces of the input tows)");
-    if (r.mesh.cell)
-        throw Error(ErrorCode::Unsupported, "the trimmed B-rep of tows clipped to a cell is not built yet (the cell's cuts are "
-                                            "not trimming curves of the faces)");
     if (!r.mesh.triplePoints.empty())
         throw Error(ErrorCode::Unsupported, "the trimmed B-rep is not built where three tows meet (" +
                                                 std::to_string(r.mesh.triplePoints.size()) + " triple points)");
@@ -542,15 +540,29 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
             TopoDS_Solid solid;
             b.MakeSolid(solid);
             b.Add(solid, shell);
-            b.Add(impl->compound, solid);
-            impl->solids.push_back(solid);
-            impl->names.push_back(tow.name());
-
             BrepSolid& out = solids[t];
             out.name = tow.name();
             out.volume = tow.volume() + changed.Mass();
             out.area = area;
             out.faces = faces[t].size();
+            if (r.mesh.cell) {
+                // Clipped to the cell: what the box cuts off measured (faces without holes),
+                // the rest kept; the shared faces lie inside (no loop crosses a face).
+                const detail::ClippedSolid clipped = detail::clipSolidToCell(solid, r.mesh.cell->box, tow.name());
+                out.volume -= clipped.outsideVolume;
+                out.area += 2.0 * clipped.cutArea - clipped.outsideArea;
+                if (!clipped.inside) {
+                    out.volume = out.area = 0.0;
+                    out.faces = out.sharedFaces = out.loops = 0;
+                    continue;  // wholly outside: no solid
+                }
+                solid = *clipped.inside;
+                out.faces = 0;
+                for (TopExp_Explorer x(solid, TopAbs_FACE); x.More(); x.Next()) ++out.faces;
+            }
+            b.Add(impl->compound, solid);
+            impl->solids.push_back(solid);
+            impl->names.push_back(tow.name());
             out.sharedFaces = shared[t];
             out.loops = loopCount[t];
             out.valid = BRepCheck_Analyzer(solid).IsValid();

@@ -44,9 +44,10 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
   DIR/textile.msh  with --formats msh: Gmsh 4.1, physical groups TOW_NAME, REGION_k and
                    CAPS_NAME (a tow's two end caps); with --cell also XMIN ... ZMAX (every
                    triangle on each box face: the matrix's and the tows' caps)
-  DIR/textile.step with --formats step: STEP AP214, one solid per tow named after it (for
-                   CAD-based FE tools: Abaqus/CAE, ANSYS, Gmsh's OpenCASCADE kernel); your
-                   units written as millimetres. DIR/textile.brep with --formats brep: the
+  DIR/textile.step with --formats step: STEP AP214, one solid per tow named after it (with
+                   --cell: per tow inside the box, clipped to it), for CAD-based FE tools
+                   (Abaqus/CAE, ANSYS, Gmsh's OpenCASCADE kernel); your units written as
+                   millimetres. DIR/textile.brep with --formats brep: the
                    same in OpenCASCADE's BREP, where shared faces stay one face of both solids
   DIR/textile.inp  with --formats inp: Abaqus, *NODE, *ELEMENT TYPE=S3 with ELSET=TOW_NAME,
                    *ELSET/*NSET REGION_k, *ELSET CAPS_NAME; with --cell also *ELSET
@@ -136,9 +137,9 @@ Options:
   --loop-spacing S   node spacing along intersection loops (default: the smaller mesh size of
                      the loop's two tows)
   --formats LIST     comma-separated from stl,vtk,msh,inp,step,brep (default stl,vtk); step
-                     and brep are the exact solids (--method connect, no --cell): each tow's
-                     B-spline face trimmed by its loops, the faces two tows share one face of
-                     both, planar caps (see DIR/textile.step below)
+                     and brep are the exact solids (--method connect): each tow's B-spline
+                     face trimmed by its loops, the faces two tows share one face of both,
+                     planar caps; with --cell clipped to the box (see DIR/textile.step below)
   --tolerance T      intersection point tolerance (default: 1e-7 x the tow size)
   --report FILE      take the intersection loops from FILE, written by 'towgeom detect
                      --save-report FILE' for the same tows in the same order, instead of
@@ -355,7 +356,6 @@ int runResolve(int argc, char** argv, int first)
         if (exact && options.method != ResolutionMethod::Connect)
             throw UsageError("--formats step and brep are built for --method connect only (the other methods' surfaces are not "
                              "faces of the input tows' B-splines)");
-        if (exact && options.cell) throw UsageError("--formats step and brep are not built for tows clipped to a --cell yet");
         const bool quiet = args.has("quiet");
         ProgressPrinter printer("resolve", quiet);
         options.monitor = &printer;
@@ -518,7 +518,7 @@ int runResolve(int argc, char** argv, int first)
                 if (!g.note.empty()) std::cerr << "towgeom resolve: note: " << g.note << "\n";
         if (brep)  // warnings, whatever --quiet says
             for (const BrepSolid& solid : brep->solids())
-                if (!solid.valid)
+                if (solid.faces > 0 && !solid.valid)  // faces 0: wholly outside the cell, no solid
                     std::cerr << "towgeom resolve: warning: the solid of tow '" << solid.name
                               << "' in textile.step/.brep is not valid for OpenCASCADE's checker (BRepCheck_Analyzer; "
                                  "largest edge tolerance " << solid.maxTolerance << "): CAD tools may refuse it\n";

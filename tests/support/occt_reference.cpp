@@ -4,6 +4,7 @@
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <gp_Ax3.hxx>
 #include <BRepTools.hxx>
@@ -127,6 +128,19 @@ double commonVolume(const std::string& path, std::size_t i, std::size_t j)
     std::vector<TopoDS_Shape> solids;
     for (TopExp_Explorer x(shape, TopAbs_SOLID); x.More(); x.Next()) solids.push_back(x.Current());
     BRepAlgoAPI_Common common(solids.at(i), solids.at(j));
+    if (!common.IsDone()) throw std::runtime_error("BRepAlgoAPI_Common failed");
+    GProp_GProps p;
+    BRepGProp::VolumeProperties(common.Shape(), p, 1e-7, Standard_True);
+    return p.Mass();
+}
+
+double boxCommonVolume(const std::string& path, std::size_t i, const std::array<double, 3>& min, const std::array<double, 3>& max)
+{
+    const TopoDS_Shape shape = brepShape(path);
+    std::vector<TopoDS_Shape> solids;
+    for (TopExp_Explorer x(shape, TopAbs_SOLID); x.More(); x.Next()) solids.push_back(x.Current());
+    const TopoDS_Shape box = BRepPrimAPI_MakeBox(gp_Pnt(min[0], min[1], min[2]), gp_Pnt(max[0], max[1], max[2])).Solid();
+    BRepAlgoAPI_Common common(solids.at(i), box);
     if (!common.IsDone()) throw std::runtime_error("BRepAlgoAPI_Common failed");
     GProp_GProps p;
     BRepGProp::VolumeProperties(common.Shape(), p, 1e-7, Standard_True);

@@ -3,6 +3,7 @@
 // names, the faces two solids share, and the volumes of their pairwise overlaps (OCCT booleans).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -39,5 +40,8 @@ void writeCylinderFace(const std::string& path, double radius, double height, do
 /// The volume of the common part of solids @p i and @p j of the BREP file @p path
 /// (BRepAlgoAPI_Common).
 double commonVolume(const std::string& path, std::size_t i, std::size_t j);
+/// The volume of solid @p i of the BREP file @p path inside the box [@p min, @p max]
+/// (BRepAlgoAPI_Common with OCCT's box primitive).
+double boxCommonVolume(const std::string& path, std::size_t i, const std::array<double, 3>& min, const std::array<double, 3>& max);
 
 }  // namespace towgeom::testing

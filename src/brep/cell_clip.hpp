@@ -1,0 +1,34 @@
+// A tow's solid clipped to the cell's box (OCCT booleans): the part inside, and the volume and
+// area of what was cut off, so that the inside's volume and area follow from the whole solid's
+// without integrating over its trimmed B-spline face again.
+#pragma once
+
+#include <TopoDS_Solid.hxx>
+
+#include <optional>
+#include <string>
+
+#include "towgeom/cell.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
+
+/// What clipSolidToCell() gives.
+struct ClippedSolid {
+    std::optional<TopoDS_Solid> inside;  ///< the part inside the box; none when the solid lies wholly outside
+    double outsideVolume = 0.0;          ///< the volume of the parts outside the box (not measured without an inside: 0)
+    double outsideArea = 0.0;            ///< the area of their boundaries, the cut faces on the box included (likewise)
+    double cutArea = 0.0;                ///< the area of the inside part's faces on the box's planes
+};
+
+/// Clips @p solid (tow @p tow) to @p cell: one intersection of the solid with the box, from
+/// which both the common part and the cut-off parts are built (BRepAlgoAPI_Common and _Cut on
+/// one BOPAlgo_PaveFiller). Faces the box does not cut are kept as they are (the same TopoDS
+/// faces), so faces shared by two tows' solids stay shared.
+/// @throws towgeom::Error (Internal) naming @p tow when OpenCASCADE's boolean fails, and
+///         (Unsupported) when the inside is more than one solid.
+ClippedSolid clipSolidToCell(const TopoDS_Solid& solid, const Cell& cell, const std::string& tow);
+
+}  // namespace detail
+TOWGEOM_END_NAMESPACE
