@@ -13,7 +13,12 @@ bash "$root/cmake/build.sh" --dir build-sanitize -DCMAKE_BUILD_TYPE=Debug "-DCMA
 
 # One anchored alternative per listed name, regex characters escaped; a name that matches no
 # test fails the run (a renamed test must not silently come back or drop out of the list).
-mapfile -t names < <(grep -v -e '^#' -e '^[[:space:]]*$' "$root/tests/sanitizer/not_sanitized.txt")
+list=$root/tests/sanitizer/not_sanitized.txt
+if [[ ! -r "$list" ]]; then
+  echo "towgeom: $list is missing: the sanitizer stage would run tests it is not meant to" >&2
+  exit 1
+fi
+mapfile -t names < <(grep -v -e '^#' -e '^[[:space:]]*$' "$list")
 exclude=""
 for name in "${names[@]}"; do
   pattern="^$(printf '%s' "$name" | sed 's/[][\.*^$+?(){}|]/\\&/g')\$"
