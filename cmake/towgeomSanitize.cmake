@@ -36,8 +36,8 @@ endif()
 # environment come last and win. A sanitizer report exits with status 86, which no test
 # expects (the CLI's own codes are 0, 1 and 2), so a report can never pass for an expected
 # failure. LeakSanitizer is on (ASan's default on Linux), stated so that it stays on.
-# LeakSanitizer suppresses what is allocated inside OpenCASCADE's toolkits (its process-lifetime
-# statics of STEP, IGES and XCAF: tests/sanitizer/lsan_occt.supp says why); nothing else is
+# LeakSanitizer suppresses OpenCASCADE's process-lifetime statics of STEP, IGES and XCAF by their
+# toolkits (tests/sanitizer/lsan_occt.supp says why, and what that costs); nothing else is
 # suppressed (OCCT allocates
 # through malloc/free, so ASan sees no new/free mismatch).
 if(TOWGEOM_SANITIZE)

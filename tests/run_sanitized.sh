@@ -18,7 +18,11 @@ if [[ ! -r "$list" ]]; then
   echo "towgeom: $list is missing: the sanitizer stage would run tests it is not meant to" >&2
   exit 1
 fi
-mapfile -t names < <(grep -v -e '^#' -e '^[[:space:]]*$' "$list")
+mapfile -t names < <(grep -v -e '^#' -e '^[[:space:]]*$' "$list" || true)
+if ((${#names[@]} == 0)); then
+  echo "towgeom: $list names no test" >&2
+  exit 1
+fi
 exclude=""
 for name in "${names[@]}"; do
   pattern="^$(printf '%s' "$name" | sed 's/[][\.*^$+?(){}|]/\\&/g')\$"

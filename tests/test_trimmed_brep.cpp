@@ -8,7 +8,6 @@
 #include <towgeom/resolve.hpp>
 #include <towgeom/stack_reader.hpp>
 #include <towgeom/trimmed_brep.hpp>
-#include <towgeom/weave.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -38,6 +37,21 @@ fs::path freshDirectory(const std::string& name)
 }
 
 double relative(double a, double b) { return std::abs(a - b) / std::abs(b); }
+
+/// Runs gmsh on @p input with @p options (its output to @p output, its log to DIR/gmsh.log):
+/// it must exit 0, print no error and write @p output.
+void checkGmshReads(const fs::path& dir, const std::string& input, const std::string& options, const std::string& output)
+{
+    const std::string log = (dir / "gmsh.log").string();
+    const std::string command = "gmsh '" + input + "' " + options + " -o '" + output + "' > '" + log + "' 2>&1";
+    const int status = std::system(command.c_str());
+    std::ifstream in(log);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    INFO(text.substr(text.size() > 3000 ? text.size() - 3000 : 0));
+    CHECK(status == 0);
+    CHECK(text.find("Error") == std::string::npos);
+    CHECK(fs::exists(output));
+}
 
 }  // namespace
 
@@ -101,15 +115,7 @@ TEST_CASE("trimmed B-rep of the bundled twill: valid named solids, exact volumes
     CHECK(shared == r.mesh.regions.size());
 
     // Gmsh's OpenCASCADE kernel imports the STEP file and meshes every volume.
-    const std::string msh = (dir / "twill.msh").string(), log = (dir / "gmsh.log").string();
-    const std::string command = "gmsh '" + step + "' -3 -clmax 0.2 -format msh4 -o '" + msh + "' > '" + log + "' 2>&1";
-    const int status = std::system(command.c_str());
-    std::ifstream in(log);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    INFO(text.substr(text.size() > 3000 ? text.size() - 3000 : 0));
-    CHECK(status == 0);
-    CHECK(text.find("Error") == std::string::npos);
-    CHECK(fs::exists(msh));
+    checkGmshReads(dir, step, "-3 -clmax 0.2 -format msh4", (dir / "twill.msh").string());
     fs::remove_all(dir);
 }
 
@@ -157,8 +163,11 @@ TEST_CASE("trimmed B-rep clipped to a cell: two crossing tubes cut by the box, a
     CHECK(relative(x.area, 2.0 * pi * 0.5 * 3.0 + 2.0 * pi * 0.25) <= 1e-4);
     CHECK(x.faces == 4);  // the tube, the shared face, 2 cut faces
     CHECK(y.faces == 4);
+    CHECK(x.cellFaces == 2);
+    CHECK(y.cellFaces == 2);
     CHECK(x.sharedFaces == 1);
     CHECK(far.faces == 0);
+    CHECK(brep.solids()[0].cellFaces + brep.solids()[1].cellFaces == 4);
     CHECK(far.volume == 0.0);
     CHECK(far.area == 0.0);
     REQUIRE(back.sharedFaces.size() == 1);
@@ -170,19 +179,10 @@ TEST_CASE("trimmed B-rep of a periodic twill cell: solids clipped by the box, cu
 {
     // The 6x6 2/2 twill clipped to its 4x4 repeat (test_volume_mesh): 8 tows cut by two opposite
     // faces each, 4 wholly outside; 16 regions inside, 20 loops outside (skipped, not trimmed).
-    WeaveOptions w;
-    w.kind = WeaveKind::Twill;
-    w.floatOver = w.floatUnder = 2;
-    w.warps = w.wefts = 6;
-    w.overlap = 0.08;
-    std::vector<TowSurface> tows;
-    for (const TowStack& s : generateWeave(w).stacks()) tows.push_back(TowSurface::fit(s));
+    const std::vector<TowSurface> tows = testing::fittedTwill22SixBySix();
     ResolveOptions o;
     o.mesh.edgeLength = 0.2;
-    Cell cell;
-    cell.min = {0.5, 0.5, -0.5};
-    cell.max = {4.5, 4.5, 0.5};
-    cell.periodic = true;
+    const Cell cell = testing::twill22RepeatCell();
     o.cell = cell;
     const ResolveResult r = resolveTextile(tows, o);
     REQUIRE(r.mesh.regions.size() == 16);
@@ -236,6 +236,7 @@ TEST_CASE("trimmed B-rep of a periodic twill cell: solids clipped by the box, cu
         CHECK(r.tows[t].volumeAfter < s.volume);
         CHECK(relative(s.volume, r.tows[t].volumeAfter) <= 0.04);
         CHECK(s.faces == 7);  // the tube, 4 shared faces, 2 cut faces on the box
+        CHECK(s.cellFaces == 2);
         CHECK(s.sharedFaces == 4);
         tows_volume += s.volume;
         ++inside;
@@ -249,15 +250,7 @@ TEST_CASE("trimmed B-rep of a periodic twill cell: solids clipped by the box, cu
 
     // Gmsh's OpenCASCADE kernel reads the STEP file (-0: the model as read, written back as
     // BREP; the bundled twill's test meshes its STEP file).
-    const std::string msh = (dir / "gmsh.brep").string(), log = (dir / "gmsh.log").string();
-    const std::string command = "gmsh '" + step + "' -0 -o '" + msh + "' > '" + log + "' 2>&1";
-    const int status = std::system(command.c_str());
-    std::ifstream in(log);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    INFO(text.substr(text.size() > 3000 ? text.size() - 3000 : 0));
-    CHECK(status == 0);
-    CHECK(text.find("Error") == std::string::npos);
-    CHECK(fs::exists(msh));
+    checkGmshReads(dir, step, "-0", (dir / "gmsh.brep").string());
     fs::remove_all(dir);
 }
 

@@ -218,19 +218,10 @@ TEST_CASE("a periodic twill cell: tows clipped by the box, the matrix around the
 {
     // A 6x6 2/2 twill clipped to its 4x4 repeat with faces halfway between yarns: the outermost
     // yarns lie wholly outside, the others are cut by two opposite faces each.
-    WeaveOptions w;
-    w.kind = WeaveKind::Twill;
-    w.floatOver = w.floatUnder = 2;
-    w.warps = w.wefts = 6;
-    w.overlap = 0.08;
-    std::vector<TowSurface> tows;
-    for (const TowStack& s : generateWeave(w).stacks()) tows.push_back(TowSurface::fit(s));
+    const std::vector<TowSurface> tows = testing::fittedTwill22SixBySix();
     ResolveOptions o;
     o.mesh.edgeLength = 0.2;
-    Cell cell;
-    cell.min = {0.5, 0.5, -0.5};
-    cell.max = {4.5, 4.5, 0.5};
-    cell.periodic = true;
+    const Cell cell = testing::twill22RepeatCell();
     o.cell = cell;
     const ResolveResult res = resolveTextile(tows, o);
     REQUIRE(res.mesh.cell);

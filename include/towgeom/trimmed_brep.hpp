@@ -36,23 +36,29 @@ struct BrepSolid {
     std::string name;           ///< the tow's name
     /// The solid's volume: the tow's exact volume (TowSurface::volume()) changed by what its
     /// loops cut out and put in (OpenCASCADE's BRepGProp over the faces inside the loops, 1e-9
-    /// relative) and, with a cell, less what the box cuts off (BRepGProp over those parts).
+    /// relative) and, with a cell, less what the box cuts off (BRepGProp over those parts, 1e-9
+    /// of their volume).
     double volume = 0.0;
     double area = 0.0;          ///< the area of its boundary (computed as the volume is)
     /// Faces of its shell: its own (tube pieces, caps or cut faces on a cell's box) and the
     /// shared ones; 0 for a tow wholly outside the cell (no solid).
     std::size_t faces = 0;
     std::size_t sharedFaces = 0;  ///< faces it shares with another tow's solid (the same face in both)
+    /// With a cell: its cut faces, made of the box's faces where the box cuts it (2 for a tow
+    /// cut at both ends; 0 for a tow wholly inside); 0 without a cell.
+    std::size_t cellFaces = 0;
     std::size_t loops = 0;      ///< intersection loops on its boundary (trimming curves)
     bool valid = false;         ///< BRepCheck_Analyzer accepts the solid (false where there is none: faces 0)
     double maxTolerance = 0.0;  ///< the largest tolerance of its edges and vertices, in your units
 };
 
-/// The resolved textile as one compound of solids, one per tow, in input order; faces shared by
-/// two tows are one face used by both solids (with opposite orientations).
+/// The resolved textile as one compound of solids, one per tow in input order (with a cell, one
+/// per tow inside it); faces shared by two tows are one face used by both solids (with opposite
+/// orientations).
 class TOWGEOM_EXPORT TrimmedBrep {
 public:
-    /// The solids, one per input tow.
+    /// The solids, one per input tow (with a cell, a tow wholly outside it has faces 0 and is not
+    /// in the compound or the files).
     const std::vector<BrepSolid>& solids() const { return solids_; }
     /// The number of faces shared by two solids.
     std::size_t sharedFaceCount() const { return sharedFaces_; }

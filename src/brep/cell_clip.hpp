@@ -5,6 +5,7 @@
 
 #include <TopoDS_Solid.hxx>
 
+#include <cstddef>
 #include <optional>
 #include <string>
 
@@ -19,7 +20,8 @@ struct ClippedSolid {
     std::optional<TopoDS_Solid> inside;  ///< the part inside the box; none when the solid lies wholly outside
     double outsideVolume = 0.0;          ///< the volume of the parts outside the box (not measured without an inside: 0)
     double outsideArea = 0.0;            ///< the area of their boundaries, the cut faces on the box included (likewise)
-    double cutArea = 0.0;                ///< the area of the inside part's faces on the box's planes
+    double cutArea = 0.0;                ///< the area of the inside part's cut faces (made of the box's faces)
+    std::size_t cutFaces = 0;            ///< how many cut faces the inside part has
 };
 
 /// Clips @p solid (tow @p tow) to @p cell: one intersection of the solid with the box, from

@@ -477,6 +477,7 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
         // 2. Faces inside loops: per region the shared face on the primary, the islands on both.
         std::vector<std::vector<TopoDS_Face>> faces(tows.size());  // oriented as in each tow's shell
         std::vector<std::size_t> shared(tows.size(), 0), loopCount(tows.size(), 0);
+        std::vector<std::vector<TopoDS_Face>> sharedOf(tows.size());  // the faces each tow shares
         for (const ConnectedRegion& g : r.mesh.regions) {
             const Handle(Geom_BSplineSurface)& sp = tows[g.primary].impl().surface;
             std::vector<TopoDS_Wire> holes;
@@ -484,6 +485,8 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
             const TopoDS_Face face = insideFace(sp, wire(g.loop, g.primary, true), holes, tolerance);
             faces[g.primary].push_back(face);
             faces[g.secondary].push_back(TopoDS::Face(face.Reversed()));
+            sharedOf[g.primary].push_back(face);
+            sharedOf[g.secondary].push_back(face);
             ++shared[g.primary];
             ++shared[g.secondary];
             ++sharedCount;
@@ -549,16 +552,31 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
                 // Clipped to the cell: what the box cuts off measured (faces without holes),
                 // the rest kept; the shared faces lie inside (no loop crosses a face).
                 const detail::ClippedSolid clipped = detail::clipSolidToCell(solid, r.mesh.cell->box, tow.name());
-                out.volume -= clipped.outsideVolume;
-                out.area += 2.0 * clipped.cutArea - clipped.outsideArea;
+                const bool meshed = !r.mesh.tows[t].triangles.empty();
+                if (clipped.inside.has_value() != meshed)
+                    throw Error(ErrorCode::Internal, "tow '" + tow.name() + "': OpenCASCADE's boolean keeps " +
+                                                         (meshed ? "nothing" : "a part") + " of its solid inside the cell, its mesh " +
+                                                         (meshed ? "a part" : "nothing"));
                 if (!clipped.inside) {
                     out.volume = out.area = 0.0;
                     out.faces = out.sharedFaces = out.loops = 0;
                     continue;  // wholly outside: no solid
                 }
+                out.volume -= clipped.outsideVolume;
+                out.area += 2.0 * clipped.cutArea - clipped.outsideArea;
                 solid = *clipped.inside;
+                out.cellFaces = clipped.cutFaces;
                 out.faces = 0;
-                for (TopExp_Explorer x(solid, TopAbs_FACE); x.More(); x.Next()) ++out.faces;
+                std::size_t stillShared = 0;
+                for (TopExp_Explorer x(solid, TopAbs_FACE); x.More(); x.Next()) {
+                    ++out.faces;
+                    stillShared += std::any_of(sharedOf[t].begin(), sharedOf[t].end(),
+                                               [&](const TopoDS_Face& f) { return f.IsSame(x.Current()); });
+                }
+                if (stillShared != shared[t])
+                    throw Error(ErrorCode::Internal, "tow '" + tow.name() + "': clipped to the cell it keeps " +
+                                                         std::to_string(stillShared) + " of the " + std::to_string(shared[t]) +
+                                                         " faces it shares with other tows");
             }
             b.Add(impl->compound, solid);
             impl->solids.push_back(solid);

@@ -14,8 +14,8 @@ TOWGEOM_BEGIN_NAMESPACE
 
 struct TrimmedBrep::Impl {
     TopoDS_Compound compound;          // the solids, shared faces shared
-    std::vector<TopoDS_Solid> solids;  // one per tow, in input order
-    std::vector<std::string> names;    // the tows' names
+    std::vector<TopoDS_Solid> solids;  // one per tow in input order (with a cell: per tow inside it)
+    std::vector<std::string> names;    // their tows' names
 };
 
 TOWGEOM_END_NAMESPACE

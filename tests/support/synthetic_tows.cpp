@@ -181,4 +181,23 @@ std::vector<TowSurface> fittedTwill22()
     return fitAll(generateWeave(w).stacks());
 }
 
+std::vector<TowSurface> fittedTwill22SixBySix()
+{
+    WeaveOptions w;
+    w.kind = WeaveKind::Twill;
+    w.floatOver = w.floatUnder = 2;
+    w.warps = w.wefts = 6;
+    w.overlap = 0.08;
+    return fitAll(generateWeave(w).stacks());
+}
+
+Cell twill22RepeatCell()
+{
+    Cell cell;
+    cell.min = {0.5, 0.5, -0.5};
+    cell.max = {4.5, 4.5, 0.5};
+    cell.periodic = true;
+    return cell;
+}
+
 }  // namespace towgeom::testing

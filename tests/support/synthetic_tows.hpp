@@ -1,6 +1,7 @@
 // Tows with known geometry for tests and benchmarks: analytic tubes sampled as stacks.
 #pragma once
 
+#include <towgeom/cell.hpp>
 #include <towgeom/tow_stack.hpp>
 #include <towgeom/tow_surface.hpp>
 
@@ -79,6 +80,13 @@ std::vector<TowSurface> fitAll(const std::vector<TowStack>& stacks);
 
 /// The generator's 4x4 2/2 twill (overlap 0.08, default sampling), fitted: 8 tows, 16 loops.
 std::vector<TowSurface> fittedTwill22();
+
+/// The generator's 6x6 2/2 twill (overlap 0.08, default sampling), fitted: 12 tows.
+std::vector<TowSurface> fittedTwill22SixBySix();
+/// Its 4x4 repeat as a periodic cell, faces halfway between yarns ([0.5, 4.5]^2 x [-0.5, 0.5]):
+/// the outermost yarns lie wholly outside, the other 8 are cut by two opposite faces each; 16
+/// crossings inside.
+Cell twill22RepeatCell();
 
 /// The bundled 2/2 twill (@p exampleData/twill, the README's example): 8 tows, 16 interpenetrations.
 std::vector<TowSurface> bundledTwill(const std::string& exampleData);
