@@ -12,7 +12,6 @@
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
 
-
 #include "towgeom/error.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
@@ -51,20 +50,19 @@ ClippedSolid clipSolidToCell(const TopoDS_Solid& solid, const Cell& cell, const 
         if (pieces > 1)
             throw Error(ErrorCode::Unsupported, "tow '" + tow + "' is cut into " + std::to_string(pieces) +
                                                     " solids by the cell's box: not built as a trimmed B-rep");
+        if (!out.inside) return out;  // wholly outside: nothing to measure
         // The cut faces: what the boolean made of the box's faces (its history), not whatever
         // lies in a box plane (a tow's own end cap may).
         TopTools_IndexedMapOfShape cutFaces;
         for (TopExp_Explorer x(box, TopAbs_FACE); x.More(); x.Next())
             for (TopTools_ListIteratorOfListOfShape m(common.Modified(x.Current())); m.More(); m.Next()) cutFaces.Add(m.Value());
-        if (out.inside)
-            for (TopExp_Explorer x(*out.inside, TopAbs_FACE); x.More(); x.Next()) {
-                if (!cutFaces.Contains(x.Current())) continue;
-                GProp_GProps a;
-                BRepGProp::SurfaceProperties(x.Current(), a, kMeasureEps);
-                out.cutArea += a.Mass();
-                ++out.cutFaces;
-            }
-        if (!out.inside) return out;  // wholly outside: nothing to measure
+        for (TopExp_Explorer x(*out.inside, TopAbs_FACE); x.More(); x.Next()) {
+            if (!cutFaces.Contains(x.Current())) continue;
+            GProp_GProps a;
+            BRepGProp::SurfaceProperties(x.Current(), a, kMeasureEps);
+            out.cutArea += a.Mass();
+            ++out.cutFaces;
+        }
         for (TopExp_Explorer x(cut.Shape(), TopAbs_SOLID); x.More(); x.Next()) {
             GProp_GProps v, a;
             BRepGProp::VolumeProperties(x.Current(), v, kMeasureEps);

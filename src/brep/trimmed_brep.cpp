@@ -476,7 +476,7 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
         };
         // 2. Faces inside loops: per region the shared face on the primary, the islands on both.
         std::vector<std::vector<TopoDS_Face>> faces(tows.size());  // oriented as in each tow's shell
-        std::vector<std::size_t> shared(tows.size(), 0), loopCount(tows.size(), 0);
+        std::vector<std::size_t> loopCount(tows.size(), 0);
         std::vector<std::vector<TopoDS_Face>> sharedOf(tows.size());  // the faces each tow shares
         for (const ConnectedRegion& g : r.mesh.regions) {
             const Handle(Geom_BSplineSurface)& sp = tows[g.primary].impl().surface;
@@ -487,8 +487,6 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
             faces[g.secondary].push_back(TopoDS::Face(face.Reversed()));
             sharedOf[g.primary].push_back(face);
             sharedOf[g.secondary].push_back(face);
-            ++shared[g.primary];
-            ++shared[g.secondary];
             ++sharedCount;
             for (std::size_t h : g.holes)
                 for (std::size_t t : {g.primary, g.secondary})
@@ -573,15 +571,15 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
                     stillShared += std::any_of(sharedOf[t].begin(), sharedOf[t].end(),
                                                [&](const TopoDS_Face& f) { return f.IsSame(x.Current()); });
                 }
-                if (stillShared != shared[t])
+                if (stillShared != sharedOf[t].size())
                     throw Error(ErrorCode::Internal, "tow '" + tow.name() + "': clipped to the cell it keeps " +
-                                                         std::to_string(stillShared) + " of the " + std::to_string(shared[t]) +
+                                                         std::to_string(stillShared) + " of the " + std::to_string(sharedOf[t].size()) +
                                                          " faces it shares with other tows");
             }
             b.Add(impl->compound, solid);
             impl->solids.push_back(solid);
             impl->names.push_back(tow.name());
-            out.sharedFaces = shared[t];
+            out.sharedFaces = sharedOf[t].size();
             out.loops = loopCount[t];
             out.valid = BRepCheck_Analyzer(solid).IsValid();
             out.maxTolerance = maxToleranceOf(solid);
