@@ -745,7 +745,10 @@ TEST_CASE("towgeom resolve skips and names an open curve (exit 3), refuses bad u
           "towgeom resolve: unresolved tow pair 'short' and 'crossing': open intersection curve: the curve reaches an end of the "
           "first tow [open_curve]\n");
     for (const std::string& args : {std::string("resolve") + files, "resolve" + files + " --out x --formats stl,obj",
-                                    "resolve" + files + " --out x --min-angle 40", "resolve" + files + " --out x --mesh-size -1"}) {
+                                    "resolve" + files + " --out x --min-angle 40", "resolve" + files + " --out x --mesh-size -1",
+                                    "resolve" + files + " --out x --face-grading 0.3,4",
+                                    "resolve" + files + " --out x --cell -1,-1,-1,5,5,1 --face-grading 0.3,0.5",
+                                    "resolve" + files + " --out x --cell -1,-1,-1,5,5,1 --face-grading 0.3"}) {
         DYNAMIC_SECTION(args)
         {
             const Run u = cli(args);
@@ -755,7 +758,8 @@ TEST_CASE("towgeom resolve skips and names an open curve (exit 3), refuses bad u
     }
     CHECK_FALSE(fs::exists("x"));
     const Run help = cli("resolve --help");
-    for (const char* word : {"--primary", "--mesh-size", "--loop-spacing", "--formats", "report.json", "\"unresolved\"", "Exit status", "Example"})
+    for (const char* word : {"--primary", "--mesh-size", "--loop-spacing", "--formats", "--face-grading", "report.json", "\"unresolved\"",
+                             "Exit status", "Example"})
         CHECK(help.out.find(word) != std::string::npos);
     fs::remove_all(dir);
 }

@@ -377,6 +377,62 @@ TEST_CASE("a cell: tows wholly outside are dropped whatever the other faces' pla
     CHECK(meshVolumes(none.mesh).towVolume(0) == Approx(cell.volume()).epsilon(1e-12));
 }
 
+TEST_CASE("a cell's faces are meshed at the tow's size at its caps and coarser away from them, the matrix's tetrahedra with them", "[volume][cell]")
+{
+    // One tow (weft_1, along y at x = 1) in a box much wider than it: the faces it crosses (y)
+    // graded from its caps, the others (no tow) coarse inside, graded from their edges.
+    ResolveOptions o;
+    o.mesh.edgeLength = 0.2;
+    Cell cell;
+    cell.min = {-2.0, -0.5, -1.5};
+    cell.max = {4.0, 3.5, 1.5};
+    const std::vector<TowSurface> one = twill({"weft_1"});
+    const auto longestEdge = [](const ResolveResult& r, const std::array<std::size_t, 3>& t) {
+        const std::vector<Point3>& n = r.mesh.nodes;
+        return std::max({distance(n[t[0]], n[t[1]]), distance(n[t[1]], n[t[2]]), distance(n[t[2]], n[t[0]])});
+    };
+    o.cell = cell;
+    o.cell->faceSizeMax = 1.0;  // every face at h
+    const ResolveResult uniform = resolveTextile(one, o);
+    o.cell = cell;  // the defaults: growth 0.3, up to 4 h
+    const ResolveResult graded = resolveTextile(one, o);
+    REQUIRE(uniform.mesh.cell);
+    REQUIRE(graded.mesh.cell);
+    const double h = 0.2;
+    double longestUniform = 0.0, longestGraded = 0.0;
+    for (const auto& t : uniform.mesh.cell->triangles) longestUniform = std::max(longestUniform, longestEdge(uniform, t));
+    for (const auto& t : graded.mesh.cell->triangles) longestGraded = std::max(longestGraded, longestEdge(graded, t));
+    // (Triangles on the cuts' chords, which the mesher does not split, may be a little longer
+    // than h: up to 1.27 h seen.)
+    CHECK(longestUniform <= 1.3 * h);
+    CHECK(longestGraded > 2.5 * h);
+    CHECK(longestGraded <= 4.0001 * h);
+    // The caps stay at the tow's size (observed 1.09 h).
+    for (const ResolveResult* r : {&uniform, &graded}) {
+        const TowMesh& m = r->mesh.tows[0];
+        REQUIRE((m.cutAt[0] && m.cutAt[1]));
+        double cap = 0.0;
+        for (std::size_t k = 0; k < m.triangles.size(); ++k)
+            if (m.face[k] != TowFace::Side) cap = std::max(cap, longestEdge(*r, m.triangles[k]));
+        CHECK(cap <= 1.3 * h);
+    }
+    CHECK(graded.mesh.cell->triangles.size() * 3 < uniform.mesh.cell->triangles.size());
+    // Both fill the box conformingly; the graded matrix with far fewer tetrahedra.
+    const VolumeMesh vu = meshVolumes(uniform.mesh), vg = meshVolumes(graded.mesh);
+    checkConforming(uniform, vu);
+    checkConforming(graded, vg);
+    const auto matrixTets = [](const VolumeMesh& v) { return std::count(v.tow.begin(), v.tow.end(), std::size_t(1)); };
+    CHECK(matrixTets(vg) * 3 < matrixTets(vu));
+    WARN("box faces: " << uniform.mesh.cell->triangles.size() << " -> " << graded.mesh.cell->triangles.size()
+                       << " triangles; matrix: " << matrixTets(vu) << " -> " << matrixTets(vg) << " tetrahedra");
+    Cell bad = cell;
+    bad.faceSizeMax = 0.5;
+    CHECK_THROWS_AS(bad.validate(), Error);
+    bad = cell;
+    bad.faceSizeGrowth = -1.0;
+    CHECK_THROWS_AS(bad.validate(), Error);
+}
+
 TEST_CASE("a cell's faces count in the triangle budget", "[cell]")
 {
     // One tow in a box far larger than it: the faces, at the tow's mesh size, are most of the mesh.

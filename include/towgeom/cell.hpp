@@ -54,9 +54,20 @@ struct TOWGEOM_EXPORT Cell {
     /// (refused). The moved node is the max face's node: its distance from the tow's surface is
     /// at most this gap.
     double periodTolerance = 1e-3;
+    /// How fast the edge length of the box's faces grows away from the tows' cuts: at a point of
+    /// a face it is h + faceSizeGrowth * d, where h is the finest tow's mesh size and d the
+    /// distance to the nearest cut's bounding box (the caps themselves are meshed at h), up to
+    /// faceSizeMax * h. The matrix's tetrahedra follow the faces' sizes (Gmsh grades the volume
+    /// from its boundary), so the matrix away from the tows is meshed coarser than the tows.
+    /// faceSizeMax = 1 meshes every face at h. A face no tow crosses is meshed at faceSizeMax * h
+    /// inside, graded from its edges (which are meshed at h).
+    double faceSizeGrowth = 0.3;
+    /// The box's faces' largest edge length, relative to the finest tow's mesh size (>= 1); see
+    /// faceSizeGrowth.
+    double faceSizeMax = 4.0;
 
-    /// Throws towgeom::Error (InvalidArgument) unless min < max on every axis, all finite, and
-    /// periodTolerance > 0 and finite.
+    /// Throws towgeom::Error (InvalidArgument) unless min < max on every axis, all finite,
+    /// periodTolerance > 0, faceSizeGrowth >= 0 and faceSizeMax >= 1, all finite.
     void validate() const;
     /// The coordinate of @p face's plane.
     double plane(CellFace face) const;

@@ -32,6 +32,10 @@ void Cell::validate() const
     }
     if (!(periodTolerance > 0.0 && std::isfinite(periodTolerance)))
         throw Error(ErrorCode::InvalidArgument, "the cell's period tolerance must be > 0 and finite");
+    if (!(faceSizeGrowth >= 0.0 && std::isfinite(faceSizeGrowth)))
+        throw Error(ErrorCode::InvalidArgument, "the growth of the cell's face size must be >= 0 and finite");
+    if (!(faceSizeMax >= 1.0 && std::isfinite(faceSizeMax)))
+        throw Error(ErrorCode::InvalidArgument, "the cell's largest face size (relative to the tows' size) must be >= 1 and finite");
 }
 
 double Cell::plane(CellFace face) const

@@ -5,12 +5,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <string>
 #include <utility>
 
 #include "cell/axis.hpp"
 #include "mesh/constraint_keeping_mesher.hpp"
+#include "mesh/graded_size_criteria.hpp"
 #include "mesh/mesh_cdt.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
@@ -117,9 +119,40 @@ std::vector<std::size_t> rectangle(BoxEdges& edges, int a, int s)
     return out;
 }
 
+/// How a face's edge length grows away from the cuts (Cell::faceSizeGrowth, faceSizeMax).
+struct FaceGrading {
+    double growth = 0.0;     ///< per unit of distance from the nearest cut
+    double maxFactor = 1.0;  ///< at most this times the tows' size
+};
+
+/// The edge length wanted at a point of a face: the tows' size at their cuts (within each cut's
+/// bounding box, where its cap is), growing away from them.
+class FaceSize {
+public:
+    FaceSize(const std::vector<std::vector<K::Point_2>>& cuts, double h, const FaceGrading& grading) : h_(h), grading_(grading)
+    {
+        for (const auto& cut : cuts) boxes_.push_back(CGAL::bbox_2(cut.begin(), cut.end()));
+    }
+    double operator()(const K::Point_2& p) const
+    {
+        const double hMax = h_ * grading_.maxFactor;
+        double nearest = std::numeric_limits<double>::infinity();
+        for (const CGAL::Bbox_2& b : boxes_) {
+            const double dx = std::max({b.xmin() - p.x(), 0.0, p.x() - b.xmax()}), dy = std::max({b.ymin() - p.y(), 0.0, p.y() - b.ymax()});
+            nearest = std::min(nearest, std::hypot(dx, dy));
+        }
+        return std::isfinite(nearest) ? std::min(hMax, h_ + grading_.growth * nearest) : hMax;
+    }
+
+private:
+    double h_;
+    FaceGrading grading_;
+    std::vector<CGAL::Bbox_2> boxes_;
+};
+
 /// Meshes the face of axis @p a at coordinate @p at: the rectangle @p boundary with @p cuts inside.
 FaceMesh meshFace(const std::vector<TowSurface>& tows, CellFace face, int a, double at, std::vector<std::size_t> boundary,
-                  const std::vector<FaceCut>& cuts, double h, double minAngle, std::vector<Point3>& nodes)
+                  const std::vector<FaceCut>& cuts, double h, const FaceGrading& grading, double minAngle, std::vector<Point3>& nodes)
 {
     const auto [b, c] = inPlane(a);
     const auto flat = [&, b = b, c = c](std::size_t n) { return K::Point_2(coord(nodes[n], b), coord(nodes[n], c)); };
@@ -165,7 +198,9 @@ FaceMesh meshFace(const std::vector<TowSurface>& tows, CellFace face, int a, dou
         throw Error(ErrorCode::InvalidArgument, std::string("two nodes coincide") + onFace + ": a tow's cut touches the box's edge");
     mesh2::markInside(cdt);
     const double angle = std::clamp(minAngle, 1.0, 30.0) * 3.14159265358979323846 / 180.0;
-    refineKeepingConstraints(cdt, CGAL::Delaunay_mesh_size_criteria_2<CDT>(std::sin(angle) * std::sin(angle), h), false);
+    const FaceSize size(polygons, h, grading);
+    refineKeepingConstraints(cdt, GradedSizeCriteria<CDT>(std::sin(angle) * std::sin(angle), [&size](const K::Point_2& p) { return size(p); }),
+                             false);
     for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
         if (v->info().node >= 0) continue;
         Point3 p;
@@ -223,6 +258,7 @@ CellFaces meshCellFaces(const std::vector<TowSurface>& tows, const Cell& cell, c
     out.caps.resize(tows.size());
     out.mesh.box = cell;
     BoxEdges edges(cell, h, nodes);
+    const FaceGrading grading{cell.faceSizeGrowth, tows.empty() ? 1.0 : cell.faceSizeMax};
     const auto cutsOn = [&](CellFace face) {
         std::vector<FaceCut> list;
         for (std::size_t t = 0; t < tows.size(); ++t)
@@ -254,10 +290,10 @@ CellFaces meshCellFaces(const std::vector<TowSurface>& tows, const Cell& cell, c
         const bool ccwAlongA = a != 1;
         const CellFace lo = static_cast<CellFace>(2 * a), hi = static_cast<CellFace>(2 * a + 1);
         const std::vector<FaceCut> onLo = cutsOn(lo), onHi = cutsOn(hi);
-        const FaceMesh mLo = meshFace(tows, lo, a, coord(cell.min, a), rectangle(edges, a, 0), onLo, h, minAngle, nodes);
+        const FaceMesh mLo = meshFace(tows, lo, a, coord(cell.min, a), rectangle(edges, a, 0), onLo, h, grading, minAngle, nodes);
         add(lo, mLo, onLo, !ccwAlongA);
         if (!cell.periodic) {
-            add(hi, meshFace(tows, hi, a, coord(cell.max, a), rectangle(edges, a, 1), onHi, h, minAngle, nodes), onHi, ccwAlongA);
+            add(hi, meshFace(tows, hi, a, coord(cell.max, a), rectangle(edges, a, 1), onHi, h, grading, minAngle, nodes), onHi, ccwAlongA);
             continue;
         }
         // The min face moved onto the max face: its rectangle, its cuts (the same tow's, same

@@ -192,6 +192,11 @@ Options:
                      DIR/textile_volume_periodic.inp: *EQUATION ties of every max-face node to
                      its min-face partner through reference nodes REF_X, REF_Y, REF_Z (their
                      displacements: the cell's stretch along each axis), *NSET CORNER
+  --face-grading GROWTH,MAX
+                     with --cell: how the box's faces are meshed away from the tows' caps: the
+                     edge length grows from the finest tow's mesh size h at the caps by GROWTH
+                     per unit of distance, up to MAX * h (default 0.3,4); with --volume the
+                     matrix's tetrahedra grade with them. 0,1 meshes every face at h
   --allow-open       exit 0 even when an intersection curve is open (or, with --no-caps, a
                      loop crosses a tow's end cap): never resolved, still named on stderr;
                      other unresolved pairs still exit 3
@@ -253,6 +258,23 @@ Cell readCellFile(const std::string& path)
     }
 }
 
+/// The finite numbers of a comma-separated list; empty if any part is not one.
+std::vector<double> numberList(const std::string& text)
+{
+    std::vector<double> v;
+    std::size_t at = 0;
+    while (at <= text.size()) {
+        const std::size_t comma = std::min(text.find(',', at), text.size());
+        const std::string part = text.substr(at, comma - at);
+        char* end = nullptr;
+        const double x = std::strtod(part.c_str(), &end);
+        if (part.empty() || end != part.c_str() + part.size() || !std::isfinite(x)) return {};
+        v.push_back(x);
+        at = comma + 1;
+    }
+    return v;
+}
+
 Cell parseCell(const std::string& text, bool periodic)
 {
     // A file (textile.json): any text that is not a list of numbers.
@@ -261,18 +283,7 @@ Cell parseCell(const std::string& text, bool periodic)
         c.periodic = c.periodic || periodic;
         return c;
     }
-    std::vector<double> v;
-    std::size_t at = 0;
-    while (at <= text.size()) {
-        const std::size_t comma = std::min(text.find(',', at), text.size());
-        const std::string part = text.substr(at, comma - at);
-        char* end = nullptr;
-        const double x = std::strtod(part.c_str(), &end);
-        if (part.empty() || end != part.c_str() + part.size() || !std::isfinite(x))
-            throw UsageError("--cell takes six numbers XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX, not '" + text + "'");
-        v.push_back(x);
-        at = comma + 1;
-    }
+    const std::vector<double> v = numberList(text);
     if (v.size() != 6) throw UsageError("--cell takes six numbers XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX, not '" + text + "'");
     Cell c;
     c.min = {v[0], v[1], v[2]};
@@ -310,7 +321,7 @@ int runResolve(int argc, char** argv, int first)
                         {{"help"}, {"quiet"}, {"allow-open"}, {"out", true}, {"primary", true}, {"mesh-size", true},
                          {"min-angle", true}, {"loop-spacing", true}, {"formats", true}, {"tolerance", true},
                          {"threads", true}, {"max-triangles", true}, {"no-caps"}, {"report", true}, {"volume"},
-                         {"cell", true}, {"periodic"}, {"order", true}, {"method", true}, {"shrink-both"}, {"report-methods", true}, {"knot-spans"}});
+                         {"cell", true}, {"periodic"}, {"face-grading", true}, {"order", true}, {"method", true}, {"shrink-both"}, {"report-methods", true}, {"knot-spans"}});
         if (args.has("help")) {
             std::cout << kResolveHelp;
             return kExitOk;
@@ -340,6 +351,15 @@ int runResolve(int argc, char** argv, int first)
         options.mesh.caps = !args.has("no-caps");
         if (const auto cell = args.value("cell")) options.cell = parseCell(*cell, args.has("periodic"));
         else if (args.has("periodic")) throw UsageError("--periodic needs --cell");
+        if (const auto grading = args.value("face-grading")) {
+            if (!options.cell) throw UsageError("--face-grading needs --cell");
+            const std::vector<double> g = numberList(*grading);
+            if (g.size() != 2 || g[0] < 0.0 || g[1] < 1.0)
+                throw UsageError("--face-grading takes GROWTH,MAX: a growth >= 0 and a largest size >= 1 (times the tows' size), not '" +
+                                 *grading + "'");
+            options.cell->faceSizeGrowth = g[0];
+            options.cell->faceSizeMax = g[1];
+        }
         if (options.cell && !options.mesh.caps) throw UsageError("--cell needs closed tows: drop --no-caps");
         if (args.has("knot-spans") && options.method == ResolutionMethod::Shrink)
             throw UsageError("--knot-spans classifies the input tows' elements; with --method shrink the meshes are of the shrunk tows");

@@ -166,7 +166,7 @@ struct MeshSizePlan {
             area += a;
             perH2 += a / (towH[t] * towH[t]);
         }
-        if (cell) {  // the box's faces, meshed at the finest tow's size
+        if (cell) {  // the box's faces counted at the finest tow's size: an upper bound (graded coarser away from the caps)
             const double dx = cell->max.x - cell->min.x, dy = cell->max.y - cell->min.y, dz = cell->max.z - cell->min.z;
             const double a = 2.0 * (dx * dy + dy * dz + dz * dx);
             const double faceH = detail::cellFaceSize(*cell, towH);

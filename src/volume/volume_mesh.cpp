@@ -10,10 +10,10 @@
 #include <cstdint>
 #include <exception>
 #include <map>
-#include <set>
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <type_traits>
 
 #include "towgeom/error.hpp"
@@ -195,34 +195,51 @@ std::vector<std::size_t> shellsOf(const std::vector<std::array<std::size_t, 3>>&
         throw Error(ErrorCode::InvalidArgument, name + ": its surface mesh is not a closed 2-manifold (" + what +
                                                     "): volumes need closed surfaces (tows closed by their end caps, overlaps resolved)");
     };
-    std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> edges;
-    std::set<std::array<std::size_t, 3>> seen;
-    std::set<std::pair<std::size_t, std::size_t>> directed;
+    // Sorting, not maps: a tow has hundreds of thousands of triangles.
+    std::vector<std::array<std::size_t, 3>> keys(triangles.size());
     for (std::size_t k = 0; k < triangles.size(); ++k) {
-        auto key = triangles[k];
-        std::sort(key.begin(), key.end());
-        if (key[0] == key[1] || key[1] == key[2]) fail("a triangle repeats a node");
-        if (!seen.insert(key).second) fail("a triangle given twice");
-        for (int e = 0; e < 3; ++e) {
-            const std::size_t a = triangles[k][e], b = triangles[k][(e + 1) % 3];
-            if (!directed.insert({a, b}).second) fail("two triangles run along an edge the same way: inconsistent orientation");
-            edges[{std::min(a, b), std::max(a, b)}].push_back(k);
-        }
+        keys[k] = triangles[k];
+        std::sort(keys[k].begin(), keys[k].end());
+        if (keys[k][0] == keys[k][1] || keys[k][1] == keys[k][2]) fail("a triangle repeats a node");
     }
+    std::sort(keys.begin(), keys.end());
+    if (std::adjacent_find(keys.begin(), keys.end()) != keys.end()) fail("a triangle given twice");
+    struct HalfEdge {
+        std::size_t from, to, triangle;
+    };
+    std::vector<HalfEdge> half;
+    half.reserve(3 * triangles.size());
+    for (std::size_t k = 0; k < triangles.size(); ++k)
+        for (std::size_t e = 0; e < 3; ++e) half.push_back({triangles[k][e], triangles[k][(e + 1) % 3], k});
+    const auto directed = [](const HalfEdge& a, const HalfEdge& b) { return std::tie(a.from, a.to) < std::tie(b.from, b.to); };
+    std::sort(half.begin(), half.end(), directed);
+    for (std::size_t i = 1; i < half.size(); ++i)
+        if (half[i].from == half[i - 1].from && half[i].to == half[i - 1].to)
+            fail("two triangles run along an edge the same way: inconsistent orientation");
+    // Each edge used once each way: its two triangles join.
+    const auto undirected = [](const HalfEdge& h) { return std::make_pair(std::min(h.from, h.to), std::max(h.from, h.to)); };
+    std::sort(half.begin(), half.end(), [&](const HalfEdge& a, const HalfEdge& b) { return undirected(a) < undirected(b); });
     std::vector<std::size_t> parent(triangles.size());
     for (std::size_t k = 0; k < parent.size(); ++k) parent[k] = k;
     const auto root = [&](std::size_t k) {
         while (parent[k] != k) k = parent[k] = parent[parent[k]];
         return k;
     };
-    for (const auto& [edge, users] : edges) {
-        if (users.size() != 2) fail(std::to_string(users.size()) + " triangles at an edge");
-        parent[root(users[0])] = root(users[1]);
+    for (std::size_t i = 0; i < half.size();) {
+        std::size_t j = i + 1;
+        while (j < half.size() && undirected(half[j]) == undirected(half[i])) ++j;
+        if (j - i != 2) fail(std::to_string(j - i) + " triangles at an edge");
+        parent[root(half[i].triangle)] = root(half[i + 1].triangle);
+        i = j;
     }
     std::vector<std::size_t> shell(triangles.size());
-    std::map<std::size_t, std::size_t> number;
-    for (std::size_t k = 0; k < shell.size(); ++k) shell[k] = number.emplace(root(k), number.size()).first->second;
-    count = number.size();
+    std::vector<std::size_t> number(triangles.size(), SIZE_MAX);
+    count = 0;
+    for (std::size_t k = 0; k < shell.size(); ++k) {
+        std::size_t& n = number[root(k)];
+        if (n == SIZE_MAX) n = count++;
+        shell[k] = n;
+    }
     return shell;
 }
 
@@ -263,12 +280,14 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     std::vector<Surface> patches;
     std::vector<std::vector<int>> bounds(volumeTow.size());
     std::vector<char> classified(surfaces.nodes.size(), 0);
-    std::set<std::array<std::size_t, 3>> given;  // no triangle twice (regions sharing one)
+    // No triangle twice (regions sharing one): each given one's sorted nodes and who gave it,
+    // checked once all are in.
+    std::vector<std::pair<std::array<std::size_t, 3>, std::size_t>> given;
+    std::vector<std::string> giver;
     const auto add = [&](Surface& s, const std::array<std::size_t, 3>& tri) {
         auto key = tri;
         std::sort(key.begin(), key.end());
-        if (!given.insert(key).second)
-            throw Error(ErrorCode::InvalidArgument, "a surface triangle belongs to two regions or to a region and a tow's own surface");
+        given.emplace_back(key, giver.size() - 1);
         for (std::size_t n : tri) {
             if (!classified[n]) {
                 classified[n] = 1;
@@ -282,6 +301,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     std::vector<int> matrixBounds;
     for (std::size_t t = 0; t < towCount; ++t) {
         const TowMesh& m = surfaces.tows[t];
+        giver.push_back(nameOf(t));
         const auto onCell = [&](std::size_t k) {
             return (m.face[k] == TowFace::Start && m.cutAt[0]) || (m.face[k] == TowFace::End && m.cutAt[1]);
         };
@@ -299,6 +319,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     }
     if (matrix) {  // the box's faces minus the tows' caps, outward
         const CellMesh& cell = *surfaces.cell;
+        giver.push_back("the cell's faces");
         for (std::size_t f = 0; f < 6; ++f) {
             Surface s{static_cast<int>(patches.size()) + 1, {}, {}};
             for (std::size_t k = 0; k < cell.triangles.size(); ++k)
@@ -316,21 +337,23 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
             throw Error(ErrorCode::InvalidArgument, "region " + std::to_string(r + 1) + " names a tow out of range");
         const TowMesh& primary = surfaces.tows[reg.primary];
         const TowMesh& secondary = surfaces.tows[reg.secondary];
-        std::map<std::array<std::size_t, 3>, std::size_t> onSecondary;  // sorted nodes -> the secondary's triangle
+        giver.push_back("region " + std::to_string(r + 1));
+        std::vector<std::pair<std::array<std::size_t, 3>, std::size_t>> onSecondary;  // sorted nodes, the secondary's triangle
         for (std::size_t k = 0; k < secondary.triangles.size(); ++k)
             if (secondary.region[k] == static_cast<long>(r)) {
                 auto key = secondary.triangles[k];
                 std::sort(key.begin(), key.end());
-                onSecondary.emplace(key, k);
+                onSecondary.emplace_back(key, k);
             }
+        std::sort(onSecondary.begin(), onSecondary.end());
         std::map<std::pair<std::size_t, std::size_t>, Surface> parts;
         for (std::size_t k : reg.triangles) {
             if (k >= primary.triangles.size())
                 throw Error(ErrorCode::InvalidArgument, "region " + std::to_string(r + 1) + " names a triangle out of range");
             auto key = primary.triangles[k];
             std::sort(key.begin(), key.end());
-            const auto copy = onSecondary.find(key);
-            if (copy == onSecondary.end())
+            const auto copy = std::lower_bound(onSecondary.begin(), onSecondary.end(), std::make_pair(key, std::size_t(0)));
+            if (copy == onSecondary.end() || copy->first != key)
                 throw Error(ErrorCode::InvalidArgument, "region " + std::to_string(r + 1) + ": a triangle is not on its secondary tow's surface");
             Surface& part = parts[{shell[reg.primary][k], shell[reg.secondary][copy->second]}];
             add(part, primary.triangles[k]);
@@ -342,6 +365,11 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
             patches.push_back(std::move(part));
         }
     }
+    std::sort(given.begin(), given.end());
+    for (std::size_t i = 1; i < given.size(); ++i)
+        if (given[i].first == given[i - 1].first)
+            throw Error(ErrorCode::InvalidArgument, giver[std::max(given[i].second, given[i - 1].second)] +
+                                                        ": a surface triangle belongs to two regions or to a region and a tow's own surface");
     if (matrix) {
         // The matrix's boundary must be closed too: the box's faces and the tows' free surfaces.
         std::vector<std::array<std::size_t, 3>> boundary = surfaces.cell->triangles;
