@@ -8,6 +8,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -686,6 +687,20 @@ TEST_CASE("towgeom resolve --cell DIR/textile.json takes the generator's periodi
     CHECK(report.find("\"cell\":{\"min\":[0.5,0.5,") != std::string::npos);
     CHECK(report.find("\"max\":[4.5,4.5,") != std::string::npos);
     CHECK(report.find("\"periodic\":true") != std::string::npos);
+    CHECK(report.find("\"face_size_growth\":0.3,\"face_size_max\":4.0") != std::string::npos);
+    // --face-grading reaches the cell: every face at h gives more triangles than the default.
+    const Run uniform = cli("resolve '" + gen.string() + "'/*.stw --out '" + out.string() + "_uniform' --cell '" +
+                            (gen / "textile.json").string() + "' --mesh-size 0.2 --face-grading 0,1 --quiet");
+    REQUIRE(uniform.status == 0);
+    const std::string uniformReport = testing::slurp(out.string() + "_uniform/report.json");
+    CHECK(uniformReport.find("\"face_size_growth\":0.0,\"face_size_max\":1.0") != std::string::npos);
+    const auto faceTriangles = [](const std::string& json) {
+        const auto at = json.find("\"matrix_face_triangles\":");
+        return at == std::string::npos ? 0.0 : std::atof(json.c_str() + at + 24);
+    };
+    CHECK(faceTriangles(uniformReport) > 1.2 * faceTriangles(report));  // 4664 vs 3356 seen: the tows pass close to every face
+    CHECK(faceTriangles(report) > 0.0);
+    fs::remove_all(out.string() + "_uniform");
     // A 4 x 4 twill has no repeat + 2 yarns each way: no cell, and resolve says so, naming the file.
     const fs::path small = scratch("cell_gen_small");
     REQUIRE(cli("generate --weave twill --tows 4x4 --quiet --out '" + small.string() + "'").status == 0);

@@ -197,6 +197,17 @@ TEST_CASE("meshVolumes refuses a triangle given twice or turned over before Gmsh
         CHECK(e.code() == ErrorCode::InvalidArgument);
         CHECK(e.message().find("tow 'warp_0'") != std::string::npos);
     }
+    // One of region 1's triangles named twice by it: found once every surface is in, naming
+    // the region that gave it the second time.
+    TextileMesh again = res.mesh;
+    again.regions[0].triangles.push_back(again.regions[0].triangles.front());
+    try {
+        meshVolumes(again);
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::InvalidArgument);
+        CHECK(e.message().find("region 1: a surface triangle belongs to two regions") != std::string::npos);
+    }
 }
 
 TEST_CASE("meshVolumes refuses tows that are not closed", "[volume]")

@@ -1,11 +1,11 @@
 #include "cell/cell_faces.hpp"
 
-#include <CGAL/Delaunay_mesh_size_criteria_2.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
 #include <CGAL/Polygon_2_algorithms.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <string>
 #include <utility>
@@ -119,33 +119,45 @@ std::vector<std::size_t> rectangle(BoxEdges& edges, int a, int s)
     return out;
 }
 
-/// How a face's edge length grows away from the cuts (Cell::faceSizeGrowth, faceSizeMax).
+/// The tows' surface nodes, for the distance from a point of a face to the nearest tow.
+using NodeTraits = CGAL::Search_traits_3<K>;
+using NearestNode = CGAL::Orthogonal_k_neighbor_search<NodeTraits>;
+
+/// How a face's edge length grows away from the tows (Cell::faceSizeGrowth, faceSizeMax).
 struct FaceGrading {
-    double growth = 0.0;     ///< per unit of distance from the nearest cut
-    double maxFactor = 1.0;  ///< at most this times the tows' size
+    double growth = 0.0;                        ///< per unit of distance from the nearest tow
+    double maxFactor = 1.0;                     ///< at most this times the tows' size
+    const NearestNode::Tree* towNodes = nullptr;  ///< every tow's surface nodes (built)
 };
 
-/// The edge length wanted at a point of a face: the tows' size at their cuts (within each cut's
-/// bounding box, where its cap is), growing away from them.
+/// The edge length wanted at a point of a face: the tows' size within each cut's bounding box
+/// (where its cap is), elsewhere growing with the distance to the nearest tow node (in 3D, so a
+/// face is finer where a tow passes close to it without crossing it).
 class FaceSize {
 public:
-    FaceSize(const std::vector<std::vector<K::Point_2>>& cuts, double h, const FaceGrading& grading) : h_(h), grading_(grading)
+    FaceSize(const std::vector<std::vector<K::Point_2>>& cuts, int axis, double at, double h, const FaceGrading& grading)
+        : axis_(axis), at_(at), h_(h), grading_(grading)
     {
         for (const auto& cut : cuts) boxes_.push_back(CGAL::bbox_2(cut.begin(), cut.end()));
     }
     double operator()(const K::Point_2& p) const
     {
+        for (const CGAL::Bbox_2& b : boxes_)
+            if (p.x() >= b.xmin() && p.x() <= b.xmax() && p.y() >= b.ymin() && p.y() <= b.ymax()) return h_;
         const double hMax = h_ * grading_.maxFactor;
-        double nearest = std::numeric_limits<double>::infinity();
-        for (const CGAL::Bbox_2& b : boxes_) {
-            const double dx = std::max({b.xmin() - p.x(), 0.0, p.x() - b.xmax()}), dy = std::max({b.ymin() - p.y(), 0.0, p.y() - b.ymax()});
-            nearest = std::min(nearest, std::hypot(dx, dy));
-        }
-        return std::isfinite(nearest) ? std::min(hMax, h_ + grading_.growth * nearest) : hMax;
+        if (!grading_.towNodes || grading_.towNodes->empty() || hMax <= h_) return hMax;
+        const auto [b, c] = inPlane(axis_);
+        Point3 q;
+        coord(q, axis_) = at_;
+        coord(q, b) = p.x();
+        coord(q, c) = p.y();
+        const NearestNode nearest(*grading_.towNodes, K::Point_3(q.x, q.y, q.z), 1);
+        return std::min(hMax, h_ + grading_.growth * std::sqrt(nearest.begin()->second));
     }
 
 private:
-    double h_;
+    int axis_;
+    double at_, h_;
     FaceGrading grading_;
     std::vector<CGAL::Bbox_2> boxes_;
 };
@@ -198,7 +210,7 @@ FaceMesh meshFace(const std::vector<TowSurface>& tows, CellFace face, int a, dou
         throw Error(ErrorCode::InvalidArgument, std::string("two nodes coincide") + onFace + ": a tow's cut touches the box's edge");
     mesh2::markInside(cdt);
     const double angle = std::clamp(minAngle, 1.0, 30.0) * 3.14159265358979323846 / 180.0;
-    const FaceSize size(polygons, h, grading);
+    const FaceSize size(polygons, a, at, h, grading);
     refineKeepingConstraints(cdt, GradedSizeCriteria<CDT>(std::sin(angle) * std::sin(angle), [&size](const K::Point_2& p) { return size(p); }),
                              false);
     for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
@@ -257,8 +269,13 @@ CellFaces meshCellFaces(const std::vector<TowSurface>& tows, const Cell& cell, c
     CellFaces out;
     out.caps.resize(tows.size());
     out.mesh.box = cell;
+    // Every node so far is a tow's (the box's own come next).
+    std::vector<K::Point_3> towNodes;
+    for (const Point3& p : nodes) towNodes.emplace_back(p.x, p.y, p.z);
+    NearestNode::Tree towTree(towNodes.begin(), towNodes.end());
+    towTree.build();
+    const FaceGrading grading{cell.faceSizeGrowth, tows.empty() ? 1.0 : cell.faceSizeMax, &towTree};
     BoxEdges edges(cell, h, nodes);
-    const FaceGrading grading{cell.faceSizeGrowth, tows.empty() ? 1.0 : cell.faceSizeMax};
     const auto cutsOn = [&](CellFace face) {
         std::vector<FaceCut> list;
         for (std::size_t t = 0; t < tows.size(); ++t)

@@ -193,10 +193,11 @@ Options:
                      its min-face partner through reference nodes REF_X, REF_Y, REF_Z (their
                      displacements: the cell's stretch along each axis), *NSET CORNER
   --face-grading GROWTH,MAX
-                     with --cell: how the box's faces are meshed away from the tows' caps: the
-                     edge length grows from the finest tow's mesh size h at the caps by GROWTH
-                     per unit of distance, up to MAX * h (default 0.3,4); with --volume the
-                     matrix's tetrahedra grade with them. 0,1 meshes every face at h
+                     with --cell: how the box's faces are meshed away from the tows: the edge
+                     length grows from the finest tow's mesh size h (at the caps and wherever a
+                     tow is near) by GROWTH per unit of distance to the nearest tow, up to MAX * h
+                     (default 0.3,4); with --volume the matrix's tetrahedra grade with them.
+                     GROWTH 0 or MAX 1 meshes every face at h
   --allow-open       exit 0 even when an intersection curve is open (or, with --no-caps, a
                      loop crosses a tow's end cap): never resolved, still named on stderr;
                      other unresolved pairs still exit 3

@@ -198,6 +198,8 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
         j["cell"] = {{"min", {c.min.x, c.min.y, c.min.z}},
                      {"max", {c.max.x, c.max.y, c.max.z}},
                      {"periodic", c.periodic},
+                     {"face_size_growth", c.faceSizeGrowth},
+                     {"face_size_max", c.faceSizeMax},
                      {"volume", c.volume()},
                      {"tows_inside", kept},
                      {"matrix_face_triangles", mesh.cell->triangles.size()}};

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <memory>
 
+#include "core/parallel.hpp"
 #include "surface/fibre_directions.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
@@ -62,6 +63,7 @@ void buildTree(Centreline& c)
 {
     if (c.segments.empty()) return;
     c.tree = std::make_unique<Tree>(c.segments.cbegin(), c.segments.cend());
+    c.tree->build();
     c.tree->accelerate_distance_queries();
 }
 
@@ -84,24 +86,34 @@ Vector3 directionAt(const Centreline& c, const Point3& p)
 
 void addFibreDirections(VolumeMesh& volumes, const std::vector<TowSurface>& tows)
 {
-    std::vector<Centreline> lines(tows.size());
-    std::vector<char> made(tows.size(), 0);
-    std::vector<Vector3> out(volumes.tetrahedra.size());
+    std::vector<char> used(tows.size(), 0);
     for (std::size_t k = 0; k < volumes.tetrahedra.size(); ++k) {
         const std::size_t t = k < volumes.tow.size() ? volumes.tow[k] : tows.size() + 1;
         if (t == tows.size() && volumes.withMatrix) continue;  // the matrix: no fibres (the zero vector)
         if (t >= tows.size())
             throw Error(ErrorCode::InvalidArgument, "tetrahedron " + std::to_string(k) + " names tow " + std::to_string(t) + " of " +
                                                         std::to_string(tows.size()) + " given");
-        if (!made[t]) {
-            lines[t] = centrelineOf(tows[t]);
-            buildTree(lines[t]);
-            made[t] = 1;
-        }
-        Point3 centroid;
-        for (std::size_t n : volumes.tetrahedra[k]) centroid = centroid + volumes.nodes[n];
-        out[k] = directionAt(lines[t], 0.25 * centroid);
+        used[t] = 1;
     }
+    // The centrelines of the tows that have tetrahedra, each tree built before the queries
+    // (CGAL builds on first use otherwise), then the tetrahedra in blocks on every thread.
+    std::vector<Centreline> lines(tows.size());
+    detail::parallelFor(tows.size(), 0, [&](std::size_t t) {
+        if (!used[t]) return;
+        lines[t] = centrelineOf(tows[t]);
+        buildTree(lines[t]);
+    });
+    std::vector<Vector3> out(volumes.tetrahedra.size());
+    constexpr std::size_t kBlock = 4096;
+    detail::parallelFor((out.size() + kBlock - 1) / kBlock, 0, [&](std::size_t b) {
+        for (std::size_t k = b * kBlock; k < std::min(out.size(), (b + 1) * kBlock); ++k) {
+            const std::size_t t = volumes.tow[k];
+            if (t >= tows.size()) continue;  // the matrix
+            Point3 centroid;
+            for (std::size_t n : volumes.tetrahedra[k]) centroid = centroid + volumes.nodes[n];
+            out[k] = directionAt(lines[t], 0.25 * centroid);
+        }
+    });
     volumes.fibreDirection = std::move(out);
 }
 
