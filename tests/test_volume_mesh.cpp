@@ -446,7 +446,8 @@ TEST_CASE("a cell's faces are meshed at the tow's size at its caps and coarser a
 
 TEST_CASE("a cell's faces count in the triangle budget", "[cell]")
 {
-    // One tow in a box far larger than it: the faces, at the tow's mesh size, are most of the mesh.
+    // One tow in a box far larger than it: the faces, counted at the tow's mesh size (an upper
+    // bound: they are graded coarser), are most of the estimate.
     ResolveOptions o;
     o.mesh.edgeLength = 0.05;
     o.mesh.maxTriangles = 50000;  // the tow alone: about 24,000 estimated

@@ -28,8 +28,10 @@ struct MeshOptions {
     /// The most triangles the meshes may have, all tows together (about 250 bytes of memory
     /// each while meshing). resolveTextile() estimates the count before meshing (about 3 x the
     /// tows' area (end caps included) / (sqrt(3)/4 h^2), the mesher keeping every edge below h, plus about 20 x the
-    /// loops' length x (1/loopSpacing - 1/h) for a loop spacing below h) and refuses a mesh over
-    /// this with ErrorCode::TooLarge. Default 20 million (about 5 GB); must be at least 1.
+    /// loops' length x (1/loopSpacing - 1/h) for a loop spacing below h; with a Cell, its six
+    /// faces counted at the finest tow's h: an upper bound, they are graded coarser away from the
+    /// tows, Cell::faceSizeGrowth) and refuses a mesh over this with ErrorCode::TooLarge. Default
+    /// 20 million (about 5 GB); must be at least 1.
     std::size_t maxTriangles = 20000000;
     /// Close every tow by its two end caps (default): the polygon of the tube's end nodes at each
     /// end, meshed in its best-fit plane (Newell's normal; the end section's plane for planar
