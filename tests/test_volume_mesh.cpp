@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <array>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -391,7 +392,7 @@ TEST_CASE("a cell: tows wholly outside are dropped whatever the other faces' pla
 TEST_CASE("a cell's faces are meshed at the tow's size at its caps and coarser away from them, the matrix's tetrahedra with them", "[volume][cell]")
 {
     // One tow (weft_1, along y at x = 1) in a box much wider than it: the faces it crosses (y)
-    // graded from its caps, the others (no tow) coarse inside, graded from their edges.
+    // graded from its caps, the others coarse away from the tow.
     ResolveOptions o;
     o.mesh.edgeLength = 0.2;
     Cell cell;
@@ -442,6 +443,44 @@ TEST_CASE("a cell's faces are meshed at the tow's size at its caps and coarser a
     bad = cell;
     bad.faceSizeGrowth = -1.0;
     CHECK_THROWS_AS(bad.validate(), Error);
+    // Growth 0: every face at h whatever the largest size.
+    o.cell = cell;
+    o.cell->faceSizeGrowth = 0.0;
+    const ResolveResult flat = resolveTextile(one, o);
+    REQUIRE(flat.mesh.cell);
+    double longestFlat = 0.0;
+    for (const auto& t : flat.mesh.cell->triangles) longestFlat = std::max(longestFlat, longestEdge(flat, t));
+    CHECK(longestFlat <= 1.3 * h);
+    // The z faces close above and below the tow, which crosses only the y faces: where the tow
+    // passes close they are fine (the size grows with the distance to the nearest tow node in
+    // 3D), far from it coarse.
+    Cell close = cell;
+    close.min.z = -0.5;
+    close.max.z = 0.5;
+    o.cell = close;
+    const ResolveResult near = resolveTextile(one, o);
+    REQUIRE(near.mesh.cell);
+    const std::vector<Point3>& nodes = near.mesh.nodes;
+    std::vector<Point3> towNodes;
+    for (const auto& t : near.mesh.tows[0].triangles)
+        for (std::size_t n : t) towNodes.push_back(nodes[n]);
+    std::size_t above = 0, overSize = 0;
+    double longestZ = 0.0;
+    for (std::size_t k = 0; k < near.mesh.cell->triangles.size(); ++k) {
+        const CellFace f = near.mesh.cell->face[k];
+        if (f != CellFace::ZMin && f != CellFace::ZMax) continue;
+        const auto& t = near.mesh.cell->triangles[k];
+        const Point3 centre = (1.0 / 3.0) * (nodes[t[0]] + nodes[t[1]] + nodes[t[2]]);
+        double d = std::numeric_limits<double>::infinity();
+        for (const Point3& p : towNodes) d = std::min(d, distance(p, centre));
+        const double longest = longestEdge(near, t);
+        longestZ = std::max(longestZ, longest);
+        above += d < 0.5;
+        overSize += longest > 1.3 * (h + 0.3 * d);
+    }
+    CHECK(above > 20);          // triangles over the tow, within 0.5 of it
+    CHECK(overSize == 0);       // each within its size (measured to the cuts only, 4 h there)
+    CHECK(longestZ > 2.5 * h);  // coarse away from the tow
 }
 
 TEST_CASE("a cell's faces count in the triangle budget", "[cell]")

@@ -56,11 +56,13 @@ struct TOWGEOM_EXPORT Cell {
     double periodTolerance = 1e-3;
     /// How fast the edge length of the box's faces grows away from the tows: at a point of a
     /// face it is h + faceSizeGrowth * d, where h is the finest tow's mesh size and d the
-    /// distance (in 3D) to the nearest node of a tow's surface mesh, up to faceSizeMax * h; the
-    /// caps (within each cut's bounding box) are meshed at h. So a face is fine where a tow
-    /// crosses it or passes close to it, coarse elsewhere, and the matrix's tetrahedra follow
-    /// (Gmsh grades the volume from its boundary). faceSizeGrowth = 0 or faceSizeMax = 1 meshes
-    /// every face at h. The box's edges are divided at h.
+    /// distance (in 3D) to the nearest node of any tow's surface mesh (parts outside the cell
+    /// included; with periodic, the nearer of the point and its partner on the opposite face),
+    /// up to faceSizeMax * h; the caps (within each cut's bounding box) are meshed at h. So a
+    /// face is fine where a tow crosses it or passes close to it, coarse elsewhere, and the
+    /// matrix's tetrahedra follow (Gmsh grades the volume from its boundary).
+    /// faceSizeGrowth = 0 or faceSizeMax = 1 meshes every face at h. The box's edges are
+    /// divided at h.
     double faceSizeGrowth = 0.3;
     /// The box's faces' largest edge length, relative to the finest tow's mesh size (>= 1); see
     /// faceSizeGrowth.

@@ -103,8 +103,10 @@ TOWGEOM_EXPORT VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeM
 /// unit tangent along the tow, dS/du / |dS/du| (the direction TowMesh::fibreDirection gives the
 /// surface triangles); between two sections it is interpolated linearly along the segment and
 /// normalised. The matrix's tetrahedra (VolumeMesh::tow the number of tows) get the zero
-/// vector. @p tows are the tows @p volumes was made of, in the same order and units.
-/// @throws towgeom::Error (InvalidArgument) if a tetrahedron names a tow @p tows does not have.
-TOWGEOM_EXPORT void addFibreDirections(VolumeMesh& volumes, const std::vector<TowSurface>& tows);
+/// vector. @p tows are the tows @p volumes was made of, in the same order and units. Runs on
+/// @p threads threads (0: one per hardware thread); the result does not depend on them.
+/// @throws towgeom::Error (InvalidArgument) if a tetrahedron names a tow @p tows does not have
+/// (checked before any work).
+TOWGEOM_EXPORT void addFibreDirections(VolumeMesh& volumes, const std::vector<TowSurface>& tows, std::size_t threads = 0);
 
 TOWGEOM_END_NAMESPACE

@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -132,40 +134,51 @@ struct FaceGrading {
 
 /// The edge length wanted at a point of a face: the tows' size within each cut's bounding box
 /// (where its cap is), elsewhere growing with the distance to the nearest tow node (in 3D, so a
-/// face is finer where a tow passes close to it without crossing it).
+/// face is finer where a tow passes close to it without crossing it). A periodic cell's min face
+/// is also the max face: its point there counts too (@p planes: both coordinates).
 class FaceSize {
 public:
-    FaceSize(const std::vector<std::vector<K::Point_2>>& cuts, int axis, double at, double h, const FaceGrading& grading)
-        : axis_(axis), at_(at), h_(h), grading_(grading)
+    FaceSize(const std::vector<std::vector<K::Point_2>>& cuts, int axis, std::vector<double> planes, double h, const FaceGrading& grading)
+        : axis_(axis), planes_(std::move(planes)), h_(h), grading_(grading)
     {
         for (const auto& cut : cuts) boxes_.push_back(CGAL::bbox_2(cut.begin(), cut.end()));
     }
     double operator()(const K::Point_2& p) const
     {
+        const double hMax = h_ * grading_.maxFactor;
+        if (grading_.growth == 0.0 || hMax <= h_) return h_;
         for (const CGAL::Bbox_2& b : boxes_)
             if (p.x() >= b.xmin() && p.x() <= b.xmax() && p.y() >= b.ymin() && p.y() <= b.ymax()) return h_;
-        const double hMax = h_ * grading_.maxFactor;
-        if (!grading_.towNodes || grading_.towNodes->empty() || hMax <= h_) return hMax;
+        if (!grading_.towNodes || grading_.towNodes->empty()) return hMax;
         const auto [b, c] = inPlane(axis_);
-        Point3 q;
-        coord(q, axis_) = at_;
-        coord(q, b) = p.x();
-        coord(q, c) = p.y();
-        const NearestNode nearest(*grading_.towNodes, K::Point_3(q.x, q.y, q.z), 1);
-        return std::min(hMax, h_ + grading_.growth * std::sqrt(nearest.begin()->second));
+        double nearest2 = std::numeric_limits<double>::infinity();
+        for (const double at : planes_) {
+            Point3 q;
+            coord(q, axis_) = at;
+            coord(q, b) = p.x();
+            coord(q, c) = p.y();
+            const NearestNode search(*grading_.towNodes, K::Point_3(q.x, q.y, q.z), 1);
+            nearest2 = std::min(nearest2, search.begin()->second);
+        }
+        return std::min(hMax, h_ + grading_.growth * std::sqrt(nearest2));
     }
 
 private:
     int axis_;
-    double at_, h_;
+    std::vector<double> planes_;
+    double h_;
     FaceGrading grading_;
     std::vector<CGAL::Bbox_2> boxes_;
 };
 
 /// Meshes the face of axis @p a at coordinate @p at: the rectangle @p boundary with @p cuts inside.
+/// @p twin: with a periodic cell, the opposite face's coordinate (the mesh is also that face's).
 FaceMesh meshFace(const std::vector<TowSurface>& tows, CellFace face, int a, double at, std::vector<std::size_t> boundary,
-                  const std::vector<FaceCut>& cuts, double h, const FaceGrading& grading, double minAngle, std::vector<Point3>& nodes)
+                  const std::vector<FaceCut>& cuts, double h, const FaceGrading& grading, double minAngle, std::vector<Point3>& nodes,
+                  std::optional<double> twin = std::nullopt)
 {
+    std::vector<double> planes{at};
+    if (twin) planes.push_back(*twin);
     const auto [b, c] = inPlane(a);
     const auto flat = [&, b = b, c = c](std::size_t n) { return K::Point_2(coord(nodes[n], b), coord(nodes[n], c)); };
     std::vector<std::vector<K::Point_2>> polygons;
@@ -210,7 +223,7 @@ FaceMesh meshFace(const std::vector<TowSurface>& tows, CellFace face, int a, dou
         throw Error(ErrorCode::InvalidArgument, std::string("two nodes coincide") + onFace + ": a tow's cut touches the box's edge");
     mesh2::markInside(cdt);
     const double angle = std::clamp(minAngle, 1.0, 30.0) * 3.14159265358979323846 / 180.0;
-    const FaceSize size(polygons, a, at, h, grading);
+    const FaceSize size(polygons, a, planes, h, grading);
     refineKeepingConstraints(cdt, GradedSizeCriteria<CDT>(std::sin(angle) * std::sin(angle), [&size](const K::Point_2& p) { return size(p); }),
                              false);
     for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
@@ -307,7 +320,8 @@ CellFaces meshCellFaces(const std::vector<TowSurface>& tows, const Cell& cell, c
         const bool ccwAlongA = a != 1;
         const CellFace lo = static_cast<CellFace>(2 * a), hi = static_cast<CellFace>(2 * a + 1);
         const std::vector<FaceCut> onLo = cutsOn(lo), onHi = cutsOn(hi);
-        const FaceMesh mLo = meshFace(tows, lo, a, coord(cell.min, a), rectangle(edges, a, 0), onLo, h, grading, minAngle, nodes);
+        const FaceMesh mLo = meshFace(tows, lo, a, coord(cell.min, a), rectangle(edges, a, 0), onLo, h, grading, minAngle, nodes,
+                                      cell.periodic ? std::optional<double>(coord(cell.max, a)) : std::nullopt);
         add(lo, mLo, onLo, !ccwAlongA);
         if (!cell.periodic) {
             add(hi, meshFace(tows, hi, a, coord(cell.max, a), rectangle(edges, a, 1), onHi, h, grading, minAngle, nodes), onHi, ccwAlongA);

@@ -31,9 +31,10 @@ struct CellFaces {
 double cellFaceSize(const Cell& cell, const std::vector<double>& towH);
 
 /// Meshes the six faces of @p cell around the cuts @p cuts of @p tows at edge length @p h at the
-/// cuts, graded away from them as Cell::faceSizeGrowth and Cell::faceSizeMax say (uniformly at
-/// @p h when there is no tow), and smallest angle @p minAngle (degrees); new nodes are appended
-/// to @p nodes.
+/// cuts and near the tows, graded away from the tows as Cell::faceSizeGrowth and
+/// Cell::faceSizeMax say (uniformly at @p h when there is no tow), and smallest angle
+/// @p minAngle (degrees); new nodes are appended to @p nodes, which on entry holds the tows'
+/// nodes only (their distance grades the faces).
 /// @throws Error (InvalidArgument) naming the two tows whose cuts overlap on a face.
 CellFaces meshCellFaces(const std::vector<TowSurface>& tows, const Cell& cell, const CellCuts& cuts, double h, double minAngle,
                         std::vector<Point3>& nodes);

@@ -430,7 +430,7 @@ int runResolve(int argc, char** argv, int first)
             vo.threads = options.threads;
             vo.order = order;
             volumes = meshVolumes(mesh, vo);
-            addFibreDirections(volumes, tows);
+            addFibreDirections(volumes, tows, options.threads);
             printer.update("meshing the tows' volumes (Gmsh HXT)", 1, 1);
             volumeMs = msSince(t0);
         }

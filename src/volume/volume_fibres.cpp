@@ -84,7 +84,7 @@ Vector3 directionAt(const Centreline& c, const Point3& p)
 
 }  // namespace
 
-void addFibreDirections(VolumeMesh& volumes, const std::vector<TowSurface>& tows)
+void addFibreDirections(VolumeMesh& volumes, const std::vector<TowSurface>& tows, std::size_t threads)
 {
     std::vector<char> used(tows.size(), 0);
     for (std::size_t k = 0; k < volumes.tetrahedra.size(); ++k) {
@@ -97,15 +97,16 @@ void addFibreDirections(VolumeMesh& volumes, const std::vector<TowSurface>& tows
     }
     // The centrelines of the tows that have tetrahedra, each tree built before the queries
     // (CGAL builds on first use otherwise), then the tetrahedra in blocks on every thread.
+    threads = detail::workerCount(threads);
     std::vector<Centreline> lines(tows.size());
-    detail::parallelFor(tows.size(), 0, [&](std::size_t t) {
+    detail::parallelFor(tows.size(), threads, [&](std::size_t t) {
         if (!used[t]) return;
         lines[t] = centrelineOf(tows[t]);
         buildTree(lines[t]);
     });
     std::vector<Vector3> out(volumes.tetrahedra.size());
     constexpr std::size_t kBlock = 4096;
-    detail::parallelFor((out.size() + kBlock - 1) / kBlock, 0, [&](std::size_t b) {
+    detail::parallelFor((out.size() + kBlock - 1) / kBlock, threads, [&](std::size_t b) {
         for (std::size_t k = b * kBlock; k < std::min(out.size(), (b + 1) * kBlock); ++k) {
             const std::size_t t = volumes.tow[k];
             if (t >= tows.size()) continue;  // the matrix
