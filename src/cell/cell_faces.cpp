@@ -286,7 +286,7 @@ CellFaces meshCellFaces(const std::vector<TowSurface>& tows, const Cell& cell, c
     std::vector<K::Point_3> towNodes;
     for (const Point3& p : nodes) towNodes.emplace_back(p.x, p.y, p.z);
     NearestNode::Tree towTree(towNodes.begin(), towNodes.end());
-    towTree.build();
+    if (!towNodes.empty()) towTree.build();  // CGAL asserts on building an empty tree (no tow)
     const FaceGrading grading{cell.faceSizeGrowth, tows.empty() ? 1.0 : cell.faceSizeMax, &towTree};
     BoxEdges edges(cell, h, nodes);
     const auto cutsOn = [&](CellFace face) {
