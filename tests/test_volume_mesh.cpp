@@ -314,6 +314,49 @@ TEST_CASE("a periodic twill cell: tows clipped by the box, the matrix around the
     CHECK(leastAlong > 0.95);  // the crimp tilts them by at most a few degrees
 }
 
+TEST_CASE("a cell: only the tow pairs that may meet inside it are intersected, every loop inside it kept", "[cell]")
+{
+    // The 6x6 twill's 4x4 repeat: of its 36 crossings only the 16 inside matter. Every loop found
+    // has a point in the box (the pairs whose boxes overlap only outside it are not intersected),
+    // and none of the textile's loops with a point in the box is missing.
+    const std::vector<TowSurface> tows = testing::fittedTwill22SixBySix();
+    const Cell cell = testing::twill22RepeatCell();
+    const auto inBox = [&](const Point3& p) {
+        return p.x >= cell.min.x && p.x <= cell.max.x && p.y >= cell.min.y && p.y <= cell.max.y && p.z >= cell.min.z && p.z <= cell.max.z;
+    };
+    const auto reaches = [&](const IntersectionLoop& l) {
+        return std::any_of(l.points().begin(), l.points().end(), [&](const LoopPoint& q) { return inBox(q.point); });
+    };
+    const IntersectionReport all = intersectTows(tows);
+    std::size_t allInside = 0;
+    for (const IntersectionLoop& l : all.loops) allInside += reaches(l) ? 1 : 0;
+    CHECK(all.loops.size() == 36);
+    CHECK(allInside == 16);
+    ResolveOptions o;
+    o.mesh.edgeLength = 0.2;
+    o.cell = cell;
+    const ResolveResult res = resolveTextile(tows, o);
+    CHECK(res.intersections.loops.size() == 16);
+    for (const IntersectionLoop& l : res.intersections.loops) CHECK(reaches(l));
+    CHECK(res.intersections.pairsTested < all.pairsTested);
+    CHECK(res.skippedLoops.empty());
+    CHECK(res.mesh.regions.size() == 16);
+    // The meshes stop at the cuts as before: each tow inside closed by its caps, the outside ones empty.
+    std::size_t meshed = 0;
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        INFO(res.mesh.tows[t].name);
+        if (res.mesh.tows[t].triangles.empty()) continue;
+        ++meshed;
+        CHECK(res.tows[t].boundaryLoops == 0);
+        for (const auto& tri : res.mesh.tows[t].triangles)
+            for (std::size_t n : tri) {
+                const Point3& p = res.mesh.nodes[n];
+                CHECK((p.x >= cell.min.x - 1e-9 && p.x <= cell.max.x + 1e-9 && p.y >= cell.min.y - 1e-9 && p.y <= cell.max.y + 1e-9));
+            }
+    }
+    CHECK(meshed == 8);
+}
+
 TEST_CASE("a cell whose faces do not cut the tows across, away from crossings, is refused naming the tow", "[cell]")
 {
     const std::vector<TowSurface> four = twill({"warp_0", "warp_1", "weft_0", "weft_1"});

@@ -88,6 +88,17 @@ bool CellCuts::keeps(std::size_t tow, const UV& p) const
     return true;
 }
 
+std::optional<std::array<double, 2>> CellCuts::keptSpan(std::size_t tow, const ParameterRange& range) const
+{
+    if (outside[tow]) return std::nullopt;
+    std::array<double, 2> span{range.uMin, range.uMax};
+    const auto& [start, end] = cuts[tow];
+    if (start)
+        span[0] = std::min_element(start->uv.begin(), start->uv.end(), [](const UV& a, const UV& b) { return a.u < b.u; })->u;
+    if (end) span[1] = std::max_element(end->uv.begin(), end->uv.end(), [](const UV& a, const UV& b) { return a.u < b.u; })->u;
+    return span;
+}
+
 LoopConstraint CellCuts::constraint(std::size_t tow, int end, const ParameterRange& range) const
 {
     const TowCut& cut = *cuts[tow][static_cast<std::size_t>(end)];

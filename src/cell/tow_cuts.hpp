@@ -33,6 +33,9 @@ struct CellCuts {
     /// True when (@p p.u, @p p.v) of tow @p tow lies on its kept side of both of its cuts (the
     /// cut polylines interpolated linearly in (u,v)); false for a tow outside.
     bool keeps(std::size_t tow, const UV& p) const;
+    /// The u of tow @p tow that its cuts can keep: from its start cut's smallest u (else
+    /// @p range.uMin) to its end cut's largest (else @p range.uMax); none for a tow outside.
+    std::optional<std::array<double, 2>> keptSpan(std::size_t tow, const ParameterRange& range) const;
     /// Tow @p tow's cut at end @p end (0 its start, 1 its end) as a constraint of its mesh: from
     /// the station at vMin around to the same node at vMax.
     LoopConstraint constraint(std::size_t tow, int end, const ParameterRange& range) const;

@@ -19,8 +19,14 @@ Frame textileFrame(const std::vector<TowSurface>& tows);
 std::vector<TowSurface> towsInFrame(const std::vector<TowSurface>& tows, const Frame& frame);
 
 /// intersectTows() on tows already in a normalised frame, with options in the frame's units;
-/// the loops refer to those tows.
-IntersectionReport intersectInFrame(const std::vector<TowSurface>& tows, const IntersectionOptions& options);
+/// the loops refer to those tows. With @p region (in the frame), only pairs whose tows' boxes
+/// (TowSurface::boundingBox(), grown by the tolerance) overlap inside it are intersected: a loop
+/// of any other pair has no point in it.
+IntersectionReport intersectInFrame(const std::vector<TowSurface>& tows, const IntersectionOptions& options,
+                                    const BoundingBox* region = nullptr);
+
+/// intersectTows() in the user's frame, only the pairs that may meet inside @p region (user's units).
+IntersectionReport intersectTowsIn(const std::vector<TowSurface>& tows, const IntersectionOptions& options, const BoundingBox& region);
 
 /// @p report, computed on tows moved into @p frame, for the user's @p tows (loops mapped back).
 void reportToUser(IntersectionReport& report, const std::vector<TowSurface>& tows, const Frame& frame);

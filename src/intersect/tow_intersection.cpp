@@ -192,7 +192,7 @@ void checkIntersectionOptions(const IntersectionOptions& o)
         throw Error(ErrorCode::InvalidArgument, "relative chordal tolerance must be > 0 and finite");
 }
 
-IntersectionReport intersectInFrame(const std::vector<TowSurface>& tows, const IntersectionOptions& options)
+IntersectionReport intersectInFrame(const std::vector<TowSurface>& tows, const IntersectionOptions& options, const BoundingBox* region)
 {
     IntersectionReport report;
     report.towPairs = tows.size() * (tows.size() - (tows.empty() ? 0 : 1)) / 2;
@@ -207,6 +207,17 @@ IntersectionReport intersectInFrame(const std::vector<TowSurface>& tows, const I
         candidates = detail::broadPhase(tows, margin);
     } catch (const Standard_Failure& e) {
         throw Error(ErrorCode::Internal, std::string("OpenCASCADE failed in the broad phase: ") + e.GetMessageString());
+    }
+    if (region) {
+        // Every point of a loop lies on both tows, so in both boxes (which hold their surfaces).
+        const auto misses = [&](const detail::CandidatePair& c) {
+            BoundingBox both;
+            const BoundingBox a = tows[c.a].boundingBox(), b = tows[c.b].boundingBox();
+            both.min = {std::max(a.min.x, b.min.x) - margin, std::max(a.min.y, b.min.y) - margin, std::max(a.min.z, b.min.z) - margin};
+            both.max = {std::min(a.max.x, b.max.x) + margin, std::min(a.max.y, b.max.y) + margin, std::min(a.max.z, b.max.z) + margin};
+            return !both.overlaps(*region);
+        };
+        candidates.erase(std::remove_if(candidates.begin(), candidates.end(), misses), candidates.end());
     }
     report.timings.broadPhase = msSince(t0);
     report.pairsTested = candidates.size();
@@ -375,6 +386,18 @@ IntersectionReport intersectTows(const std::vector<TowSurface>& tows, const Inte
     // tolerances mean the same at every scale; loops go back to the user's tows and units.
     const detail::Frame frame = detail::textileFrame(tows);
     IntersectionReport report = detail::intersectInFrame(detail::towsInFrame(tows, frame), detail::optionsInFrame(options, frame));
+    detail::reportToUser(report, tows, frame);
+    return report;
+}
+
+IntersectionReport detail::intersectTowsIn(const std::vector<TowSurface>& tows, const IntersectionOptions& options, const BoundingBox& region)
+{
+    detail::checkIntersectionOptions(options);
+    const detail::Frame frame = detail::textileFrame(tows);
+    BoundingBox inFrame;
+    inFrame.add(frame.toFrame(region.min));
+    inFrame.add(frame.toFrame(region.max));
+    IntersectionReport report = detail::intersectInFrame(detail::towsInFrame(tows, frame), detail::optionsInFrame(options, frame), &inFrame);
     detail::reportToUser(report, tows, frame);
     return report;
 }

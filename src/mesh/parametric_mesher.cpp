@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -21,16 +22,17 @@ using mesh2::K;
 
 namespace {
 
-/// Stations along [0, length] at most @p h apart, plus @p extra ones (kept exactly); uniform
+/// Stations along [from, to] at most @p h apart, plus @p extra ones (kept exactly); uniform
 /// stations closer than h/3 to an extra one are dropped.
-std::vector<double> stations(double length, double h, const std::vector<double>& extra)
+std::vector<double> stations(double from, double to, double h, const std::vector<double>& extra)
 {
+    const double length = to - from;
     const std::size_t n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(length / h)));
     std::vector<double> s(extra);
     for (std::size_t k = 0; k <= n; ++k) {
         // The ends exactly (length * n / n need not be length): the rectangle's corners are
         // shared by two of its sides, and a gap there would let the outside into the domain.
-        const double x = k == n ? length : length * static_cast<double>(k) / static_cast<double>(n);
+        const double x = k == 0 ? from : k == n ? to : from + length * static_cast<double>(k) / static_cast<double>(n);
         const bool crowded = std::any_of(extra.begin(), extra.end(), [&](double e) { return std::abs(e - x) < h / 3.0; });
         if (!crowded || k == 0 || k == n) s.push_back(x);
     }
@@ -42,9 +44,11 @@ std::vector<double> stations(double length, double h, const std::vector<double>&
 /// After refinement, the faces still bad are those whose circumcentre would encroach on a
 /// constraint (the mesher would have split it). Asks for those splits in @p requests: the middle
 /// of a loop chord (a node of both tows) or of a seam edge (a node of both sides); the stations
-/// of the tow's two ends are fixed. Returns the number of bad faces.
-std::size_t requestSplits(const CDT& cdt, const Criteria& criteria, double ly, double uMin, double su,
-                          MeshRequests& requests)
+/// of the tow's two ends are fixed. Faces whose centroid lies beyond [@p keepFrom, @p keepTo]
+/// along x are not wanted (beyond a cell's cut): neither counted nor split for. Returns the
+/// number of bad faces.
+std::size_t requestSplits(const CDT& cdt, const Criteria& criteria, double ly, double uMin, double su, double keepFrom,
+                          double keepTo, MeshRequests& requests)
 {
     const Criteria::Is_bad isBad = criteria.is_bad_object();
     std::set<std::pair<long, long>> chords;
@@ -70,7 +74,9 @@ std::size_t requestSplits(const CDT& cdt, const Criteria& criteria, double ly, d
     std::vector<CDT::Edge> boundary;
     for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
         Criteria::Quality q;
-        if (!f->is_in_domain() || isBad(f, q) == CGAL::Mesh_2::NOT_BAD) continue;
+        if (!f->is_in_domain()) continue;
+        const double cx = (f->vertex(0)->point().x() + f->vertex(1)->point().x() + f->vertex(2)->point().x()) / 3.0;
+        if (cx < keepFrom || cx > keepTo || isBad(f, q) == CGAL::Mesh_2::NOT_BAD) continue;
         ++bad;
         // An angle between two constraints comes from the input (a loop meeting the seam at a
         // shallow angle, a sharp turn of a loop): splitting would not help.
@@ -128,6 +134,8 @@ struct ParametricMesher::Impl {
     ParameterRange range;
     ParameterScale scale;
     double su, sv;  // scaled length per unit u, v
+    double keep0, keep1;  // the wanted part of the scaled rectangle along u: everything, or sizes.uSpan
+    double x0, x1;        // the meshed part: [0, alongU], or sizes.uSpan widened by h (within it)
     SurfaceMetric metric;
     Criteria criteria;
     CDT cdt;
@@ -137,6 +145,9 @@ struct ParametricMesher::Impl {
     Impl(const TowSurface& s, const MeshSizes& z)
         : surface(s), sizes(z), range(s.parameterRange()), scale(parameterScale(s)),
           su(scale.alongU / (range.uMax - range.uMin)), sv(scale.aroundV / range.vPeriod()),
+          keep0(z.uSpan ? ((*z.uSpan)[0] - range.uMin) * su : -std::numeric_limits<double>::infinity()),
+          keep1(z.uSpan ? ((*z.uSpan)[1] - range.uMin) * su : std::numeric_limits<double>::infinity()),
+          x0(z.uSpan ? std::max(0.0, keep0 - z.edgeLength) : 0.0), x1(z.uSpan ? std::min(scale.alongU, keep1 + z.edgeLength) : scale.alongU),
           metric(s, su, sv, scale.alongU, scale.aroundV, z.edgeLength),
           criteria(shapeBound(z.minAngle), z.edgeLength, metric, localSize())
     {
@@ -185,7 +196,7 @@ struct ParametricMesher::Impl {
     void refine(MeshRequests& requests)
     {
         refineKeepingConstraints(cdt, criteria);
-        badFaces = requestSplits(cdt, criteria, scale.aroundV, range.uMin, su, requests);
+        badFaces = requestSplits(cdt, criteria, scale.aroundV, range.uMin, su, keep0, keep1, requests);
     }
 };
 
@@ -200,7 +211,7 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
                             MeshRequests& requests)
 {
     Impl& m = *impl_;
-    const double lx = m.scale.alongU, ly = m.scale.aroundV, h = m.sizes.edgeLength;
+    const double ly = m.scale.aroundV, h = m.sizes.edgeLength;
     m.cdt.clear();
     m.loopVertex.clear();
 
@@ -212,7 +223,7 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
     for (const LoopConstraint& c : constraints)
         for (std::size_t k = 0; k < c.uv.size(); ++k)
             if (c.uv[k].v == m.range.vMin || c.uv[k].v == m.range.vMax) seamX.push_back(m.toXY(c.uv[k]).x());
-    const std::vector<double> xs = stations(lx, 0.5 * h, seamX);
+    const std::vector<double> xs = stations(m.x0, m.x1, 0.5 * h, seamX);
     // Loop nodes on the tow's ends (a loop across an end cap) are stations of those ends, so
     // that no station lies a hair's breadth from one.
     std::vector<double> startY, endY;
@@ -221,7 +232,7 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
             if (p.u == m.range.uMin) startY.push_back(m.toXY(p).y());
             if (p.u == m.range.uMax) endY.push_back(m.toXY(p).y());
         }
-    const std::vector<double> ys = stations(ly, 0.5 * h, startY), ysEnd = stations(ly, 0.5 * h, endY);
+    const std::vector<double> ys = stations(0.0, ly, 0.5 * h, startY), ysEnd = stations(0.0, ly, 0.5 * h, endY);
     const auto polyline = [&](const std::vector<K::Point_2>& pts) {
         for (std::size_t k = 0; k + 1 < pts.size(); ++k) m.cdt.insert_constraint(pts[k], pts[k + 1]);
     };
@@ -230,8 +241,8 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
         bottom.emplace_back(x, 0.0);
         top.emplace_back(x, ly);
     }
-    for (double y : ys) left.emplace_back(0.0, y);
-    for (double y : ysEnd) right.emplace_back(lx, y);
+    for (double y : ys) left.emplace_back(xs.front(), y);
+    for (double y : ysEnd) right.emplace_back(xs.back(), y);
     polyline(bottom);
     polyline(top);
     polyline(left);
@@ -250,7 +261,7 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
             piece.push_back(piece.front());
         }
     }
-    insertStartingPoints(m.cdt, chords, m.metric, lx, ly, h);
+    insertStartingPoints(m.cdt, chords, m.metric, xs.front(), xs.back(), ly, h);
     m.refine(requests);
 }
 

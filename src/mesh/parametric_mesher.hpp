@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "mesh/loop_nodes.hpp"
@@ -24,6 +25,10 @@ struct MeshSizes {
     /// The target edge length at a (u,v), if given: the mesh is refined to it, taken within
     /// [h / 100, h] (the seam and end stations and the starting lattice stay at h).
     std::function<double(const UV&)> sizeAt;
+    /// If given, only u in [uSpan[0], uSpan[1]] is wanted (a cell keeps nothing beyond its
+    /// cuts): the mesh stops about h beyond it (within the tow's u range), where it has ends like
+    /// the tow's own; every constraint must lie in the span.
+    std::optional<std::array<double, 2>> uSpan;
 };
 
 /// One tow's mesh: its triangles over global nodes (loop nodes) and its own new nodes.

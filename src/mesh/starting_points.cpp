@@ -15,8 +15,9 @@ namespace {
 /// within h of here" queries.
 class NearbyIndex {
 public:
-    NearbyIndex(double lx, double ly, double h)
-        : cell_(h), nx_(static_cast<long>(std::ceil(lx / h)) + 1), ny_(static_cast<long>(std::ceil(ly / h)) + 1),
+    /// Bins of size @p h over [x0, x1] x [0, ly] (points beyond go to the nearest bin).
+    NearbyIndex(double x0, double x1, double ly, double h)
+        : x0_(x0), cell_(h), nx_(static_cast<long>(std::ceil((x1 - x0) / h)) + 1), ny_(static_cast<long>(std::ceil(ly / h)) + 1),
           segments_(static_cast<std::size_t>(nx_ * ny_)), points_(static_cast<std::size_t>(nx_ * ny_))
     {
     }
@@ -54,11 +55,11 @@ public:
 private:
     std::pair<long, long> binOf(double x, double y) const
     {
-        return {std::clamp(static_cast<long>(std::floor(x / cell_)), 0L, nx_ - 1),
+        return {std::clamp(static_cast<long>(std::floor((x - x0_) / cell_)), 0L, nx_ - 1),
                 std::clamp(static_cast<long>(std::floor(y / cell_)), 0L, ny_ - 1)};
     }
     std::size_t index(long i, long j) const { return static_cast<std::size_t>(i * ny_ + j); }
-    double cell_;
+    double x0_, cell_;
     long nx_, ny_;
     std::vector<std::vector<std::pair<K::Point_2, K::Point_2>>> segments_;
     std::vector<std::vector<K::Point_2>> points_;
@@ -110,13 +111,13 @@ std::vector<K::Point_2> apexes(const K::Point_2& a, const K::Point_2& b, const S
 }  // namespace
 
 void insertStartingPoints(CDT& cdt, const std::vector<std::vector<K::Point_2>>& chords, const SurfaceMetric& metric,
-                          double lx, double ly, double h)
+                          double x0, double x1, double ly, double h)
 {
-    NearbyIndex near(lx, ly, h);
+    NearbyIndex near(x0, x1, ly, h);
     for (auto e = cdt.constrained_edges_begin(); e != cdt.constrained_edges_end(); ++e)
         near.addSegment(e->first->vertex(CDT::cw(e->second))->point(), e->first->vertex(CDT::ccw(e->second))->point());
     const auto inside = [&](const K::Point_2& p, double margin) {
-        return p.x() > margin && p.x() < lx - margin && p.y() > margin && p.y() < ly - margin;
+        return p.x() > x0 + margin && p.x() < x1 - margin && p.y() > margin && p.y() < ly - margin;
     };
     std::vector<K::Point_2> points;
     for (const std::vector<K::Point_2>& loop : chords)
@@ -132,7 +133,7 @@ void insertStartingPoints(CDT& cdt, const std::vector<std::vector<K::Point_2>>& 
             }
     const double dy = h * std::sqrt(3.0) / 2.0;
     for (long j = 1; static_cast<double>(j) * dy < ly; ++j)
-        for (double x = (j % 2 ? 0.5 * h : h); x < lx; x += h) {
+        for (double x = x0 + (j % 2 ? 0.5 * h : h); x < x1; x += h) {
             const K::Point_2 p(x, static_cast<double>(j) * dy);
             if (near.clear(p, 0.7 * h, 0.6 * h)) points.push_back(p);
         }

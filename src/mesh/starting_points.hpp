@@ -10,7 +10,7 @@
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail::mesh2 {
 
-/// Inserts into @p cdt (its constraints already in, the rectangle [0,lx] x [0,ly]):
+/// Inserts into @p cdt (its constraints already in, the rectangle [x0,x1] x [0,ly]):
 /// - along every loop chord of @p chords (polylines, closed ones closed), the apexes on both
 ///   sides of the triangle on it that is equilateral in 3D (by @p metric), or isosceles with
 ///   sides 0.97 h when the chord is nearly h long already;
@@ -19,7 +19,7 @@ namespace detail::mesh2 {
 /// Points that would encroach on a constrained edge (the mesher would split it), or crowd one
 /// another, are left out.
 void insertStartingPoints(CDT& cdt, const std::vector<std::vector<K::Point_2>>& chords, const SurfaceMetric& metric,
-                          double lx, double ly, double h);
+                          double x0, double x1, double ly, double h);
 
 }  // namespace detail::mesh2
 TOWGEOM_END_NAMESPACE

@@ -144,7 +144,7 @@ SurfaceMesh ParametricMesher::mesh(const std::vector<MeshConstraint>& constraint
 
     std::vector<Point3> nodes;  // frame
     for (const UV& p : pieces.nodeUV) nodes.push_back(tow.point(p.u, p.v));
-    detail::MeshSizes sizes{h, options_.minAngle, {}};
+    detail::MeshSizes sizes{h, options_.minAngle, {}, {}};
     if (options_.size) sizes.sizeAt = [&](const UV& at) { return frame.lengthToFrame(options_.size(at)); };
     detail::ParametricMesher mesher(tow, sizes);
     detail::MeshRequests requests;

@@ -283,7 +283,13 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
     parallelFor(tows.size(), threads, [&](std::size_t t) {
         failures.run(t, [&] {
             throwIfCancelled(options.monitor);  // inside: TowFailures must pass it on
-            meshers[t] = std::make_unique<ParametricMesher>(tows[t], MeshSizes{towH[t], options.mesh.minAngle, {}});
+            MeshSizes sizes{towH[t], options.mesh.minAngle, {}, {}};
+            if (cuts) {
+                // Only what the cell keeps is meshed; nothing of a tow outside it.
+                sizes.uSpan = cuts->keptSpan(t, tows[t].parameterRange());
+                if (!sizes.uSpan) return;
+            }
+            meshers[t] = std::make_unique<ParametricMesher>(tows[t], sizes);
             meshers[t]->mesh(constraintsOf(t), {}, requests[t]);
         });
         if (!options.monitor) return;
@@ -326,7 +332,7 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
         }
         std::vector<std::size_t> busy;
         for (std::size_t t = 0; t < tows.size(); ++t)
-            if (!splits[t].empty() || !newSeamU[t].empty()) busy.push_back(t);
+            if (meshers[t] && (!splits[t].empty() || !newSeamU[t].empty())) busy.push_back(t);
         if (busy.empty()) break;
         for (std::size_t t : busy) requests[t] = {};
         parallelFor(busy.size(), threads, [&](std::size_t k) {
@@ -348,6 +354,7 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
     std::vector<std::vector<Vector3>> fibre(tows.size());  // per mesher triangle (then caps)
     parallelFor(tows.size(), threads, [&](std::size_t t) {
         throwIfCancelled(options.monitor);
+        if (!meshers[t]) return;  // outside the cell: no mesh
         meshes[t] = meshers[t]->result(kLocal);
         meshers[t].reset();
         if (cuts) keepInCell(meshes[t], *cuts, t);

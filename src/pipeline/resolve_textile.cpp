@@ -287,7 +287,8 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
     io.threads = options.threads;
     detail::sayStage(options, "intersecting " + std::to_string(tows.size()) + " tows");
     if (!io.monitor) io.monitor = options.monitor;
-    const IntersectionReport report = intersectTows(tows, io);
+    // With a cell, only the pairs that may overlap inside it (the others' loops would be dropped).
+    const IntersectionReport report = options.cell ? detail::intersectTowsIn(tows, io, BoundingBox{options.cell->min, options.cell->max}) : intersectTows(tows, io);
     const double intersectMs = msSince(t0);
     if (options.method == ResolutionMethod::Shrink) {
         ResolveResult result = resolveShrunk(tows, report, options);
