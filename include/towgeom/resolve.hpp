@@ -111,9 +111,11 @@ struct ResolveOptions {
     /// If set, every tow is clipped by this box (in the user's units) and TextileMesh::cell
     /// holds the matrix's part of the box's faces (see Cell). Needs MeshOptions::caps. Only
     /// what the box keeps is computed: resolveTextile(tows, options) intersects only the tow
-    /// pairs whose bounding boxes overlap inside it, and each tow is meshed only along the part
-    /// of its length between its cuts (nothing of a tow wholly outside), so a cell of a large
-    /// textile costs about what its own part of the textile does.
+    /// pairs whose bounding boxes overlap inside it (not with ResolutionMethod::Shrink), so
+    /// pairs outside give no loop and no finding (a nested or touching pair there is not
+    /// unresolved: it is not in the model), and each tow is meshed only along the part of its
+    /// length between its cuts (nothing of a tow wholly outside). MeshOptions::maxTriangles is
+    /// still checked against the whole tows.
     std::optional<Cell> cell;
     /// Progress reports of every stage (intersecting tow pairs, meshing, connecting regions)
     /// and cancellation (checked per tow pair, per tow and between stages); may be null. Not
@@ -305,9 +307,10 @@ TOWGEOM_EXPORT ResolveResult resolveTextile(const std::vector<TowSurface>& tows,
 /// of these @p tows (kept, filtered, or read back with readIntersectionReport()), so that one
 /// intersection serves several meshes, for a mesh-size study. resolveTextile(tows, options) is
 /// this with `intersectTows(tows, options.intersection)`, so both give the same meshes (with
-/// ResolveOptions::cell it intersects only the pairs that may meet inside the cell, whose loops
-/// are all that the cell's meshes use: the meshes are the same, the loops outside are absent
-/// from ResolveResult::intersections instead of skipped as outside the cell).
+/// ResolveOptions::cell, for Connect and Symmetric, it intersects only the pairs that may meet
+/// inside the cell, whose loops are all that the cell's meshes use: the meshes are the same;
+/// the other pairs' loops and findings are absent from ResolveResult::intersections and
+/// ResolveResult::unresolved instead of skipped as outside the cell or reported).
 /// ResolveOptions::intersection is used only for its checks here; ResolveResult::intersections
 /// is @p report and ResolveTimings::intersect is 0.
 ///

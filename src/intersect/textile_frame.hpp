@@ -20,8 +20,9 @@ std::vector<TowSurface> towsInFrame(const std::vector<TowSurface>& tows, const F
 
 /// intersectTows() on tows already in a normalised frame, with options in the frame's units;
 /// the loops refer to those tows. With @p region (in the frame), only pairs whose tows' boxes
-/// (TowSurface::boundingBox(), grown by the tolerance) overlap inside it are intersected: a loop
-/// of any other pair has no point in it.
+/// (TowSurface::boundingBox(), which also holds the end caps, grown by the tolerance) overlap
+/// inside it are intersected: a loop of any other pair has no point in it. The other pairs give
+/// no finding either.
 IntersectionReport intersectInFrame(const std::vector<TowSurface>& tows, const IntersectionOptions& options,
                                     const BoundingBox* region = nullptr);
 

@@ -209,12 +209,15 @@ IntersectionReport intersectInFrame(const std::vector<TowSurface>& tows, const I
         throw Error(ErrorCode::Internal, std::string("OpenCASCADE failed in the broad phase: ") + e.GetMessageString());
     }
     if (region) {
-        // Every point of a loop lies on both tows, so in both boxes (which hold their surfaces).
+        // Every point of a loop lies on both tows (within the tolerance), so in both boxes: a
+        // box holds its tube (the control points' hull) and its end caps, whose chart points are
+        // between the rim and its centre, the mean of rim points (surface/cap_chart.hpp).
         const auto misses = [&](const detail::CandidatePair& c) {
-            BoundingBox both;
             const BoundingBox a = tows[c.a].boundingBox(), b = tows[c.b].boundingBox();
-            both.min = {std::max(a.min.x, b.min.x) - margin, std::max(a.min.y, b.min.y) - margin, std::max(a.min.z, b.min.z) - margin};
-            both.max = {std::min(a.max.x, b.max.x) + margin, std::min(a.max.y, b.max.y) + margin, std::min(a.max.z, b.max.z) + margin};
+            const double grow = margin;
+            BoundingBox both;
+            both.min = {std::max(a.min.x, b.min.x) - grow, std::max(a.min.y, b.min.y) - grow, std::max(a.min.z, b.min.z) - grow};
+            both.max = {std::min(a.max.x, b.max.x) + grow, std::min(a.max.y, b.max.y) + grow, std::min(a.max.z, b.max.z) + grow};
             return !both.overlaps(*region);
         };
         candidates.erase(std::remove_if(candidates.begin(), candidates.end(), misses), candidates.end());

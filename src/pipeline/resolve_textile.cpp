@@ -287,8 +287,11 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
     io.threads = options.threads;
     detail::sayStage(options, "intersecting " + std::to_string(tows.size()) + " tows");
     if (!io.monitor) io.monitor = options.monitor;
-    // With a cell, only the pairs that may overlap inside it (the others' loops would be dropped).
-    const IntersectionReport report = options.cell ? detail::intersectTowsIn(tows, io, BoundingBox{options.cell->min, options.cell->max}) : intersectTows(tows, io);
+    // With a cell, only the pairs that may overlap inside it (the others' loops would be
+    // dropped); not for Shrink, whose shrinking of a pair reaches along the tows into the cell.
+    const bool inCell = options.cell && options.method != ResolutionMethod::Shrink;
+    const IntersectionReport report =
+        inCell ? detail::intersectTowsIn(tows, io, BoundingBox{options.cell->min, options.cell->max}) : intersectTows(tows, io);
     const double intersectMs = msSince(t0);
     if (options.method == ResolutionMethod::Shrink) {
         ResolveResult result = resolveShrunk(tows, report, options);
