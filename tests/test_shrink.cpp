@@ -113,3 +113,24 @@ TEST_CASE("shrink: a tow whose centre lies inside the other is not shrunk into i
     CHECK(r.figures[1].largestSectionChange() == 0.0);  // left as it was, not shrunk inside x
     CHECK(r.figures[1].volumeAfter == Approx(r.figures[1].volumeBefore).epsilon(1e-12));
 }
+
+TEST_CASE("shrink with a periodic cell: every pair shrunk, as with the whole textile's loops given", "[shrink][cell]")
+{
+    // A pair's shrink reaches along the tows, so pairs just outside the cell shape the tows inside
+    // it: resolveTextile(tows, options) must intersect them all (with only the cell's pairs the
+    // shrunk tows no longer repeat with the cell and the periodic cut is refused).
+    const std::vector<TowSurface> tows = testing::fittedTwill22SixBySix();
+    ResolveOptions o;
+    o.method = ResolutionMethod::Shrink;
+    o.mesh.edgeLength = 0.2;
+    o.cell = testing::twill22RepeatCell();
+    const ResolveResult direct = resolveTextile(tows, o);
+    const ResolveResult given = resolveTextile(tows, intersectTows(tows), o);
+    REQUIRE(direct.mesh.tows.size() == given.mesh.tows.size());
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        INFO(tows[t].name());
+        CHECK(direct.mesh.tows[t].triangles.size() == given.mesh.tows[t].triangles.size());
+        CHECK(direct.tows[t].volumeAfter == Approx(given.tows[t].volumeAfter).epsilon(1e-12));
+    }
+    CHECK(direct.unresolved.size() == given.unresolved.size());
+}
