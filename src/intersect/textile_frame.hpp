@@ -26,8 +26,10 @@ std::vector<TowSurface> towsInFrame(const std::vector<TowSurface>& tows, const F
 IntersectionReport intersectInFrame(const std::vector<TowSurface>& tows, const IntersectionOptions& options,
                                     const BoundingBox* region = nullptr);
 
-/// intersectTows() in the user's frame, only the pairs that may meet inside @p region (user's units).
-IntersectionReport intersectTowsIn(const std::vector<TowSurface>& tows, const IntersectionOptions& options, const BoundingBox& region);
+/// intersectTows() (which is this without @p region): the tows moved into their frame,
+/// intersected there, the loops given back in the user's units; with @p region (user's units),
+/// only the pairs that may meet inside it.
+IntersectionReport intersectTowsIn(const std::vector<TowSurface>& tows, const IntersectionOptions& options, const BoundingBox* region);
 
 /// @p report, computed on tows moved into @p frame, for the user's @p tows (loops mapped back).
 void reportToUser(IntersectionReport& report, const std::vector<TowSurface>& tows, const Frame& frame);

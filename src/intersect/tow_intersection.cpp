@@ -212,12 +212,13 @@ IntersectionReport intersectInFrame(const std::vector<TowSurface>& tows, const I
         // Every point of a loop lies on both tows (within the tolerance), so in both boxes: a
         // box holds its tube (the control points' hull) and its end caps, whose chart points are
         // between the rim and its centre, the mean of rim points (surface/cap_chart.hpp).
+        std::vector<BoundingBox> boxes;
+        for (const TowSurface& t : tows) boxes.push_back(t.boundingBox());
         const auto misses = [&](const detail::CandidatePair& c) {
-            const BoundingBox a = tows[c.a].boundingBox(), b = tows[c.b].boundingBox();
-            const double grow = margin;
+            const BoundingBox &a = boxes[c.a], &b = boxes[c.b];
             BoundingBox both;
-            both.min = {std::max(a.min.x, b.min.x) - grow, std::max(a.min.y, b.min.y) - grow, std::max(a.min.z, b.min.z) - grow};
-            both.max = {std::min(a.max.x, b.max.x) + grow, std::min(a.max.y, b.max.y) + grow, std::min(a.max.z, b.max.z) + grow};
+            both.min = {std::max(a.min.x, b.min.x) - margin, std::max(a.min.y, b.min.y) - margin, std::max(a.min.z, b.min.z) - margin};
+            both.max = {std::min(a.max.x, b.max.x) + margin, std::min(a.max.y, b.max.y) + margin, std::min(a.max.z, b.max.z) + margin};
             return !both.overlaps(*region);
         };
         candidates.erase(std::remove_if(candidates.begin(), candidates.end(), misses), candidates.end());
@@ -384,23 +385,22 @@ IntersectionLoop intersectionLoopFromPoints(const std::vector<TowSurface>& tows,
 
 IntersectionReport intersectTows(const std::vector<TowSurface>& tows, const IntersectionOptions& options)
 {
+    return detail::intersectTowsIn(tows, options, nullptr);
+}
+
+IntersectionReport detail::intersectTowsIn(const std::vector<TowSurface>& tows, const IntersectionOptions& options, const BoundingBox* region)
+{
     detail::checkIntersectionOptions(options);
     // Computed in a frame where the tows are about unit size, so that the kernel's absolute
     // tolerances mean the same at every scale; loops go back to the user's tows and units.
     const detail::Frame frame = detail::textileFrame(tows);
-    IntersectionReport report = detail::intersectInFrame(detail::towsInFrame(tows, frame), detail::optionsInFrame(options, frame));
-    detail::reportToUser(report, tows, frame);
-    return report;
-}
-
-IntersectionReport detail::intersectTowsIn(const std::vector<TowSurface>& tows, const IntersectionOptions& options, const BoundingBox& region)
-{
-    detail::checkIntersectionOptions(options);
-    const detail::Frame frame = detail::textileFrame(tows);
     BoundingBox inFrame;
-    inFrame.add(frame.toFrame(region.min));
-    inFrame.add(frame.toFrame(region.max));
-    IntersectionReport report = detail::intersectInFrame(detail::towsInFrame(tows, frame), detail::optionsInFrame(options, frame), &inFrame);
+    if (region) {
+        inFrame.add(frame.toFrame(region->min));
+        inFrame.add(frame.toFrame(region->max));
+    }
+    IntersectionReport report = detail::intersectInFrame(detail::towsInFrame(tows, frame), detail::optionsInFrame(options, frame),
+                                                         region ? &inFrame : nullptr);
     detail::reportToUser(report, tows, frame);
     return report;
 }

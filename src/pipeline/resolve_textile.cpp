@@ -290,8 +290,8 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
     // With a cell, only the pairs that may overlap inside it (the others' loops would be
     // dropped); not for Shrink, whose shrinking of a pair reaches along the tows into the cell.
     const bool inCell = options.cell && options.method != ResolutionMethod::Shrink;
-    const IntersectionReport report =
-        inCell ? detail::intersectTowsIn(tows, io, BoundingBox{options.cell->min, options.cell->max}) : intersectTows(tows, io);
+    const BoundingBox cellBox = options.cell ? BoundingBox{options.cell->min, options.cell->max} : BoundingBox{};
+    const IntersectionReport report = detail::intersectTowsIn(tows, io, inCell ? &cellBox : nullptr);
     const double intersectMs = msSince(t0);
     if (options.method == ResolutionMethod::Shrink) {
         ResolveResult result = resolveShrunk(tows, report, options);
