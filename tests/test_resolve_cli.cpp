@@ -1221,3 +1221,52 @@ TEST_CASE("towgeom resolve --volume --order 2: quadratic tetrahedra that Calculi
     CHECK(linear.err.find("--order needs --volume") != std::string::npos);
     fs::remove_all(out);
 }
+
+TEST_CASE("CalculiX solves a cell whose face cuts through an overlap: the giver's cap split, one structure, modulus between Reuss and Voigt", "[cli][resolve][volume][cell][ccx]")
+{
+    // Two tows side by side, b veering away from a: their overlap runs along them and the face
+    // x = 2 cuts through it (as between neighbouring tows of a pressed layer).
+    const fs::path dir = scratch("ccx_cell_overlap");
+    fs::create_directories(dir);
+    std::string files;
+    for (const TowStack& t : testing::tubesCrossingAt(-30.0, 0.5, 0.5, 0.3, 0.7)) {
+        std::ofstream o(dir / (t.name + ".stw"));
+        writeStack(o, t);
+        files += " '" + (dir / (t.name + ".stw")).string() + "'";
+    }
+    const fs::path out = dir / "out";
+    const Run r = cli("resolve" + files + " --out '" + out.string() + "' --cell -1,-4,-1,2,4,1.7 --volume --mesh-size 0.15 --formats inp --quiet");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const std::string report = testing::slurp(out / "report.json");
+    CHECK(report.find("\"unresolved\":[]") != std::string::npos);
+    const double f = jsonNumber(report, "tow_volume_fraction");
+    CHECK(f > 0.05);  // two tows of about 2.4 in a box of 64.8: observed 0.07
+    // A strain along x: XMIN held along x, XMAX moved, YMIN and ZMIN held normal to themselves.
+    const double lx = 3.0, area = 8.0 * 2.7, pull = 0.003, ef = 100000.0, em = 3000.0;
+    std::ofstream deck(out / "cell.inp");
+    deck << "*INCLUDE, INPUT=" << (out / "textile_volume.inp").string() << "\n*MATERIAL, NAME=FIBRE\n*ELASTIC\n" << ef
+         << ", 0.3\n*MATERIAL, NAME=RESIN\n*ELASTIC\n" << em << ", 0.3\n*SOLID SECTION, ELSET=TEXTILE, MATERIAL=FIBRE\n"
+         << "*SOLID SECTION, ELSET=MATRIX, MATERIAL=RESIN\n*STEP\n*STATIC\n*BOUNDARY\nXMIN, 1, 1, 0.\nYMIN, 2, 2, 0.\nZMIN, 3, 3, 0.\n"
+         << "XMAX, 1, 1, " << pull << "\n*NODE PRINT, NSET=XMAX, TOTALS=ONLY\nRF\n*NODE PRINT, NSET=NODES_a\nU\n*NODE PRINT, NSET=NODES_b\nU\n"
+         << "*END STEP\n";
+    deck.close();
+    INFO("ccx not found: install calculix-ccx (bash cmake/ensure_packages.sh, or apt-get install calculix-ccx)");
+    REQUIRE(std::system("command -v ccx >/dev/null 2>&1") == 0);
+    const Run c = testing::runShell("cd '" + out.string() + "' && ccx -i cell 2>&1");
+    INFO(c.out);
+    REQUIRE(c.status == 0);
+    CHECK(c.out.find("ERROR") == std::string::npos);
+    const std::string dat = testing::slurp(out / "cell.dat");
+    const double modulus = totalForceX(dat, "XMAX") / area / (pull / lx);
+    const auto [reuss, voigt] = reussVoigt(f, ef, em);
+    WARN("cell through an overlap: tow volume fraction " << f << ", modulus " << modulus << " between Reuss " << reuss << " and Voigt "
+                                                         << voigt);
+    CHECK(modulus > reuss);
+    CHECK(modulus < voigt);
+    for (const char* set : {"NODES_A", "NODES_B"}) {
+        INFO(set);
+        CHECK(largestDisplacement(dat, set, 0) > 1e-4);  // the pull is 3e-3 over the cell
+    }
+    fs::remove_all(dir);
+}

@@ -36,9 +36,18 @@ TOWGEOM_EXPORT const char* cellFaceName(CellFace face) noexcept;
 /// What is clipped: a tow that crosses a face's plane once along its length, all around (one cut
 /// around the tube), inside the face's rectangle. Refused (towgeom::Error, InvalidArgument,
 /// naming the tow (and the face) or the tow pair): a tow that crosses a plane more than once,
-/// runs along it or crosses an edge of the box; an intersection loop that crosses a face or
-/// comes within a quarter of the mesh size of one (two tows overlap where the face cuts them). Choose the cell's faces between crossings (for a woven
-/// unit cell: halfway between neighbouring yarns).
+/// runs along it or crosses an edge of the box. Choose the cell's faces between crossings (for
+/// a woven unit cell: halfway between neighbouring yarns).
+///
+/// A face may cut through an overlap of two tows that both cross it (tows pressed together
+/// along their length): where their intersection loop crosses the face, the point on both
+/// surfaces and on the face (Newton's method from the loop's chord) is a node of the loop, of
+/// both tows' cuts and of the face's mesh; the loop's part inside the box bounds the region the
+/// two share, and on the face the part of the lower-ranked tow's cut inside the higher-ranked
+/// tow's is that tow's cap (the lower-ranked tow's cap is its section minus the other's). This
+/// needs ResolutionMethod::Connect and a cell that is not periodic; refused otherwise (naming the
+/// two tows), and also for a loop that goes around a tow or across its end cap, or crosses the
+/// box near an edge.
 struct TOWGEOM_EXPORT Cell {
     Point3 min;  ///< lower corner
     Point3 max;  ///< upper corner

@@ -29,7 +29,10 @@ TOWGEOM_BEGIN_NAMESPACE
 /// Of the result, ResolveResult::tows gives each tow's own volume (volumeBefore = volumeAfter),
 /// area and mesh size; quality counts every triangle; skippedLoops and unresolved say which loops
 /// and pairs are not meshed as constraints (a tow whose mesh fails costs only the pairs with loops
-/// on it). ResolveOptions::primaryPatterns is not used here.
+/// on it). ResolveOptions::primaryPatterns is used only with a cell whose face cuts through an
+/// overlap (Cell): the part of the face inside both tows' cuts is a cap of both here, and
+/// connectRegions() takes it off the lower-ranked tow; such a loop is accepted only with
+/// ResolveOptions::method Connect.
 ///
 /// @code
 /// const towgeom::IntersectionReport loops = towgeom::intersectTows(tows);

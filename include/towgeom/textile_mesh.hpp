@@ -101,7 +101,9 @@ struct MeshedLoop {
     std::size_t loop = 0;            ///< index in the intersection report
     /// Its global nodes in loop order, the first not repeated (a node of both tows' meshes; after
     /// connectRegions(), the nodes some triangle still uses: where a higher-ranked third tow covers
-    /// part of the loop, its nodes there are gone).
+    /// part of the loop, its nodes there are gone). With a cell, only its nodes inside the box: a
+    /// loop across a face runs from node to node on the face through the box only (connectRegions()
+    /// follows IntersectionLoop::points() outside).
     std::vector<std::size_t> nodes;
 };
 

@@ -106,8 +106,9 @@ private:
 /// OpenCASCADE's boolean common: where the box cuts a tow its caps are the cut faces on the
 /// box's planes (the cell faces after clipping), and a tow wholly outside the box has no solid
 /// (BrepSolid::faces 0, volume 0; it is left out of the compound and the files). Faces the box
-/// does not cut stay as they are, so the shared faces (every region lies inside the cell: no
-/// loop crosses a face) stay shared. The matrix (the box minus the tows) is not built.
+/// does not cut stay as they are, so the shared faces stay shared. A loop that crosses a face
+/// of the cell (which resolveTextile() resolves in the meshes) is refused (Unsupported) here.
+/// The matrix (the box minus the tows) is not built.
 /// Each loop is one edge: a periodic B-spline through its points (chord-length parameters) with a
 /// periodic B-spline curve through its (u,v) points on each of the two surfaces, made same-
 /// parameter by OpenCASCADE. BrepSolid::valid says whether OpenCASCADE's checker accepts each

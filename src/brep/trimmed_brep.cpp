@@ -365,6 +365,16 @@ void checkSupported(const std::vector<TowSurface>& tows, const ResolveResult& r)
                                                        "not built as a trimmed B-rep yet");
         if (l.crossesCap(LoopSide::A) || l.crossesCap(LoopSide::B))
             throw Error(ErrorCode::Unsupported, what + " runs across an end cap: not built as a trimmed B-rep yet");
+        if (r.mesh.cell) {
+            const Cell& box = r.mesh.cell->box;
+            const auto inBox = [&](const LoopPoint& p) {
+                return p.point.x >= box.min.x && p.point.x <= box.max.x && p.point.y >= box.min.y && p.point.y <= box.max.y &&
+                       p.point.z >= box.min.z && p.point.z <= box.max.z;
+            };
+            const auto& points = l.points();
+            if (std::any_of(points.begin(), points.end(), inBox) && !std::all_of(points.begin(), points.end(), inBox))
+                throw Error(ErrorCode::Unsupported, what + " crosses a face of the cell: not built as a trimmed B-rep yet");
+        }
     };
     for (const ConnectedRegion& g : r.mesh.regions) {
         if (g.surface != SharedSurface::Primary) throw Error(ErrorCode::Internal, "a connect region off the primary's surface");

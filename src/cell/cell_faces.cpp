@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <optional>
@@ -96,6 +97,7 @@ struct FaceCut {
 struct FaceMesh {
     std::vector<Triangle> triangles;
     std::vector<long> cut;
+    std::vector<std::vector<long>> alsoIn;  ///< per triangle: the other cuts it lies in (lower-ranked tows')
     std::vector<std::size_t> boundary;  ///< the rectangle's nodes, counter-clockwise from (min, min)
 };
 
@@ -175,7 +177,7 @@ private:
 /// @p twin: with a periodic cell, the opposite face's coordinate (the mesh is also that face's).
 FaceMesh meshFace(const std::vector<TowSurface>& tows, CellFace face, int a, double at, std::vector<std::size_t> boundary,
                   const std::vector<FaceCut>& cuts, double h, const FaceGrading& grading, double minAngle, std::vector<Point3>& nodes,
-                  std::optional<double> twin = std::nullopt)
+                  const std::vector<std::size_t>& rank, std::optional<double> twin = std::nullopt)
 {
     std::vector<double> planes{at};
     if (twin) planes.push_back(*twin);
@@ -192,16 +194,30 @@ FaceMesh meshFace(const std::vector<TowSurface>& tows, CellFace face, int a, dou
             throw Error(ErrorCode::InvalidArgument, "tow '" + tows[cuts[i].tow].name() + "': its cut" + onFace +
                                                         " is no simple polygon at its mesh size: use a smaller mesh size");
         for (std::size_t j = 0; j < i; ++j) {
-            bool meet = CGAL::bounded_side_2(polygons[j].begin(), polygons[j].end(), polygons[i][0], K()) != CGAL::ON_UNBOUNDED_SIDE ||
-                        CGAL::bounded_side_2(polygons[i].begin(), polygons[i].end(), polygons[j][0], K()) != CGAL::ON_UNBOUNDED_SIDE;
+            // Cuts of two tows whose loop crosses the face share the crossings' nodes and cross
+            // only there.
+            std::vector<std::size_t> ni = *cuts[i].nodes, nj = *cuts[j].nodes;
+            std::sort(ni.begin(), ni.end());
+            std::sort(nj.begin(), nj.end());
+            std::vector<std::size_t> common;
+            std::set_intersection(ni.begin(), ni.end(), nj.begin(), nj.end(), std::back_inserter(common));
+            const bool crossed = common.size() >= 2;
+            bool meet = !crossed &&
+                        (CGAL::bounded_side_2(polygons[j].begin(), polygons[j].end(), polygons[i][0], K()) != CGAL::ON_UNBOUNDED_SIDE ||
+                         CGAL::bounded_side_2(polygons[i].begin(), polygons[i].end(), polygons[j][0], K()) != CGAL::ON_UNBOUNDED_SIDE);
+            const std::vector<std::size_t>&ci = *cuts[i].nodes, &cj = *cuts[j].nodes;
             for (std::size_t p = 0; p < polygons[i].size() && !meet; ++p)
-                for (std::size_t q = 0; q < polygons[j].size() && !meet; ++q)
-                    meet = CGAL::do_intersect(K::Segment_2(polygons[i][p], polygons[i][(p + 1) % polygons[i].size()]),
-                                              K::Segment_2(polygons[j][q], polygons[j][(q + 1) % polygons[j].size()]));
+                for (std::size_t q = 0; q < polygons[j].size() && !meet; ++q) {
+                    const std::size_t p1 = (p + 1) % ci.size(), q1 = (q + 1) % cj.size();
+                    if (ci[p] == cj[q] || ci[p] == cj[q1] || ci[p1] == cj[q] || ci[p1] == cj[q1]) continue;  // two chords from one crossing
+                    meet = CGAL::do_intersect(K::Segment_2(polygons[i][p], polygons[i][p1]), K::Segment_2(polygons[j][q], polygons[j][q1]));
+                }
             if (meet)
                 throw Error(ErrorCode::InvalidArgument,
                             "tows '" + tows[cuts[j].tow].name() + "' and '" + tows[cuts[i].tow].name() + "' overlap" + onFace +
-                                " (their cuts meet there): the cell's faces must pass where the tows do not touch");
+                                (crossed ? " (their cuts cross there away from where their loop crosses the face, at this mesh size)"
+                                         : " (their cuts meet there): the cell's faces must pass where the tows do not touch, or "
+                                           "through their overlaps where an intersection loop of the two crosses the face"));
         }
     }
     CDT cdt;
@@ -214,11 +230,13 @@ FaceMesh meshFace(const std::vector<TowSurface>& tows, CellFace face, int a, dou
         for (std::size_t k = 0; k < vs.size(); ++k) cdt.insert_constraint(vs[k], vs[(k + 1) % vs.size()]);
     };
     insertLoop(boundary);
-    std::size_t expected = boundary.size();
+    std::vector<std::size_t> distinct = boundary;  // nodes; a crossing is on two cuts
     for (const FaceCut& cut : cuts) {
         insertLoop(*cut.nodes);
-        expected += cut.nodes->size();
+        distinct.insert(distinct.end(), cut.nodes->begin(), cut.nodes->end());
     }
+    std::sort(distinct.begin(), distinct.end());
+    const std::size_t expected = static_cast<std::size_t>(std::unique(distinct.begin(), distinct.end()) - distinct.begin());
     if (cdt.number_of_vertices() != expected)
         throw Error(ErrorCode::InvalidArgument, std::string("two nodes coincide") + onFace + ": a tow's cut touches the box's edge");
     mesh2::markInside(cdt);
@@ -236,15 +254,18 @@ FaceMesh meshFace(const std::vector<TowSurface>& tows, CellFace face, int a, dou
         nodes.push_back(p);
     }
     // Each part between constraints labelled once: inside which cut, or none.
-    std::map<CDT::Face_handle, long> label;
+    std::map<CDT::Face_handle, std::vector<long>> label;  // the cuts it lies in, the highest-ranked tow's first
     FaceMesh out;
     out.boundary = std::move(boundary);
     for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
         if (!f->is_in_domain() || label.count(f)) continue;
         const K::Point_2 centre = CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
-        long in = -1;
-        for (std::size_t i = 0; i < polygons.size() && in < 0; ++i)
-            if (CGAL::bounded_side_2(polygons[i].begin(), polygons[i].end(), centre, K()) == CGAL::ON_BOUNDED_SIDE) in = static_cast<long>(i);
+        std::vector<long> in;
+        for (std::size_t i = 0; i < polygons.size(); ++i)
+            if (CGAL::bounded_side_2(polygons[i].begin(), polygons[i].end(), centre, K()) == CGAL::ON_BOUNDED_SIDE) in.push_back(static_cast<long>(i));
+        std::sort(in.begin(), in.end(), [&](long x, long y) {
+            return rank[cuts[static_cast<std::size_t>(x)].tow] < rank[cuts[static_cast<std::size_t>(y)].tow];
+        });
         std::vector<CDT::Face_handle> stack{f};
         label[f] = in;
         while (!stack.empty()) {
@@ -260,10 +281,11 @@ FaceMesh meshFace(const std::vector<TowSurface>& tows, CellFace face, int a, dou
     }
     for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
         if (!f->is_in_domain()) continue;
-        const long in = label.at(f);
+        const std::vector<long>& in = label.at(f);
         out.triangles.push_back({static_cast<std::size_t>(f->vertex(0)->info().node), static_cast<std::size_t>(f->vertex(1)->info().node),
                                  static_cast<std::size_t>(f->vertex(2)->info().node)});
-        out.cut.push_back(in);
+        out.cut.push_back(in.empty() ? -1 : in[0]);
+        out.alsoIn.emplace_back(in.empty() ? in.begin() : in.begin() + 1, in.end());
     }
     return out;
 }
@@ -277,7 +299,7 @@ double cellFaceSize(const Cell& cell, const std::vector<double>& towH)
 }
 
 CellFaces meshCellFaces(const std::vector<TowSurface>& tows, const Cell& cell, const CellCuts& cuts, double h, double minAngle,
-                        std::vector<Point3>& nodes)
+                        std::vector<Point3>& nodes, const std::vector<std::size_t>& rank)
 {
     CellFaces out;
     out.caps.resize(tows.size());
@@ -310,6 +332,12 @@ CellFaces meshCellFaces(const std::vector<TowSurface>& tows, const Cell& cell, c
             } else {
                 const FaceCut& cut = on[static_cast<std::size_t>(m.cut[k])];
                 out.caps[cut.tow][static_cast<std::size_t>(cut.end)].push_back(tri);
+                // Also a cap of each lower-ranked tow whose cut it lies in (until its regions
+                // are made: connectRegions() takes it off that tow, which gives way there).
+                for (const long other : m.alsoIn[k]) {
+                    const FaceCut& also = on[static_cast<std::size_t>(other)];
+                    out.caps[also.tow][static_cast<std::size_t>(also.end)].push_back(tri);
+                }
             }
         }
         std::sort(faceNodes.begin(), faceNodes.end());
@@ -320,11 +348,11 @@ CellFaces meshCellFaces(const std::vector<TowSurface>& tows, const Cell& cell, c
         const bool ccwAlongA = a != 1;
         const CellFace lo = static_cast<CellFace>(2 * a), hi = static_cast<CellFace>(2 * a + 1);
         const std::vector<FaceCut> onLo = cutsOn(lo), onHi = cutsOn(hi);
-        const FaceMesh mLo = meshFace(tows, lo, a, coord(cell.min, a), rectangle(edges, a, 0), onLo, h, grading, minAngle, nodes,
+        const FaceMesh mLo = meshFace(tows, lo, a, coord(cell.min, a), rectangle(edges, a, 0), onLo, h, grading, minAngle, nodes, rank,
                                       cell.periodic ? std::optional<double>(coord(cell.max, a)) : std::nullopt);
         add(lo, mLo, onLo, !ccwAlongA);
         if (!cell.periodic) {
-            add(hi, meshFace(tows, hi, a, coord(cell.max, a), rectangle(edges, a, 1), onHi, h, grading, minAngle, nodes), onHi, ccwAlongA);
+            add(hi, meshFace(tows, hi, a, coord(cell.max, a), rectangle(edges, a, 1), onHi, h, grading, minAngle, nodes, rank), onHi, ccwAlongA);
             continue;
         }
         // The min face moved onto the max face: its rectangle, its cuts (the same tow's, same
@@ -357,6 +385,8 @@ CellFaces meshCellFaces(const std::vector<TowSurface>& tows, const Cell& cell, c
             }
             mHi.triangles.push_back(tri);
             mHi.cut.push_back(mLo.cut[k] < 0 ? -1 : cutOf[static_cast<std::size_t>(mLo.cut[k])]);
+            mHi.alsoIn.emplace_back();
+            for (const long other : mLo.alsoIn[k]) mHi.alsoIn.back().push_back(cutOf[static_cast<std::size_t>(other)]);
         }
         add(hi, mHi, onHi, ccwAlongA);
         auto& pairs = out.mesh.periodicPairs[static_cast<std::size_t>(a)];

@@ -20,7 +20,8 @@ namespace detail {
 /// The box's faces as meshed.
 struct CellFaces {
     /// Per tow and end (0 start, 1 end), the cap on the face that cut it: triangles over global
-    /// nodes, outward from the tow (= from the box).
+    /// nodes, outward from the tow (= from the box). Where two tows' cuts overlap (a loop of
+    /// theirs crosses the face), the triangles inside both are in both caps.
     std::vector<std::array<std::vector<std::array<std::size_t, 3>>, 2>> caps;
     /// The box (@p cell as given), the matrix's triangles, every face's nodes, periodic pairs.
     CellMesh mesh;
@@ -34,10 +35,13 @@ double cellFaceSize(const Cell& cell, const std::vector<double>& towH);
 /// cuts and near the tows, graded away from the tows as Cell::faceSizeGrowth and
 /// Cell::faceSizeMax say (uniformly at @p h when there is no tow), and smallest angle
 /// @p minAngle (degrees); new nodes are appended to @p nodes, which on entry holds the tows'
-/// nodes only (their distance grades the faces).
-/// @throws Error (InvalidArgument) naming the two tows whose cuts overlap on a face.
+/// nodes only (their distance grades the faces). Two cuts may overlap on a face only where a
+/// loop of their tows crosses it: they then share the crossings' nodes, cross only there, and
+/// the part inside both is the cap of the tow ranked higher in @p rank (0 first), the rest of the
+/// other's cut that tow's cap.
+/// @throws Error (InvalidArgument) naming the two tows whose cuts overlap on a face otherwise.
 CellFaces meshCellFaces(const std::vector<TowSurface>& tows, const Cell& cell, const CellCuts& cuts, double h, double minAngle,
-                        std::vector<Point3>& nodes);
+                        std::vector<Point3>& nodes, const std::vector<std::size_t>& rank);
 
 }  // namespace detail
 TOWGEOM_END_NAMESPACE

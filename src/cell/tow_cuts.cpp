@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 #include <string>
 
@@ -75,14 +76,17 @@ bool CellCuts::keeps(std::size_t tow, const UV& p) const
     for (int end = 0; end < 2; ++end) {
         const auto& cut = cuts[tow][static_cast<std::size_t>(end)];
         if (!cut) continue;
-        const std::size_t n = cut->uv.size();
-        const double v0 = cut->uv[0].v, step = cut->uv[1].v - cut->uv[0].v, period = step * static_cast<double>(n);
-        double x = std::fmod(p.v - v0, period);
-        if (x < 0.0) x += period;
-        const double at = x / step;
-        const std::size_t k = std::min(static_cast<std::size_t>(at), n - 1);
-        const double f = at - static_cast<double>(k);
-        const double g = (1.0 - f) * cut->uv[k].u + f * cut->uv[(k + 1) % n].u;
+        // Stations in increasing v from the seam (uniform but for loops' crossings of the face).
+        const std::vector<UV>& st = cut->uv;
+        const std::size_t n = st.size();
+        const double v0 = st[0].v, period = vPeriod[tow];
+        double x = v0 + std::fmod(p.v - v0, period);
+        if (x < v0) x += period;
+        const std::size_t k = static_cast<std::size_t>(
+            std::upper_bound(st.begin(), st.end(), x, [](double v, const UV& q) { return v < q.v; }) - st.begin() - 1);
+        const double vk = st[k].v, vNext = k + 1 < n ? st[k + 1].v : v0 + period;
+        const double f = vNext > vk ? (x - vk) / (vNext - vk) : 0.0;
+        const double g = (1.0 - f) * st[k].u + f * st[(k + 1) % n].u;
         if (end == 0 ? !(p.u > g) : !(p.u < g)) return false;
     }
     return true;
@@ -110,12 +114,15 @@ LoopConstraint CellCuts::constraint(std::size_t tow, int end, const ParameterRan
     return c;
 }
 
-CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const std::vector<double>& towH, std::vector<Point3>& nodes)
+CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const std::vector<double>& towH, std::vector<Point3>& nodes,
+                 const std::vector<FaceCrossing>& loopCrossings)
 {
     CellCuts out;
     out.outside.assign(tows.size(), 0);
     out.cuts.resize(tows.size());
+    for (const TowSurface& t : tows) out.vPeriod.push_back(t.parameterRange().vPeriod());
     std::vector<std::vector<Point3>> positions(tows.size() * 2);  // per tow and end, the stations' points
+    std::vector<std::vector<std::size_t>> given(tows.size() * 2);  // per station: its node if it has one (a crossing's)
     for (std::size_t t = 0; t < tows.size(); ++t) {
         const TowSurface& tow = tows[t];
         const Handle(Geom_BSplineSurface)& s = tow.impl().surface;
@@ -261,10 +268,44 @@ CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const st
                                " leaves the face's rectangle: it crosses an edge of the cell's box (the cell's faces must cut each "
                                "tow across it, away from the box's edges)");
                 at.push_back(p);
+                given[2 * t + static_cast<std::size_t>(end)].push_back(SIZE_MAX);
             }
             out.cuts[t][static_cast<std::size_t>(end)] = std::move(cut);
         }
     }
+    // The loops' crossings of the faces: stations of both tows' cuts there.
+    if (!loopCrossings.empty() && cell.periodic)
+        throw Error(ErrorCode::InvalidArgument, "an intersection loop of tows '" + tows[loopCrossings[0].towA].name() + "' and '" +
+                                                    tows[loopCrossings[0].towB].name() + "' crosses the periodic cell's face " +
+                                                    cellFaceName(loopCrossings[0].face) +
+                                                    ": with a periodic cell, the faces must pass where the tows do not overlap");
+    for (const FaceCrossing& x : loopCrossings)
+        for (const std::size_t t : {x.towA, x.towB}) {
+            const UV uv = t == x.towA ? x.onA : x.onB;
+            int end = -1;
+            for (int e = 0; e < 2; ++e)
+                if (out.cuts[t][static_cast<std::size_t>(e)] && out.cuts[t][static_cast<std::size_t>(e)]->face == x.face) end = e;
+            if (end < 0)
+                throw Error(ErrorCode::InvalidArgument, "an intersection loop of tows '" + tows[x.towA].name() + "' and '" +
+                                                            tows[x.towB].name() + "' crosses the cell's face " + cellFaceName(x.face) +
+                                                            " where that face does not cut tow '" + tows[t].name() + "'");
+            TowCut& cut = *out.cuts[t][static_cast<std::size_t>(end)];
+            std::vector<Point3>& at = positions[2 * t + static_cast<std::size_t>(end)];
+            std::vector<std::size_t>& node = given[2 * t + static_cast<std::size_t>(end)];
+            // Stations (not the first, at the seam, nor another crossing) closer than a quarter
+            // of the tow's size to the crossing are left out: they would make slivers.
+            for (std::size_t k = cut.uv.size(); k-- > 1;)
+                if (node[k] == SIZE_MAX && distance(at[k], nodes[x.node]) < 0.25 * towH[t]) {
+                    cut.uv.erase(cut.uv.begin() + static_cast<long>(k));
+                    at.erase(at.begin() + static_cast<long>(k));
+                    node.erase(node.begin() + static_cast<long>(k));
+                }
+            const auto pos = std::upper_bound(cut.uv.begin() + 1, cut.uv.end(), uv.v, [](double v, const UV& q) { return v < q.v; });
+            const long k = pos - cut.uv.begin();
+            cut.uv.insert(pos, uv);
+            at.insert(at.begin() + k, nodes[x.node]);
+            node.insert(node.begin() + k, x.node);
+        }
     // A periodic cell: the max face's cut of a tow is its min face's cut moved by the box.
     if (cell.periodic) {
         for (std::size_t t = 0; t < tows.size(); ++t) {
@@ -311,9 +352,15 @@ CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const st
         for (int end = 0; end < 2; ++end) {
             auto& cut = out.cuts[t][static_cast<std::size_t>(end)];
             if (!cut) continue;
-            for (const Point3& p : positions[2 * t + static_cast<std::size_t>(end)]) {
+            const std::vector<Point3>& at = positions[2 * t + static_cast<std::size_t>(end)];
+            const std::vector<std::size_t>& node = given[2 * t + static_cast<std::size_t>(end)];
+            for (std::size_t k = 0; k < at.size(); ++k) {
+                if (node[k] != SIZE_MAX) {
+                    cut->nodes.push_back(node[k]);
+                    continue;
+                }
                 cut->nodes.push_back(nodes.size());
-                nodes.push_back(p);
+                nodes.push_back(at[k]);
             }
         }
     out.cutNode.assign(nodes.size(), 0);

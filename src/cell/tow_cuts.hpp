@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "cell/face_crossings.hpp"
 #include "mesh/loop_nodes.hpp"
 #include "towgeom/cell.hpp"
 #include "towgeom/tow_surface.hpp"
@@ -17,7 +18,9 @@
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
 
-/// One face's cut of one tow: a station per v_k = vMin + k * period / N, k = 0..N-1.
+/// One face's cut of one tow: a station per v_k = vMin + k * period / N, k = 0..N-1, and one at
+/// each point where an intersection loop of the tow crosses the face (FaceCrossing), in
+/// increasing v (a v_k station too close to such a point is left out, never the first).
 struct TowCut {
     CellFace face = CellFace::XMin;
     std::vector<UV> uv;               ///< (u_k, v_k) on the tow; u_k where the isoline meets the plane
@@ -29,6 +32,7 @@ struct CellCuts {
     std::vector<char> outside;                                  ///< per tow: nothing of it inside the cell
     std::vector<std::array<std::optional<TowCut>, 2>> cuts;     ///< per tow: across its start, across its end
     std::vector<char> cutNode;                                  ///< per global node: a node of some cut
+    std::vector<double> vPeriod;                                ///< per tow: its v period
 
     /// True when (@p p.u, @p p.v) of tow @p tow lies on its kept side of both of its cuts (the
     /// cut polylines interpolated linearly in (u,v)); false for a tow outside.
@@ -47,8 +51,11 @@ struct CellCuts {
 /// @throws Error (InvalidArgument) naming the tow and face where a face's plane does not cut a
 /// tow once all around inside the face's rectangle, two faces cut one end (the tow crosses an
 /// edge of the box), or (periodic) a tow is cut by one face of a pair only or its moved cut
-/// lies farther than Cell::periodTolerance from its surface.
-CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const std::vector<double>& towH, std::vector<Point3>& nodes);
+/// lies farther than Cell::periodTolerance from its surface. The points @p loopCrossings (nodes
+/// already in @p nodes) become stations of both their tows' cuts by their face (not with a
+/// periodic cell: InvalidArgument).
+CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const std::vector<double>& towH, std::vector<Point3>& nodes,
+                 const std::vector<FaceCrossing>& loopCrossings = {});
 
 }  // namespace detail
 TOWGEOM_END_NAMESPACE

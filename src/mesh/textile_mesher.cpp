@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "cell/cell_faces.hpp"
+#include "cell/face_crossings.hpp"
 #include "cell/tow_cuts.hpp"
 #include "core/parallel.hpp"
 #include "intersect/intersection_loop_data.hpp"
@@ -23,6 +24,7 @@
 #include "mesh/parametric_mesher.hpp"
 #include "mesh/textile_mesh_finish.hpp"
 #include "region/meeting_loops.hpp"
+#include "region/tow_ranks.hpp"
 #include "region/triple_points.hpp"
 #include "region/winding_loops.hpp"
 #include "surface/fibre_directions.hpp"
@@ -185,6 +187,20 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
         for (const auto& [to, list] : winding)
             if (!windingBands(tows, to.first, to.second, loops, list)) disagree.insert(std::minmax(to.first, to.second));
     }
+    // A loop across a face of the cell is resolved inside it: with the rank rule (the caps on the
+    // face split by it too), a cell that does not repeat, a loop on the tubes that winds around
+    // neither tow.
+    const auto acrossRefusal = [&](const IntersectionLoop& l) -> std::string {
+        if (options.cell->periodic) return "with a periodic cell, the faces must pass where the tows do not overlap";
+        if (options.method != ResolutionMethod::Connect)
+            return "only the rank rule (--method connect) resolves a loop across a face; the others need the faces to pass "
+                   "where the tows do not overlap";
+        if (l.windsAround(LoopSide::A) || l.windsAround(LoopSide::B) || l.crossesCap(LoopSide::A) || l.crossesCap(LoopSide::B))
+            return "a loop that goes around a tow or across its end cap must not cross the cell's faces";
+        return {};
+    };
+    const auto acrossSupported = [&](const IntersectionLoop& l) { return acrossRefusal(l).empty(); };
+    std::set<std::size_t> acrossLoops;  // loops across a face, resolved inside the cell
     std::vector<SharedLoop> shared;
     std::set<TowPair> loopFailed;
     for (std::size_t i = 0; i < loops.size(); ++i) {
@@ -194,11 +210,11 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
         if (inCell == CellSide::Outside)
             result.skippedLoops.push_back({i, Why::OutsideCell, "the loop of tows '" + l.surfaceA().name() + "' and '" +
                                                                     l.surfaceB().name() + "' lies outside the cell"});
-        else if (inCell == CellSide::Across && l.closed())
+        else if (inCell == CellSide::Across && l.closed() && !acrossSupported(l))
             throw Error(ErrorCode::InvalidArgument, "an intersection loop of tows '" + l.surfaceA().name() + "' and '" +
                                                         l.surfaceB().name() +
                                                         "' crosses (or comes within a quarter of the mesh size of) a face of the "
-                                                        "cell: the cell's faces must pass where the tows do not overlap");
+                                                        "cell: " + acrossRefusal(l));
         else if (!l.closed())
             result.skippedLoops.push_back({i, Why::OpenCurve, "open curve: " + l.openReason()});
         else if ((l.crossesCap(LoopSide::A) || l.crossesCap(LoopSide::B)) && !options.mesh.caps)
@@ -217,6 +233,7 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
                                                "' go around one of them but do not cut it into bands alternately inside and "
                                                "outside the other"});
         else if (!excluded.count({l.towA(), l.towB()})) {
+            if (inCell == CellSide::Across) acrossLoops.insert(i);
             try {
                 shared.push_back(shareLoopNodes(l, i, spacingOf(l), nodes));
             } catch (const Error& e) {
@@ -245,9 +262,30 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
         }
     const TripleJoin triples = joinAtTriplePoints(tows, loops, shared, nodes);
     dropMeetingLoops(tows, loops, shared, triples.crossing, result.unresolved);
+    // A loop across a face of the cell must be resolved: else the two tows' caps overlap there.
+    if (!acrossLoops.empty()) {
+        std::set<std::size_t> kept;
+        for (const SharedLoop& s : shared) kept.insert(s.loop);
+        for (const std::size_t i : acrossLoops)
+            if (!kept.count(i)) {
+                const IntersectionLoop& l = loops[i];
+                std::string why;
+                for (const UnresolvedPair& u : result.unresolved)
+                    if (std::minmax(u.towA, u.towB) == std::minmax(l.towA(), l.towB())) why = ": " + u.message;
+                throw Error(ErrorCode::InvalidArgument, "an intersection loop of tows '" + l.surfaceA().name() + "' and '" +
+                                                            l.surfaceB().name() + "' crosses a face of the cell but could not be resolved" +
+                                                            why + " (the cell's faces must not cut an unresolved overlap)");
+            }
+    }
+    // Where loops cross the cell's faces: nodes of the loops and of both tows' cuts there.
+    std::vector<FaceCrossing> crossings;
+    const auto isAcross = [&](std::size_t k) { return acrossLoops.count(shared[k].loop) > 0; };
+    if (!acrossLoops.empty())
+        crossings = crossCellFaces(
+            tows, loops, shared, isAcross, [&](std::size_t k) { return 0.25 * spacingOf(loops[shared[k].loop]); }, *options.cell, nodes);
     // The cell's cuts of the tows: constraints of their meshes, the parts beyond them dropped.
     std::optional<CellCuts> cuts;
-    if (options.cell) cuts = cutTows(tows, *options.cell, towH, nodes);
+    if (options.cell) cuts = cutTows(tows, *options.cell, towH, nodes, crossings);
     constexpr std::size_t kLocal = std::size_t(1) << 60;  // marks a tow's own new nodes
     // Round 1 meshes every tow. Refinement never splits a constraint; where a triangle needs a
     // split of a loop chord or seam edge to meet the bounds, the split becomes an exact loop node
@@ -268,6 +306,7 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
             for (const LoopSide side : {LoopSide::A, LoopSide::B})
                 if ((side == LoopSide::A ? l.towA() : l.towB()) == t) {
                     auto pieces = constraintsOn(s, l, side);
+                    if (acrossLoops.count(s.loop)) pieces = clipLoopPieces(pieces, *options.cell, nodes);  // its pieces inside
                     c.insert(c.end(), pieces.begin(), pieces.end());
                 }
         }
@@ -423,7 +462,8 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
     // The cell's faces meshed around the cuts: each tow's caps there, the rest the matrix's.
     std::optional<CellFaces> cellFaces;
     if (cuts) {
-        cellFaces = meshCellFaces(tows, *options.cell, *cuts, cellFaceSize(*options.cell, towH), options.mesh.minAngle, nodes);
+        cellFaces = meshCellFaces(tows, *options.cell, *cuts, cellFaceSize(*options.cell, towH), options.mesh.minAngle, nodes,
+                                  towRanks(tows, options.primaryPatterns));
         for (std::size_t t = 0; t < tows.size(); ++t)
             for (int end = 0; end < 2; ++end) {
                 const auto& cut = cuts->cuts[t][static_cast<std::size_t>(end)];
@@ -515,6 +555,15 @@ ResolveResult meshTowsInFrame(const std::vector<TowSurface>& tows, const std::ve
                                               tows[p.first].name() + "' and '" + tows[p.second].name() + "': " + f.message});
                 }
             }
+            // A pair whose loop crosses a face of the cell cannot be left out (its caps would
+            // overlap there).
+            if (options.cell)
+                for (const TowMeshFailure& f : failed.tows)
+                    for (const IntersectionLoop& l : report.loops)
+                        if (f.pairs.count(std::minmax(l.towA(), l.towB())) && l.closed() &&
+                            cellSide(l, *options.cell, 0.25 * std::min(towH[l.towA()], towH[l.towB()])) == CellSide::Across)
+                            throw Error(ErrorCode::InvalidArgument, "tow '" + tows[f.tow].name() + "' could not be meshed with the loops of tows '" +
+                                                                        l.surfaceA().name() + "' and '" + l.surfaceB().name() + "', one of which crosses a face of the cell (the cell's faces must not cut an unresolved overlap): " + f.message);
             sayStage(options, "meshing again without the " + std::to_string(left) + " tow pair(s) on " +
                                           std::to_string(failed.tows.size()) + " tow(s) whose mesh failed");
             continue;

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -92,6 +93,38 @@ bool segmentsCross(const std::array<double, 2>& a, const std::array<double, 2>& 
     return orient(a, b, c) * orient(a, b, d) < 0 && orient(c, d, a) * orient(c, d, b) < 0;
 }
 
+/// True when @p p lies on a face's plane of @p cell (exactly: the cell's nodes are put there).
+bool onCellFace(const CellMesh& cell, const Point3& p)
+{
+    const Cell& b = cell.box;
+    return p.x == b.min.x || p.x == b.max.x || p.y == b.min.y || p.y == b.max.y || p.z == b.min.z || p.z == b.max.z;
+}
+
+/// The points of @p loop outside the box of @p cell between its consecutive meshed nodes @p from
+/// and @p to when both lie on the box's faces (where the loop leaves the cell and comes back), in
+/// loop order; none otherwise.
+std::vector<LoopPoint> outsideStretch(const IntersectionLoop& loop, const CellMesh& cell, const std::vector<Point3>& nodes,
+                                      std::size_t from, std::size_t to)
+{
+    if (from >= nodes.size() || to >= nodes.size() || !onCellFace(cell, nodes[from]) || !onCellFace(cell, nodes[to])) return {};
+    const std::vector<LoopPoint>& points = loop.points();
+    const auto nearest = [&](const Point3& p) {
+        std::size_t best = 0;
+        for (std::size_t k = 1; k < points.size(); ++k)
+            if (distance(points[k].point, p) < distance(points[best].point, p)) best = k;
+        return best;
+    };
+    const Cell& b = cell.box;
+    const auto outside = [&](const Point3& p) {
+        return p.x < b.min.x || p.x > b.max.x || p.y < b.min.y || p.y > b.max.y || p.z < b.min.z || p.z > b.max.z;
+    };
+    std::vector<LoopPoint> out;
+    const std::size_t n = points.size(), first = nearest(nodes[from]), last = nearest(nodes[to]);
+    for (std::size_t k = (first + 1) % n; k != last; k = (k + 1) % n)
+        if (outside(points[k].point)) out.push_back(points[k]);
+    return out;
+}
+
 /// Checks that @p meshed is meshTows()'s result for @p tows (sizes, names, node indices, the
 /// loops' and side triangles' nodes with (u,v) on their tows) and reads it in (u,v).
 Parametric readParametric(const std::vector<TowSurface>& tows, const ResolveResult& meshed)
@@ -134,11 +167,21 @@ Parametric readParametric(const std::vector<TowSurface>& tows, const ResolveResu
             const std::size_t t = side == LoopSide::A ? l.towA() : l.towB();
             const double period = tows[t].parameterRange().vPeriod();
             std::vector<UV>& out = both[side == LoopSide::A ? 0 : 1];
-            for (std::size_t node : ml.nodes) {
+            for (std::size_t i = 0; i < ml.nodes.size(); ++i) {
+                const std::size_t node = ml.nodes[i];
                 const UV* uv = node < n ? uvOf(mesh.tows[t].parameters, node) : nullptr;
                 if (!uv) throw badInput("a loop node has no (u,v) on tow '" + tows[t].name() + "'", where);
                 // v unwrapped along the loop: a loop around the tow ends one period on.
                 out.push_back({uv->u, out.empty() ? uv->v : vNear(uv->v, out.back().v, period)});
+                // Where a loop leaves the cell (its nodes outside are not in the meshes), its
+                // polygon follows the loop's own points outside: a straight chord in (u,v) between
+                // the two nodes on the face would cut across the tow's kept part where its cut is
+                // curved.
+                if (mesh.cell)
+                    for (const LoopPoint& q : outsideStretch(l, *mesh.cell, mesh.nodes, node, ml.nodes[(i + 1) % ml.nodes.size()])) {
+                        const UV& w = side == LoopSide::A ? q.onA : q.onB;
+                        out.push_back({w.u, vNear(w.v, out.back().v, period)});
+                    }
             }
         }
     }
@@ -267,6 +310,18 @@ MidSurfaceMove midSurfaceMove(const std::vector<TowSurface>& tows, const std::ve
     if (crowded) {
         m.note = "a third tow overlaps the region of " + pair + " (loop " + std::to_string(r.loop) + "): the rank rule decides there";
         return m;
+    }
+    // A region cut by a face of the cell: its nodes on the face must stay there (the face's caps
+    // are split by the primary's surface).
+    if (in.cell) {
+        const Cell& box = in.cell->box;
+        for (const std::size_t n : r.nodes) {
+            const Point3& q = in.nodes[n];
+            if (q.x == box.min.x || q.x == box.max.x || q.y == box.min.y || q.y == box.max.y || q.z == box.min.z || q.z == box.max.z) {
+                m.note = "the region of " + pair + " (loop " + std::to_string(r.loop) + ") reaches a face of the cell: the rank rule decides there";
+                return m;
+            }
+        }
     }
     // Its own loops (the loop and its holes) must not wind around a tow or cross a cap, and no
     // other loop may have a node in it.
@@ -406,6 +461,42 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
         hits[t].insert(hits[t].end(), capHits.begin(), capHits.end());
         std::sort(hits[t].begin(), hits[t].end());
     });
+    // On a cell's face, a cap triangle of two tows' caps lies inside both (a loop of theirs
+    // crosses the face): the lower-ranked tow gives way there, inside the pair's loop with the
+    // node nearest to it.
+    if (in.cell) {
+        std::map<Triangle, std::vector<std::pair<std::size_t, std::size_t>>> onFace;  // sorted nodes -> (tow, triangle)
+        for (std::size_t t = 0; t < tows.size(); ++t) {
+            const TowMesh& m = in.tows[t];
+            for (std::size_t k = 0; k < m.triangles.size(); ++k) {
+                if (!((m.face[k] == TowFace::Start && m.cutAt[0]) || (m.face[k] == TowFace::End && m.cutAt[1]))) continue;
+                Triangle key = m.triangles[k];
+                std::sort(key.begin(), key.end());
+                onFace[key].emplace_back(t, k);
+            }
+        }
+        for (const auto& [key, list] : onFace) {
+            if (list.size() < 2) continue;
+            const Point3 centre = (1.0 / 3.0) * (N[key[0]] + N[key[1]] + N[key[2]]);
+            for (const auto& [t, tri] : list)
+                for (const auto& on : list) {
+                    const std::size_t o = on.first;
+                    if (o == t || rank[o] > rank[t]) continue;
+                    std::size_t best = shared.size();
+                    double nearest = std::numeric_limits<double>::infinity();
+                    for (std::size_t k = 0; k < shared.size(); ++k) {
+                        if (pairOf(k) != TowPair(std::min(t, o), std::max(t, o))) continue;
+                        for (const std::size_t n : in.loops[shared[k]].nodes)
+                            if (const double d = distance(N[n], centre); d < nearest) {
+                                nearest = d;
+                                best = k;
+                            }
+                    }
+                    if (best < shared.size()) hits[t].emplace_back(tri, best);
+                }
+        }
+        for (auto& h : hits) std::sort(h.begin(), h.end());
+    }
     // One region per loop of even depth, primary the higher-ranked tow of its pair.
     std::vector<long> regionOf(shared.size(), -1);
     std::vector<ConnectedRegion> regions;

@@ -89,6 +89,24 @@ TowStack tubeAlongX(double r, double length, double dx, double dy, double dz, co
     return t;
 }
 
+std::vector<TowStack> tubesCrossingAt(double degrees, double width, double height, double lift, double side)
+{
+    const double angle = degrees * 3.14159265358979323846 / 180.0;
+    Sampling s;
+    s.sections = 51;
+    s.points = 32;
+    TowStack a = ellipticalTube(width, height, 10.0, s, "a");
+    TowStack b = ellipticalTube(width, height, 10.0, s, "b");
+    for (auto& section : a.sections)
+        for (Point3& p : section) p.x -= 3.0;
+    for (auto& section : b.sections)
+        for (Point3& p : section) {
+            const double x = p.x - 3.0 - 2.0;
+            p = {2.0 + x * std::cos(angle) - p.y * std::sin(angle), x * std::sin(angle) + p.y * std::cos(angle) + side, p.z + lift};
+        }
+    return {a, b};
+}
+
 TowStack tubeAlongY(double r, double d, const Sampling& s, const std::string& name)
 {
     TowStack t = ellipticalTube(r, r, 4.0, s, name);

@@ -57,6 +57,12 @@ TowStack tubeAlongY(double r, double d, const Sampling& s = {}, const std::strin
 TowStack dentedTubeAlongY(double r, double d, double dent, double width, const Sampling& s = {},
                           const std::string& name = "dented", double widthX = 0.0);
 
+/// Two elliptical tubes "a" and "b" (semi-axes @p width along y and @p height along z, 51
+/// sections x 32 points over a length of 10): a along x from x = -3 on the x axis; b the same
+/// turned by @p degrees about the vertical through (2, 0), then moved by @p side along y and
+/// @p lift along z. Where their sections overlap they interpenetrate along their length.
+std::vector<TowStack> tubesCrossingAt(double degrees, double width, double height, double lift, double side = 0.0);
+
 /// A point of a racetrack of width w and height h (semicircular ends of radius h/2), centred at
 /// the origin, at arc length s from (w/2, 0) counter-clockwise; s is taken modulo the perimeter.
 Point2 racetrackPoint(double w, double h, double s);
