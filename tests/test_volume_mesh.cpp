@@ -686,3 +686,52 @@ TEST_CASE("a cell face through an overlap: the loop crosses it, both tows cut th
         CHECK(m.find("rank rule") != std::string::npos);
     }
 }
+
+TEST_CASE("a cell through tows overlapping along their whole length: the loop across their end caps is cut by two faces", "[volume][cell]")
+{
+    // Two parallel round tubes (r 0.5) 0.8 apart side by side, a from x = -3 to 7, b from -2.5
+    // to 6.5 (its ends inside a): their loop runs along both and across b's end caps; the box
+    // (x from -1 to 2) keeps the middle: four crossings, two pieces of the loop, the overlap a
+    // lens of known area times 3.
+    const double r = 0.5, d = 0.8;
+    testing::Sampling s;
+    s.sections = 51;
+    s.points = 32;
+    const std::vector<TowSurface> tows =
+        testing::fitAll({testing::tubeAlongX(r, 10.0, -3.0, 0.0, 0.0, s, "a"), testing::tubeAlongX(r, 9.0, -2.5, d, 0.0, s, "b")});
+    ResolveOptions o;
+    o.mesh.edgeLength = 0.1;
+    Cell cell;
+    cell.min = {-1.0, -1.0, -1.0};
+    cell.max = {2.0, 2.0, 1.0};
+    o.cell = cell;
+    const ResolveResult res = resolveTextile(tows, o);
+    REQUIRE(res.intersections.loops.size() == 1);
+    CHECK(res.intersections.loops[0].closed());
+    CHECK((res.intersections.loops[0].crossesCap(LoopSide::A) || res.intersections.loops[0].crossesCap(LoopSide::B)));
+    CHECK(res.unresolved.empty());
+    REQUIRE(res.mesh.regions.size() == 1);
+    const double pi = 3.14159265358979323846;
+    const double lens = 2.0 * r * r * std::acos(d / (2.0 * r)) - 0.5 * d * std::sqrt(4.0 * r * r - d * d);
+    for (std::size_t t = 0; t < 2; ++t) {
+        INFO(res.mesh.tows[t].name);
+        CHECK(res.tows[t].boundaryLoops == 0);
+        CHECK(res.tows[t].pieces == 1);
+        const double cap = t == 0 ? pi * r * r : pi * r * r - lens;
+        CHECK(res.tows[t].volumeAfter == Approx(3.0 * cap).epsilon(0.015));
+        std::array<double, 2> area{};  // on xmin (outward -x), on xmax (+x)
+        const TowMesh& m = res.mesh.tows[t];
+        for (std::size_t k = 0; k < m.triangles.size(); ++k) {
+            if (m.face[k] == TowFace::Side) continue;
+            const auto& tri = m.triangles[k];
+            const Point3 &p = res.mesh.nodes[tri[0]], &q = res.mesh.nodes[tri[1]], &w = res.mesh.nodes[tri[2]];
+            const double nx = 0.5 * cross(q - p, w - p).x;
+            area[m.face[k] == TowFace::Start ? 0 : 1] += m.face[k] == TowFace::Start ? -nx : nx;
+        }
+        CHECK(area[0] == Approx(cap).epsilon(0.015));
+        CHECK(area[1] == Approx(cap).epsilon(0.015));
+    }
+    CHECK(res.mesh.regions[0].volumeRemoved == Approx(3.0 * lens).epsilon(0.03));
+    CHECK(testing::crossingPairsBetweenTows(res.mesh) == 0);
+    checkConforming(res, meshVolumes(res.mesh));
+}

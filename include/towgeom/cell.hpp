@@ -46,8 +46,9 @@ TOWGEOM_EXPORT const char* cellFaceName(CellFace face) noexcept;
 /// two share, and on the face the part of the lower-ranked tow's cut inside the higher-ranked
 /// tow's is that tow's cap (the lower-ranked tow's cap is its section minus the other's). This
 /// needs ResolutionMethod::Connect and a cell that is not periodic; refused otherwise (naming the
-/// two tows), and also for a loop that goes around a tow or across its end cap, or crosses the
-/// box near an edge.
+/// two tows), and also for a loop that goes around a tow, runs across an end cap inside the box
+/// (across the caps outside it is fine: tows overlapping along their whole length), or crosses
+/// the box near an edge.
 struct TOWGEOM_EXPORT Cell {
     Point3 min;  ///< lower corner
     Point3 max;  ///< upper corner

@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "cell/cell_faces.hpp"
+#include "cell/axis.hpp"
 #include "cell/face_crossings.hpp"
 #include "cell/tow_cuts.hpp"
 #include "core/parallel.hpp"
@@ -54,20 +55,41 @@ UV inPeriod(UV p, const ParameterRange& r)
 /// Where an intersection loop lies with respect to a cell.
 enum class CellSide { Inside, Outside, Across };
 
-/// Inside: every point of @p loop at least @p margin inside @p cell; Outside: every point beyond
-/// one of its faces; else Across.
+/// True when the segment [@p p, @p q] meets the box of @p cell (slabs).
+bool segmentMeetsBox(const Point3& p, const Point3& q, const Cell& cell)
+{
+    double t0 = 0.0, t1 = 1.0;
+    for (int a = 0; a < 3; ++a) {
+        const double from = coord(p, a), d = coord(q, a) - from, lo = coord(cell.min, a), hi = coord(cell.max, a);
+        if (d == 0.0) {
+            if (from < lo || from > hi) return false;
+            continue;
+        }
+        double s0 = (lo - from) / d, s1 = (hi - from) / d;
+        if (s0 > s1) std::swap(s0, s1);
+        t0 = std::max(t0, s0);
+        t1 = std::min(t1, s1);
+        if (t0 > t1) return false;
+    }
+    return true;
+}
+
+/// Inside: every point of @p loop at least @p margin inside @p cell; Outside: no chord of it meets
+/// the box (a straight loop's points may be few, all outside, their chords through the box);
+/// else Across.
 CellSide cellSide(const IntersectionLoop& loop, const Cell& cell, double margin)
 {
-    bool allIn = true, allOut = true;
-    for (const LoopPoint& p : loop.points()) {
-        const Point3& q = p.point;
+    bool allIn = true, meets = false;
+    const std::vector<LoopPoint>& points = loop.points();
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        const Point3& q = points[k].point;
         const bool in = q.x >= cell.min.x + margin && q.x <= cell.max.x - margin && q.y >= cell.min.y + margin &&
                         q.y <= cell.max.y - margin && q.z >= cell.min.z + margin && q.z <= cell.max.z - margin;
-        const bool out = q.x < cell.min.x || q.x > cell.max.x || q.y < cell.min.y || q.y > cell.max.y || q.z < cell.min.z || q.z > cell.max.z;
         allIn = allIn && in;
-        allOut = allOut && out;
+        if (!meets && (k + 1 < points.size() || loop.closed()))
+            meets = segmentMeetsBox(q, points[(k + 1) % points.size()].point, cell);
     }
-    return allIn ? CellSide::Inside : allOut ? CellSide::Outside : CellSide::Across;
+    return allIn ? CellSide::Inside : !meets ? CellSide::Outside : CellSide::Across;
 }
 
 /// Drops the triangles of tow @p t's mesh that lie beyond the cell's cuts (by their (u,v) centroids).
@@ -195,8 +217,14 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
         if (options.method != ResolutionMethod::Connect)
             return "only the rank rule (--method connect) resolves a loop across a face; the others need the faces to pass "
                    "where the tows do not overlap";
-        if (l.windsAround(LoopSide::A) || l.windsAround(LoopSide::B) || l.crossesCap(LoopSide::A) || l.crossesCap(LoopSide::B))
-            return "a loop that goes around a tow or across its end cap must not cross the cell's faces";
+        if (l.windsAround(LoopSide::A) || l.windsAround(LoopSide::B))
+            return "a loop that goes around a tow must not cross the cell's faces";
+        // Across an end cap only outside the box (tows overlapping along their length, cut by
+        // the cell inside both).
+        const ParameterRange ra = l.surfaceA().parameterRange(), rb = l.surfaceB().parameterRange();
+        for (const LoopPoint& p : l.points())
+            if ((p.onA.u < ra.uMin || p.onA.u > ra.uMax || p.onB.u < rb.uMin || p.onB.u > rb.uMax) && inCellBox(*options.cell, p.point))
+                return "a loop that runs across a tow's end cap inside the cell must not cross the cell's faces";
         return {};
     };
     const auto acrossSupported = [&](const IntersectionLoop& l) { return acrossRefusal(l).empty(); };
@@ -283,6 +311,20 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
     if (!acrossLoops.empty())
         crossings = crossCellFaces(
             tows, loops, shared, isAcross, [&](std::size_t k) { return 0.25 * spacingOf(loops[shared[k].loop]); }, *options.cell, nodes);
+    // A loop whose chords only graze the box (no node of it inside) lies outside as meshed.
+    if (!acrossLoops.empty())
+        shared.erase(std::remove_if(shared.begin(), shared.end(),
+                                    [&](const SharedLoop& s) {
+                                        if (!acrossLoops.count(s.loop) ||
+                                            std::any_of(s.nodes.begin(), s.nodes.end(), [&](std::size_t n) { return inCellBox(*options.cell, nodes[n]); }))
+                                            return false;
+                                        const IntersectionLoop& l = loops[s.loop];
+                                        result.skippedLoops.push_back({s.loop, SkippedLoop::Reason::OutsideCell,
+                                                                       "the loop of tows '" + l.surfaceA().name() + "' and '" +
+                                                                           l.surfaceB().name() + "' lies outside the cell"});
+                                        return true;
+                                    }),
+                     shared.end());
     // The cell's cuts of the tows: constraints of their meshes, the parts beyond them dropped.
     std::optional<CellCuts> cuts;
     if (options.cell) cuts = cutTows(tows, *options.cell, towH, nodes, crossings);
@@ -575,3 +617,4 @@ ResolveResult meshTowsInFrame(const std::vector<TowSurface>& tows, const std::ve
 
 }  // namespace detail
 TOWGEOM_END_NAMESPACE
+

@@ -209,7 +209,9 @@ Parametric readParametric(const std::vector<TowSurface>& tows, const ResolveResu
             if (tri[0] >= n || tri[1] >= n || tri[2] >= n) throw badInput("a triangle's node is out of range", where);
             if (m.face[i] != TowFace::Side) {
                 p.capped[t] = true;
-                if (!capLoops) continue;
+                // (A cap on a cell's face is not the tow's own cap: loops across its own caps end
+                // outside the cell there.)
+                if (!capLoops || (m.face[i] == TowFace::Start ? m.cutAt[0] : m.cutAt[1])) continue;
                 const detail::CapChart& cap = m.face[i] == TowFace::Start ? caps.start : caps.end;
                 double u = 0.0, v = 0.0;
                 const Point3 c = (1.0 / 3.0) * (mesh.nodes[tri[0]] + mesh.nodes[tri[1]] + mesh.nodes[tri[2]]);
