@@ -734,4 +734,24 @@ TEST_CASE("a cell through tows overlapping along their whole length: the loop ac
     CHECK(res.mesh.regions[0].volumeRemoved == Approx(3.0 * lens).epsilon(0.03));
     CHECK(testing::crossingPairsBetweenTows(res.mesh) == 0);
     checkConforming(res, meshVolumes(res.mesh));
+    // Refused, naming the tows: a box holding b's start cap (the loop runs across it inside), and
+    // a periodic cell.
+    const auto refusal = [&](const Cell& c) {
+        ResolveOptions r = o;
+        r.cell = c;
+        try {
+            resolveTextile(tows, r);
+        } catch (const Error& e) {
+            CHECK(e.code() == ErrorCode::InvalidArgument);
+            CHECK(std::string(e.what()).find("'a' and 'b'") != std::string::npos);
+            return std::string(e.what());
+        }
+        return std::string("not refused");
+    };
+    Cell capInside = cell;
+    capInside.min.x = -2.8;
+    CHECK(refusal(capInside).find("end cap inside the cell") != std::string::npos);
+    Cell periodic = cell;
+    periodic.periodic = true;
+    CHECK(refusal(periodic).find("periodic") != std::string::npos);
 }

@@ -35,6 +35,7 @@
 
 #include "brep/cell_clip.hpp"
 #include "brep/trimmed_brep_impl.hpp"
+#include "cell/face_crossings.hpp"
 #include "surface/occt_convert.hpp"
 #include "surface/tow_surface_impl.hpp"
 #include "towgeom/error.hpp"
@@ -365,16 +366,8 @@ void checkSupported(const std::vector<TowSurface>& tows, const ResolveResult& r)
                                                        "not built as a trimmed B-rep yet");
         if (l.crossesCap(LoopSide::A) || l.crossesCap(LoopSide::B))
             throw Error(ErrorCode::Unsupported, what + " runs across an end cap: not built as a trimmed B-rep yet");
-        if (r.mesh.cell) {
-            const Cell& box = r.mesh.cell->box;
-            const auto inBox = [&](const LoopPoint& p) {
-                return p.point.x >= box.min.x && p.point.x <= box.max.x && p.point.y >= box.min.y && p.point.y <= box.max.y &&
-                       p.point.z >= box.min.z && p.point.z <= box.max.z;
-            };
-            const auto& points = l.points();
-            if (std::any_of(points.begin(), points.end(), inBox) && !std::all_of(points.begin(), points.end(), inBox))
-                throw Error(ErrorCode::Unsupported, what + " crosses a face of the cell: not built as a trimmed B-rep yet");
-        }
+        if (r.mesh.cell && detail::loopCrossesCellBox(l, r.mesh.cell->box))
+            throw Error(ErrorCode::Unsupported, what + " crosses a face of the cell: not built as a trimmed B-rep yet");
     };
     for (const ConnectedRegion& g : r.mesh.regions) {
         if (g.surface != SharedSurface::Primary) throw Error(ErrorCode::Internal, "a connect region off the primary's surface");

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <utility>
 
 #include "cell/axis.hpp"
 #include "surface/tow_surface_impl.hpp"
@@ -56,6 +57,35 @@ struct ChordCrossing {
 bool inCellBox(const Cell& cell, const Point3& p)
 {
     return p.x >= cell.min.x && p.x <= cell.max.x && p.y >= cell.min.y && p.y <= cell.max.y && p.z >= cell.min.z && p.z <= cell.max.z;
+}
+
+bool segmentMeetsBox(const Point3& p, const Point3& q, const Cell& cell)
+{
+    double t0 = 0.0, t1 = 1.0;  // slabs
+    for (int a = 0; a < 3; ++a) {
+        const double from = coord(p, a), d = coord(q, a) - from, lo = coord(cell.min, a), hi = coord(cell.max, a);
+        if (d == 0.0) {
+            if (from < lo || from > hi) return false;
+            continue;
+        }
+        double s0 = (lo - from) / d, s1 = (hi - from) / d;
+        if (s0 > s1) std::swap(s0, s1);
+        t0 = std::max(t0, s0);
+        t1 = std::min(t1, s1);
+        if (t0 > t1) return false;
+    }
+    return true;
+}
+
+bool loopCrossesCellBox(const IntersectionLoop& loop, const Cell& cell)
+{
+    const std::vector<LoopPoint>& points = loop.points();
+    bool meets = false, outside = false;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        outside = outside || !inCellBox(cell, points[k].point);
+        meets = meets || segmentMeetsBox(points[k].point, points[(k + 1) % points.size()].point, cell);
+    }
+    return meets && outside;
 }
 
 std::vector<FaceCrossing> crossCellFaces(const std::vector<TowSurface>& tows, const std::vector<IntersectionLoop>& loops,

@@ -28,6 +28,13 @@ struct FaceCrossing {
 /// True when global point @p p lies in the box of @p cell (its faces included).
 bool inCellBox(const Cell& cell, const Point3& p);
 
+/// True when the segment [@p p, @p q] meets the box of @p cell (its faces included).
+bool segmentMeetsBox(const Point3& p, const Point3& q, const Cell& cell);
+
+/// True when @p loop passes through the box of @p cell and leaves it: some chord of its points
+/// meets the box and some point lies outside.
+bool loopCrossesCellBox(const IntersectionLoop& loop, const Cell& cell);
+
 /// For each loop @p shared[k] with @p across(k) true: finds every chord of it that crosses a
 /// face's plane from inside the box to outside (or back), solves the exact point there (on both
 /// surfaces and on the plane, Newton's method on four equations from the chord's point), inserts

@@ -12,8 +12,8 @@
 #include <string>
 #include <utility>
 
-#include "cell/cell_faces.hpp"
 #include "cell/axis.hpp"
+#include "cell/cell_faces.hpp"
 #include "cell/face_crossings.hpp"
 #include "cell/tow_cuts.hpp"
 #include "core/parallel.hpp"
@@ -55,41 +55,25 @@ UV inPeriod(UV p, const ParameterRange& r)
 /// Where an intersection loop lies with respect to a cell.
 enum class CellSide { Inside, Outside, Across };
 
-/// True when the segment [@p p, @p q] meets the box of @p cell (slabs).
-bool segmentMeetsBox(const Point3& p, const Point3& q, const Cell& cell)
-{
-    double t0 = 0.0, t1 = 1.0;
-    for (int a = 0; a < 3; ++a) {
-        const double from = coord(p, a), d = coord(q, a) - from, lo = coord(cell.min, a), hi = coord(cell.max, a);
-        if (d == 0.0) {
-            if (from < lo || from > hi) return false;
-            continue;
-        }
-        double s0 = (lo - from) / d, s1 = (hi - from) / d;
-        if (s0 > s1) std::swap(s0, s1);
-        t0 = std::max(t0, s0);
-        t1 = std::min(t1, s1);
-        if (t0 > t1) return false;
-    }
-    return true;
-}
-
-/// Inside: every point of @p loop at least @p margin inside @p cell; Outside: no chord of it meets
-/// the box (a straight loop's points may be few, all outside, their chords through the box);
-/// else Across.
+/// Inside: every point of @p loop at least @p margin inside @p cell; Outside: every point outside
+/// the box and no chord of it through the box shrunk by @p margin (a straight loop's few points
+/// may all lie outside while it passes through); else Across.
 CellSide cellSide(const IntersectionLoop& loop, const Cell& cell, double margin)
 {
-    bool allIn = true, meets = false;
+    Cell inner = cell;
+    inner.min = {cell.min.x + margin, cell.min.y + margin, cell.min.z + margin};
+    inner.max = {cell.max.x - margin, cell.max.y - margin, cell.max.z - margin};
+    const bool thick = inner.min.x < inner.max.x && inner.min.y < inner.max.y && inner.min.z < inner.max.z;
+    bool allIn = true, allOut = true, through = false;
     const std::vector<LoopPoint>& points = loop.points();
     for (std::size_t k = 0; k < points.size(); ++k) {
         const Point3& q = points[k].point;
-        const bool in = q.x >= cell.min.x + margin && q.x <= cell.max.x - margin && q.y >= cell.min.y + margin &&
-                        q.y <= cell.max.y - margin && q.z >= cell.min.z + margin && q.z <= cell.max.z - margin;
-        allIn = allIn && in;
-        if (!meets && (k + 1 < points.size() || loop.closed()))
-            meets = segmentMeetsBox(q, points[(k + 1) % points.size()].point, cell);
+        allIn = allIn && thick && inCellBox(inner, q);
+        allOut = allOut && !inCellBox(cell, q);
+        if (!through && thick && (k + 1 < points.size() || loop.closed()))
+            through = segmentMeetsBox(q, points[(k + 1) % points.size()].point, inner);
     }
-    return allIn ? CellSide::Inside : !meets ? CellSide::Outside : CellSide::Across;
+    return allIn ? CellSide::Inside : allOut && !through ? CellSide::Outside : CellSide::Across;
 }
 
 /// Drops the triangles of tow @p t's mesh that lie beyond the cell's cuts (by their (u,v) centroids).
@@ -220,11 +204,17 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
         if (l.windsAround(LoopSide::A) || l.windsAround(LoopSide::B))
             return "a loop that goes around a tow must not cross the cell's faces";
         // Across an end cap only outside the box (tows overlapping along their length, cut by
-        // the cell inside both).
+        // the cell inside both): no chord on a cap (both ends on it or its rim) may meet the box.
         const ParameterRange ra = l.surfaceA().parameterRange(), rb = l.surfaceB().parameterRange();
-        for (const LoopPoint& p : l.points())
-            if ((p.onA.u < ra.uMin || p.onA.u > ra.uMax || p.onB.u < rb.uMin || p.onB.u > rb.uMax) && inCellBox(*options.cell, p.point))
+        const auto beyond = [&](const LoopPoint& p) { return p.onA.u < ra.uMin || p.onA.u > ra.uMax || p.onB.u < rb.uMin || p.onB.u > rb.uMax; };
+        const auto atRim = [&](const LoopPoint& p) { return p.onA.u <= ra.uMin || p.onA.u >= ra.uMax || p.onB.u <= rb.uMin || p.onB.u >= rb.uMax; };
+        const std::vector<LoopPoint>& points = l.points();
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            const LoopPoint& p = points[k];
+            const LoopPoint& q = points[(k + 1) % points.size()];
+            if ((beyond(p) || beyond(q)) && atRim(p) && atRim(q) && segmentMeetsBox(p.point, q.point, *options.cell))
                 return "a loop that runs across a tow's end cap inside the cell must not cross the cell's faces";
+        }
         return {};
     };
     const auto acrossSupported = [&](const IntersectionLoop& l) { return acrossRefusal(l).empty(); };
@@ -617,4 +607,3 @@ ResolveResult meshTowsInFrame(const std::vector<TowSurface>& tows, const std::ve
 
 }  // namespace detail
 TOWGEOM_END_NAMESPACE
-

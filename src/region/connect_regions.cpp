@@ -416,6 +416,9 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
             const detail::TowCaps& caps = tows[t].impl().caps;
             const std::vector<UV>& poly = polygonOf(k, side);
             const std::vector<std::size_t>& nodes = in.loops[shared[k]].nodes;
+            // A loop clipped by a cell (its polygon holds its points outside too) runs across
+            // caps only outside the box, on cut ends, whose caps have no probe.
+            if (poly.size() != nodes.size()) continue;
             for (std::size_t i = 0; i < nodes.size(); ++i) {
                 const std::size_t j = (i + 1) % nodes.size();
                 const int end = poly[i].u < caps.uMin || poly[j].u < caps.uMin ? 0 : poly[i].u > caps.uMax || poly[j].u > caps.uMax ? 1 : -1;
