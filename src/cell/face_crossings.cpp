@@ -35,13 +35,18 @@ struct Derivatives {
     gp_Vec du, dv;
 };
 
-Derivatives at(const TowSurface& tow, double u, double v)
+/// @p v moved into [vMin, vMax) of @p r by whole periods.
+double inPeriod(double v, const ParameterRange& r)
 {
-    const ParameterRange r = tow.parameterRange();
     double w = r.vMin + std::fmod(v - r.vMin, r.vPeriod());
     if (w < r.vMin) w += r.vPeriod();
+    return w >= r.vMax ? r.vMin : w;
+}
+
+Derivatives at(const TowSurface& tow, double u, double v)
+{
     Derivatives d;
-    tow.impl().surface->D1(u, w, d.p, d.du, d.dv);
+    tow.impl().surface->D1(u, inPeriod(v, tow.parameterRange()), d.p, d.du, d.dv);
     return d;
 }
 
@@ -186,14 +191,8 @@ std::vector<FaceCrossing> crossCellFaces(const std::vector<TowSurface>& tows, co
                 fc.towA = loop.towA();
                 fc.towB = loop.towB();
                 fc.node = ids.back();
-                const auto wrap = [](UV uv, const ParameterRange& r) {
-                    uv.v = r.vMin + std::fmod(uv.v - r.vMin, r.vPeriod());
-                    if (uv.v < r.vMin) uv.v += r.vPeriod();
-                    if (uv.v >= r.vMax) uv.v = r.vMin;
-                    return uv;
-                };
-                fc.onA = wrap(p.onA, ta.parameterRange());
-                fc.onB = wrap(p.onB, tb.parameterRange());
+                fc.onA = {p.onA.u, inPeriod(p.onA.v, ta.parameterRange())};
+                fc.onB = {p.onB.u, inPeriod(p.onB.v, tb.parameterRange())};
                 out.push_back(fc);
             }
         }

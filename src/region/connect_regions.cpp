@@ -13,6 +13,7 @@
 #include <tuple>
 #include <utility>
 
+#include "cell/face_crossings.hpp"
 #include "core/parallel.hpp"
 #include "core/progress_report.hpp"
 #include "mesh/mesh_measures.hpp"
@@ -114,14 +115,10 @@ std::vector<LoopPoint> outsideStretch(const IntersectionLoop& loop, const CellMe
             if (distance(points[k].point, p) < distance(points[best].point, p)) best = k;
         return best;
     };
-    const Cell& b = cell.box;
-    const auto outside = [&](const Point3& p) {
-        return p.x < b.min.x || p.x > b.max.x || p.y < b.min.y || p.y > b.max.y || p.z < b.min.z || p.z > b.max.z;
-    };
     std::vector<LoopPoint> out;
     const std::size_t n = points.size(), first = nearest(nodes[from]), last = nearest(nodes[to]);
     for (std::size_t k = (first + 1) % n; k != last; k = (k + 1) % n)
-        if (outside(points[k].point)) out.push_back(points[k]);
+        if (!detail::inCellBox(cell.box, points[k].point)) out.push_back(points[k]);
     return out;
 }
 
@@ -315,16 +312,12 @@ MidSurfaceMove midSurfaceMove(const std::vector<TowSurface>& tows, const std::ve
     }
     // A region cut by a face of the cell: its nodes on the face must stay there (the face's caps
     // are split by the primary's surface).
-    if (in.cell) {
-        const Cell& box = in.cell->box;
-        for (const std::size_t n : r.nodes) {
-            const Point3& q = in.nodes[n];
-            if (q.x == box.min.x || q.x == box.max.x || q.y == box.min.y || q.y == box.max.y || q.z == box.min.z || q.z == box.max.z) {
+    if (in.cell)
+        for (const std::size_t n : r.nodes)
+            if (onCellFace(*in.cell, in.nodes[n])) {
                 m.note = "the region of " + pair + " (loop " + std::to_string(r.loop) + ") reaches a face of the cell: the rank rule decides there";
                 return m;
             }
-        }
-    }
     // Its own loops (the loop and its holes) must not wind around a tow or cross a cap, and no
     // other loop may have a node in it.
     std::set<std::size_t> own(r.holes.begin(), r.holes.end());
