@@ -734,8 +734,59 @@ TEST_CASE("a cell through tows overlapping along their whole length: the loop ac
     CHECK(res.mesh.regions[0].volumeRemoved == Approx(3.0 * lens).epsilon(0.03));
     CHECK(testing::crossingPairsBetweenTows(res.mesh) == 0);
     checkConforming(res, meshVolumes(res.mesh));
+    // A periodic cell (the tubes repeat along x, b within 3e-6 as it is sheared by z + 1e-6 x):
+    // the loop's crossings of XMAX are those of XMIN moved by the cell, so both faces' cuts and
+    // meshes, the crossings included, pair up exactly.
+    const auto shearedB = [&](double slope) {
+        TowStack b = testing::tubeAlongX(r, 9.0, -2.5, d, 0.0, s, "b");
+        for (auto& section : b.sections)
+            for (Point3& p : section) p.z += slope * p.x;
+        return testing::fitAll({testing::tubeAlongX(r, 10.0, -3.0, 0.0, 0.0, s, "a"), b});
+    };
+    ResolveOptions po = o;
+    po.cell->periodic = true;
+    const ResolveResult per = resolveTextile(shearedB(1e-6), po);
+    CHECK(per.unresolved.empty());
+    REQUIRE(per.mesh.regions.size() == 1);
+    REQUIRE(per.mesh.cell.has_value());
+    const CellMesh& c = *per.mesh.cell;
+    for (std::size_t t = 0; t < 2; ++t) {
+        INFO(per.mesh.tows[t].name);
+        CHECK(per.tows[t].boundaryLoops == 0);
+        CHECK(per.tows[t].volumeAfter == Approx(res.tows[t].volumeAfter).epsilon(1e-3));
+    }
+    CHECK(per.mesh.regions[0].volumeRemoved == Approx(3.0 * lens).epsilon(0.03));
+    CHECK(c.periodicPairs[0].size() == c.faceNodes[0].size());
+    CHECK(c.periodicPairs[0].size() == c.faceNodes[1].size());
+    double worst = 0.0;
+    for (const auto& [p, q] : c.periodicPairs[0]) worst = std::max(worst, distance(per.mesh.nodes[p] + Point3{3.0, 0.0, 0.0}, per.mesh.nodes[q]));
+    CHECK(worst <= 1e-9 * 3.0);
+    // The four crossings: nodes of both tows' caps, paired like every other node of the faces.
+    std::array<std::set<std::size_t>, 2> capNodes;
+    for (std::size_t t = 0; t < 2; ++t)
+        for (std::size_t k = 0; k < per.mesh.tows[t].triangles.size(); ++k)
+            if (per.mesh.tows[t].face[k] != TowFace::Side)
+                for (std::size_t n : per.mesh.tows[t].triangles[k]) capNodes[t].insert(n);
+    std::size_t both = 0, pairedBoth = 0;
+    for (const auto& [p, q] : c.periodicPairs[0])
+        if (capNodes[0].count(p) && capNodes[1].count(p)) {
+            ++both;
+            if (capNodes[0].count(q) && capNodes[1].count(q)) ++pairedBoth;
+        }
+    CHECK(both >= 2);  // the crossings and the higher-ranked tow's cut inside the other's section
+    CHECK(pairedBoth == both);
+    CHECK(testing::crossingPairsBetweenTows(per.mesh) == 0);
+    checkConforming(per, meshVolumes(per.mesh));
+    // Not periodic, b sheared by z + 1e-4 x: the loop's few points along the straight lines make
+    // a chord from one of b's caps to the other (not a chord on a cap), and its crossings of the
+    // faces lie on such chords (not nearer one end than the other).
+    const ResolveResult slanted = resolveTextile(shearedB(1e-4), o);
+    CHECK(slanted.unresolved.empty());
+    REQUIRE(slanted.mesh.regions.size() == 1);
+    for (std::size_t t = 0; t < 2; ++t) CHECK(slanted.tows[t].volumeAfter == Approx(res.tows[t].volumeAfter).epsilon(1e-3));
+    CHECK(testing::crossingPairsBetweenTows(slanted.mesh) == 0);
     // Refused, naming the tows: a box holding b's start cap (the loop runs across it inside), and
-    // a periodic cell.
+    // a periodic cell the overlap does not repeat with (b sheared: z + 0.01 x).
     const auto refusal = [&](const Cell& c) {
         ResolveOptions r = o;
         r.cell = c;
@@ -751,7 +802,13 @@ TEST_CASE("a cell through tows overlapping along their whole length: the loop ac
     Cell capInside = cell;
     capInside.min.x = -2.8;
     CHECK(refusal(capInside).find("end cap inside the cell") != std::string::npos);
-    Cell periodic = cell;
-    periodic.periodic = true;
-    CHECK(refusal(periodic).find("periodic") != std::string::npos);
+    try {
+        resolveTextile(shearedB(0.01), po);
+        FAIL("not refused");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::InvalidArgument);
+        const std::string m = e.what();
+        CHECK(m.find("'a' and 'b'") != std::string::npos);
+        CHECK(m.find("does not repeat with the cell") != std::string::npos);
+    }
 }

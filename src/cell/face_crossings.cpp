@@ -8,8 +8,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "cell/axis.hpp"
@@ -56,6 +58,58 @@ struct ChordCrossing {
     CellFace face = CellFace::XMin;
     LoopPoint point;  ///< exact, v unwrapped as the chord's
 };
+
+/// Cell::periodic: each crossing of a max face paired with the nearest crossing of the same two
+/// tows on the opposite face moved by the box's size, and its node (and loop point) put there.
+void pairAcrossPeriod(const std::vector<TowSurface>& tows, std::vector<SharedLoop>& shared, const Cell& cell, std::vector<Point3>& nodes,
+                      std::vector<FaceCrossing>& crossings)
+{
+    const auto samePair = [](const FaceCrossing& x, const FaceCrossing& y) {
+        return std::minmax(x.towA, x.towB) == std::minmax(y.towA, y.towB);
+    };
+    const auto refuse = [&](const FaceCrossing& x, const std::string& what) {
+        throw Error(ErrorCode::InvalidArgument, "the intersection loop of tows '" + tows[x.towA].name() + "' and '" + tows[x.towB].name() +
+                                                    "' crosses the periodic cell's face " + cellFaceName(x.face) + " " + what +
+                                                    ": the overlap does not repeat with the cell");
+    };
+    // Every (max, min) pair of crossings within the tolerance, nearest first: each crossing
+    // takes its nearest partner not taken by a nearer pair.
+    std::vector<std::tuple<double, std::size_t, std::size_t>> candidates;
+    for (std::size_t i = 0; i < crossings.size(); ++i) {
+        const FaceCrossing& x = crossings[i];
+        if (!isMaxFace(x.face)) continue;
+        const int a = axisOf(x.face);
+        Point3 shift;
+        coord(shift, a) = coord(cell.max, a) - coord(cell.min, a);
+        const double within = cell.periodTolerance * std::min(tows[x.towA].towSize(), tows[x.towB].towSize());
+        for (std::size_t j = 0; j < crossings.size(); ++j) {
+            const FaceCrossing& y = crossings[j];
+            if (y.face != static_cast<CellFace>(2 * a) || !samePair(x, y)) continue;
+            const double gap = distance(nodes[y.node] + shift, nodes[x.node]);
+            if (gap <= within) candidates.emplace_back(gap, i, j);
+        }
+    }
+    std::sort(candidates.begin(), candidates.end());
+    std::vector<char> taken(crossings.size(), 0);
+    for (const auto& [gap, i, j] : candidates) {
+        if (taken[i] || taken[j]) continue;
+        taken[i] = taken[j] = 1;
+        FaceCrossing& x = crossings[i];
+        const int a = axisOf(x.face);
+        x.partner = j;
+        Point3 p = nodes[crossings[j].node];
+        coord(p, a) = coord(cell.max, a);
+        nodes[x.node] = p;
+        for (SharedLoop& s : shared)
+            for (std::size_t k = 0; k < s.nodes.size(); ++k)
+                if (s.nodes[k] == x.node) s.points[k].point = p;
+    }
+    for (std::size_t i = 0; i < crossings.size(); ++i)
+        if (!taken[i])
+            refuse(crossings[i], std::string("where it does not cross the face ") +
+                                     cellFaceName(static_cast<CellFace>(static_cast<int>(crossings[i].face) ^ 1)) +  // the opposite face
+                                     " at the same place moved by the cell");
+}
 
 }  // namespace
 
@@ -219,6 +273,7 @@ std::vector<FaceCrossing> crossCellFaces(const std::vector<TowSurface>& tows, co
                 s.nodes.push_back(ids[i]);
             }
     }
+    if (cell.periodic) pairAcrossPeriod(tows, shared, cell, nodes, out);
     return out;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -23,6 +24,9 @@ struct FaceCrossing {
     std::size_t towA = 0, towB = 0;  ///< the loop's tows
     std::size_t node = 0;            ///< its global node, exactly on the face's plane
     UV onA, onB;                     ///< on each tow, v within its period
+    /// With a periodic cell, for a crossing of a max face: the index of the crossing of the same
+    /// two tows on the opposite min face that it is (moved by the box's size); else SIZE_MAX.
+    std::size_t partner = SIZE_MAX;
 };
 
 /// True when global point @p p lies in the box of @p cell (its faces included).
@@ -41,9 +45,13 @@ bool loopCrossesCellBox(const IntersectionLoop& loop, const Cell& cell);
 /// it into the loop's nodes and appends it to @p nodes. A loop node inside the box closer than
 /// @p closeness(k) to such a point is dropped (it would make slivers at the face). The loop's
 /// nodes outside the box stay in it (its polygon still bounds the overlap on each tow); the
-/// meshes take only its pieces inside (clipLoopPieces()).
+/// meshes take only its pieces inside (clipLoopPieces()). With Cell::periodic, each crossing of a
+/// max face is paired with the crossing of the same two tows on the opposite min face whose
+/// point, moved by the box's size, lies nearest: its node (in the loop too) is put exactly
+/// there, so the two faces' cuts and meshes pair up (FaceCrossing::partner).
 /// @throws Error (InvalidArgument) naming the two tows when the point is not found, lies outside
-/// the face's rectangle, or a chord crosses two faces' planes (near an edge of the box).
+/// the face's rectangle, or a chord crosses two faces' planes (near an edge of the box); with a
+/// periodic cell, when a crossing has no partner within Cell::periodTolerance of the tows' size.
 std::vector<FaceCrossing> crossCellFaces(const std::vector<TowSurface>& tows, const std::vector<IntersectionLoop>& loops,
                                          std::vector<SharedLoop>& shared, const std::function<bool(std::size_t)>& across,
                                          const std::function<double(std::size_t)>& closeness, const Cell& cell,

@@ -273,39 +273,66 @@ CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const st
             out.cuts[t][static_cast<std::size_t>(end)] = std::move(cut);
         }
     }
-    // The loops' crossings of the faces: stations of both tows' cuts there.
-    if (!loopCrossings.empty() && cell.periodic)
-        throw Error(ErrorCode::InvalidArgument, "an intersection loop of tows '" + tows[loopCrossings[0].towA].name() + "' and '" +
-                                                    tows[loopCrossings[0].towB].name() + "' crosses the periodic cell's face " +
-                                                    cellFaceName(loopCrossings[0].face) +
-                                                    ": with a periodic cell, the faces must pass where the tows do not overlap");
-    for (const FaceCrossing& x : loopCrossings)
+    // The loops' crossings of the faces: stations of both tows' cuts there. With a periodic cell
+    // a max face's crossing is its partner's on the min face moved (FaceCrossing::partner): the
+    // same edit, at the same indices, keeps the two cuts' stations paired.
+    std::vector<std::size_t> maxPartner(loopCrossings.size(), SIZE_MAX);
+    for (std::size_t i = 0; i < loopCrossings.size(); ++i)
+        if (cell.periodic && loopCrossings[i].partner < loopCrossings.size()) maxPartner[loopCrossings[i].partner] = i;
+    const auto endCutBy = [&](std::size_t t, const FaceCrossing& x) {
+        for (int e = 0; e < 2; ++e)
+            if (out.cuts[t][static_cast<std::size_t>(e)] && out.cuts[t][static_cast<std::size_t>(e)]->face == x.face)
+                return static_cast<std::size_t>(2 * t + static_cast<std::size_t>(e));
+        throw Error(ErrorCode::InvalidArgument, "an intersection loop of tows '" + tows[x.towA].name() + "' and '" + tows[x.towB].name() +
+                                                    "' crosses the cell's face " + cellFaceName(x.face) + " where that face does not cut tow '" +
+                                                    tows[t].name() + "'");
+    };
+    // Station k of cut c (2 * tow + end): removed, or the crossing x put there.
+    const auto erase = [&](std::size_t c, std::size_t k) {
+        TowCut& cut = *out.cuts[c / 2][c % 2];
+        cut.uv.erase(cut.uv.begin() + static_cast<long>(k));
+        positions[c].erase(positions[c].begin() + static_cast<long>(k));
+        given[c].erase(given[c].begin() + static_cast<long>(k));
+    };
+    const auto insert = [&](std::size_t c, std::size_t k, const FaceCrossing& x) {
+        TowCut& cut = *out.cuts[c / 2][c % 2];
+        cut.uv.insert(cut.uv.begin() + static_cast<long>(k), c / 2 == x.towA ? x.onA : x.onB);
+        positions[c].insert(positions[c].begin() + static_cast<long>(k), nodes[x.node]);
+        given[c].insert(given[c].begin() + static_cast<long>(k), x.node);
+    };
+    for (std::size_t i = 0; i < loopCrossings.size(); ++i) {
+        const FaceCrossing& x = loopCrossings[i];
+        if (cell.periodic && isMaxFace(x.face)) continue;  // with its partner
+        const FaceCrossing* twin = maxPartner[i] < loopCrossings.size() ? &loopCrossings[maxPartner[i]] : nullptr;
+        if (cell.periodic && !twin)
+            throw Error(ErrorCode::Internal, "the intersection loop of tows '" + tows[x.towA].name() + "' and '" + tows[x.towB].name() +
+                                                 "': its crossing of the periodic cell's face " + cellFaceName(x.face) + " has no partner");
         for (const std::size_t t : {x.towA, x.towB}) {
+            const std::size_t c = endCutBy(t, x);
+            const std::size_t d = twin ? endCutBy(t, *twin) : c;
             const UV uv = t == x.towA ? x.onA : x.onB;
-            int end = -1;
-            for (int e = 0; e < 2; ++e)
-                if (out.cuts[t][static_cast<std::size_t>(e)] && out.cuts[t][static_cast<std::size_t>(e)]->face == x.face) end = e;
-            if (end < 0)
-                throw Error(ErrorCode::InvalidArgument, "an intersection loop of tows '" + tows[x.towA].name() + "' and '" +
-                                                            tows[x.towB].name() + "' crosses the cell's face " + cellFaceName(x.face) +
-                                                            " where that face does not cut tow '" + tows[t].name() + "'");
-            TowCut& cut = *out.cuts[t][static_cast<std::size_t>(end)];
-            std::vector<Point3>& at = positions[2 * t + static_cast<std::size_t>(end)];
-            std::vector<std::size_t>& node = given[2 * t + static_cast<std::size_t>(end)];
             // Stations (not the first, at the seam, nor another crossing) closer than a quarter
             // of the tow's size to the crossing are left out: they would make slivers.
-            for (std::size_t k = cut.uv.size(); k-- > 1;)
-                if (node[k] == SIZE_MAX && distance(at[k], nodes[x.node]) < 0.25 * towH[t]) {
-                    cut.uv.erase(cut.uv.begin() + static_cast<long>(k));
-                    at.erase(at.begin() + static_cast<long>(k));
-                    node.erase(node.begin() + static_cast<long>(k));
-                }
-            const auto pos = std::upper_bound(cut.uv.begin() + 1, cut.uv.end(), uv.v, [](double v, const UV& q) { return v < q.v; });
-            const long k = pos - cut.uv.begin();
-            cut.uv.insert(pos, uv);
-            at.insert(at.begin() + k, nodes[x.node]);
-            node.insert(node.begin() + k, x.node);
+            std::vector<std::size_t> dropped;
+            for (std::size_t k = given[c].size(); k-- > 1;)
+                if (given[c][k] == SIZE_MAX && distance(positions[c][k], nodes[x.node]) < 0.25 * towH[t]) dropped.push_back(k);
+            for (const std::size_t k : dropped) erase(c, k);
+            const std::vector<UV>& uvs = out.cuts[t][c % 2]->uv;
+            const std::size_t k = static_cast<std::size_t>(
+                std::upper_bound(uvs.begin() + 1, uvs.end(), uv.v, [](double v, const UV& q) { return v < q.v; }) - uvs.begin());
+            insert(c, k, x);
+            if (!twin) continue;
+            for (const std::size_t j : dropped) erase(d, j);
+            insert(d, k, *twin);
+            const std::vector<UV>& moved = out.cuts[t][d % 2]->uv;
+            if (moved.size() != uvs.size() || !(moved[k - 1].v < moved[k].v) || (k + 1 < moved.size() && !(moved[k].v < moved[k + 1].v)))
+                throw Error(ErrorCode::InvalidArgument, "tow '" + tows[t].name() + "': the intersection loop of tows '" + tows[x.towA].name() +
+                                                            "' and '" + tows[x.towB].name() + "' crosses the periodic cell's faces " +
+                                                            cellFaceName(x.face) + " and " + cellFaceName(twin->face) +
+                                                            " at different places around the tow (or on both sides of its seam): the "
+                                                            "textile does not repeat with the cell");
         }
+    }
     // A periodic cell: the max face's cut of a tow is its min face's cut moved by the box.
     if (cell.periodic) {
         for (std::size_t t = 0; t < tows.size(); ++t) {

@@ -52,8 +52,10 @@ struct CellCuts {
 /// tow once all around inside the face's rectangle, two faces cut one end (the tow crosses an
 /// edge of the box), or (periodic) a tow is cut by one face of a pair only or its moved cut
 /// lies farther than Cell::periodTolerance from its surface. The points @p loopCrossings (nodes
-/// already in @p nodes) become stations of both their tows' cuts by their face (not with a
-/// periodic cell: InvalidArgument).
+/// already in @p nodes) become stations of both their tows' cuts by their face; with a periodic
+/// cell a max face's crossing (FaceCrossing::partner) goes in at the index its partner took in
+/// the min face's cut, with the same stations left out, so the two cuts stay paired station by
+/// station (InvalidArgument naming the tows when that breaks the order around the tow).
 CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const std::vector<double>& towH, std::vector<Point3>& nodes,
                  const std::vector<FaceCrossing>& loopCrossings = {});
 

@@ -188,10 +188,12 @@ Options:
   --periodic         with --cell: the textile repeats with the box; the max faces' meshes are
                      the min faces' moved by the box (every node has its partner at exactly +L),
                      refused (exit 2) where a tow's cuts on opposite faces differ by more than
-                     1e-3 of its size. With --volume --formats ...,inp also
-                     DIR/textile_volume_periodic.inp: *EQUATION ties of every max-face node to
-                     its min-face partner through reference nodes REF_X, REF_Y, REF_Z (their
-                     displacements: the cell's stretch along each axis), *NSET CORNER
+                     1e-3 of its size, or where an overlap cut by a max face is not cut by the
+                     min face at the same place moved by the box. With --volume --formats
+                     ...,inp also DIR/textile_volume_periodic.inp: *EQUATION ties of every
+                     max-face node to its min-face partner through reference nodes REF_X,
+                     REF_Y, REF_Z (their displacements: the cell's stretch along each axis),
+                     *NSET CORNER
   --face-grading GROWTH,MAX
                      with --cell: how the box's faces are meshed away from the tows: the edge
                      length grows from the finest tow's mesh size h (at the caps and wherever a

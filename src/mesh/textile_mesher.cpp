@@ -194,25 +194,29 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
             if (!windingBands(tows, to.first, to.second, loops, list)) disagree.insert(std::minmax(to.first, to.second));
     }
     // A loop across a face of the cell is resolved inside it: with the rank rule (the caps on the
-    // face split by it too), a cell that does not repeat, a loop on the tubes that winds around
-    // neither tow.
+    // face split by it too), a loop on the tubes that winds around neither tow (with a periodic
+    // cell, each crossing of a max face is one of the min face's moved: crossCellFaces()).
     const auto acrossRefusal = [&](const IntersectionLoop& l) -> std::string {
-        if (options.cell->periodic) return "with a periodic cell, the faces must pass where the tows do not overlap";
         if (options.method != ResolutionMethod::Connect)
             return "only the rank rule (--method connect) resolves a loop across a face; the others need the faces to pass "
                    "where the tows do not overlap";
         if (l.windsAround(LoopSide::A) || l.windsAround(LoopSide::B))
             return "a loop that goes around a tow must not cross the cell's faces";
         // Across an end cap only outside the box (tows overlapping along their length, cut by
-        // the cell inside both): no chord on a cap (both ends on it or its rim) may meet the box.
+        // the cell inside both): no chord on a cap (both ends on one cap of a tow or its rim, one
+        // beyond it) may meet the box. (A straight loop's chord may run from one cap's rim to
+        // the other's: that is not on a cap.)
         const ParameterRange ra = l.surfaceA().parameterRange(), rb = l.surfaceB().parameterRange();
-        const auto beyond = [&](const LoopPoint& p) { return p.onA.u < ra.uMin || p.onA.u > ra.uMax || p.onB.u < rb.uMin || p.onB.u > rb.uMax; };
-        const auto atRim = [&](const LoopPoint& p) { return p.onA.u <= ra.uMin || p.onA.u >= ra.uMax || p.onB.u <= rb.uMin || p.onB.u >= rb.uMax; };
+        const auto end = [](double u, const ParameterRange& r) { return u <= r.uMin ? -1 : u >= r.uMax ? 1 : 0; };
+        const auto onCap = [&](const UV& p, const UV& q, const ParameterRange& r) {
+            const int e = end(p.u, r);
+            return e != 0 && e == end(q.u, r) && (p.u < r.uMin || p.u > r.uMax || q.u < r.uMin || q.u > r.uMax);
+        };
         const std::vector<LoopPoint>& points = l.points();
         for (std::size_t k = 0; k < points.size(); ++k) {
             const LoopPoint& p = points[k];
             const LoopPoint& q = points[(k + 1) % points.size()];
-            if ((beyond(p) || beyond(q)) && atRim(p) && atRim(q) && segmentMeetsBox(p.point, q.point, *options.cell))
+            if ((onCap(p.onA, q.onA, ra) || onCap(p.onB, q.onB, rb)) && segmentMeetsBox(p.point, q.point, *options.cell))
                 return "a loop that runs across a tow's end cap inside the cell must not cross the cell's faces";
         }
         return {};

@@ -16,6 +16,7 @@
 #include "cell/face_crossings.hpp"
 #include "core/parallel.hpp"
 #include "core/progress_report.hpp"
+#include "core/segment_distance.hpp"
 #include "mesh/mesh_measures.hpp"
 #include "mesh/textile_mesh_finish.hpp"
 #include "region/connected_region.hpp"
@@ -103,22 +104,43 @@ bool onCellFace(const CellMesh& cell, const Point3& p)
 
 /// The points of @p loop outside the box of @p cell between its consecutive meshed nodes @p from
 /// and @p to when both lie on the box's faces (where the loop leaves the cell and comes back), in
-/// loop order; none otherwise.
+/// loop order; none otherwise. Each node is placed on the loop's chord nearest to it (not at its
+/// nearest point: a straight loop's points may be few and far, two of them equally near).
 std::vector<LoopPoint> outsideStretch(const IntersectionLoop& loop, const CellMesh& cell, const std::vector<Point3>& nodes,
                                       std::size_t from, std::size_t to)
 {
     if (from >= nodes.size() || to >= nodes.size() || !onCellFace(cell, nodes[from]) || !onCellFace(cell, nodes[to])) return {};
     const std::vector<LoopPoint>& points = loop.points();
-    const auto nearest = [&](const Point3& p) {
+    const std::size_t n = points.size();
+    // The chord (k, k + 1) nearest to p and how far along it p lies (0 to 1); of two equally
+    // near (p nearest to the point they share), the one p projects into.
+    const auto onChord = [&](const Point3& p) {
         std::size_t best = 0;
-        for (std::size_t k = 1; k < points.size(); ++k)
-            if (distance(points[k].point, p) < distance(points[best].point, p)) best = k;
-        return best;
+        double gap = std::numeric_limits<double>::infinity(), along = 0.0;
+        bool into = false;
+        for (std::size_t k = 0; k < n; ++k) {
+            const Point3 &a = points[k].point, &b = points[(k + 1) % n].point;
+            const double l2 = dot(b - a, b - a), t = l2 > 0.0 ? dot(p - a, b - a) / l2 : 0.0;
+            const double d = detail::segmentDistance(p, a, b);
+            const bool in = t >= 0.0 && t <= 1.0;
+            const double tie = 1e-12 * std::sqrt(l2);  // rounding at the shared point
+            if (d < gap - tie || (d <= gap + tie && (in != into ? in : d < gap))) {
+                gap = d;
+                best = k;
+                along = std::clamp(t, 0.0, 1.0);
+                into = in;
+            }
+        }
+        return std::make_pair(best, along);
     };
+    const auto [first, along] = onChord(nodes[from]);
+    const auto [last, alongLast] = onChord(nodes[to]);
     std::vector<LoopPoint> out;
-    const std::size_t n = points.size(), first = nearest(nodes[from]), last = nearest(nodes[to]);
-    for (std::size_t k = (first + 1) % n; k != last; k = (k + 1) % n)
+    if (first == last && along <= alongLast) return out;  // both on one chord, in loop order: nothing between
+    for (std::size_t k = (first + 1) % n;; k = (k + 1) % n) {
         if (!detail::inCellBox(cell.box, points[k].point)) out.push_back(points[k]);
+        if (k == last) break;
+    }
     return out;
 }
 
