@@ -45,12 +45,13 @@ TOWGEOM_EXPORT const char* cellFaceName(CellFace face) noexcept;
 /// both tows' cuts and of the face's mesh; the loop's part inside the box bounds the region the
 /// two share, and on the face the part of the lower-ranked tow's cut inside the higher-ranked
 /// tow's is that tow's cap (the lower-ranked tow's cap is its section minus the other's). This
-/// needs ResolutionMethod::Connect; refused otherwise (naming the two tows). With #periodic, each
+/// is the rank rule's work: with ResolutionMethod::Symmetric such a region keeps the
+/// higher-ranked tow's surface (ConnectedRegion::note says so). With #periodic, each
 /// crossing of a max face is the crossing of the same two tows on the opposite min face moved by
 /// the box (refused when none lies within periodTolerance of the tows' size), so the faces' nodes
-/// still pair up. Refused also for a loop that goes around a tow, runs across an end cap inside
-/// the box (across the caps outside it is fine: tows overlapping along their whole length), or
-/// crosses the box near an edge.
+/// still pair up. Refused (naming the two tows) for a loop that goes around a tow, runs across
+/// an end cap inside the box (across the caps outside it is fine: tows overlapping along their
+/// whole length), or crosses the box near an edge.
 struct TOWGEOM_EXPORT Cell {
     Point3 min;  ///< lower corner
     Point3 max;  ///< upper corner

@@ -31,8 +31,8 @@ TOWGEOM_BEGIN_NAMESPACE
 /// and pairs are not meshed as constraints (a tow whose mesh fails costs only the pairs with loops
 /// on it). ResolveOptions::primaryPatterns is used only with a cell whose face cuts through an
 /// overlap (Cell): the part of the face inside both tows' cuts is a cap of both here, and
-/// connectRegions() takes it off the lower-ranked tow; such a loop is accepted only with
-/// ResolveOptions::method Connect.
+/// connectRegions() takes it off the lower-ranked tow (with ResolutionMethod::Symmetric too: the
+/// region there keeps the higher-ranked tow's surface).
 ///
 /// @code
 /// const towgeom::IntersectionReport loops = towgeom::intersectTows(tows);

@@ -37,7 +37,8 @@ enum class ResolutionMethod {
     /// the segment's ends, solved on both exact surfaces; the loop's nodes stay, so the
     /// mid-surface meets both tows exactly at the loop). Each tow loses about half of the
     /// overlap. A region where the rank rule must decide (a third tow overlaps there, another
-    /// loop runs through it, its loop goes around a tow or across a cap) or where the
+    /// loop runs through it, its loop goes around a tow or across a cap, it reaches a face of
+    /// the cell) or where the
     /// mid-surface point of a node is not found keeps the primary's surface:
     /// ConnectedRegion::surface and ConnectedRegion::note say which and why.
     Symmetric,

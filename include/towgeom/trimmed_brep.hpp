@@ -65,8 +65,11 @@ public:
 
     /// Writes the compound as STEP AP214 to @p path, each solid named after its tow (the name of
     /// its MANIFOLD_SOLID_BREP), lengths in millimetres as STEP needs a unit: your units are
-    /// written as they are (1 of yours = 1 mm). Written under a temporary name and renamed into
-    /// place, so a failure leaves no file.
+    /// written as they are (1 of yours = 1 mm). A shared face is written once per solid (each solid
+    /// a closed shell of its own, which CAD readers and Gmsh import as solids): STEP readers see
+    /// two coincident faces; writeBrep() keeps it one face. (OpenCASCADE's non-manifold STEP mode
+    /// would keep it shared, but its solids then read back as shells: Gmsh finds no volume.)
+    /// Written under a temporary name and renamed into place, so a failure leaves no file.
     /// @throws towgeom::Error (WriteFailed) naming @p path.
     void writeStep(const std::string& path) const;
     /// Writes the compound in OpenCASCADE's native BREP format to @p path (shared faces stay

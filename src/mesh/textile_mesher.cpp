@@ -196,10 +196,9 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
     // A loop across a face of the cell is resolved inside it: with the rank rule (the caps on the
     // face split by it too), a loop on the tubes that winds around neither tow (with a periodic
     // cell, each crossing of a max face is one of the min face's moved: crossCellFaces()).
+    // With the symmetric method the region of such a loop keeps the higher-ranked tow's surface
+    // (connectRegions() notes it), as the caps on the face are split by rank.
     const auto acrossRefusal = [&](const IntersectionLoop& l) -> std::string {
-        if (options.method != ResolutionMethod::Connect)
-            return "only the rank rule (--method connect) resolves a loop across a face; the others need the faces to pass "
-                   "where the tows do not overlap";
         if (l.windsAround(LoopSide::A) || l.windsAround(LoopSide::B))
             return "a loop that goes around a tow must not cross the cell's faces";
         // Across an end cap only outside the box (tows overlapping along their length, cut by
