@@ -180,6 +180,8 @@ Options:
                      around the caps (shared nodes) and, with --volume, the matrix is filled
                      too. The faces must cut tows across, away from crossings and from the box's
                      edges (else exit 2 naming the tow): for a woven cell, halfway between yarns.
+                     A face may cut through an overlap of two tows that both cross it (tows
+                     pressed together): the lower-ranked tow's cap there gives way.
                      A tow wholly outside the box gets no NAME.stl / NAME.vtk. report.json gains
                      "cell". DIR/textile.json: the unit cell `towgeom generate` wrote there (one
                      repeat of a 2D weave, faces halfway between yarns, periodic; it writes one
