@@ -762,7 +762,8 @@ TEST_CASE("a cell through tows overlapping along their whole length: the loop ac
     double worst = 0.0;
     for (const auto& [p, q] : c.periodicPairs[0]) worst = std::max(worst, distance(per.mesh.nodes[p] + Point3{3.0, 0.0, 0.0}, per.mesh.nodes[q]));
     CHECK(worst <= 1e-9 * 3.0);
-    // The four crossings: nodes of both tows' caps, paired like every other node of the faces.
+    // Nodes of both tows' caps on XMIN (the two crossings, the higher-ranked tow's cut inside the
+    // other's section) pair with nodes of both caps on XMAX.
     std::array<std::set<std::size_t>, 2> capNodes;
     for (std::size_t t = 0; t < 2; ++t)
         for (std::size_t k = 0; k < per.mesh.tows[t].triangles.size(); ++k)

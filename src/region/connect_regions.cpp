@@ -16,7 +16,6 @@
 #include "cell/face_crossings.hpp"
 #include "core/parallel.hpp"
 #include "core/progress_report.hpp"
-#include "core/segment_distance.hpp"
 #include "mesh/mesh_measures.hpp"
 #include "mesh/textile_mesh_finish.hpp"
 #include "region/connected_region.hpp"
@@ -121,7 +120,7 @@ std::vector<LoopPoint> outsideStretch(const IntersectionLoop& loop, const CellMe
         for (std::size_t k = 0; k < n; ++k) {
             const Point3 &a = points[k].point, &b = points[(k + 1) % n].point;
             const double l2 = dot(b - a, b - a), t = l2 > 0.0 ? dot(p - a, b - a) / l2 : 0.0;
-            const double d = detail::segmentDistance(p, a, b);
+            const double d = distance(p, a + std::clamp(t, 0.0, 1.0) * (b - a));
             const bool in = t >= 0.0 && t <= 1.0;
             const double tie = 1e-12 * std::sqrt(l2);  // rounding at the shared point
             if (d < gap - tie || (d <= gap + tie && (in != into ? in : d < gap))) {
