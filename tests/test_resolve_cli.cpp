@@ -897,6 +897,46 @@ TEST_CASE("towgeom resolve: nested, identical and (without caps) through-going t
     fs::remove_all(dir);
 }
 
+TEST_CASE("towgeom resolve --volume with tows that still overlap: the surfaces, no tetrahedra, exit 3", "[cli][resolve][volume][unresolved]")
+{
+    // One tube inside another (unresolved, nested) and a third tube clear of both (resolved):
+    // tetrahedra of the whole would overlap, so none are written; the rest is.
+    const fs::path dir = scratch("volume_overlap");
+    testing::Sampling s;
+    s.points = 32;
+    std::string files;
+    for (const TowStack& t : {testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "outer"), testing::tubeAlongX(0.25, 4.0, 0.0, 0.0, 0.0, s, "inner"),
+                              testing::tubeAlongX(0.5, 4.0, 0.0, 3.0, 0.0, s, "apart")}) {
+        fs::create_directories(dir);
+        std::ofstream o(dir / (t.name + ".stw"));
+        writeStack(o, t);
+        files += " '" + (dir / (t.name + ".stw")).string() + "'";
+    }
+    const fs::path out = dir / "out";
+    const Run r = cli("resolve" + files + " --out '" + out.string() + "' --volume --formats stl,msh,inp,vtk --quiet");
+    CHECK(r.status == 3);
+    CHECK(r.err ==
+          "towgeom resolve: warning: no volume mesh written (--volume): 1 tow pair still overlaps (tows 'outer' and 'inner' "
+          "[nested]): their tetrahedra would overlap; the surfaces are written, the pairs are named below\n"
+          "towgeom resolve: unresolved tow pair 'outer' and 'inner': tow 'inner' lies inside tow 'outer' (a complete overlap: no "
+          "intersection curve) [nested]\n");
+    std::set<std::string> written;
+    for (const auto& entry : testing::snapshot(out)) written.insert(entry.first);
+    CHECK(written == std::set<std::string>{"outer.stl", "outer.vtk", "inner.stl", "inner.vtk", "apart.stl", "apart.vtk", "textile.msh",
+                                           "textile.inp", "report.json"});
+    const std::string report = testing::slurp(out / "report.json");
+    CHECK(report.find("\"volume_mesh\":{\"refused\":\"1 tow pair still overlaps (tows 'outer' and 'inner' [nested]): their "
+                      "tetrahedra would overlap\"}") != std::string::npos);
+    // Without the nested tow the same call makes the tetrahedra.
+    const fs::path whole = dir / "whole";
+    const std::string two = files.substr(0, files.find(" '", 1)) + files.substr(files.rfind(" '"));
+    const Run ok = cli("resolve" + two + " --out '" + whole.string() + "' --volume --quiet");
+    CHECK(ok.status == 0);
+    CHECK(fs::exists(whole / "textile_volume.msh"));
+    CHECK(testing::slurp(whole / "report.json").find("\"volume_mesh\":{\"tetrahedra\"") != std::string::npos);
+    fs::remove_all(dir);
+}
+
 TEST_CASE("towgeom resolve --quiet still notes a mesh too coarse for the tows' curvature", "[cli][resolve][unresolved]")
 {
     // The bundled twill at h = 0.4: the smallest 3D angle is about 3 degrees.

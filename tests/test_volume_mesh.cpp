@@ -127,11 +127,42 @@ TEST_CASE("meshVolumes: conforming tetrahedra fill each resolved tow of the twil
     o.mesh.edgeLength = 0.12;
     const ResolveResult res = resolveTextile(twill({"warp_0", "warp_1", "weft_0", "weft_1"}), o);
     REQUIRE(res.mesh.regions.size() == 4);
-    checkConforming(res, meshVolumes(res.mesh));
+    CHECK(overlappingPairs(res).empty());
+    checkConforming(res, meshVolumes(res));  // the result's overload: no pair overlaps, the same as of res.mesh
     // A further call in the process (Gmsh stays started), on one thread: as good.
     VolumeMeshOptions one;
     one.threads = 1;
     checkConforming(res, meshVolumes(res.mesh, one));
+}
+
+TEST_CASE("meshVolumes refuses a result whose tows still overlap, naming the pair, before Gmsh", "[volume][unresolved]")
+{
+    // One tube inside another: no curve, the pair is unresolved ("nested") and both tows are
+    // whole closed surfaces, so the TextileMesh overload would fill both: overlapping tetrahedra.
+    testing::Sampling s;
+    s.points = 32;
+    const ResolveResult res = resolveTextile({TowSurface::fit(testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "outer")),
+                                              TowSurface::fit(testing::tubeAlongX(0.25, 4.0, 0.0, 0.0, 0.0, s, "inner"))});
+    const std::vector<UnresolvedPairEntry> overlapping = overlappingPairs(res);
+    REQUIRE(overlapping.size() == 1);
+    CHECK(overlapping.front().code == "nested");
+    try {
+        meshVolumes(res);
+        FAIL("meshVolumes made tetrahedra for tows that overlap");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::InvalidArgument);
+        CHECK_THAT(e.message(), Catch::Matchers::StartsWith("tows 'outer' and 'inner' still overlap [nested]: tow 'inner' lies inside"));
+        CHECK_THAT(e.message(), Catch::Matchers::EndsWith("their tetrahedra would overlap: no volume mesh"));
+    }
+    // A pair that shrinking could not separate was resolved by the rank rule: not overlapping.
+    ResolveResult shrunk = res;
+    shrunk.intersections.findings.clear();
+    shrunk.unresolved.push_back({0, 1, UnresolvedPair::Reason::NotSeparated, "not separated"});
+    CHECK(overlappingPairs(shrunk).empty());
+    shrunk.unresolved.push_back({0, 1, UnresolvedPair::Reason::MeshFailed, "mesh failed"});
+    shrunk.unresolved.push_back({0, 1, UnresolvedPair::Reason::RegionFailed, "region failed"});
+    REQUIRE(overlappingPairs(shrunk).size() == 2);
+    CHECK_THROWS_WITH(meshVolumes(shrunk), Catch::Matchers::Contains("[mesh_failed]: mesh failed (and 1 other pair)"));
 }
 
 TEST_CASE("meshVolumes: a tow cut in two by a tow ranked above it gets a volume per piece", "[volume]")

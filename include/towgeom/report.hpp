@@ -9,12 +9,13 @@
 #include <vector>
 
 #include "towgeom/resolve.hpp"
-#include "towgeom/volume_mesh.hpp"
 #include "towgeom/tow_intersection.hpp"
 #include "towgeom/tow_surface.hpp"
 #include "towgeom/export.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
+
+struct VolumeMesh;  // volume_mesh.hpp
 
 /// @defgroup reports Reports
 /// @brief What the command-line tool writes, for hosts that want the same files: the detect and
@@ -88,6 +89,10 @@ struct ResolveReportOptions {
     /// The tows' tetrahedra (meshVolumes() of the result's mesh), if made: "volume_mesh" gives
     /// tetrahedra, nodes, inner_nodes and per tow its tetrahedra and their volume.
     const VolumeMesh* volumes = nullptr;
+    /// Why no volume mesh was made although one was asked for (`towgeom resolve --volume` with
+    /// tows that still overlap: overlappingPairs()): written as "volume_mesh": {"refused": this}
+    /// when volumes is null; empty: no "volume_mesh".
+    std::string volumeRefused;
 };
 
 /// Writes @p result for @p tows as `towgeom resolve` writes report.json: one JSON object with

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "towgeom/point.hpp"
+#include "towgeom/report.hpp"
+#include "towgeom/resolve.hpp"
 #include "towgeom/textile_mesh.hpp"
 #include "towgeom/tow_surface.hpp"
 #include "towgeom/export.hpp"
@@ -96,6 +98,29 @@ TOWGEOM_EXPORT TetrahedronQuality tetrahedronQuality(const VolumeMesh& volumes);
 ///         (Internal) with Gmsh's message if Gmsh fails, if it added, moved or renumbered a
 ///         surface node, or (order 2) if a tetrahedron has no node at the middle of an edge.
 TOWGEOM_EXPORT VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& options = {});
+
+/// The tow pairs that still overlap in @p result's mesh: every entry of unresolvedPairs(result)
+/// but `not_separated` (ResolutionMethod::Shrink could not separate the pair and the rank rule
+/// resolved it). Their tetrahedra would overlap: meshVolumes(const ResolveResult&, const
+/// VolumeMeshOptions&) refuses them, and `towgeom resolve --volume` writes the surfaces without
+/// a volume mesh.
+TOWGEOM_EXPORT std::vector<UnresolvedPairEntry> overlappingPairs(const ResolveResult& result);
+
+/// meshVolumes() of @p result's mesh, refused while two of its tows still overlap
+/// (overlappingPairs()): a finite-element model with overlapping tows is wrong however it is
+/// meshed. The TextileMesh overload does not know which pairs were left unresolved.
+///
+/// @code
+/// const towgeom::ResolveResult r = towgeom::resolveTextile(tows);
+/// if (towgeom::overlappingPairs(r).empty()) {
+///     const towgeom::VolumeMesh v = towgeom::meshVolumes(r);
+///     std::cout << v.tetrahedra.size() << " tetrahedra\n";
+/// }
+/// @endcode
+/// @throws towgeom::Error (InvalidArgument) naming the two tows of the first overlapping pair,
+/// with its code and message, and how many pairs overlap (checked before Gmsh is loaded); and
+/// as meshVolumes(const TextileMesh&, const VolumeMeshOptions&).
+TOWGEOM_EXPORT VolumeMesh meshVolumes(const ResolveResult& result, const VolumeMeshOptions& options = {});
 
 /// Sets VolumeMesh::fibreDirection: for each tetrahedron, the fibre direction of its tow at the
 /// point of the tow's centreline (the polyline of its sections' centroids) nearest the

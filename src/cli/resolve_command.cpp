@@ -166,7 +166,9 @@ Options:
                      "volume"}],"quality":{"min_dihedral_deg","max_dihedral_deg",
                      "min_dihedral_histogram_bins_deg" (lower edges: 0 5 10 20 ... 60, the last
                      bin up to 70.53),"min_dihedral_histogram"}}, with --cell also "matrix":
-                     {"tetrahedra","volume"} and "tow_volume_fraction".
+                     {"tetrahedra","volume"} and "tow_volume_fraction". Not made while two
+                     tows still overlap (an unresolved pair, exit 3): the surfaces are written,
+                     no DIR/textile_volume.*, report.json "volume_mesh": {"refused": why}.
                      Needs Gmsh's library (Debian: libgmsh4.8). With --cell also the matrix:
                      physical volume / ELSET MATRIX, groups / NSETs XMIN ... ZMAX of every node
                      on each box face; report.json "volume_mesh" gains "matrix" and
@@ -425,9 +427,20 @@ int runResolve(int argc, char** argv, int first)
             }
         }();
         const TextileMesh& mesh = result.mesh;
+        // --volume with tows that still overlap (an unresolved pair): the surfaces, no tetrahedra.
+        const std::vector<UnresolvedPairEntry> overlapping = volume ? overlappingPairs(result) : std::vector<UnresolvedPairEntry>{};
+        std::string volumeRefused;
+        if (!overlapping.empty()) {
+            const UnresolvedPairEntry& p = overlapping.front();
+            const std::size_t n = overlapping.size();
+            volumeRefused = std::to_string(n) + (n == 1 ? " tow pair still overlaps" : " tow pairs still overlap") + " (tows '" +
+                            tows[p.towA].name() + "' and '" + tows[p.towB].name() + "' [" + p.code + "]" +
+                            (n > 1 ? " and others" : "") + "): their tetrahedra would overlap";
+        }
+        const bool tetrahedra = volume && overlapping.empty();
         VolumeMesh volumes;
         double volumeMs = -1.0;
-        if (volume) {
+        if (tetrahedra) {
             t0 = std::chrono::steady_clock::now();
             printer.update("meshing the tows' volumes (Gmsh HXT)", 0, 1);
             VolumeMeshOptions vo;
@@ -479,11 +492,11 @@ int runResolve(int argc, char** argv, int first)
         if (formats.count("step")) brep->writeStep(files.open(path("textile.step")));
         if (formats.count("brep")) brep->writeBrep(files.open(path("textile.brep")));
         if (formats.count("inp")) writeAbaqus(mesh, files.open(path("textile.inp")));
-        if (volume) writeGmsh(mesh, volumes, files.open(path("textile_volume.msh")));
-        if (volume && formats.count("inp")) writeAbaqus(mesh, volumes, files.open(path("textile_volume.inp")));
-        if (volume && formats.count("inp") && options.cell && options.cell->periodic)
+        if (tetrahedra) writeGmsh(mesh, volumes, files.open(path("textile_volume.msh")));
+        if (tetrahedra && formats.count("inp")) writeAbaqus(mesh, volumes, files.open(path("textile_volume.inp")));
+        if (tetrahedra && formats.count("inp") && options.cell && options.cell->periodic)
             writeAbaqusPeriodic(mesh, volumes, files.open(path("textile_volume_periodic.inp")));
-        if (volume && formats.count("vtk")) writeVtu(mesh, volumes, files.open(path("textile_volume.vtu")));
+        if (tetrahedra && formats.count("vtk")) writeVtu(mesh, volumes, files.open(path("textile_volume.vtu")));
         if (args.has("knot-spans")) {  // the elements of each tow's B-spline: valid, invalid, trimmed
             std::vector<KnotSpanClassification> spans(tows.size());
             detail::parallelFor(tows.size(), detail::workerCount(options.threads), [&](std::size_t t) {
@@ -510,7 +523,8 @@ int runResolve(int argc, char** argv, int first)
         written.times.fit = fitMs;
         written.times.write = writeMs;
         written.times.volume = volumeMs;
-        if (volume) written.volumes = &volumes;
+        if (tetrahedra) written.volumes = &volumes;
+        written.volumeRefused = volumeRefused;
         written.times.total = msSince(start);
         writeResolveReport(result, tows, files.open(path("report.json")), written);
         printer.throwIfCancelled();  // a signal while writing: nothing is committed
@@ -523,7 +537,7 @@ int runResolve(int argc, char** argv, int first)
                               << " pieces by tows ranked above it that pass through it\n";
             std::cerr << "towgeom resolve: " << mesh.regions.size() << " connected regions, " << mesh.nodes.size() << " nodes, "
                       << result.quality.triangles << " triangles (smallest angle " << result.quality.minAngle << " deg)";
-            if (volume) std::cerr << ", " << volumes.tetrahedra.size() << " tetrahedra";
+            if (tetrahedra) std::cerr << ", " << volumes.tetrahedra.size() << " tetrahedra";
             std::cerr << "; files in " << *outDir << "\n";
         }
         // Warnings, not progress: printed whatever --quiet says.
@@ -547,6 +561,9 @@ int runResolve(int argc, char** argv, int first)
                     std::cerr << "towgeom resolve: warning: the solid of tow '" << solid.name
                               << "' in textile.step/.brep is not valid for OpenCASCADE's checker (BRepCheck_Analyzer; "
                                  "largest edge tolerance " << solid.maxTolerance << "): CAD tools may refuse it\n";
+        if (!volumeRefused.empty())  // a warning, whatever --quiet says
+            std::cerr << "towgeom resolve: warning: no volume mesh written (--volume): " << volumeRefused
+                      << "; the surfaces are written, the pairs are named below\n";
         reportContacts("resolve", result.intersections, tows);
         reportUnresolved("resolve", unresolved, tows);
         return exitsUnresolved(unresolved, args.has("allow-open")) ? kExitUnresolved : kExitOk;

@@ -9,6 +9,7 @@
 #include "core/parallel.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/report.hpp"
+#include "towgeom/volume_mesh.hpp"
 #include "towgeom/export.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
@@ -233,6 +234,8 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
             j["volume_mesh"]["matrix"] = {{"tetrahedra", count[tows.size()]}, {"volume", volume[tows.size()]}};
             j["volume_mesh"]["tow_volume_fraction"] = towVolume / mesh.cell->box.volume();
         }
+    } else if (!options.volumeRefused.empty()) {
+        j["volume_mesh"] = {{"refused", options.volumeRefused}};
     }
     Json timings = Json::object();
     putTime(timings, "read", options.times.read);

@@ -494,4 +494,27 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     return out;
 }
 
+std::vector<UnresolvedPairEntry> overlappingPairs(const ResolveResult& result)
+{
+    std::vector<UnresolvedPairEntry> pairs = unresolvedPairs(result);
+    pairs.erase(std::remove_if(pairs.begin(), pairs.end(), [](const UnresolvedPairEntry& p) { return p.code == "not_separated"; }),
+                pairs.end());
+    return pairs;
+}
+
+VolumeMesh meshVolumes(const ResolveResult& result, const VolumeMeshOptions& options)
+{
+    const std::vector<UnresolvedPairEntry> pairs = overlappingPairs(result);
+    if (!pairs.empty()) {
+        const UnresolvedPairEntry& p = pairs.front();
+        const auto name = [&](std::size_t t) { return t < result.mesh.tows.size() ? result.mesh.tows[t].name : std::to_string(t); };
+        const std::size_t more = pairs.size() - 1;
+        std::string others;
+        if (more > 0) others = " (and " + std::to_string(more) + (more == 1 ? " other pair)" : " other pairs)");
+        throw Error(ErrorCode::InvalidArgument, "tows '" + name(p.towA) + "' and '" + name(p.towB) + "' still overlap [" + p.code +
+                                                    "]: " + p.message + others + "; their tetrahedra would overlap: no volume mesh");
+    }
+    return meshVolumes(result.mesh, options);
+}
+
 TOWGEOM_END_NAMESPACE
