@@ -159,9 +159,18 @@ TEST_CASE("meshVolumes refuses a result whose tows still overlap, naming the pai
     shrunk.intersections.findings.clear();
     shrunk.unresolved.push_back({0, 1, UnresolvedPair::Reason::NotSeparated, "not separated"});
     CHECK(overlappingPairs(shrunk).empty());
+    // Two reasons of one pair count as one pair.
     shrunk.unresolved.push_back({0, 1, UnresolvedPair::Reason::MeshFailed, "mesh failed"});
     shrunk.unresolved.push_back({0, 1, UnresolvedPair::Reason::RegionFailed, "region failed"});
     REQUIRE(overlappingPairs(shrunk).size() == 2);
+    CHECK_THROWS_WITH(meshVolumes(shrunk), Catch::Matchers::EndsWith("[mesh_failed]: mesh failed; their tetrahedra would overlap: no volume mesh"));
+    // A second pair is counted; a tow with no triangles (wholly outside a cell) overlaps nothing.
+    shrunk.unresolved.push_back({1, 2, UnresolvedPair::Reason::LoopsMeet, "loops meet"});
+    shrunk.mesh.tows.push_back(TowMesh{});
+    shrunk.mesh.tows.back().name = "outside";
+    CHECK(overlappingPairs(shrunk).size() == 2);
+    shrunk.mesh.tows.back().triangles.push_back({0, 1, 2});
+    REQUIRE(overlappingPairs(shrunk).size() == 3);
     CHECK_THROWS_WITH(meshVolumes(shrunk), Catch::Matchers::Contains("[mesh_failed]: mesh failed (and 1 other pair)"));
 }
 

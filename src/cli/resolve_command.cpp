@@ -167,8 +167,9 @@ Options:
                      "min_dihedral_histogram_bins_deg" (lower edges: 0 5 10 20 ... 60, the last
                      bin up to 70.53),"min_dihedral_histogram"}}, with --cell also "matrix":
                      {"tetrahedra","volume"} and "tow_volume_fraction". Not made while two
-                     tows still overlap (an unresolved pair, exit 3): the surfaces are written,
-                     no DIR/textile_volume.*, report.json "volume_mesh": {"refused": why}.
+                     tows still overlap (an unresolved pair other than not_separated; exit 3,
+                     also with --allow-open): the surfaces are written, no new
+                     DIR/textile_volume.*, report.json "volume_mesh": {"refused": why}.
                      Needs Gmsh's library (Debian: libgmsh4.8). With --cell also the matrix:
                      physical volume / ELSET MATRIX, groups / NSETs XMIN ... ZMAX of every node
                      on each box face; report.json "volume_mesh" gains "matrix" and
@@ -206,7 +207,7 @@ Options:
                      GROWTH 0 or MAX 1 meshes every face at h
   --allow-open       exit 0 even when an intersection curve is open (or, with --no-caps, a
                      loop crosses a tow's end cap): never resolved, still named on stderr;
-                     other unresolved pairs still exit 3
+                     other unresolved pairs still exit 3, and so does --volume refused for it
   --threads N        worker threads (default: all hardware threads)
   --quiet            no progress lines on stderr (warnings are always printed: unresolved
                      pairs, the mesh quality note)
@@ -432,7 +433,9 @@ int runResolve(int argc, char** argv, int first)
         std::string volumeRefused;
         if (!overlapping.empty()) {
             const UnresolvedPairEntry& p = overlapping.front();
-            const std::size_t n = overlapping.size();
+            std::set<std::pair<std::size_t, std::size_t>> distinct;  // a pair may have several reasons
+            for (const UnresolvedPairEntry& q : overlapping) distinct.insert({q.towA, q.towB});
+            const std::size_t n = distinct.size();
             volumeRefused = std::to_string(n) + (n == 1 ? " tow pair still overlaps" : " tow pairs still overlap") + " (tows '" +
                             tows[p.towA].name() + "' and '" + tows[p.towB].name() + "' [" + p.code + "]" +
                             (n > 1 ? " and others" : "") + "): their tetrahedra would overlap";
@@ -566,7 +569,8 @@ int runResolve(int argc, char** argv, int first)
                       << "; the surfaces are written, the pairs are named below\n";
         reportContacts("resolve", result.intersections, tows);
         reportUnresolved("resolve", unresolved, tows);
-        return exitsUnresolved(unresolved, args.has("allow-open")) ? kExitUnresolved : kExitOk;
+        // A refused volume mesh exits 3 even with --allow-open: an output asked for is missing.
+        return exitsUnresolved(unresolved, args.has("allow-open")) || !volumeRefused.empty() ? kExitUnresolved : kExitOk;
     } catch (const std::exception& e) {
         return reportError("resolve", e);
     }

@@ -11,6 +11,7 @@
 #include <exception>
 #include <map>
 #include <mutex>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -496,8 +497,12 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
 
 std::vector<UnresolvedPairEntry> overlappingPairs(const ResolveResult& result)
 {
+    // A tow with no triangles (wholly outside a cell) overlaps nothing in the mesh, whatever the
+    // report's findings (which have no place) say about it.
+    const auto meshed = [&](std::size_t t) { return t < result.mesh.tows.size() && !result.mesh.tows[t].triangles.empty(); };
     std::vector<UnresolvedPairEntry> pairs = unresolvedPairs(result);
-    pairs.erase(std::remove_if(pairs.begin(), pairs.end(), [](const UnresolvedPairEntry& p) { return p.code == "not_separated"; }),
+    pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
+                               [&](const UnresolvedPairEntry& p) { return p.code == "not_separated" || !meshed(p.towA) || !meshed(p.towB); }),
                 pairs.end());
     return pairs;
 }
@@ -508,7 +513,9 @@ VolumeMesh meshVolumes(const ResolveResult& result, const VolumeMeshOptions& opt
     if (!pairs.empty()) {
         const UnresolvedPairEntry& p = pairs.front();
         const auto name = [&](std::size_t t) { return t < result.mesh.tows.size() ? result.mesh.tows[t].name : std::to_string(t); };
-        const std::size_t more = pairs.size() - 1;
+        std::set<std::pair<std::size_t, std::size_t>> distinct;  // a pair may have several reasons
+        for (const UnresolvedPairEntry& q : pairs) distinct.insert({q.towA, q.towB});
+        const std::size_t more = distinct.size() - 1;
         std::string others;
         if (more > 0) others = " (and " + std::to_string(more) + (more == 1 ? " other pair)" : " other pairs)");
         throw Error(ErrorCode::InvalidArgument, "tows '" + name(p.towA) + "' and '" + name(p.towB) + "' still overlap [" + p.code +
