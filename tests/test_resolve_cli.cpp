@@ -686,16 +686,19 @@ TEST_CASE("towgeom resolve --cell --formats step,brep: the exact solids clipped 
     REQUIRE(r.status == 0);
     CHECK(r.err.find("not valid") == std::string::npos);
     const testing::ReadShapes step = testing::readStep((out / "textile.step").string());
-    REQUIRE(step.solids.size() == 2);
+    REQUIRE(step.solids.size() == 3);
     CHECK(step.solids[0].name == "x");
     CHECK(step.solids[1].name == "y");
+    CHECK(step.solids[2].name == "MATRIX");  // the box minus the tubes
     const double pi = std::acos(-1.0);
     CHECK(std::abs(step.solids[0].volume - pi * 0.25 * 3.0) <= 1e-4 * pi * 0.25 * 3.0);  // the x tube between x = 0.5 and 3.5
     for (const testing::ReadSolid& solid : step.solids) CHECK(solid.valid);
+    CHECK(step.solids[2].volume > 0.0);
+    CHECK(std::abs(step.solids[0].volume + step.solids[1].volume + step.solids[2].volume - 3.0 * 3.0 * 2.5) <= 1e-6 * 3.0 * 3.0 * 2.5);
     const testing::ReadShapes brep = testing::readBrep((out / "textile.brep").string(), false);
-    REQUIRE(brep.solids.size() == 2);
-    REQUIRE(brep.sharedFaces.size() == 1);
-    CHECK(brep.sharedFaces[0].second == 1);
+    REQUIRE(brep.solids.size() == 3);
+    REQUIRE(brep.sharedFaces.size() == 3);  // x-y, and each tube's own face with the matrix
+    for (const auto& pair : brep.sharedFaces) CHECK(pair.second == 1);
 }
 
 TEST_CASE("towgeom resolve --cell DIR/textile.json takes the generator's periodic unit cell", "[cli][resolve][cell]")

@@ -146,7 +146,7 @@ TEST_CASE("trimmed B-rep clipped to a cell: two crossing tubes cut by the box, a
     const double exactY = testing::boxCommonVolume(wholeFile, 1, lo, hi) - testing::commonVolume(wholeFile, 1, 0);
     const double pi = std::acos(-1.0);
     const testing::ReadShapes back = testing::readBrep(file);
-    REQUIRE(back.solids.size() == 2);  // "far" has no solid
+    REQUIRE(back.solids.size() == 3);  // x, y and the matrix; "far" has no solid
     const BrepSolid &x = brep.solids()[0], &y = brep.solids()[1], &far = brep.solids()[2];
     INFO("x: volume " << x.volume << " (" << exactX << "), area " << x.area << "; y: volume " << y.volume << " (" << exactY << ")");
     CHECK(x.valid);
@@ -170,8 +170,29 @@ TEST_CASE("trimmed B-rep clipped to a cell: two crossing tubes cut by the box, a
     CHECK(brep.solids()[0].cellFaces + brep.solids()[1].cellFaces == 4);
     CHECK(far.volume == 0.0);
     CHECK(far.area == 0.0);
-    REQUIRE(back.sharedFaces.size() == 1);
-    CHECK(back.sharedFaces[0].second == 1);
+    // The matrix: the box less both tubes, measured on the file (BRepGProp over its own faces:
+    // the box's faces with the cut faces as holes, and the tubes' faces it shares).
+    const BrepSolid& matrix = brep.matrix();
+    INFO("matrix: volume " << matrix.volume << ", read back " << back.solids[2].volume << ", area " << matrix.area);
+    CHECK(matrix.name == "MATRIX");
+    CHECK(matrix.valid);
+    CHECK(back.solids[2].valid);
+    CHECK(matrix.faces == 8);        // 6 box faces (4 with the cut faces as holes) and each tube's own face
+    CHECK(matrix.cellFaces == 6);
+    CHECK(matrix.sharedFaces == 2);  // the tubes' own faces; the face the tubes share is not the matrix's
+    CHECK(relative(back.solids[2].volume, cell.volume() - exactX - exactY) <= 1e-6);
+    CHECK(relative(matrix.volume, back.solids[2].volume) <= 1e-6);
+    CHECK(relative(matrix.area, testing::readBrepArea(file, 2)) <= 1e-6);
+    // x-y share the region's face; each shares its own face with the matrix.
+    REQUIRE(back.sharedFaces.size() == 3);
+    for (const auto& pair : back.sharedFaces) CHECK(pair.second == 1);
+    // BrepOptions::matrix false: the tows only.
+    BrepOptions noMatrix;
+    noMatrix.matrix = false;
+    const TrimmedBrep towsOnly = trimmedBrep(tows, r, noMatrix);
+    CHECK(towsOnly.matrix().faces == 0);
+    towsOnly.writeBrep(file);
+    CHECK(testing::readBrep(file, false).solids.size() == 2);
     fs::remove_all(dir);
 }
 
@@ -242,11 +263,22 @@ TEST_CASE("trimmed B-rep of a periodic twill cell: solids clipped by the box, cu
         ++inside;
     }
     CHECK(inside == 8);
-    CHECK(fromBrep.solids.size() == 8);
+    CHECK(fromBrep.solids.size() == 9);  // and the matrix
     CHECK(tows_volume < cell.volume());
+    // The matrix: the box less the 8 tows, bounded by the 6 box faces (with the cut faces as
+    // holes) and each tow's own face (the same face as the tow's).
+    const BrepSolid& matrix = brep.matrix();
+    CHECK(matrix.valid);
+    CHECK(fromBrep.solids[8].valid);
+    CHECK(matrix.faces == 14);
+    CHECK(matrix.cellFaces == 6);
+    CHECK(matrix.sharedFaces == 8);
+    CHECK(relative(matrix.volume, cell.volume() - tows_volume) <= 1e-12);
+    // Its faces as read back: the box's less the cut faces plus the tows' own faces.
+    CHECK(relative(matrix.area, testing::readBrepArea(brepFile, 8)) <= 1e-6);
     std::size_t shared = 0;
     for (const auto& entry : fromBrep.sharedFaces) shared += entry.second;
-    CHECK(shared == 16);
+    CHECK(shared == 16 + 8);
 
     // Gmsh's OpenCASCADE kernel reads the STEP file (-0: the model as read, written back as
     // BREP; the bundled twill's test meshes its STEP file).

@@ -5,6 +5,8 @@
 
 #include <TopoDS_Solid.hxx>
 
+#include <vector>
+
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -31,6 +33,25 @@ struct ClippedSolid {
 /// @throws towgeom::Error (Internal) naming @p tow when OpenCASCADE's boolean fails, and
 ///         (Unsupported) when the inside is more than one solid.
 ClippedSolid clipSolidToCell(const TopoDS_Solid& solid, const Cell& cell, const std::string& tow);
+
+/// What cutMatrix() gives.
+struct MatrixCut {
+    /// The box minus the tows: one solid, or several where tows cut the box apart; each valid
+    /// (BRepCheck_Analyzer).
+    std::vector<TopoDS_Solid> pieces;
+    std::size_t faces = 0;             ///< faces of all pieces
+    std::size_t sharedFaces = 0;       ///< of them, faces of a tow's solid (the same face)
+    std::size_t cellFaces = 0;         ///< of them, made of the box's faces
+    std::string failure;               ///< why OpenCASCADE's boolean failed (pieces empty); empty when it did not
+};
+
+/// The cell's box minus @p tows (the tows' solids clipped to it), with OpenCASCADE's boolean cut
+/// (its gluing option first, the full boolean when that fails or gives an invalid solid)
+/// (tows as tools; destructive as clipSolidToCell(): a tolerance the intersection raises is
+/// raised on the tows' own edges, so the tows' faces it keeps stay the tows' faces).
+/// A failure of the boolean is returned in MatrixCut::failure, not thrown: it costs only the
+/// matrix.
+MatrixCut cutMatrix(const std::vector<TopoDS_Solid>& tows, const Cell& cell);
 
 }  // namespace detail
 TOWGEOM_END_NAMESPACE

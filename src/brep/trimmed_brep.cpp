@@ -410,10 +410,46 @@ bool overlapInUv(const std::vector<UV>& a, const std::vector<UV>& b)
 
 }  // namespace
 
-TrimmedBrep::TrimmedBrep(std::shared_ptr<const Impl> impl, std::vector<BrepSolid> solids, std::size_t sharedFaces)
-    : impl_(std::move(impl)), solids_(std::move(solids)), sharedFaces_(sharedFaces)
+TrimmedBrep::TrimmedBrep(std::shared_ptr<const Impl> impl, std::vector<BrepSolid> solids, std::size_t sharedFaces, BrepSolid matrix)
+    : impl_(std::move(impl)), solids_(std::move(solids)), sharedFaces_(sharedFaces), matrix_(std::move(matrix))
 {
 }
+
+namespace {
+
+/// The matrix of a cell: the box minus the tows' clipped solids (@p impl's), added to the compound
+/// as MATRIX; volume the box's less the tows' (@p tows), area the box's faces less the tows'
+/// cut faces (@p cutAreas) plus the tows' faces no other tow shares (@p freeAreas). The tows'
+/// tolerances are read again (the boolean may raise them on their own edges).
+BrepSolid buildMatrix(TrimmedBrep::Impl& impl, const Cell& cell, std::vector<BrepSolid>& tows, double cutAreas, double freeAreas,
+                      BRep_Builder& b)
+{
+    BrepSolid m;
+    m.name = "MATRIX";
+    const detail::MatrixCut cut = detail::cutMatrix(impl.solids, cell);
+    if (!cut.failure.empty()) return m;  // faces 0, not valid: the tows only
+    const double dx = cell.max.x - cell.min.x, dy = cell.max.y - cell.min.y, dz = cell.max.z - cell.min.z;
+    m.volume = cell.volume();
+    for (const BrepSolid& t : tows) m.volume -= t.volume;
+    m.area = 2.0 * (dx * dy + dy * dz + dz * dx) - cutAreas + freeAreas;
+    m.faces = cut.faces;
+    m.sharedFaces = cut.sharedFaces;
+    m.cellFaces = cut.cellFaces;
+    m.valid = true;  // cutMatrix() keeps only pieces BRepCheck_Analyzer accepts
+    const std::size_t towSolids = impl.solids.size();  // the tows inside the cell, in order
+    for (const TopoDS_Solid& piece : cut.pieces) {
+        b.Add(impl.compound, piece);
+        impl.solids.push_back(piece);
+        impl.names.push_back(m.name);
+        m.maxTolerance = std::max(m.maxTolerance, maxToleranceOf(piece));
+    }
+    std::size_t k = 0;
+    for (BrepSolid& t : tows)
+        if (t.faces > 0 && k < towSolids) t.maxTolerance = maxToleranceOf(impl.solids[k++]);
+    return m;
+}
+
+}  // namespace
 
 TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult& r, const BrepOptions& o)
 {
@@ -462,6 +498,7 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
 
     auto impl = std::make_shared<TrimmedBrep::Impl>();
     std::vector<BrepSolid> solids(tows.size());
+    BrepSolid matrix;  // with a cell: the box minus the tows
     std::size_t sharedCount = 0;
     try {
         // 1. One edge per loop.
@@ -496,6 +533,8 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
                     faces[t].push_back(insideFace(tows[t].impl().surface, wire(h, t, true), {}, tolerance));
         }
         // 3. Each tow's own surface outside its loops, and its caps; the solid.
+        // With a cell, for the matrix's area: the tows' cut faces and their faces no other tow shares.
+        double cutAreas = 0.0, freeAreas = 0.0;
         BRep_Builder b;
         b.MakeCompound(impl->compound);
         for (std::size_t t = 0; t < tows.size(); ++t) {
@@ -567,6 +606,11 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
                 out.area += 2.0 * clipped.cutArea - clipped.outsideArea;
                 solid = *clipped.inside;
                 out.cellFaces = clipped.cutFaces;
+                if (o.matrix) {
+                    cutAreas += clipped.cutArea;
+                    freeAreas += out.area - clipped.cutArea;
+                    for (const TopoDS_Face& f : sharedOf[t]) freeAreas -= areaOf(f);
+                }
                 out.faces = 0;
                 std::size_t stillShared = 0;
                 for (TopExp_Explorer x(solid, TopAbs_FACE); x.More(); x.Next()) {
@@ -587,10 +631,11 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
             out.valid = BRepCheck_Analyzer(solid).IsValid();
             out.maxTolerance = maxToleranceOf(solid);
         }
+        if (r.mesh.cell && o.matrix) matrix = buildMatrix(*impl, r.mesh.cell->box, solids, cutAreas, freeAreas, b);
     } catch (const Standard_Failure& e) {
         throw Error(ErrorCode::Internal, std::string("OpenCASCADE failed building the trimmed B-rep: ") + e.GetMessageString());
     }
-    return TrimmedBrep(std::move(impl), std::move(solids), sharedCount);
+    return TrimmedBrep(std::move(impl), std::move(solids), sharedCount, std::move(matrix));
 }
 
 TOWGEOM_END_NAMESPACE

@@ -45,7 +45,8 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                    CAPS_NAME (a tow's two end caps); with --cell also XMIN ... ZMAX (every
                    triangle on each box face: the matrix's and the tows' caps)
   DIR/textile.step with --formats step: STEP AP214, one solid per tow named after it (with
-                   --cell: per tow inside the box, clipped to it), for CAD-based FE tools
+                   --cell: per tow inside the box, clipped to it, and the matrix, the box
+                   minus the tows, a solid named MATRIX), for CAD-based FE tools
                    (Abaqus/CAE, ANSYS, Gmsh's OpenCASCADE kernel); your units written as
                    millimetres. DIR/textile.brep with --formats brep: the
                    same in OpenCASCADE's BREP, where shared faces stay one face of both solids
@@ -564,6 +565,9 @@ int runResolve(int argc, char** argv, int first)
                     std::cerr << "towgeom resolve: warning: the solid of tow '" << solid.name
                               << "' in textile.step/.brep is not valid for OpenCASCADE's checker (BRepCheck_Analyzer; "
                                  "largest edge tolerance " << solid.maxTolerance << "): CAD tools may refuse it\n";
+        if (brep && mesh.cell && brep->matrix().faces == 0)
+            std::cerr << "towgeom resolve: warning: OpenCASCADE's boolean could not cut the cell's box by the tows into a valid "
+                         "solid: textile.step/.brep hold the tows without the matrix\n";
         if (!volumeRefused.empty())  // a warning, whatever --quiet says
             std::cerr << "towgeom resolve: warning: no volume mesh written (--volume): " << volumeRefused
                       << "; the surfaces are written, the pairs are named below\n";

@@ -134,6 +134,16 @@ double commonVolume(const std::string& path, std::size_t i, std::size_t j)
     return p.Mass();
 }
 
+double readBrepArea(const std::string& path, std::size_t i)
+{
+    const TopoDS_Shape shape = brepShape(path);
+    std::vector<TopoDS_Shape> solids;
+    for (TopExp_Explorer x(shape, TopAbs_SOLID); x.More(); x.Next()) solids.push_back(x.Current());
+    GProp_GProps p;
+    BRepGProp::SurfaceProperties(solids.at(i), p, 1e-7, Standard_True);
+    return p.Mass();
+}
+
 double boxCommonVolume(const std::string& path, std::size_t i, const std::array<double, 3>& min, const std::array<double, 3>& max)
 {
     const TopoDS_Shape shape = brepShape(path);
