@@ -706,14 +706,7 @@ TEST_CASE("a cell face through an overlap: the loop crosses it, both tows cut th
     // No triangle of one tow crosses the other's; the tetrahedra conform at every interface.
     CHECK(testing::crossingPairsBetweenTows(res.mesh) == 0);
     checkConforming(res, meshVolumes(res.mesh));
-    // The trimmed B-rep does not clip shared faces by the cell yet: refused, not half-built.
-    try {
-        trimmedBrep(tows, res);
-        FAIL("not refused");
-    } catch (const Error& e) {
-        CHECK(e.code() == ErrorCode::Unsupported);
-        CHECK(std::string(e.what()).find("crosses a face of the cell") != std::string::npos);
-    }
+    // test_trimmed_brep builds the trimmed B-rep of these tows (the shared face cut by the box).
     // The symmetric method: the caps on the face are split by rank, so a region reaching the
     // face keeps the higher-ranked tow's surface, noted: the rank rule's volumes.
     o.method = ResolutionMethod::Symmetric;

@@ -71,12 +71,19 @@ public:
     /// Its faces are the box's faces minus the tows' cut faces, and the tows' faces that no other
     /// tow shares: in writeBrep() those are the tows' own faces (the same face in both solids),
     /// in writeStep() written again for the matrix. volume is the box's less the tows' volumes
-    /// (BrepSolid::volume), area the box's less the tows' cut faces plus the tows' faces it
+    /// (BrepSolid::volume), area the box's less the tows' faces on it plus the tows' faces it
     /// bounds (their BRepGProp areas), sharedFaces the faces it shares with the tows, cellFaces
-    /// its faces on the box; valid: OpenCASCADE's checker accepts it (a piece it does not accept
-    /// is not kept). faces 0 without a cell, without BrepOptions::matrix, or when OpenCASCADE's
-    /// boolean failed or gave an invalid solid (then the files hold the tows only).
+    /// its faces on the box; valid: OpenCASCADE's checker accepts every piece, and its faces on
+    /// the tows are exactly the tows' faces no other tow shares and not on the box. faces 0
+    /// without a cell, without BrepOptions::matrix, or when it is not built (matrixNote() says
+    /// why; then the files hold the tows only). A tow named MATRIX cannot be told from it in the
+    /// files.
     const BrepSolid& matrix() const { return matrix_; }
+    /// Why the matrix was not built although asked for (a cell and BrepOptions::matrix): tows
+    /// that still overlap (the box less the tows would not be the matrix; the first pair named,
+    /// as overlappingPairs() gives them), or OpenCASCADE's boolean failing or giving a solid
+    /// that fails the checks above. Empty when it was built or not asked for.
+    const std::string& matrixNote() const { return matrixNote_; }
 
     /// Writes the compound as STEP AP214 to @p path, each solid named after its tow (the name of
     /// its MANIFOLD_SOLID_BREP), lengths in millimetres as STEP needs a unit: your units are
@@ -102,13 +109,15 @@ public:
     /// Kernel data (the library's own use).
     const Impl& impl() const { return *impl_; }
     /// Made by trimmedBrep().
-    TrimmedBrep(std::shared_ptr<const Impl> impl, std::vector<BrepSolid> solids, std::size_t sharedFaces, BrepSolid matrix = {});
+    TrimmedBrep(std::shared_ptr<const Impl> impl, std::vector<BrepSolid> solids, std::size_t sharedFaces, BrepSolid matrix = {},
+                std::string matrixNote = {});
 
 private:
     std::shared_ptr<const Impl> impl_;
     std::vector<BrepSolid> solids_;
     std::size_t sharedFaces_ = 0;
     BrepSolid matrix_;
+    std::string matrixNote_;
 };
 
 /// Builds the resolved tows of @p resolved (resolveTextile() of @p tows, ResolutionMethod::
@@ -125,10 +134,11 @@ private:
 /// OpenCASCADE's boolean common: where the box cuts a tow its caps are the cut faces on the
 /// box's planes (the cell faces after clipping), and a tow wholly outside the box has no solid
 /// (BrepSolid::faces 0, volume 0; it is left out of the compound and the files). Faces the box
-/// does not cut stay as they are, so the shared faces stay shared. A loop that crosses a face
-/// of the cell (which resolveTextile() resolves in the meshes) is refused (Unsupported) here.
-/// The matrix, the box minus the clipped tows, is built too (TrimmedBrep::matrix(),
-/// BrepOptions::matrix).
+/// does not cut stay as they are, so the shared faces stay shared; the two tows of a loop that
+/// crosses a face of the cell (or comes near one) are clipped together, so the part of their
+/// shared face inside the box stays one face of both. The matrix, the box minus the clipped
+/// tows, is built too (TrimmedBrep::matrix(), BrepOptions::matrix), unless tows still overlap
+/// (TrimmedBrep::matrixNote()).
 /// Each loop is one edge: a periodic B-spline through its points (chord-length parameters) with a
 /// periodic B-spline curve through its (u,v) points on each of the two surfaces, made same-
 /// parameter by OpenCASCADE. BrepSolid::valid says whether OpenCASCADE's checker accepts each

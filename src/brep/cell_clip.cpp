@@ -1,17 +1,27 @@
 #include "brep/cell_clip.hpp"
 
 #include <BOPAlgo_PaveFiller.hxx>
+#include <BRepAlgoAPI_BuilderAlgo.hxx>
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBndLib.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
+#include <Geom_Plane.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_DataMapIteratorOfDataMapOfShapeInteger.hxx>
+#include <TopTools_DataMapOfShapeInteger.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopTools_ListIteratorOfListOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
+
+#include <algorithm>
+#include <map>
 
 #include "towgeom/error.hpp"
 
@@ -23,79 +33,321 @@ namespace {
 /// clipped volume, the whole solid's less theirs, is within 1e-9 of their volume.
 constexpr double kMeasureEps = 1e-9;
 
+/// Whether @p face is planar and lies in a plane of @p cell's box (a cut face, or a tow's end
+/// cap there): within 1e-9 of the box's size.
+bool onBoxPlane(const TopoDS_Face& face, const Cell& cell)
+{
+    const Handle(Geom_Plane) plane = Handle(Geom_Plane)::DownCast(BRep_Tool::Surface(face));
+    if (plane.IsNull()) return false;
+    const gp_Dir n = plane->Axis().Direction();
+    const gp_Pnt o = plane->Location();
+    const double size = std::max({cell.max.x - cell.min.x, cell.max.y - cell.min.y, cell.max.z - cell.min.z}), tol = 1e-9 * size;
+    const double c[3] = {o.X(), o.Y(), o.Z()}, lo[3] = {cell.min.x, cell.min.y, cell.min.z}, hi[3] = {cell.max.x, cell.max.y, cell.max.z};
+    const double d[3] = {n.X(), n.Y(), n.Z()};
+    for (int k = 0; k < 3; ++k)
+        if (std::abs(std::abs(d[k]) - 1.0) <= 1e-12 && (std::abs(c[k] - lo[k]) <= tol || std::abs(c[k] - hi[k]) <= tol)) return true;
+    return false;
+}
+
+
+/// Fills @p out from its inside part (when there is one: the cut faces, those in @p cutFaces) and
+/// the parts cut off (@p outside).
+void measure(ClippedSolid& out, const TopTools_IndexedMapOfShape& cutFaces, const std::vector<TopoDS_Shape>& outside)
+{
+    if (!out.inside) return;  // wholly outside: nothing to measure
+    for (TopExp_Explorer x(*out.inside, TopAbs_FACE); x.More(); x.Next()) {
+        if (!cutFaces.Contains(x.Current())) continue;
+        GProp_GProps a;
+        BRepGProp::SurfaceProperties(x.Current(), a, kMeasureEps);
+        out.cutArea += a.Mass();
+        ++out.cutFaces;
+    }
+    for (const TopoDS_Shape& part : outside) {
+        GProp_GProps v, a;
+        BRepGProp::VolumeProperties(part, v, kMeasureEps);
+        BRepGProp::SurfaceProperties(part, a, kMeasureEps);
+        out.outsideVolume += std::abs(v.Mass());
+        out.outsideArea += a.Mass();
+    }
+}
+
+void refuseSeveral(std::size_t pieces, const std::string& tow)
+{
+    if (pieces > 1)
+        throw Error(ErrorCode::Unsupported, "tow '" + tow + "' is cut into " + std::to_string(pieces) +
+                                                " solids by the cell's box: not built as a trimmed B-rep");
+}
+
+/// One solid: BRepAlgoAPI_Common and _Cut on one BOPAlgo_PaveFiller.
+ClippedSolid clipOne(const TopoDS_Solid& solid, const TopoDS_Shape& box, const std::string& tow)
+{
+    TopTools_ListOfShape arguments;
+    arguments.Append(solid);
+    arguments.Append(box);
+    BOPAlgo_PaveFiller intersection;
+    intersection.SetArguments(arguments);
+    // Destructive (OCCT's default): a tolerance the intersection raises is raised on the
+    // shared edge itself, not on a copy, so the faces two tows share stay one face.
+    intersection.Perform();
+    if (intersection.HasErrors())
+        throw Error(ErrorCode::Internal, "tow '" + tow + "': OpenCASCADE could not intersect its solid with the cell's box");
+    BRepAlgoAPI_Common common(solid, box, intersection);
+    BRepAlgoAPI_Cut cut(solid, box, intersection);
+    if (!common.IsDone() || common.HasErrors() || !cut.IsDone() || cut.HasErrors())
+        throw Error(ErrorCode::Internal, "tow '" + tow + "': OpenCASCADE could not clip its solid to the cell's box");
+    ClippedSolid out;
+    std::size_t pieces = 0;
+    for (TopExp_Explorer x(common.Shape(), TopAbs_SOLID); x.More(); x.Next(), ++pieces) out.inside = TopoDS::Solid(x.Current());
+    refuseSeveral(pieces, tow);
+    // The cut faces: what the boolean made of the box's faces (its history), not whatever lies
+    // in a box plane (a tow's own end cap may).
+    TopTools_IndexedMapOfShape cutFaces;
+    for (TopExp_Explorer x(box, TopAbs_FACE); x.More(); x.Next())
+        for (TopTools_ListIteratorOfListOfShape m(common.Modified(x.Current())); m.More(); m.Next()) cutFaces.Add(m.Value());
+    std::vector<TopoDS_Shape> outside;
+    for (TopExp_Explorer x(cut.Shape(), TopAbs_SOLID); x.More(); x.Next()) outside.push_back(x.Current());
+    measure(out, cutFaces, outside);
+    return out;
+}
+
+/// Several solids: one general fuse of them all with the box (BRepAlgoAPI_BuilderAlgo), whose
+/// splits of a face are the same face in every solid that has it. A solid's part inside the box
+/// is its split that is also a split of the box.
+std::vector<ClippedSolid> clipTogether(const std::vector<TopoDS_Solid>& solids, const TopoDS_Shape& box, const Cell& cell,
+                                       const std::vector<std::string>& names, const std::string& who)
+{
+    TopTools_ListOfShape arguments;
+    for (const TopoDS_Solid& solid : solids) arguments.Append(solid);
+    arguments.Append(box);
+    BRepAlgoAPI_BuilderAlgo fuse;
+    fuse.SetArguments(arguments);
+    fuse.SetRunParallel(Standard_True);
+    fuse.Build();
+    if (!fuse.IsDone() || fuse.HasErrors())
+        throw Error(ErrorCode::Internal, who + ": OpenCASCADE's general fuse of their solids with the cell's box failed");
+    const auto splits = [&](const TopoDS_Shape& s) {
+        std::vector<TopoDS_Shape> out;
+        for (TopTools_ListIteratorOfListOfShape m(fuse.Modified(s)); m.More(); m.Next()) out.push_back(m.Value());
+        if (out.empty() && !fuse.IsDeleted(s)) out.push_back(s);  // not split: as it was
+        return out;
+    };
+    TopTools_IndexedMapOfShape boxParts, cutFaces;
+    for (const TopoDS_Shape& part : splits(box)) boxParts.Add(part);
+    for (TopExp_Explorer x(box, TopAbs_FACE); x.More(); x.Next())
+        for (TopTools_ListIteratorOfListOfShape m(fuse.Modified(x.Current())); m.More(); m.Next()) cutFaces.Add(m.Value());
+    std::vector<ClippedSolid> all(solids.size());
+    for (std::size_t i = 0; i < solids.size(); ++i) {
+        std::vector<TopoDS_Shape> outside;
+        std::size_t pieces = 0;
+        for (const TopoDS_Shape& part : splits(solids[i])) {
+            bool inside = boxParts.Contains(part);
+            if (part.IsSame(solids[i])) {  // not split: wholly inside or wholly outside
+                Bnd_Box b;
+                BRepBndLib::Add(part, b);
+                double x0, y0, z0, x1, y1, z1;
+                b.Get(x0, y0, z0, x1, y1, z1);
+                const Point3 c{0.5 * (x0 + x1), 0.5 * (y0 + y1), 0.5 * (z0 + z1)};
+                inside = c.x > cell.min.x && c.x < cell.max.x && c.y > cell.min.y && c.y < cell.max.y && c.z > cell.min.z &&
+                         c.z < cell.max.z;
+            }
+            if (!inside) {
+                outside.push_back(part);
+                continue;
+            }
+            all[i].inside = TopoDS::Solid(part);
+            ++pieces;
+        }
+        refuseSeveral(pieces, names[i]);
+        measure(all[i], cutFaces, outside);
+    }
+    return all;
+}
+
 }  // namespace
 
-ClippedSolid clipSolidToCell(const TopoDS_Solid& solid, const Cell& cell, const std::string& tow)
+std::vector<ClippedSolid> clipSolidsToCell(const std::vector<TopoDS_Solid>& solids, const Cell& cell,
+                                           const std::vector<std::string>& names)
 {
-    ClippedSolid out;
+    std::string who;  // for messages: "tow 'a'" or "tows 'a', 'b'"
+    for (const std::string& n : names) who += (who.empty() ? "'" : ", '") + n + "'";
+    who = (names.size() == 1 ? "tow " : "tows ") + who;
     try {
         const TopoDS_Shape box = BRepPrimAPI_MakeBox(gp_Pnt(cell.min.x, cell.min.y, cell.min.z),
                                                      gp_Pnt(cell.max.x, cell.max.y, cell.max.z)).Solid();
-        TopTools_ListOfShape arguments;
-        arguments.Append(solid);
-        arguments.Append(box);
-        BOPAlgo_PaveFiller intersection;
-        intersection.SetArguments(arguments);
-        // Destructive (OCCT's default): a tolerance the intersection raises is raised on the
-        // shared edge itself, not on a copy, so the faces two tows share stay one face.
-        intersection.Perform();
-        if (intersection.HasErrors())
-            throw Error(ErrorCode::Internal, "tow '" + tow + "': OpenCASCADE could not intersect its solid with the cell's box");
-        BRepAlgoAPI_Common common(solid, box, intersection);
-        BRepAlgoAPI_Cut cut(solid, box, intersection);
-        if (!common.IsDone() || common.HasErrors() || !cut.IsDone() || cut.HasErrors())
-            throw Error(ErrorCode::Internal, "tow '" + tow + "': OpenCASCADE could not clip its solid to the cell's box");
-
-        std::size_t pieces = 0;
-        for (TopExp_Explorer x(common.Shape(), TopAbs_SOLID); x.More(); x.Next(), ++pieces) out.inside = TopoDS::Solid(x.Current());
-        if (pieces > 1)
-            throw Error(ErrorCode::Unsupported, "tow '" + tow + "' is cut into " + std::to_string(pieces) +
-                                                    " solids by the cell's box: not built as a trimmed B-rep");
-        if (!out.inside) return out;  // wholly outside: nothing to measure
-        // The cut faces: what the boolean made of the box's faces (its history), not whatever
-        // lies in a box plane (a tow's own end cap may).
-        TopTools_IndexedMapOfShape cutFaces;
-        for (TopExp_Explorer x(box, TopAbs_FACE); x.More(); x.Next())
-            for (TopTools_ListIteratorOfListOfShape m(common.Modified(x.Current())); m.More(); m.Next()) cutFaces.Add(m.Value());
-        for (TopExp_Explorer x(*out.inside, TopAbs_FACE); x.More(); x.Next()) {
-            if (!cutFaces.Contains(x.Current())) continue;
-            GProp_GProps a;
-            BRepGProp::SurfaceProperties(x.Current(), a, kMeasureEps);
-            out.cutArea += a.Mass();
-            ++out.cutFaces;
-        }
-        for (TopExp_Explorer x(cut.Shape(), TopAbs_SOLID); x.More(); x.Next()) {
-            GProp_GProps v, a;
-            BRepGProp::VolumeProperties(x.Current(), v, kMeasureEps);
-            BRepGProp::SurfaceProperties(x.Current(), a, kMeasureEps);
-            out.outsideVolume += std::abs(v.Mass());
-            out.outsideArea += a.Mass();
-        }
+        if (solids.size() == 1) return {clipOne(solids[0], box, names[0])};
+        return clipTogether(solids, box, cell, names, who);
     } catch (const Standard_Failure& e) {
-        throw Error(ErrorCode::Internal, "tow '" + tow + "': OpenCASCADE failed clipping its solid to the cell: " + e.GetMessageString());
+        throw Error(ErrorCode::Internal, who + ": OpenCASCADE failed clipping to the cell: " + e.GetMessageString());
+    }
+}
+
+namespace {
+
+/// Whether a point of @p loop lies outside @p box or within @p margin of one of its faces.
+bool nearBoxFace(const IntersectionLoop& loop, const Cell& box, double margin)
+{
+    for (const LoopPoint& p : loop.points()) {
+        const Point3& q = p.point;
+        const double inside = std::min({q.x - box.min.x, box.max.x - q.x, q.y - box.min.y, box.max.y - q.y, q.z - box.min.z,
+                                        box.max.z - q.z});
+        if (inside <= margin) return true;
+    }
+    return false;
+}
+
+std::size_t rootOf(std::vector<std::size_t>& parent, std::size_t t)
+{
+    while (parent[t] != t) t = parent[t] = parent[parent[t]];
+    return t;
+}
+
+double areaOf(const TopoDS_Shape& shape)
+{
+    GProp_GProps a;
+    BRepGProp::SurfaceProperties(shape, a, kMeasureEps);
+    return a.Mass();
+}
+
+}  // namespace
+
+ClippedTows clipTowsToCell(const std::vector<TowSurface>& tows, const ResolveResult& r, std::vector<TopoDS_Solid>& built,
+                           std::vector<BrepSolid>& solids, const std::vector<std::size_t>& sharedBefore, bool areas)
+{
+    const Cell& box = r.mesh.cell->box;
+    // Groups: tows joined by a region whose loop (or island) reaches a face of the box.
+    std::vector<std::size_t> parent(tows.size());
+    for (std::size_t t = 0; t < tows.size(); ++t) parent[t] = t;
+    for (const ConnectedRegion& g : r.mesh.regions) {
+        const double margin = 0.05 * std::min(tows[g.primary].towSize(), tows[g.secondary].towSize());
+        bool near = nearBoxFace(r.intersections.loops[g.loop], box, margin);
+        for (std::size_t h : g.holes) near = near || nearBoxFace(r.intersections.loops[h], box, margin);
+        if (near) parent[rootOf(parent, g.primary)] = rootOf(parent, g.secondary);
+    }
+    std::map<std::size_t, std::vector<std::size_t>> groups;
+    for (std::size_t t = 0; t < tows.size(); ++t)
+        if (!built[t].IsNull()) groups[rootOf(parent, t)].push_back(t);
+
+    ClippedTows out;
+    for (const auto& [root, members] : groups) {
+        std::vector<TopoDS_Solid> group;
+        std::vector<std::string> names;
+        for (std::size_t t : members) {
+            group.push_back(built[t]);
+            names.push_back(tows[t].name());
+        }
+        const std::vector<ClippedSolid> clipped = clipSolidsToCell(group, box, names);
+        for (std::size_t i = 0; i < members.size(); ++i) {
+            const std::size_t t = members[i];
+            const ClippedSolid& c = clipped[i];
+            BrepSolid& s = solids[t];
+            const bool meshed = !r.mesh.tows[t].triangles.empty();
+            if (c.inside.has_value() != meshed)
+                throw Error(ErrorCode::Internal, "tow '" + tows[t].name() + "': OpenCASCADE's boolean keeps " +
+                                                     (meshed ? "nothing" : "a part") + " of its solid inside the cell, its mesh " +
+                                                     (meshed ? "a part" : "nothing"));
+            if (!c.inside) {  // wholly outside: no solid
+                built[t].Nullify();
+                s.volume = s.area = 0.0;
+                s.faces = s.sharedFaces = s.loops = 0;
+                continue;
+            }
+            // What the box cuts off measured (faces without holes), the rest kept.
+            s.volume -= c.outsideVolume;
+            s.area += 2.0 * c.cutArea - c.outsideArea;
+            s.cellFaces = c.cutFaces;
+            built[t] = *c.inside;
+        }
+    }
+    // The faces two clipped solids share: those shared before, or their parts inside.
+    TopTools_DataMapOfShapeInteger uses;
+    for (const TopoDS_Solid& solid : built)
+        if (!solid.IsNull())
+            for (TopExp_Explorer x(solid, TopAbs_FACE); x.More(); x.Next()) {
+                if (!uses.IsBound(x.Current())) uses.Bind(x.Current(), 0);
+                ++uses.ChangeFind(x.Current());
+            }
+    for (TopTools_DataMapIteratorOfDataMapOfShapeInteger it(uses); it.More(); it.Next()) out.sharedFaces += it.Value() > 1;
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        if (built[t].IsNull()) continue;
+        BrepSolid& s = solids[t];
+        s.faces = s.sharedFaces = 0;
+        double sharedArea = 0.0, onBox = 0.0;  // its faces the matrix does not have: shared ones, those on the box
+        for (TopExp_Explorer x(built[t], TopAbs_FACE); x.More(); x.Next()) {
+            ++s.faces;
+            const bool shared = uses.Find(x.Current()) > 1;
+            s.sharedFaces += shared;
+            if (!areas) continue;
+            if (shared)
+                sharedArea += areaOf(x.Current());
+            else if (onBoxPlane(TopoDS::Face(x.Current()), box))
+                onBox += areaOf(x.Current());
+        }
+        if (s.sharedFaces < sharedBefore[t])
+            throw Error(ErrorCode::Internal, "tow '" + tows[t].name() + "': clipped to the cell it keeps " + std::to_string(s.sharedFaces) +
+                                                 " of the " + std::to_string(sharedBefore[t]) + " faces it shares with other tows");
+        if (areas) {
+            out.cutAreas += onBox;
+            out.freeAreas += s.area - onBox - sharedArea;
+        }
     }
     return out;
 }
 
 namespace {
 
-/// The box minus @p tools by OpenCASCADE's boolean cut with the gluing option @p glue; empty
-/// when the boolean fails or its result is not valid (BRepCheck_Analyzer).
-std::vector<TopoDS_Solid> cutBox(const TopoDS_Shape& box, const TopTools_ListOfShape& tools, BOPAlgo_GlueEnum glue,
-                                 BRepAlgoAPI_Cut& cut)
+/// The box of @p cell (a new one: a boolean may raise tolerances on its arguments) minus
+/// @p tools by OpenCASCADE's boolean cut with the gluing option @p glue, and the box's faces or
+/// what the cut made of them in @p boxFaces; empty, with @p why, when the boolean fails or throws,
+/// a piece fails BRepCheck_Analyzer, or the pieces' faces on the tows are not exactly
+/// @p expected (the tows' faces no other tow shares and not on the box), each once.
+std::vector<TopoDS_Solid> cutBox(const Cell& cell, const TopTools_ListOfShape& tools, BOPAlgo_GlueEnum glue,
+                                 const TopTools_IndexedMapOfShape& towFaces, const TopTools_IndexedMapOfShape& expected,
+                                 TopTools_IndexedMapOfShape& boxFaces, std::string& why)
 {
-    TopTools_ListOfShape arguments;
-    arguments.Append(box);
-    cut.SetArguments(arguments);
-    cut.SetTools(tools);
-    cut.SetGlue(glue);
-    cut.SetRunParallel(Standard_True);
-    cut.Build();
     std::vector<TopoDS_Solid> pieces;
-    if (!cut.IsDone() || cut.HasErrors()) return pieces;
-    for (TopExp_Explorer x(cut.Shape(), TopAbs_SOLID); x.More(); x.Next()) {
-        if (!BRepCheck_Analyzer(x.Current()).IsValid()) return {};
-        pieces.push_back(TopoDS::Solid(x.Current()));
+    try {
+        const TopoDS_Shape box = BRepPrimAPI_MakeBox(gp_Pnt(cell.min.x, cell.min.y, cell.min.z),
+                                                     gp_Pnt(cell.max.x, cell.max.y, cell.max.z)).Solid();
+        TopTools_ListOfShape arguments;
+        arguments.Append(box);
+        BRepAlgoAPI_Cut cut;
+        cut.SetArguments(arguments);
+        cut.SetTools(tools);
+        cut.SetGlue(glue);
+        cut.SetRunParallel(Standard_True);
+        cut.Build();
+        if (!cut.IsDone() || cut.HasErrors()) {
+            why = "OpenCASCADE's boolean cut of the box by the tows failed";
+            return {};
+        }
+        TopTools_DataMapOfShapeInteger seen;  // the tows' faces in the pieces, how often
+        for (TopExp_Explorer x(cut.Shape(), TopAbs_SOLID); x.More(); x.Next()) {
+            if (!BRepCheck_Analyzer(x.Current()).IsValid()) {
+                why = "OpenCASCADE's boolean cut of the box by the tows gave a solid its checker refuses";
+                return {};
+            }
+            for (TopExp_Explorer f(x.Current(), TopAbs_FACE); f.More(); f.Next())
+                if (towFaces.Contains(f.Current())) {
+                    if (!seen.IsBound(f.Current())) seen.Bind(f.Current(), 0);
+                    ++seen.ChangeFind(f.Current());
+                }
+            pieces.push_back(TopoDS::Solid(x.Current()));
+        }
+        bool exact = seen.Extent() == expected.Extent();
+        for (TopTools_DataMapIteratorOfDataMapOfShapeInteger it(seen); exact && it.More(); it.Next())
+            exact = it.Value() == 1 && expected.Contains(it.Key());
+        if (pieces.empty() || !exact) {
+            why = "OpenCASCADE's boolean cut of the box by the tows did not keep the tows' faces as the matrix's";
+            return {};
+        }
+        boxFaces.Clear();
+        for (TopExp_Explorer x(box, TopAbs_FACE); x.More(); x.Next()) {
+            boxFaces.Add(x.Current());  // kept as it is where no tow reaches it
+            for (TopTools_ListIteratorOfListOfShape m(cut.Modified(x.Current())); m.More(); m.Next()) boxFaces.Add(m.Value());
+        }
+    } catch (const Standard_Failure& e) {
+        why = std::string("OpenCASCADE failed cutting the box by the tows: ") + e.GetMessageString();
+        return {};
     }
     return pieces;
 }
@@ -105,48 +357,44 @@ std::vector<TopoDS_Solid> cutBox(const TopoDS_Shape& box, const TopTools_ListOfS
 MatrixCut cutMatrix(const std::vector<TopoDS_Solid>& tows, const Cell& cell)
 {
     MatrixCut out;
-    try {
-        const TopoDS_Shape box = BRepPrimAPI_MakeBox(gp_Pnt(cell.min.x, cell.min.y, cell.min.z),
-                                                     gp_Pnt(cell.max.x, cell.max.y, cell.max.z)).Solid();
-        if (tows.empty()) {  // no tow inside: the box itself
-            out.pieces.push_back(TopoDS::Solid(box));
-            out.faces = out.cellFaces = 6;
-            return out;
-        }
-        TopTools_ListOfShape tools;
-        for (const TopoDS_Solid& t : tows) tools.Append(t);
-        // The clipped tows lie inside the box, their cut faces on its faces: the box's faces and
-        // theirs overlap without crossing, the case OpenCASCADE's gluing option is for (the
-        // 4x4 twill cell: 0.6 s instead of 15 s). Its result is checked; the full boolean is
-        // the fallback.
-        BRepAlgoAPI_Cut glued, full;
-        BRepAlgoAPI_Cut* cut = &glued;
-        out.pieces = cutBox(box, tools, BOPAlgo_GlueShift, glued);
-        if (out.pieces.empty()) {
-            cut = &full;
-            out.pieces = cutBox(box, tools, BOPAlgo_GlueOff, full);
-        }
-        if (out.pieces.empty()) {
-            out.failure = "OpenCASCADE's boolean cut of the box by the tows failed or gave an invalid solid";
-            return out;
-        }
-        TopTools_IndexedMapOfShape towFaces, boxFaces;
-        for (const TopoDS_Solid& t : tows)
-            for (TopExp_Explorer x(t, TopAbs_FACE); x.More(); x.Next()) towFaces.Add(x.Current());
-        for (TopExp_Explorer x(box, TopAbs_FACE); x.More(); x.Next()) {
-            boxFaces.Add(x.Current());  // kept as it is where no tow reaches it
-            for (TopTools_ListIteratorOfListOfShape m(cut->Modified(x.Current())); m.More(); m.Next()) boxFaces.Add(m.Value());
-        }
-        for (const TopoDS_Solid& piece : out.pieces)
-            for (TopExp_Explorer x(piece, TopAbs_FACE); x.More(); x.Next()) {
-                ++out.faces;
-                if (towFaces.Contains(x.Current())) ++out.sharedFaces;
-                if (boxFaces.Contains(x.Current())) ++out.cellFaces;
-            }
-    } catch (const Standard_Failure& e) {
-        out.pieces.clear();
-        out.failure = std::string("OpenCASCADE failed cutting the box by the tows: ") + e.GetMessageString();
+    if (tows.empty()) {  // no tow inside: the box itself
+        out.pieces.push_back(TopoDS::Solid(BRepPrimAPI_MakeBox(gp_Pnt(cell.min.x, cell.min.y, cell.min.z),
+                                                               gp_Pnt(cell.max.x, cell.max.y, cell.max.z)).Solid()));
+        out.faces = out.cellFaces = 6;
+        return out;
     }
+    // The tows' faces, and those the matrix must have: no other tow's, not on the box.
+    TopTools_ListOfShape tools;
+    TopTools_DataMapOfShapeInteger uses;
+    for (const TopoDS_Solid& t : tows) {
+        tools.Append(t);
+        for (TopExp_Explorer x(t, TopAbs_FACE); x.More(); x.Next()) {
+            if (!uses.IsBound(x.Current())) uses.Bind(x.Current(), 0);
+            ++uses.ChangeFind(x.Current());
+        }
+    }
+    TopTools_IndexedMapOfShape towFaces, expected, boxFaces;
+    for (TopTools_DataMapIteratorOfDataMapOfShapeInteger it(uses); it.More(); it.Next()) {
+        towFaces.Add(it.Key());
+        if (it.Value() == 1 && !onBoxPlane(TopoDS::Face(it.Key()), cell)) expected.Add(it.Key());
+    }
+    // The clipped tows lie inside the box, their cut faces on its faces: the box's faces and
+    // theirs overlap without crossing, the case OpenCASCADE's gluing option is for (the 4x4
+    // twill cell: 0.4 s instead of 15 s on two cores). Its result is checked; the full boolean
+    // is the fallback.
+    std::string why;
+    out.pieces = cutBox(cell, tools, BOPAlgo_GlueShift, towFaces, expected, boxFaces, why);
+    if (out.pieces.empty()) out.pieces = cutBox(cell, tools, BOPAlgo_GlueOff, towFaces, expected, boxFaces, why);
+    if (out.pieces.empty()) {
+        out.failure = why;
+        return out;
+    }
+    for (const TopoDS_Solid& piece : out.pieces)
+        for (TopExp_Explorer x(piece, TopAbs_FACE); x.More(); x.Next()) {
+            ++out.faces;
+            if (towFaces.Contains(x.Current())) ++out.sharedFaces;
+            if (boxFaces.Contains(x.Current())) ++out.cellFaces;
+        }
     return out;
 }
 

@@ -12,12 +12,15 @@
 #include <string>
 
 #include "towgeom/cell.hpp"
+#include "towgeom/resolve.hpp"
+#include "towgeom/tow_surface.hpp"
+#include "towgeom/trimmed_brep.hpp"
 #include "towgeom/export.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
 
-/// What clipSolidToCell() gives.
+/// What clipSolidsToCell() gives for one solid.
 struct ClippedSolid {
     std::optional<TopoDS_Solid> inside;  ///< the part inside the box; none when the solid lies wholly outside
     double outsideVolume = 0.0;          ///< the volume of the parts outside the box (not measured without an inside: 0)
@@ -26,13 +29,35 @@ struct ClippedSolid {
     std::size_t cutFaces = 0;            ///< how many cut faces the inside part has
 };
 
-/// Clips @p solid (tow @p tow) to @p cell: one intersection of the solid with the box, from
-/// which both the common part and the cut-off parts are built (BRepAlgoAPI_Common and _Cut on
-/// one BOPAlgo_PaveFiller). Faces the box does not cut are kept as they are (the same TopoDS
-/// faces), so faces shared by two tows' solids stay shared.
-/// @throws towgeom::Error (Internal) naming @p tow when OpenCASCADE's boolean fails, and
-///         (Unsupported) when the inside is more than one solid.
-ClippedSolid clipSolidToCell(const TopoDS_Solid& solid, const Cell& cell, const std::string& tow);
+/// Clips @p solids (tows @p names, as many) to @p cell together: one intersection of them all
+/// with the box (one BOPAlgo_PaveFiller), from which each solid's common part and cut-off parts
+/// are built (BRepAlgoAPI_Common and _Cut on that filler). Faces the box does not cut are kept
+/// as they are (the same TopoDS faces), and a face two of the solids share that the box cuts is
+/// split once, so its part inside stays one face of both. Clip the tows that share a face the
+/// box cuts together; each of the others alone (intersecting tows with each other costs time).
+/// @throws towgeom::Error (Internal) naming the tows when OpenCASCADE's boolean fails, and
+///         (Unsupported) naming the tow whose inside is more than one solid.
+std::vector<ClippedSolid> clipSolidsToCell(const std::vector<TopoDS_Solid>& solids, const Cell& cell,
+                                           const std::vector<std::string>& names);
+
+/// What clipTowsToCell() adds up.
+struct ClippedTows {
+    double cutAreas = 0.0;        ///< the area of the tows' cut faces (with @p areas)
+    double freeAreas = 0.0;       ///< the area of the tows' faces no other tow shares, cut faces left out (with @p areas)
+    std::size_t sharedFaces = 0;  ///< faces two clipped solids share (each counted once)
+};
+
+/// trimmedBrep()'s tows clipped to the cell of @p resolved (which has one): @p built[t], the
+/// solid of tow t, becomes its part inside the box (null when it lies wholly outside), and
+/// @p solids[t] its volume, area, faces, shared and cut faces. The tows of a region whose loop
+/// crosses a face of the box (or comes within 5 % of the smaller tow's size of one) are clipped
+/// together (clipSolidsToCell()), so the part of their shared face inside stays shared; the
+/// others alone. @p sharedBefore[t]: the faces tow t shares before clipping; each keeps at
+/// least its part inside. With @p areas the areas the matrix needs are measured too.
+/// @throws towgeom::Error (Internal) when a tow's solid and its mesh disagree on being inside,
+///         or a shared face is lost; as clipSolidsToCell().
+ClippedTows clipTowsToCell(const std::vector<TowSurface>& tows, const ResolveResult& resolved, std::vector<TopoDS_Solid>& built,
+                           std::vector<BrepSolid>& solids, const std::vector<std::size_t>& sharedBefore, bool areas);
 
 /// What cutMatrix() gives.
 struct MatrixCut {
@@ -42,15 +67,16 @@ struct MatrixCut {
     std::size_t faces = 0;             ///< faces of all pieces
     std::size_t sharedFaces = 0;       ///< of them, faces of a tow's solid (the same face)
     std::size_t cellFaces = 0;         ///< of them, made of the box's faces
-    std::string failure;               ///< why OpenCASCADE's boolean failed (pieces empty); empty when it did not
+    std::string failure;               ///< why there is no matrix (pieces empty); empty when there is
 };
 
-/// The cell's box minus @p tows (the tows' solids clipped to it), with OpenCASCADE's boolean cut
-/// (its gluing option first, the full boolean when that fails or gives an invalid solid)
-/// (tows as tools; destructive as clipSolidToCell(): a tolerance the intersection raises is
-/// raised on the tows' own edges, so the tows' faces it keeps stay the tows' faces).
-/// A failure of the boolean is returned in MatrixCut::failure, not thrown: it costs only the
-/// matrix.
+/// The cell's box minus @p tows (the tows' solids clipped to it, not overlapping), with
+/// OpenCASCADE's boolean cut: its gluing option first, the full boolean when that fails or its
+/// result does not pass the checks (each piece valid for BRepCheck_Analyzer; the pieces' faces on
+/// the tows exactly the tows' faces no other tow shares and not in a box plane, each in one
+/// piece). Tows as tools, destructive as clipSolidsToCell(): a tolerance the intersection raises
+/// is raised on the tows' own edges, so the tows' faces it keeps stay the tows' faces.
+/// A failure is returned in MatrixCut::failure, not thrown: it costs only the matrix.
 MatrixCut cutMatrix(const std::vector<TopoDS_Solid>& tows, const Cell& cell);
 
 }  // namespace detail

@@ -35,11 +35,11 @@
 
 #include "brep/cell_clip.hpp"
 #include "brep/trimmed_brep_impl.hpp"
-#include "cell/face_crossings.hpp"
 #include "surface/occt_convert.hpp"
 #include "surface/tow_surface_impl.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
+#include "towgeom/volume_mesh.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
 
@@ -366,8 +366,6 @@ void checkSupported(const std::vector<TowSurface>& tows, const ResolveResult& r)
                                                        "not built as a trimmed B-rep yet");
         if (l.crossesCap(LoopSide::A) || l.crossesCap(LoopSide::B))
             throw Error(ErrorCode::Unsupported, what + " runs across an end cap: not built as a trimmed B-rep yet");
-        if (r.mesh.cell && detail::loopCrossesCellBox(l, r.mesh.cell->box))
-            throw Error(ErrorCode::Unsupported, what + " crosses a face of the cell: not built as a trimmed B-rep yet");
     };
     for (const ConnectedRegion& g : r.mesh.regions) {
         if (g.surface != SharedSurface::Primary) throw Error(ErrorCode::Internal, "a connect region off the primary's surface");
@@ -410,8 +408,13 @@ bool overlapInUv(const std::vector<UV>& a, const std::vector<UV>& b)
 
 }  // namespace
 
-TrimmedBrep::TrimmedBrep(std::shared_ptr<const Impl> impl, std::vector<BrepSolid> solids, std::size_t sharedFaces, BrepSolid matrix)
-    : impl_(std::move(impl)), solids_(std::move(solids)), sharedFaces_(sharedFaces), matrix_(std::move(matrix))
+TrimmedBrep::TrimmedBrep(std::shared_ptr<const Impl> impl, std::vector<BrepSolid> solids, std::size_t sharedFaces, BrepSolid matrix,
+                         std::string matrixNote)
+    : impl_(std::move(impl)),
+      solids_(std::move(solids)),
+      sharedFaces_(sharedFaces),
+      matrix_(std::move(matrix)),
+      matrixNote_(std::move(matrixNote))
 {
 }
 
@@ -419,33 +422,49 @@ namespace {
 
 /// The matrix of a cell: the box minus the tows' clipped solids (@p impl's), added to the compound
 /// as MATRIX; volume the box's less the tows' (@p tows), area the box's faces less the tows'
-/// cut faces (@p cutAreas) plus the tows' faces no other tow shares (@p freeAreas). The tows'
-/// tolerances are read again (the boolean may raise them on their own edges).
-BrepSolid buildMatrix(TrimmedBrep::Impl& impl, const Cell& cell, std::vector<BrepSolid>& tows, double cutAreas, double freeAreas,
-                      BRep_Builder& b)
+/// faces on them (@p onBox) plus the tows' faces no other tow shares (@p freeAreas). Not built
+/// (faces 0, @p note why) while tows of @p r still overlap. The tows' tolerances and validity
+/// are read again (the boolean may raise tolerances on their own edges).
+BrepSolid buildMatrix(TrimmedBrep::Impl& impl, const ResolveResult& r, const std::vector<TowSurface>& names,
+                      std::vector<BrepSolid>& tows, double onBox, double freeAreas, BRep_Builder& b, std::string& note)
 {
     BrepSolid m;
     m.name = "MATRIX";
+    const Cell& cell = r.mesh.cell->box;
+    const std::vector<UnresolvedPairEntry> overlapping = overlappingPairs(r);
+    if (!overlapping.empty()) {
+        const UnresolvedPairEntry& p = overlapping.front();
+        note = "tows '" + names[p.towA].name() + "' and '" + names[p.towB].name() + "' still overlap [" + p.code + "]" +
+               (overlapping.size() > 1 ? " (and " + std::to_string(overlapping.size() - 1) + " more)" : std::string()) +
+               ": the box less the tows would not be the matrix";
+        return m;
+    }
+    const std::size_t towSolids = impl.solids.size();  // the tows inside the cell, in order
     const detail::MatrixCut cut = detail::cutMatrix(impl.solids, cell);
-    if (!cut.failure.empty()) return m;  // faces 0, not valid: the tows only
+    std::size_t k = 0;
+    for (BrepSolid& t : tows)
+        if (t.faces > 0 && k < towSolids) {
+            t.maxTolerance = maxToleranceOf(impl.solids[k]);
+            t.valid = BRepCheck_Analyzer(impl.solids[k++]).IsValid();
+        }
+    if (!cut.failure.empty()) {
+        note = cut.failure;
+        return m;
+    }
     const double dx = cell.max.x - cell.min.x, dy = cell.max.y - cell.min.y, dz = cell.max.z - cell.min.z;
     m.volume = cell.volume();
     for (const BrepSolid& t : tows) m.volume -= t.volume;
-    m.area = 2.0 * (dx * dy + dy * dz + dz * dx) - cutAreas + freeAreas;
+    m.area = 2.0 * (dx * dy + dy * dz + dz * dx) - onBox + freeAreas;
     m.faces = cut.faces;
     m.sharedFaces = cut.sharedFaces;
     m.cellFaces = cut.cellFaces;
-    m.valid = true;  // cutMatrix() keeps only pieces BRepCheck_Analyzer accepts
-    const std::size_t towSolids = impl.solids.size();  // the tows inside the cell, in order
+    m.valid = true;  // cutMatrix() checked every piece
     for (const TopoDS_Solid& piece : cut.pieces) {
         b.Add(impl.compound, piece);
         impl.solids.push_back(piece);
         impl.names.push_back(m.name);
         m.maxTolerance = std::max(m.maxTolerance, maxToleranceOf(piece));
     }
-    std::size_t k = 0;
-    for (BrepSolid& t : tows)
-        if (t.faces > 0 && k < towSolids) t.maxTolerance = maxToleranceOf(impl.solids[k++]);
     return m;
 }
 
@@ -499,6 +518,7 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
     auto impl = std::make_shared<TrimmedBrep::Impl>();
     std::vector<BrepSolid> solids(tows.size());
     BrepSolid matrix;  // with a cell: the box minus the tows
+    std::string matrixNote;  // why it is not built
     std::size_t sharedCount = 0;
     try {
         // 1. One edge per loop.
@@ -533,8 +553,7 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
                     faces[t].push_back(insideFace(tows[t].impl().surface, wire(h, t, true), {}, tolerance));
         }
         // 3. Each tow's own surface outside its loops, and its caps; the solid.
-        // With a cell, for the matrix's area: the tows' cut faces and their faces no other tow shares.
-        double cutAreas = 0.0, freeAreas = 0.0;
+        std::vector<TopoDS_Solid> built(tows.size());
         BRep_Builder b;
         b.MakeCompound(impl->compound);
         for (std::size_t t = 0; t < tows.size(); ++t) {
@@ -588,54 +607,33 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
             out.volume = tow.volume() + changed.Mass();
             out.area = area;
             out.faces = faces[t].size();
-            if (r.mesh.cell) {
-                // Clipped to the cell: what the box cuts off measured (faces without holes),
-                // the rest kept; the shared faces lie inside (no loop crosses a face).
-                const detail::ClippedSolid clipped = detail::clipSolidToCell(solid, r.mesh.cell->box, tow.name());
-                const bool meshed = !r.mesh.tows[t].triangles.empty();
-                if (clipped.inside.has_value() != meshed)
-                    throw Error(ErrorCode::Internal, "tow '" + tow.name() + "': OpenCASCADE's boolean keeps " +
-                                                         (meshed ? "nothing" : "a part") + " of its solid inside the cell, its mesh " +
-                                                         (meshed ? "a part" : "nothing"));
-                if (!clipped.inside) {
-                    out.volume = out.area = 0.0;
-                    out.faces = out.sharedFaces = out.loops = 0;
-                    continue;  // wholly outside: no solid
-                }
-                out.volume -= clipped.outsideVolume;
-                out.area += 2.0 * clipped.cutArea - clipped.outsideArea;
-                solid = *clipped.inside;
-                out.cellFaces = clipped.cutFaces;
-                if (o.matrix) {
-                    cutAreas += clipped.cutArea;
-                    freeAreas += out.area - clipped.cutArea;
-                    for (const TopoDS_Face& f : sharedOf[t]) freeAreas -= areaOf(f);
-                }
-                out.faces = 0;
-                std::size_t stillShared = 0;
-                for (TopExp_Explorer x(solid, TopAbs_FACE); x.More(); x.Next()) {
-                    ++out.faces;
-                    stillShared += std::any_of(sharedOf[t].begin(), sharedOf[t].end(),
-                                               [&](const TopoDS_Face& f) { return f.IsSame(x.Current()); });
-                }
-                if (stillShared != sharedOf[t].size())
-                    throw Error(ErrorCode::Internal, "tow '" + tow.name() + "': clipped to the cell it keeps " +
-                                                         std::to_string(stillShared) + " of the " + std::to_string(sharedOf[t].size()) +
-                                                         " faces it shares with other tows");
-            }
-            b.Add(impl->compound, solid);
-            impl->solids.push_back(solid);
-            impl->names.push_back(tow.name());
-            out.sharedFaces = sharedOf[t].size();
             out.loops = loopCount[t];
-            out.valid = BRepCheck_Analyzer(solid).IsValid();
-            out.maxTolerance = maxToleranceOf(solid);
+            built[t] = solid;
         }
-        if (r.mesh.cell && o.matrix) matrix = buildMatrix(*impl, r.mesh.cell->box, solids, cutAreas, freeAreas, b);
+        // 4. With a cell, each solid clipped to the box: the tows sharing a face the box cuts
+        // (or nearly touches) together, the others alone.
+        detail::ClippedTows clipped;
+        if (r.mesh.cell) {
+            std::vector<std::size_t> sharedBefore(tows.size());
+            for (std::size_t t = 0; t < tows.size(); ++t) sharedBefore[t] = sharedOf[t].size();
+            clipped = detail::clipTowsToCell(tows, r, built, solids, sharedBefore, o.matrix);
+            sharedCount = clipped.sharedFaces;
+        }
+        for (std::size_t t = 0; t < tows.size(); ++t) {
+            if (built[t].IsNull()) continue;  // wholly outside the cell: no solid
+            b.Add(impl->compound, built[t]);
+            impl->solids.push_back(built[t]);
+            impl->names.push_back(tows[t].name());
+            BrepSolid& out = solids[t];
+            if (!r.mesh.cell) out.sharedFaces = sharedOf[t].size();
+            out.valid = BRepCheck_Analyzer(built[t]).IsValid();
+            out.maxTolerance = maxToleranceOf(built[t]);
+        }
+        if (r.mesh.cell && o.matrix) matrix = buildMatrix(*impl, r, tows, solids, clipped.cutAreas, clipped.freeAreas, b, matrixNote);
     } catch (const Standard_Failure& e) {
         throw Error(ErrorCode::Internal, std::string("OpenCASCADE failed building the trimmed B-rep: ") + e.GetMessageString());
     }
-    return TrimmedBrep(std::move(impl), std::move(solids), sharedCount, std::move(matrix));
+    return TrimmedBrep(std::move(impl), std::move(solids), sharedCount, std::move(matrix), std::move(matrixNote));
 }
 
 TOWGEOM_END_NAMESPACE

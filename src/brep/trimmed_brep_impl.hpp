@@ -14,8 +14,9 @@ TOWGEOM_BEGIN_NAMESPACE
 
 struct TrimmedBrep::Impl {
     TopoDS_Compound compound;          // the solids, shared faces shared
-    std::vector<TopoDS_Solid> solids;  // one per tow in input order (with a cell: per tow inside it)
-    std::vector<std::string> names;    // their tows' names
+    // One per tow in input order (with a cell: per tow inside it), then the matrix's pieces.
+    std::vector<TopoDS_Solid> solids;
+    std::vector<std::string> names;    // their tows' names; MATRIX for the matrix's pieces
 };
 
 TOWGEOM_END_NAMESPACE

@@ -216,7 +216,9 @@ Options:
 
 Exit status: 0 success; 3 a tow pair is unresolved (see "unresolved": one stderr line each,
 also with --quiet; the files are written all the same), unless every such pair is an open curve
-and --allow-open is given; 2 invalid input or usage (one line on stderr naming file and line;
+and --allow-open is given, and also when an output asked for is missing (--volume refused while
+tows overlap; with --cell and --formats step or brep the MATRIX solid not built: a warning says
+why); 2 invalid input or usage (one line on stderr naming file and line;
 nothing written); 1 a file could not be written or an internal failure (e.g. the meshes fail
 their own check); 130 stopped by Ctrl-C or SIGTERM while computing; a failed or stopped run
 leaves DIR exactly as it was.
@@ -565,16 +567,18 @@ int runResolve(int argc, char** argv, int first)
                     std::cerr << "towgeom resolve: warning: the solid of tow '" << solid.name
                               << "' in textile.step/.brep is not valid for OpenCASCADE's checker (BRepCheck_Analyzer; "
                                  "largest edge tolerance " << solid.maxTolerance << "): CAD tools may refuse it\n";
-        if (brep && mesh.cell && brep->matrix().faces == 0)
-            std::cerr << "towgeom resolve: warning: OpenCASCADE's boolean could not cut the cell's box by the tows into a valid "
-                         "solid: textile.step/.brep hold the tows without the matrix\n";
+        const bool noMatrix = brep && !brep->matrixNote().empty();
+        if (noMatrix)
+            std::cerr << "towgeom resolve: warning: no MATRIX solid in textile.step/.brep (the tows only): " << brep->matrixNote()
+                      << "\n";
         if (!volumeRefused.empty())  // a warning, whatever --quiet says
             std::cerr << "towgeom resolve: warning: no volume mesh written (--volume): " << volumeRefused
                       << "; the surfaces are written, the pairs are named below\n";
         reportContacts("resolve", result.intersections, tows);
         reportUnresolved("resolve", unresolved, tows);
-        // A refused volume mesh exits 3 even with --allow-open: an output asked for is missing.
-        return exitsUnresolved(unresolved, args.has("allow-open")) || !volumeRefused.empty() ? kExitUnresolved : kExitOk;
+        // A refused volume mesh or a missing matrix solid exits 3 even with --allow-open: an
+        // output asked for is missing.
+        return exitsUnresolved(unresolved, args.has("allow-open")) || !volumeRefused.empty() || noMatrix ? kExitUnresolved : kExitOk;
     } catch (const std::exception& e) {
         return reportError("resolve", e);
     }

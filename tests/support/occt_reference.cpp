@@ -157,4 +157,20 @@ double boxCommonVolume(const std::string& path, std::size_t i, const std::array<
     return p.Mass();
 }
 
+double boxCommonVolume(const std::string& path, std::size_t i, std::size_t j, const std::array<double, 3>& min,
+                       const std::array<double, 3>& max)
+{
+    const TopoDS_Shape shape = brepShape(path);
+    std::vector<TopoDS_Shape> solids;
+    for (TopExp_Explorer x(shape, TopAbs_SOLID); x.More(); x.Next()) solids.push_back(x.Current());
+    BRepAlgoAPI_Common both(solids.at(i), solids.at(j));
+    if (!both.IsDone()) throw std::runtime_error("BRepAlgoAPI_Common failed");
+    const TopoDS_Shape box = BRepPrimAPI_MakeBox(gp_Pnt(min[0], min[1], min[2]), gp_Pnt(max[0], max[1], max[2])).Solid();
+    BRepAlgoAPI_Common inside(both.Shape(), box);
+    if (!inside.IsDone()) throw std::runtime_error("BRepAlgoAPI_Common failed");
+    GProp_GProps p;
+    BRepGProp::VolumeProperties(inside.Shape(), p, 1e-7, Standard_True);
+    return p.Mass();
+}
+
 }  // namespace towgeom::testing

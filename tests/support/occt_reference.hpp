@@ -43,6 +43,10 @@ double commonVolume(const std::string& path, std::size_t i, std::size_t j);
 /// The volume of solid @p i of the BREP file @p path inside the box [@p min, @p max]
 /// (BRepAlgoAPI_Common with OCCT's box primitive).
 double boxCommonVolume(const std::string& path, std::size_t i, const std::array<double, 3>& min, const std::array<double, 3>& max);
+/// The volume of the part of solids @p i and @p j of the BREP file @p path common to both and
+/// inside the box [@p min, @p max] (two BRepAlgoAPI_Common).
+double boxCommonVolume(const std::string& path, std::size_t i, std::size_t j, const std::array<double, 3>& min,
+                       const std::array<double, 3>& max);
 /// The boundary area of solid @p i of the BREP file @p path (BRepGProp, relative precision 1e-7).
 double readBrepArea(const std::string& path, std::size_t i);
 
