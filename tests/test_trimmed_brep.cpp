@@ -38,6 +38,22 @@ fs::path freshDirectory(const std::string& name)
 
 double relative(double a, double b) { return std::abs(a - b) / std::abs(b); }
 
+/// Writes the references' solids to the BREP file @p path: @p tows as resolved in @p r but
+/// untrimmed and unclipped (no regions, no cell), each its whole exact solid.
+void writeUntrimmed(const std::vector<TowSurface>& tows, const ResolveResult& r, const std::string& path)
+{
+    ResolveResult whole = r;
+    whole.mesh.regions.clear();
+    whole.mesh.cell.reset();
+    trimmedBrep(tows, whole).writeBrep(path);
+}
+
+/// A cell's box corners as testing::boxCommonVolume() takes them.
+std::array<std::array<double, 3>, 2> cornersOf(const Cell& cell)
+{
+    return {{{cell.min.x, cell.min.y, cell.min.z}, {cell.max.x, cell.max.y, cell.max.z}}};
+}
+
 /// Runs gmsh on @p input with @p options (its output to @p output, its log to DIR/gmsh.log):
 /// it must exit 0, print no error and write @p output.
 void checkGmshReads(const fs::path& dir, const std::string& input, const std::string& options, const std::string& output)
@@ -71,10 +87,8 @@ TEST_CASE("trimmed B-rep of the bundled twill: valid named solids, exact volumes
     CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 2);  // no temporary left
 
     // The untrimmed tows (no regions): each pair's overlap by OCCT's boolean, independent of the loops.
-    ResolveResult whole = r;
-    whole.mesh.regions.clear();
     const std::string wholeFile = (dir / "whole.brep").string();
-    trimmedBrep(tows, whole).writeBrep(wholeFile);
+    writeUntrimmed(tows, r, wholeFile);
     std::vector<double> exact(tows.size());
     for (std::size_t t = 0; t < tows.size(); ++t) exact[t] = tows[t].volume();
     for (const ConnectedRegion& g : r.mesh.regions) exact[g.secondary] -= testing::commonVolume(wholeFile, g.secondary, g.primary);
@@ -137,11 +151,8 @@ TEST_CASE("trimmed B-rep clipped to a cell: two crossing tubes cut by the box, a
     const fs::path dir = freshDirectory("towgeom_brep_cell_tubes");
     const std::string file = (dir / "cell.brep").string(), wholeFile = (dir / "whole.brep").string();
     brep.writeBrep(file);
-    ResolveResult whole = r;
-    whole.mesh.regions.clear();
-    whole.mesh.cell.reset();
-    trimmedBrep(tows, whole).writeBrep(wholeFile);
-    const std::array<double, 3> lo{cell.min.x, cell.min.y, cell.min.z}, hi{cell.max.x, cell.max.y, cell.max.z};
+    writeUntrimmed(tows, r, wholeFile);
+    const auto [lo, hi] = cornersOf(cell);
     const double exactX = testing::boxCommonVolume(wholeFile, 0, lo, hi);
     const double exactY = testing::boxCommonVolume(wholeFile, 1, lo, hi) - testing::commonVolume(wholeFile, 1, 0);
     const double pi = std::acos(-1.0);
@@ -207,6 +218,50 @@ TEST_CASE("trimmed B-rep clipped to a cell: two crossing tubes cut by the box, a
     fs::remove_all(dir);
 }
 
+TEST_CASE("trimmed B-rep clipped to a cell: a tow's end cap on a face of the box is its own face, not a cut face", "[brep][cell]")
+{
+    // The x tube runs from x = 0 to 4; the box's face x = 0 holds its first cap. The boolean
+    // keeps that cap as the tow's face (it coincides with the box's): not a cut face, not a face
+    // of the matrix, and the areas follow.
+    testing::Sampling s;
+    s.points = 48;
+    const std::vector<TowSurface> tows = {TowSurface::fit(testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "x")),
+                                          TowSurface::fit(testing::tubeAlongY(0.4, 0.7, s, "y"))};
+    ResolveOptions o;
+    Cell cell;
+    cell.min = {0.0, -1.5, -1.0};
+    cell.max = {3.5, 1.5, 1.5};
+    o.cell = cell;
+    const ResolveResult r = resolveTextile(tows, o);
+    REQUIRE(r.mesh.regions.size() == 1);
+    const TrimmedBrep brep = trimmedBrep(tows, r);
+    const fs::path dir = freshDirectory("towgeom_brep_cell_cap");
+    const std::string file = (dir / "cell.brep").string(), wholeFile = (dir / "whole.brep").string();
+    brep.writeBrep(file);
+    writeUntrimmed(tows, r, wholeFile);
+    const auto [lo, hi] = cornersOf(cell);
+    const double exactX = testing::boxCommonVolume(wholeFile, 0, lo, hi);
+    const double exactY = testing::boxCommonVolume(wholeFile, 1, lo, hi) - testing::commonVolume(wholeFile, 1, 0);
+    const BrepSolid& x = brep.solids()[0];
+    INFO("x: volume " << x.volume << " (" << exactX << "), area " << x.area << ", cut faces " << x.cellFaces);
+    CHECK(x.valid);
+    CHECK(x.cellFaces == 1);  // only the cut at x = 3.5
+    CHECK(relative(x.volume, exactX) <= 1e-6);
+    CHECK(relative(x.area, testing::readBrepArea(file, 0)) <= 1e-6);
+    CHECK(relative(brep.solids()[1].area, testing::readBrepArea(file, 1)) <= 1e-6);
+    const BrepSolid& matrix = brep.matrix();
+    INFO("matrix: " << brep.matrixNote());
+    REQUIRE(matrix.faces > 0);
+    CHECK(matrix.valid);
+    CHECK(matrix.sharedFaces == 2);  // the tubes' own faces, not the cap on the box
+    const testing::ReadShapes back = testing::readBrep(file);
+    REQUIRE(back.solids.size() == 3);
+    CHECK(back.solids[2].valid);
+    CHECK(relative(back.solids[2].volume, cell.volume() - exactX - exactY) <= 1e-6);
+    CHECK(relative(matrix.area, testing::readBrepArea(file, 2)) <= 1e-6);
+    fs::remove_all(dir);
+}
+
 TEST_CASE("trimmed B-rep with a cell face through an overlap: the shared face cut by the box stays shared", "[brep][cell]")
 {
     // test_volume_mesh's "a cell face through an overlap": two tubes crossing at a shallow angle,
@@ -218,9 +273,7 @@ TEST_CASE("trimmed B-rep with a cell face through an overlap: the shared face cu
     const Case c = GENERATE(Case{20.0, 0.5, 0.5, 0.6, 0.0}, Case{30.0, 0.8, 0.25, 0.4, 0.0}, Case{-30.0, 0.5, 0.5, 0.3, 0.7});
     INFO("crossing at " << c.degrees << " degrees, sections " << c.width << " x " << c.height);
     const std::vector<TowSurface> tows = testing::fitAll(testing::tubesCrossingAt(c.degrees, c.width, c.height, c.lift, c.side));
-    Cell cell;
-    cell.min = {-1.0, -4.0, -1.0};
-    cell.max = {2.0, 4.0, 1.7};
+    const Cell cell = testing::crossingAtCell();
     ResolveOptions o;
     o.mesh.edgeLength = 0.1;
     o.cell = cell;
@@ -236,11 +289,8 @@ TEST_CASE("trimmed B-rep with a cell face through an overlap: the shared face cu
 
     // References: the untrimmed, unclipped tubes by OCCT booleans: a inside the box, b inside
     // it less its overlap with a there.
-    ResolveResult whole = r;
-    whole.mesh.regions.clear();
-    whole.mesh.cell.reset();
-    trimmedBrep(tows, whole).writeBrep(wholeFile);
-    const std::array<double, 3> lo{cell.min.x, cell.min.y, cell.min.z}, hi{cell.max.x, cell.max.y, cell.max.z};
+    writeUntrimmed(tows, r, wholeFile);
+    const auto [lo, hi] = cornersOf(cell);
     const double exactA = testing::boxCommonVolume(wholeFile, 0, lo, hi);
     const double exactB = testing::boxCommonVolume(wholeFile, 1, lo, hi) - testing::boxCommonVolume(wholeFile, 0, 1, lo, hi);
     const BrepSolid &a = brep.solids()[0], &b = brep.solids()[1];
@@ -295,12 +345,9 @@ TEST_CASE("trimmed B-rep of a periodic twill cell: solids clipped by the box, cu
     // tow's part inside the box less its overlaps with the tows above it there. The warps are
     // primaries (nothing to subtract); of the wefts one (weft_1) is measured so (each overlap is
     // an OCCT boolean of two tows, seconds each); every solid is also measured on the STEP file.
-    ResolveResult whole = r;
-    whole.mesh.regions.clear();
-    whole.mesh.cell.reset();
     const std::string wholeFile = (dir / "whole.brep").string();
-    trimmedBrep(tows, whole).writeBrep(wholeFile);
-    const std::array<double, 3> lo{cell.min.x, cell.min.y, cell.min.z}, hi{cell.max.x, cell.max.y, cell.max.z};
+    writeUntrimmed(tows, r, wholeFile);
+    const auto [lo, hi] = cornersOf(cell);
     std::vector<double> exact(tows.size(), -1.0);  // -1: not measured
     for (std::size_t t = 0; t < tows.size(); ++t)
         if (tows[t].name().rfind("warp", 0) == 0 || tows[t].name() == "weft_1") exact[t] = testing::boxCommonVolume(wholeFile, t, lo, hi);

@@ -476,6 +476,42 @@ TEST_CASE("a cell: tows wholly outside are dropped whatever the other faces' pla
     CHECK(meshVolumes(none.mesh).towVolume(0) == Approx(cell.volume()).epsilon(1e-12));
 }
 
+TEST_CASE("a cell face through a tow's end section: the face cuts it on its rim, the tetrahedra conform", "[volume][cell]")
+{
+    // A scan cut at the cell's faces: the x tube runs from x = 0 to 4 and the face x = 0 holds
+    // its first section. Was an internal error (the cut on the rim left a zero-width strip); the
+    // cut is kept 1e-9 of the u range inside, its nodes on the plane, so the face closes the tow.
+    testing::Sampling s;
+    s.points = 48;
+    const std::vector<TowSurface> tows = {TowSurface::fit(testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "x")),
+                                          TowSurface::fit(testing::tubeAlongY(0.4, 0.7, s, "y"))};
+    for (const double x0 : {0.0, 1e-9, 0.01}) {
+        INFO("the face x = " << x0);
+        ResolveOptions o;
+        Cell cell;
+        cell.min = {x0, -1.5, -1.0};
+        cell.max = {3.5, 1.5, 1.5};
+        o.cell = cell;
+        const ResolveResult res = resolveTextile(tows, o);
+        REQUIRE(res.mesh.cell);
+        CHECK(res.unresolved.empty());
+        CHECK(res.mesh.regions.size() == 1);
+        REQUIRE(res.mesh.tows[0].cutAt[0]);
+        CHECK(*res.mesh.tows[0].cutAt[0] == CellFace::XMin);
+        double onFace = 0.0;  // the cut cap: x's section (r 0.5, 48 chords) on the face
+        for (std::size_t k = 0; k < res.mesh.tows[0].triangles.size(); ++k) {
+            if (res.mesh.tows[0].face[k] != TowFace::Start) continue;
+            const auto& tri = res.mesh.tows[0].triangles[k];
+            const Point3 &p = res.mesh.nodes[tri[0]], &q = res.mesh.nodes[tri[1]], &w = res.mesh.nodes[tri[2]];
+            CHECK(p.x == x0);
+            onFace -= 0.5 * cross(q - p, w - p).x;  // outward: -x
+        }
+        CHECK(onFace == Approx(0.25 * 3.14159265358979323846).epsilon(0.01));
+        CHECK(testing::crossingPairsBetweenTows(res.mesh) == 0);
+        checkConforming(res, meshVolumes(res));
+    }
+}
+
 TEST_CASE("a cell's faces are meshed at the tow's size at its caps and coarser away from them, the matrix's tetrahedra with them", "[volume][cell]")
 {
     // One tow (weft_1, along y at x = 1) in a box much wider than it: the faces it crosses (y)
@@ -647,9 +683,7 @@ TEST_CASE("a cell face through an overlap: the loop crosses it, both tows cut th
                         << c.side << " beside");
     const double angle = c.degrees * 3.14159265358979323846 / 180.0, lift = c.lift, wy = c.width, hz = c.height;
     const std::vector<TowSurface> tows = testing::fitAll(testing::tubesCrossingAt(c.degrees, wy, hz, lift, c.side));
-    Cell cell;
-    cell.min = {-1.0, -4.0, -1.0};
-    cell.max = {2.0, 4.0, 1.7};
+    const Cell cell = testing::crossingAtCell();
     ResolveOptions o;
     o.mesh.edgeLength = 0.1;
     o.cell = cell;

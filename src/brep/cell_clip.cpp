@@ -8,10 +8,8 @@
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
-#include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
-#include <Geom_Plane.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_DataMapIteratorOfDataMapOfShapeInteger.hxx>
 #include <TopTools_DataMapOfShapeInteger.hxx>
@@ -22,8 +20,11 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
+#include <utility>
 
 #include "towgeom/error.hpp"
+#include "towgeom/volume_mesh.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
@@ -33,30 +34,17 @@ namespace {
 /// clipped volume, the whole solid's less theirs, is within 1e-9 of their volume.
 constexpr double kMeasureEps = 1e-9;
 
-/// Whether @p face is planar and lies in a plane of @p cell's box (a cut face, or a tow's end
-/// cap there): within 1e-9 of the box's size.
-bool onBoxPlane(const TopoDS_Face& face, const Cell& cell)
-{
-    const Handle(Geom_Plane) plane = Handle(Geom_Plane)::DownCast(BRep_Tool::Surface(face));
-    if (plane.IsNull()) return false;
-    const gp_Dir n = plane->Axis().Direction();
-    const gp_Pnt o = plane->Location();
-    const double size = std::max({cell.max.x - cell.min.x, cell.max.y - cell.min.y, cell.max.z - cell.min.z}), tol = 1e-9 * size;
-    const double c[3] = {o.X(), o.Y(), o.Z()}, lo[3] = {cell.min.x, cell.min.y, cell.min.z}, hi[3] = {cell.max.x, cell.max.y, cell.max.z};
-    const double d[3] = {n.X(), n.Y(), n.Z()};
-    for (int k = 0; k < 3; ++k)
-        if (std::abs(std::abs(d[k]) - 1.0) <= 1e-12 && (std::abs(c[k] - lo[k]) <= tol || std::abs(c[k] - hi[k]) <= tol)) return true;
-    return false;
-}
-
-
-/// Fills @p out from its inside part (when there is one: the cut faces, those in @p cutFaces) and
-/// the parts cut off (@p outside).
-void measure(ClippedSolid& out, const TopTools_IndexedMapOfShape& cutFaces, const std::vector<TopoDS_Shape>& outside)
+/// Fills @p out from its inside part (when there is one) and the parts cut off (@p outside):
+/// its faces on the box are those in @p boxImages (the boolean's images of the box's faces),
+/// its cut faces those of them not in @p ownImages (the solid's faces and their images).
+void measure(ClippedSolid& out, const TopTools_IndexedMapOfShape& boxImages, const TopTools_IndexedMapOfShape& ownImages,
+             const std::vector<TopoDS_Shape>& outside)
 {
     if (!out.inside) return;  // wholly outside: nothing to measure
     for (TopExp_Explorer x(*out.inside, TopAbs_FACE); x.More(); x.Next()) {
-        if (!cutFaces.Contains(x.Current())) continue;
+        if (!boxImages.Contains(x.Current())) continue;
+        out.onBox.push_back(TopoDS::Face(x.Current()));
+        if (ownImages.Contains(x.Current())) continue;  // its own face coinciding with the box's
         GProp_GProps a;
         BRepGProp::SurfaceProperties(x.Current(), a, kMeasureEps);
         out.cutArea += a.Mass();
@@ -68,6 +56,16 @@ void measure(ClippedSolid& out, const TopTools_IndexedMapOfShape& cutFaces, cons
         BRepGProp::SurfaceProperties(part, a, kMeasureEps);
         out.outsideVolume += std::abs(v.Mass());
         out.outsideArea += a.Mass();
+    }
+}
+
+/// The faces of @p shape and what @p algorithm made of them (its history).
+template <typename Algorithm>
+void addImages(const TopoDS_Shape& shape, Algorithm& algorithm, TopTools_IndexedMapOfShape& images)
+{
+    for (TopExp_Explorer x(shape, TopAbs_FACE); x.More(); x.Next()) {
+        images.Add(x.Current());
+        for (TopTools_ListIteratorOfListOfShape m(algorithm.Modified(x.Current())); m.More(); m.Next()) images.Add(m.Value());
     }
 }
 
@@ -99,21 +97,22 @@ ClippedSolid clipOne(const TopoDS_Solid& solid, const TopoDS_Shape& box, const s
     std::size_t pieces = 0;
     for (TopExp_Explorer x(common.Shape(), TopAbs_SOLID); x.More(); x.Next(), ++pieces) out.inside = TopoDS::Solid(x.Current());
     refuseSeveral(pieces, tow);
-    // The cut faces: what the boolean made of the box's faces (its history), not whatever lies
-    // in a box plane (a tow's own end cap may).
-    TopTools_IndexedMapOfShape cutFaces;
-    for (TopExp_Explorer x(box, TopAbs_FACE); x.More(); x.Next())
-        for (TopTools_ListIteratorOfListOfShape m(common.Modified(x.Current())); m.More(); m.Next()) cutFaces.Add(m.Value());
+    // The faces on the box: what the boolean made of the box's faces (its history); of them the
+    // cut faces are not the tow's own (an end cap coinciding with a box face is kept as the
+    // tow's face, and is among the box face's images).
+    TopTools_IndexedMapOfShape boxImages, ownImages;
+    addImages(box, common, boxImages);
+    addImages(solid, common, ownImages);
     std::vector<TopoDS_Shape> outside;
     for (TopExp_Explorer x(cut.Shape(), TopAbs_SOLID); x.More(); x.Next()) outside.push_back(x.Current());
-    measure(out, cutFaces, outside);
+    measure(out, boxImages, ownImages, outside);
     return out;
 }
 
 /// Several solids: one general fuse of them all with the box (BRepAlgoAPI_BuilderAlgo), whose
 /// splits of a face are the same face in every solid that has it. A solid's part inside the box
 /// is its split that is also a split of the box.
-std::vector<ClippedSolid> clipTogether(const std::vector<TopoDS_Solid>& solids, const TopoDS_Shape& box, const Cell& cell,
+std::vector<ClippedSolid> clipTogether(const std::vector<TopoDS_Solid>& solids, const TopoDS_Shape& box,
                                        const std::vector<std::string>& names, const std::string& who)
 {
     TopTools_ListOfShape arguments;
@@ -131,26 +130,17 @@ std::vector<ClippedSolid> clipTogether(const std::vector<TopoDS_Solid>& solids, 
         if (out.empty() && !fuse.IsDeleted(s)) out.push_back(s);  // not split: as it was
         return out;
     };
-    TopTools_IndexedMapOfShape boxParts, cutFaces;
+    // A solid the box does not cut is one of the box's splits when it lies inside (the general
+    // fuse makes one solid of splits bounded by the same faces), not when outside.
+    TopTools_IndexedMapOfShape boxParts, boxImages;
     for (const TopoDS_Shape& part : splits(box)) boxParts.Add(part);
-    for (TopExp_Explorer x(box, TopAbs_FACE); x.More(); x.Next())
-        for (TopTools_ListIteratorOfListOfShape m(fuse.Modified(x.Current())); m.More(); m.Next()) cutFaces.Add(m.Value());
+    addImages(box, fuse, boxImages);
     std::vector<ClippedSolid> all(solids.size());
     for (std::size_t i = 0; i < solids.size(); ++i) {
         std::vector<TopoDS_Shape> outside;
         std::size_t pieces = 0;
         for (const TopoDS_Shape& part : splits(solids[i])) {
-            bool inside = boxParts.Contains(part);
-            if (part.IsSame(solids[i])) {  // not split: wholly inside or wholly outside
-                Bnd_Box b;
-                BRepBndLib::Add(part, b);
-                double x0, y0, z0, x1, y1, z1;
-                b.Get(x0, y0, z0, x1, y1, z1);
-                const Point3 c{0.5 * (x0 + x1), 0.5 * (y0 + y1), 0.5 * (z0 + z1)};
-                inside = c.x > cell.min.x && c.x < cell.max.x && c.y > cell.min.y && c.y < cell.max.y && c.z > cell.min.z &&
-                         c.z < cell.max.z;
-            }
-            if (!inside) {
+            if (!boxParts.Contains(part)) {
                 outside.push_back(part);
                 continue;
             }
@@ -158,7 +148,9 @@ std::vector<ClippedSolid> clipTogether(const std::vector<TopoDS_Solid>& solids, 
             ++pieces;
         }
         refuseSeveral(pieces, names[i]);
-        measure(all[i], cutFaces, outside);
+        TopTools_IndexedMapOfShape ownImages;
+        addImages(solids[i], fuse, ownImages);
+        measure(all[i], boxImages, ownImages, outside);
     }
     return all;
 }
@@ -175,7 +167,7 @@ std::vector<ClippedSolid> clipSolidsToCell(const std::vector<TopoDS_Solid>& soli
         const TopoDS_Shape box = BRepPrimAPI_MakeBox(gp_Pnt(cell.min.x, cell.min.y, cell.min.z),
                                                      gp_Pnt(cell.max.x, cell.max.y, cell.max.z)).Solid();
         if (solids.size() == 1) return {clipOne(solids[0], box, names[0])};
-        return clipTogether(solids, box, cell, names, who);
+        return clipTogether(solids, box, names, who);
     } catch (const Standard_Failure& e) {
         throw Error(ErrorCode::Internal, who + ": OpenCASCADE failed clipping to the cell: " + e.GetMessageString());
     }
@@ -183,16 +175,17 @@ std::vector<ClippedSolid> clipSolidsToCell(const std::vector<TopoDS_Solid>& soli
 
 namespace {
 
-/// Whether a point of @p loop lies outside @p box or within @p margin of one of its faces.
-bool nearBoxFace(const IntersectionLoop& loop, const Cell& box, double margin)
+/// Whether @p face's bounding box (BRepBndLib::AddOptimal: tight on B-spline faces) reaches
+/// beyond @p box or within @p margin of one of its faces.
+bool nearBoxFace(const TopoDS_Face& face, const Cell& box, double margin)
 {
-    for (const LoopPoint& p : loop.points()) {
-        const Point3& q = p.point;
-        const double inside = std::min({q.x - box.min.x, box.max.x - q.x, q.y - box.min.y, box.max.y - q.y, q.z - box.min.z,
-                                        box.max.z - q.z});
-        if (inside <= margin) return true;
-    }
-    return false;
+    Bnd_Box b;
+    BRepBndLib::AddOptimal(face, b, Standard_False, Standard_False);
+    if (b.IsVoid()) return true;  // unknown: clipped with its pair, the safe side
+    double x0, y0, z0, x1, y1, z1;
+    b.Get(x0, y0, z0, x1, y1, z1);
+    return x0 <= box.min.x + margin || y0 <= box.min.y + margin || z0 <= box.min.z + margin || x1 >= box.max.x - margin ||
+           y1 >= box.max.y - margin || z1 >= box.max.z - margin;
 }
 
 std::size_t rootOf(std::vector<std::size_t>& parent, std::size_t t)
@@ -210,18 +203,21 @@ double areaOf(const TopoDS_Shape& shape)
 
 }  // namespace
 
-ClippedTows clipTowsToCell(const std::vector<TowSurface>& tows, const ResolveResult& r, std::vector<TopoDS_Solid>& built,
-                           std::vector<BrepSolid>& solids, const std::vector<std::size_t>& sharedBefore, bool areas)
+ClippedTows clipTowsToCell(const std::vector<TowSurface>& tows, const ResolveResult& r, const std::vector<SharedFace>& shared,
+                           std::vector<TopoDS_Solid>& built, std::vector<BrepSolid>& solids, const std::vector<std::size_t>& sharedBefore,
+                           bool areas)
 {
     const Cell& box = r.mesh.cell->box;
-    // Groups: tows joined by a region whose loop (or island) reaches a face of the box.
+    // Groups: tows joined by a shared face that reaches a face of the box, but pairs that still
+    // overlap (their common part would be a piece of both).
+    std::set<std::pair<std::size_t, std::size_t>> overlapping;
+    for (const UnresolvedPairEntry& p : overlappingPairs(r)) overlapping.insert(std::minmax(p.towA, p.towB));
     std::vector<std::size_t> parent(tows.size());
     for (std::size_t t = 0; t < tows.size(); ++t) parent[t] = t;
-    for (const ConnectedRegion& g : r.mesh.regions) {
-        const double margin = 0.05 * std::min(tows[g.primary].towSize(), tows[g.secondary].towSize());
-        bool near = nearBoxFace(r.intersections.loops[g.loop], box, margin);
-        for (std::size_t h : g.holes) near = near || nearBoxFace(r.intersections.loops[h], box, margin);
-        if (near) parent[rootOf(parent, g.primary)] = rootOf(parent, g.secondary);
+    for (const SharedFace& f : shared) {
+        if (overlapping.count(std::minmax(f.towA, f.towB))) continue;
+        const double margin = 0.05 * std::min(tows[f.towA].towSize(), tows[f.towB].towSize());
+        if (nearBoxFace(f.face, box, margin)) parent[rootOf(parent, f.towA)] = rootOf(parent, f.towB);
     }
     std::map<std::size_t, std::vector<std::size_t>> groups;
     for (std::size_t t = 0; t < tows.size(); ++t)
@@ -256,6 +252,7 @@ ClippedTows clipTowsToCell(const std::vector<TowSurface>& tows, const ResolveRes
             s.area += 2.0 * c.cutArea - c.outsideArea;
             s.cellFaces = c.cutFaces;
             built[t] = *c.inside;
+            out.onBox.insert(out.onBox.end(), c.onBox.begin(), c.onBox.end());
         }
     }
     // The faces two clipped solids share: those shared before, or their parts inside.
@@ -267,27 +264,29 @@ ClippedTows clipTowsToCell(const std::vector<TowSurface>& tows, const ResolveRes
                 ++uses.ChangeFind(x.Current());
             }
     for (TopTools_DataMapIteratorOfDataMapOfShapeInteger it(uses); it.More(); it.Next()) out.sharedFaces += it.Value() > 1;
+    TopTools_IndexedMapOfShape onBox;
+    for (const TopoDS_Face& f : out.onBox) onBox.Add(f);
     for (std::size_t t = 0; t < tows.size(); ++t) {
         if (built[t].IsNull()) continue;
         BrepSolid& s = solids[t];
         s.faces = s.sharedFaces = 0;
-        double sharedArea = 0.0, onBox = 0.0;  // its faces the matrix does not have: shared ones, those on the box
+        double sharedArea = 0.0, onBoxArea = 0.0;  // its faces the matrix does not have: shared ones, those on the box
         for (TopExp_Explorer x(built[t], TopAbs_FACE); x.More(); x.Next()) {
             ++s.faces;
-            const bool shared = uses.Find(x.Current()) > 1;
-            s.sharedFaces += shared;
+            const bool isShared = uses.Find(x.Current()) > 1;
+            s.sharedFaces += isShared;
             if (!areas) continue;
-            if (shared)
+            if (isShared)
                 sharedArea += areaOf(x.Current());
-            else if (onBoxPlane(TopoDS::Face(x.Current()), box))
-                onBox += areaOf(x.Current());
+            else if (onBox.Contains(x.Current()))
+                onBoxArea += areaOf(x.Current());
         }
         if (s.sharedFaces < sharedBefore[t])
             throw Error(ErrorCode::Internal, "tow '" + tows[t].name() + "': clipped to the cell it keeps " + std::to_string(s.sharedFaces) +
                                                  " of the " + std::to_string(sharedBefore[t]) + " faces it shares with other tows");
         if (areas) {
-            out.cutAreas += onBox;
-            out.freeAreas += s.area - onBox - sharedArea;
+            out.onBoxAreas += onBoxArea;
+            out.freeAreas += s.area - onBoxArea - sharedArea;
         }
     }
     return out;
@@ -354,7 +353,7 @@ std::vector<TopoDS_Solid> cutBox(const Cell& cell, const TopTools_ListOfShape& t
 
 }  // namespace
 
-MatrixCut cutMatrix(const std::vector<TopoDS_Solid>& tows, const Cell& cell)
+MatrixCut cutMatrix(const std::vector<TopoDS_Solid>& tows, const Cell& cell, const std::vector<TopoDS_Face>& onBox)
 {
     MatrixCut out;
     if (tows.empty()) {  // no tow inside: the box itself
@@ -373,10 +372,11 @@ MatrixCut cutMatrix(const std::vector<TopoDS_Solid>& tows, const Cell& cell)
             ++uses.ChangeFind(x.Current());
         }
     }
-    TopTools_IndexedMapOfShape towFaces, expected, boxFaces;
+    TopTools_IndexedMapOfShape towFaces, expected, boxFaces, onTheBox;
+    for (const TopoDS_Face& f : onBox) onTheBox.Add(f);
     for (TopTools_DataMapIteratorOfDataMapOfShapeInteger it(uses); it.More(); it.Next()) {
         towFaces.Add(it.Key());
-        if (it.Value() == 1 && !onBoxPlane(TopoDS::Face(it.Key()), cell)) expected.Add(it.Key());
+        if (it.Value() == 1 && !onTheBox.Contains(it.Key())) expected.Add(it.Key());
     }
     // The clipped tows lie inside the box, their cut faces on its faces: the box's faces and
     // theirs overlap without crossing, the case OpenCASCADE's gluing option is for (the 4x4

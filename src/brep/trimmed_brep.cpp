@@ -32,6 +32,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
+#include <utility>
 
 #include "brep/cell_clip.hpp"
 #include "brep/trimmed_brep_impl.hpp"
@@ -422,11 +424,11 @@ namespace {
 
 /// The matrix of a cell: the box minus the tows' clipped solids (@p impl's), added to the compound
 /// as MATRIX; volume the box's less the tows' (@p tows), area the box's faces less the tows'
-/// faces on them (@p onBox) plus the tows' faces no other tow shares (@p freeAreas). Not built
+/// faces on them plus the tows' faces no other tow shares and not on the box (@p clipped). Not built
 /// (faces 0, @p note why) while tows of @p r still overlap. The tows' tolerances and validity
 /// are read again (the boolean may raise tolerances on their own edges).
 BrepSolid buildMatrix(TrimmedBrep::Impl& impl, const ResolveResult& r, const std::vector<TowSurface>& names,
-                      std::vector<BrepSolid>& tows, double onBox, double freeAreas, BRep_Builder& b, std::string& note)
+                      std::vector<BrepSolid>& tows, const detail::ClippedTows& clipped, BRep_Builder& b, std::string& note)
 {
     BrepSolid m;
     m.name = "MATRIX";
@@ -434,13 +436,16 @@ BrepSolid buildMatrix(TrimmedBrep::Impl& impl, const ResolveResult& r, const std
     const std::vector<UnresolvedPairEntry> overlapping = overlappingPairs(r);
     if (!overlapping.empty()) {
         const UnresolvedPairEntry& p = overlapping.front();
+        std::set<std::pair<std::size_t, std::size_t>> pairs;  // distinct pairs (one may have several reasons)
+        for (const UnresolvedPairEntry& e : overlapping) pairs.insert({e.towA, e.towB});
         note = "tows '" + names[p.towA].name() + "' and '" + names[p.towB].name() + "' still overlap [" + p.code + "]" +
-               (overlapping.size() > 1 ? " (and " + std::to_string(overlapping.size() - 1) + " more)" : std::string()) +
+               (pairs.size() > 1 ? " (and " + std::to_string(pairs.size() - 1) + " other pair" + (pairs.size() > 2 ? "s" : "") + ")"
+                                 : std::string()) +
                ": the box less the tows would not be the matrix";
         return m;
     }
     const std::size_t towSolids = impl.solids.size();  // the tows inside the cell, in order
-    const detail::MatrixCut cut = detail::cutMatrix(impl.solids, cell);
+    const detail::MatrixCut cut = detail::cutMatrix(impl.solids, cell, clipped.onBox);
     std::size_t k = 0;
     for (BrepSolid& t : tows)
         if (t.faces > 0 && k < towSolids) {
@@ -454,7 +459,7 @@ BrepSolid buildMatrix(TrimmedBrep::Impl& impl, const ResolveResult& r, const std
     const double dx = cell.max.x - cell.min.x, dy = cell.max.y - cell.min.y, dz = cell.max.z - cell.min.z;
     m.volume = cell.volume();
     for (const BrepSolid& t : tows) m.volume -= t.volume;
-    m.area = 2.0 * (dx * dy + dy * dz + dz * dx) - onBox + freeAreas;
+    m.area = 2.0 * (dx * dy + dy * dz + dz * dx) - clipped.onBoxAreas + clipped.freeAreas;
     m.faces = cut.faces;
     m.sharedFaces = cut.sharedFaces;
     m.cellFaces = cut.cellFaces;
@@ -538,6 +543,7 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
         std::vector<std::vector<TopoDS_Face>> faces(tows.size());  // oriented as in each tow's shell
         std::vector<std::size_t> loopCount(tows.size(), 0);
         std::vector<std::vector<TopoDS_Face>> sharedOf(tows.size());  // the faces each tow shares
+        std::vector<detail::SharedFace> sharedFaces;
         for (const ConnectedRegion& g : r.mesh.regions) {
             const Handle(Geom_BSplineSurface)& sp = tows[g.primary].impl().surface;
             std::vector<TopoDS_Wire> holes;
@@ -547,6 +553,7 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
             faces[g.secondary].push_back(TopoDS::Face(face.Reversed()));
             sharedOf[g.primary].push_back(face);
             sharedOf[g.secondary].push_back(face);
+            sharedFaces.push_back({g.primary, g.secondary, face});
             ++sharedCount;
             for (std::size_t h : g.holes)
                 for (std::size_t t : {g.primary, g.secondary})
@@ -616,7 +623,7 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
         if (r.mesh.cell) {
             std::vector<std::size_t> sharedBefore(tows.size());
             for (std::size_t t = 0; t < tows.size(); ++t) sharedBefore[t] = sharedOf[t].size();
-            clipped = detail::clipTowsToCell(tows, r, built, solids, sharedBefore, o.matrix);
+            clipped = detail::clipTowsToCell(tows, r, sharedFaces, built, solids, sharedBefore, o.matrix);
             sharedCount = clipped.sharedFaces;
         }
         for (std::size_t t = 0; t < tows.size(); ++t) {
@@ -629,7 +636,7 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
             out.valid = BRepCheck_Analyzer(built[t]).IsValid();
             out.maxTolerance = maxToleranceOf(built[t]);
         }
-        if (r.mesh.cell && o.matrix) matrix = buildMatrix(*impl, r, tows, solids, clipped.cutAreas, clipped.freeAreas, b, matrixNote);
+        if (r.mesh.cell && o.matrix) matrix = buildMatrix(*impl, r, tows, solids, clipped, b, matrixNote);
     } catch (const Standard_Failure& e) {
         throw Error(ErrorCode::Internal, std::string("OpenCASCADE failed building the trimmed B-rep: ") + e.GetMessageString());
     }

@@ -182,7 +182,9 @@ CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const st
                      " cuts it only partly (along its side, not all around): the cell's faces must cut each tow across it");
                 continue;
             }
-            const int end = sign * (s->Value(r.uMin, r.vMin).Coord(a + 1) - c) > 0.0 ? 0 : 1;
+            // The end beyond the plane: the farther out of the two (a start lying in the plane,
+            // a cell face through the tow's end, is still the end the face cuts).
+            const int end = sign * s->Value(r.uMin, r.vMin).Coord(a + 1) > sign * s->Value(r.uMax, r.vMin).Coord(a + 1) ? 0 : 1;
             candidates.push_back({face, end, {}});
         }
         if (!outside && !refusal.empty()) refuse(refusal);
@@ -213,7 +215,11 @@ CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const st
                 const std::vector<double> us = crossings(s, v, axisOf(cand.face), cell.plane(cand.face), r, inPlane);
                 if (us.size() != 1 || inPlane)
                     refuse("the plane of " + faceText(cand.face) + " does not cut it once all around");
-                cand.u.push_back(us.front());
+                // A face through the tow's end section (a scan cut at the cell's faces) cuts it on
+                // its rim: the cut is kept a hair inside (1e-9 of the u range; its nodes are put on
+                // the plane all the same), so the end cap is dropped and the cut closes the tow.
+                const double hair = 1e-9 * (r.uMax - r.uMin);
+                cand.u.push_back(cand.end == 0 ? std::max(us.front(), r.uMin + hair) : std::min(us.front(), r.uMax - hair));
             }
         }
         // Per end the cut that bounds the kept part: of two faces across one end, one must lie

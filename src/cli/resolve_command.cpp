@@ -208,7 +208,8 @@ Options:
                      GROWTH 0 or MAX 1 meshes every face at h
   --allow-open       exit 0 even when an intersection curve is open (or, with --no-caps, a
                      loop crosses a tow's end cap): never resolved, still named on stderr;
-                     other unresolved pairs still exit 3, and so does --volume refused for it
+                     other unresolved pairs still exit 3, and so do --volume refused for it
+                     and, with --cell and --formats step or brep, the MATRIX solid not built
   --threads N        worker threads (default: all hardware threads)
   --quiet            no progress lines on stderr (warnings are always printed: unresolved
                      pairs, the mesh quality note)

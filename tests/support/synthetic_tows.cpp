@@ -209,6 +209,14 @@ std::vector<TowSurface> fittedTwill22SixBySix()
     return fitAll(generateWeave(w).stacks());
 }
 
+Cell crossingAtCell()
+{
+    Cell cell;
+    cell.min = {-1.0, -4.0, -1.0};
+    cell.max = {2.0, 4.0, 1.7};
+    return cell;
+}
+
 Cell twill22RepeatCell()
 {
     Cell cell;

@@ -62,6 +62,9 @@ TowStack dentedTubeAlongY(double r, double d, double dent, double width, const S
 /// turned by @p degrees about the vertical through (2, 0), then moved by @p side along y and
 /// @p lift along z. Where their sections overlap they interpenetrate along their length.
 std::vector<TowStack> tubesCrossingAt(double degrees, double width, double height, double lift, double side = 0.0);
+/// The cell for tubesCrossingAt(): [-1, 2] x [-4, 4] x [-1, 1.7], its face x = 2 through the
+/// turning point, so it cuts across the tubes' overlap.
+Cell crossingAtCell();
 
 /// A point of a racetrack of width w and height h (semicircular ends of radius h/2), centred at
 /// the origin, at arc length s from (w/2, 0) counter-clockwise; s is taken modulo the perimeter.
