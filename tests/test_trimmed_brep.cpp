@@ -54,6 +54,29 @@ std::array<std::array<double, 3>, 2> cornersOf(const Cell& cell)
     return {{{cell.min.x, cell.min.y, cell.min.z}, {cell.max.x, cell.max.y, cell.max.z}}};
 }
 
+/// Tubes "x" (r 0.5, along x from 0 to 4) and "y" (r 0.4, along y) crossing, 48 points per
+/// section; with @p far also "far" (r 0.3, along x at y = 3).
+std::vector<TowSurface> crossingTubes(bool far)
+{
+    testing::Sampling s;
+    s.points = 48;
+    std::vector<TowSurface> tows = {TowSurface::fit(testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "x")),
+                                    TowSurface::fit(testing::tubeAlongY(0.4, 0.7, s, "y"))};
+    if (far) tows.push_back(TowSurface::fit(testing::tubeAlongX(0.3, 4.0, 0.0, 3.0, 0.0, s, "far")));
+    return tows;
+}
+
+/// The exact volumes of crossingTubes() x and y inside @p cell, y less its overlap with x: OCCT
+/// booleans on the untrimmed tubes (written to @p wholeFile).
+std::array<double, 2> exactTubesInCell(const std::vector<TowSurface>& tows, const ResolveResult& r, const Cell& cell,
+                                       const std::string& wholeFile)
+{
+    writeUntrimmed(tows, r, wholeFile);
+    const auto [lo, hi] = cornersOf(cell);
+    return {testing::boxCommonVolume(wholeFile, 0, lo, hi),
+            testing::boxCommonVolume(wholeFile, 1, lo, hi) - testing::commonVolume(wholeFile, 1, 0)};
+}
+
 /// Runs gmsh on @p input with @p options (its output to @p output, its log to DIR/gmsh.log):
 /// it must exit 0, print no error and write @p output.
 void checkGmshReads(const fs::path& dir, const std::string& input, const std::string& options, const std::string& output)
@@ -135,11 +158,7 @@ TEST_CASE("trimmed B-rep of the bundled twill: valid named solids, exact volumes
 
 TEST_CASE("trimmed B-rep clipped to a cell: two crossing tubes cut by the box, a third outside", "[brep][cell]")
 {
-    testing::Sampling s;
-    s.points = 48;
-    const std::vector<TowSurface> tows = {TowSurface::fit(testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "x")),
-                                          TowSurface::fit(testing::tubeAlongY(0.4, 0.7, s, "y")),
-                                          TowSurface::fit(testing::tubeAlongX(0.3, 4.0, 0.0, 3.0, 0.0, s, "far"))};
+    const std::vector<TowSurface> tows = crossingTubes(true);
     ResolveOptions o;
     Cell cell;
     cell.min = {0.5, -1.5, -1.0};
@@ -151,10 +170,7 @@ TEST_CASE("trimmed B-rep clipped to a cell: two crossing tubes cut by the box, a
     const fs::path dir = freshDirectory("towgeom_brep_cell_tubes");
     const std::string file = (dir / "cell.brep").string(), wholeFile = (dir / "whole.brep").string();
     brep.writeBrep(file);
-    writeUntrimmed(tows, r, wholeFile);
-    const auto [lo, hi] = cornersOf(cell);
-    const double exactX = testing::boxCommonVolume(wholeFile, 0, lo, hi);
-    const double exactY = testing::boxCommonVolume(wholeFile, 1, lo, hi) - testing::commonVolume(wholeFile, 1, 0);
+    const auto [exactX, exactY] = exactTubesInCell(tows, r, cell, wholeFile);
     const double pi = std::acos(-1.0);
     const testing::ReadShapes back = testing::readBrep(file);
     REQUIRE(back.solids.size() == 3);  // x, y and the matrix; "far" has no solid
@@ -223,10 +239,7 @@ TEST_CASE("trimmed B-rep clipped to a cell: a tow's end cap on a face of the box
     // The x tube runs from x = 0 to 4; the box's face x = 0 holds its first cap. The boolean
     // keeps that cap as the tow's face (it coincides with the box's): not a cut face, not a face
     // of the matrix, and the areas follow.
-    testing::Sampling s;
-    s.points = 48;
-    const std::vector<TowSurface> tows = {TowSurface::fit(testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "x")),
-                                          TowSurface::fit(testing::tubeAlongY(0.4, 0.7, s, "y"))};
+    const std::vector<TowSurface> tows = crossingTubes(false);
     ResolveOptions o;
     Cell cell;
     cell.min = {0.0, -1.5, -1.0};
@@ -238,10 +251,7 @@ TEST_CASE("trimmed B-rep clipped to a cell: a tow's end cap on a face of the box
     const fs::path dir = freshDirectory("towgeom_brep_cell_cap");
     const std::string file = (dir / "cell.brep").string(), wholeFile = (dir / "whole.brep").string();
     brep.writeBrep(file);
-    writeUntrimmed(tows, r, wholeFile);
-    const auto [lo, hi] = cornersOf(cell);
-    const double exactX = testing::boxCommonVolume(wholeFile, 0, lo, hi);
-    const double exactY = testing::boxCommonVolume(wholeFile, 1, lo, hi) - testing::commonVolume(wholeFile, 1, 0);
+    const auto [exactX, exactY] = exactTubesInCell(tows, r, cell, wholeFile);
     const BrepSolid& x = brep.solids()[0];
     INFO("x: volume " << x.volume << " (" << exactX << "), area " << x.area << ", cut faces " << x.cellFaces);
     CHECK(x.valid);

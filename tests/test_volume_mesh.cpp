@@ -481,11 +481,12 @@ TEST_CASE("a cell face through a tow's end section: the face cuts it on its rim,
     // A scan cut at the cell's faces: the x tube runs from x = 0 to 4 and the face x = 0 holds
     // its first section. Was an internal error (the cut on the rim left a zero-width strip); the
     // cut is kept 1e-9 of the u range inside, its nodes on the plane, so the face closes the tow.
+    // A section within 1e-9 of the tow's size of the face (a hair inside or beyond) is on it.
     testing::Sampling s;
     s.points = 48;
     const std::vector<TowSurface> tows = {TowSurface::fit(testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "x")),
                                           TowSurface::fit(testing::tubeAlongY(0.4, 0.7, s, "y"))};
-    for (const double x0 : {0.0, 1e-9, 0.01}) {
+    for (const double x0 : {0.0, 1e-10, -1e-10, 1e-9, 0.01}) {
         INFO("the face x = " << x0);
         ResolveOptions o;
         Cell cell;
@@ -510,6 +511,17 @@ TEST_CASE("a cell face through a tow's end section: the face cuts it on its rim,
         CHECK(testing::crossingPairsBetweenTows(res.mesh) == 0);
         checkConforming(res, meshVolumes(res));
     }
+    // The other side: the x tube's last section on the face x = 4 of a box beyond it: it lies
+    // outside, touching the face (was cut on that rim as well: a lone disc).
+    ResolveOptions o;
+    Cell beyond;
+    beyond.min = {4.0, -1.5, -1.0};
+    beyond.max = {7.5, 1.5, 1.5};
+    o.cell = beyond;
+    const ResolveResult res = resolveTextile(tows, o);
+    REQUIRE(res.mesh.cell);
+    CHECK(res.mesh.tows[0].triangles.empty());
+    CHECK(meshVolumes(res).towVolume(2) == Approx(beyond.volume()).epsilon(1e-12));
 }
 
 TEST_CASE("a cell's faces are meshed at the tow's size at its caps and coarser away from them, the matrix's tetrahedra with them", "[volume][cell]")

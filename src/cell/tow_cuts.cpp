@@ -66,7 +66,19 @@ struct Candidate {
     CellFace face;
     int end = 0;
     std::vector<double> u;
+    bool onRim = false;  ///< the end section lies in the face's plane (within kOnFace): cut on its rim
 };
+
+/// How close (relative to the tow's size) an end section must lie to a face's plane to be on it.
+constexpr double kOnFace = 1e-9;
+
+/// Whether the section at @p u lies within @p tol of the plane x_a = @p c at every probe.
+bool sectionOnPlane(const Handle(Geom_BSplineSurface)& s, double u, int a, double c, const ParameterRange& r, double tol)
+{
+    for (int j = 0; j < kProbes; ++j)
+        if (!(std::abs(s->Value(u, r.vMin + r.vPeriod() * j / kProbes).Coord(a + 1) - c) <= tol)) return false;
+    return true;
+}
 
 }  // namespace
 
@@ -147,11 +159,20 @@ CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const st
             const double c = cell.plane(face), sign = isMaxFace(face) ? 1.0 : -1.0;  // outside: sign (x_a - c) > 0
             const double lo = std::min(sign * (coord(box.min, a) - c), sign * (coord(box.max, a) - c));
             const double hi = std::max(sign * (coord(box.min, a) - c), sign * (coord(box.max, a) - c));
-            if (hi < 0.0) continue;  // wholly inside this face's half-space
-            if (lo > 0.0) {
+            // An end section in the plane (a scan cut at the cell's faces, within kOnFace of the
+            // tow's size): the face cuts it on its rim, whether the section lies a hair inside,
+            // on or beyond the plane.
+            const double touch = kOnFace * tow.towSize();
+            const bool startOn = sectionOnPlane(s, r.uMin, a, c, r, touch), endOn = sectionOnPlane(s, r.uMax, a, c, r, touch);
+            if (lo >= -touch) {  // wholly beyond the plane, or touching it from there
                 outside = true;
                 break;
             }
+            if ((startOn || endOn) && hi <= touch) {
+                candidates.push_back({face, startOn ? 0 : 1, {}, true});
+                continue;
+            }
+            if (hi < 0.0) continue;  // wholly inside this face's half-space
             int none = 0;
             bool many = false;
             for (int j = 0; j < kProbes && !many; ++j) {
@@ -196,12 +217,15 @@ CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const st
         // Stations at the tow's mesh size around the first cut.
         const int a0 = axisOf(candidates[0].face);
         const double c0 = cell.plane(candidates[0].face);
+        const double hair = 1e-9 * (r.uMax - r.uMin);
+        const double rim = candidates[0].end == 0 ? r.uMin + hair : r.uMax - hair;
         double perimeter = 0.0;
         Point3 previous;
         for (int j = 0; j <= kProbes; ++j) {
             bool inPlane = false;
             const double v = r.vMin + r.vPeriod() * (j % kProbes) / kProbes;
-            const std::vector<double> us = crossings(s, v, a0, c0, r, inPlane);
+            const std::vector<double> us = candidates[0].onRim ? std::vector<double>{rim} : crossings(s, v, a0, c0, r, inPlane);
+            if (us.empty()) refuse("the plane of " + faceText(candidates[0].face) + " does not cut it once all around");
             const gp_Pnt g = s->Value(us.front(), v);
             const Point3 p{g.X(), g.Y(), g.Z()};
             if (j > 0) perimeter += distance(p, previous);
@@ -210,15 +234,18 @@ CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const st
         const std::size_t n = std::max<std::size_t>(8, static_cast<std::size_t>(std::ceil(perimeter / towH[t])));
         for (Candidate& cand : candidates) {
             for (std::size_t k = 0; k < n; ++k) {
+                // A face through the tow's end section cuts it on its rim: the cut is kept a hair
+                // inside (1e-9 of the u range; its nodes are put on the plane all the same), so
+                // the end cap is dropped and the cut closes the tow.
+                if (cand.onRim) {
+                    cand.u.push_back(cand.end == 0 ? r.uMin + hair : r.uMax - hair);
+                    continue;
+                }
                 bool inPlane = false;
                 const double v = r.vMin + r.vPeriod() * static_cast<double>(k) / static_cast<double>(n);
                 const std::vector<double> us = crossings(s, v, axisOf(cand.face), cell.plane(cand.face), r, inPlane);
                 if (us.size() != 1 || inPlane)
                     refuse("the plane of " + faceText(cand.face) + " does not cut it once all around");
-                // A face through the tow's end section (a scan cut at the cell's faces) cuts it on
-                // its rim: the cut is kept a hair inside (1e-9 of the u range; its nodes are put on
-                // the plane all the same), so the end cap is dropped and the cut closes the tow.
-                const double hair = 1e-9 * (r.uMax - r.uMin);
                 cand.u.push_back(cand.end == 0 ? std::max(us.front(), r.uMin + hair) : std::min(us.front(), r.uMax - hair));
             }
         }

@@ -48,8 +48,10 @@ struct CellCuts {
 /// The cuts of @p tows (in the normalised frame) by @p cell (the same frame) at the tows' mesh
 /// sizes @p towH; the cut nodes are appended to @p nodes. With Cell::periodic the cut on a max
 /// face is the same tow's min-face cut moved by the box's size (same stations). A face through a
-/// tow's end section cuts it on its rim: the cut's u is kept 1e-9 of the u range inside (its
-/// nodes on the plane all the same), so the end cap is dropped and the cut closes the tow.
+/// tow's end section (within 1e-9 of the tow's size of its plane, on either side) cuts it on its
+/// rim: the cut's u is kept 1e-9 of the u range inside (its nodes on the plane all the same), so
+/// the end cap is dropped and the cut closes the tow; a tow beyond the plane that touches it
+/// (within that distance) is outside.
 /// @throws Error (InvalidArgument) naming the tow and face where a face's plane does not cut a
 /// tow once all around inside the face's rectangle, two faces cut one end (the tow crosses an
 /// edge of the box), or (periodic) a tow is cut by one face of a pair only or its moved cut
