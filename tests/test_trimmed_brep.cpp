@@ -54,19 +54,7 @@ std::array<std::array<double, 3>, 2> cornersOf(const Cell& cell)
     return {{{cell.min.x, cell.min.y, cell.min.z}, {cell.max.x, cell.max.y, cell.max.z}}};
 }
 
-/// Tubes "x" (r 0.5, along x from 0 to 4) and "y" (r 0.4, along y) crossing, 48 points per
-/// section; with @p far also "far" (r 0.3, along x at y = 3).
-std::vector<TowSurface> crossingTubes(bool far)
-{
-    testing::Sampling s;
-    s.points = 48;
-    std::vector<TowSurface> tows = {TowSurface::fit(testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "x")),
-                                    TowSurface::fit(testing::tubeAlongY(0.4, 0.7, s, "y"))};
-    if (far) tows.push_back(TowSurface::fit(testing::tubeAlongX(0.3, 4.0, 0.0, 3.0, 0.0, s, "far")));
-    return tows;
-}
-
-/// The exact volumes of crossingTubes() x and y inside @p cell, y less its overlap with x: OCCT
+/// The exact volumes of testing::crossingTubes() x and y inside @p cell, y less its overlap with x: OCCT
 /// booleans on the untrimmed tubes (written to @p wholeFile).
 std::array<double, 2> exactTubesInCell(const std::vector<TowSurface>& tows, const ResolveResult& r, const Cell& cell,
                                        const std::string& wholeFile)
@@ -158,7 +146,7 @@ TEST_CASE("trimmed B-rep of the bundled twill: valid named solids, exact volumes
 
 TEST_CASE("trimmed B-rep clipped to a cell: two crossing tubes cut by the box, a third outside", "[brep][cell]")
 {
-    const std::vector<TowSurface> tows = crossingTubes(true);
+    const std::vector<TowSurface> tows = testing::crossingTubes(true);
     ResolveOptions o;
     Cell cell;
     cell.min = {0.5, -1.5, -1.0};
@@ -239,7 +227,7 @@ TEST_CASE("trimmed B-rep clipped to a cell: a tow's end cap on a face of the box
     // The x tube runs from x = 0 to 4; the box's face x = 0 holds its first cap. The boolean
     // keeps that cap as the tow's face (it coincides with the box's): not a cut face, not a face
     // of the matrix, and the areas follow.
-    const std::vector<TowSurface> tows = crossingTubes(false);
+    const std::vector<TowSurface> tows = testing::crossingTubes(false);
     ResolveOptions o;
     Cell cell;
     cell.min = {0.0, -1.5, -1.0};

@@ -482,10 +482,7 @@ TEST_CASE("a cell face through a tow's end section: the face cuts it on its rim,
     // its first section. Was an internal error (the cut on the rim left a zero-width strip); the
     // cut is kept 1e-9 of the u range inside, its nodes on the plane, so the face closes the tow.
     // A section within 1e-9 of the tow's size of the face (a hair inside or beyond) is on it.
-    testing::Sampling s;
-    s.points = 48;
-    const std::vector<TowSurface> tows = {TowSurface::fit(testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "x")),
-                                          TowSurface::fit(testing::tubeAlongY(0.4, 0.7, s, "y"))};
+    const std::vector<TowSurface> tows = testing::crossingTubes(false);
     for (const double x0 : {0.0, 1e-10, -1e-10, 1e-9, 0.01}) {
         INFO("the face x = " << x0);
         ResolveOptions o;

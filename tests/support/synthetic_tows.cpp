@@ -209,6 +209,16 @@ std::vector<TowSurface> fittedTwill22SixBySix()
     return fitAll(generateWeave(w).stacks());
 }
 
+std::vector<TowSurface> crossingTubes(bool far)
+{
+    Sampling s;
+    s.points = 48;
+    std::vector<TowSurface> tows = {TowSurface::fit(tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "x")),
+                                    TowSurface::fit(tubeAlongY(0.4, 0.7, s, "y"))};
+    if (far) tows.push_back(TowSurface::fit(tubeAlongX(0.3, 4.0, 0.0, 3.0, 0.0, s, "far")));
+    return tows;
+}
+
 Cell crossingAtCell()
 {
     Cell cell;

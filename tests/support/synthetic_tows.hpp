@@ -62,6 +62,9 @@ TowStack dentedTubeAlongY(double r, double d, double dent, double width, const S
 /// turned by @p degrees about the vertical through (2, 0), then moved by @p side along y and
 /// @p lift along z. Where their sections overlap they interpenetrate along their length.
 std::vector<TowStack> tubesCrossingAt(double degrees, double width, double height, double lift, double side = 0.0);
+/// Fitted tubes "x" (r 0.5, along x from 0 to 4) and "y" (r 0.4, along y) crossing, 48 points
+/// per section; with @p far also "far" (r 0.3, along x at y = 3).
+std::vector<TowSurface> crossingTubes(bool far);
 /// The cell for tubesCrossingAt(): [-1, 2] x [-4, 4] x [-1, 1.7], its face x = 2 through the
 /// turning point, so it cuts across the tubes' overlap.
 Cell crossingAtCell();
