@@ -194,6 +194,20 @@ std::size_t rootOf(std::vector<std::size_t>& parent, std::size_t t)
     return t;
 }
 
+/// How many of @p solids have each face (TopoDS IsSame).
+template <typename Solids>
+TopTools_DataMapOfShapeInteger faceUses(const Solids& solids)
+{
+    TopTools_DataMapOfShapeInteger uses;
+    for (const TopoDS_Shape& solid : solids)
+        if (!solid.IsNull())
+            for (TopExp_Explorer x(solid, TopAbs_FACE); x.More(); x.Next()) {
+                if (!uses.IsBound(x.Current())) uses.Bind(x.Current(), 0);
+                ++uses.ChangeFind(x.Current());
+            }
+    return uses;
+}
+
 double areaOf(const TopoDS_Shape& shape)
 {
     GProp_GProps a;
@@ -204,8 +218,7 @@ double areaOf(const TopoDS_Shape& shape)
 }  // namespace
 
 ClippedTows clipTowsToCell(const std::vector<TowSurface>& tows, const ResolveResult& r, const std::vector<SharedFace>& shared,
-                           std::vector<TopoDS_Solid>& built, std::vector<BrepSolid>& solids, const std::vector<std::size_t>& sharedBefore,
-                           bool areas)
+                           std::vector<TopoDS_Solid>& built, std::vector<BrepSolid>& solids, bool areas)
 {
     const Cell& box = r.mesh.cell->box;
     // Groups: tows joined by a shared face that reaches a face of the box, but pairs that still
@@ -256,13 +269,9 @@ ClippedTows clipTowsToCell(const std::vector<TowSurface>& tows, const ResolveRes
         }
     }
     // The faces two clipped solids share: those shared before, or their parts inside.
-    TopTools_DataMapOfShapeInteger uses;
-    for (const TopoDS_Solid& solid : built)
-        if (!solid.IsNull())
-            for (TopExp_Explorer x(solid, TopAbs_FACE); x.More(); x.Next()) {
-                if (!uses.IsBound(x.Current())) uses.Bind(x.Current(), 0);
-                ++uses.ChangeFind(x.Current());
-            }
+    const TopTools_DataMapOfShapeInteger uses = faceUses(built);
+    std::vector<std::size_t> sharedBefore(tows.size(), 0);
+    for (const SharedFace& f : shared) ++sharedBefore[f.towA], ++sharedBefore[f.towB];
     for (TopTools_DataMapIteratorOfDataMapOfShapeInteger it(uses); it.More(); it.Next()) out.sharedFaces += it.Value() > 1;
     TopTools_IndexedMapOfShape onBox;
     for (const TopoDS_Face& f : out.onBox) onBox.Add(f);
@@ -364,14 +373,8 @@ MatrixCut cutMatrix(const std::vector<TopoDS_Solid>& tows, const Cell& cell, con
     }
     // The tows' faces, and those the matrix must have: no other tow's, not on the box.
     TopTools_ListOfShape tools;
-    TopTools_DataMapOfShapeInteger uses;
-    for (const TopoDS_Solid& t : tows) {
-        tools.Append(t);
-        for (TopExp_Explorer x(t, TopAbs_FACE); x.More(); x.Next()) {
-            if (!uses.IsBound(x.Current())) uses.Bind(x.Current(), 0);
-            ++uses.ChangeFind(x.Current());
-        }
-    }
+    for (const TopoDS_Solid& t : tows) tools.Append(t);
+    const TopTools_DataMapOfShapeInteger uses = faceUses(tows);
     TopTools_IndexedMapOfShape towFaces, expected, boxFaces, onTheBox;
     for (const TopoDS_Face& f : onBox) onTheBox.Add(f);
     for (TopTools_DataMapIteratorOfDataMapOfShapeInteger it(uses); it.More(); it.Next()) {

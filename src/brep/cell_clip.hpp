@@ -68,14 +68,12 @@ struct SharedFace {
 /// @p shared whose bounding box (BRepBndLib::AddOptimal) reaches a face of the box, or comes
 /// within 5 % of the smaller tow's size of one, are clipped together (clipSolidsToCell()), so the
 /// part of the face inside stays shared (not the pairs that still overlap, overlappingPairs():
-/// their common part would be a piece of both); the others alone. @p sharedBefore[t]: the faces
-/// tow t shares before clipping; each keeps at least its part inside. With @p areas the areas
-/// the matrix needs are measured too.
+/// their common part would be a piece of both); the others alone. Each face of @p shared keeps
+/// at least its part inside. With @p areas the areas the matrix needs are measured too.
 /// @throws towgeom::Error (Internal) when a tow's solid and its mesh disagree on being inside,
 ///         or a shared face is lost; as clipSolidsToCell().
 ClippedTows clipTowsToCell(const std::vector<TowSurface>& tows, const ResolveResult& resolved, const std::vector<SharedFace>& shared,
-                           std::vector<TopoDS_Solid>& built, std::vector<BrepSolid>& solids, const std::vector<std::size_t>& sharedBefore,
-                           bool areas);
+                           std::vector<TopoDS_Solid>& built, std::vector<BrepSolid>& solids, bool areas);
 
 /// What cutMatrix() gives.
 struct MatrixCut {

@@ -542,8 +542,7 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
         // 2. Faces inside loops: per region the shared face on the primary, the islands on both.
         std::vector<std::vector<TopoDS_Face>> faces(tows.size());  // oriented as in each tow's shell
         std::vector<std::size_t> loopCount(tows.size(), 0);
-        std::vector<std::vector<TopoDS_Face>> sharedOf(tows.size());  // the faces each tow shares
-        std::vector<detail::SharedFace> sharedFaces;
+        std::vector<detail::SharedFace> sharedFaces;  // per region, its face and the two tows sharing it
         for (const ConnectedRegion& g : r.mesh.regions) {
             const Handle(Geom_BSplineSurface)& sp = tows[g.primary].impl().surface;
             std::vector<TopoDS_Wire> holes;
@@ -551,8 +550,6 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
             const TopoDS_Face face = insideFace(sp, wire(g.loop, g.primary, true), holes, tolerance);
             faces[g.primary].push_back(face);
             faces[g.secondary].push_back(TopoDS::Face(face.Reversed()));
-            sharedOf[g.primary].push_back(face);
-            sharedOf[g.secondary].push_back(face);
             sharedFaces.push_back({g.primary, g.secondary, face});
             ++sharedCount;
             for (std::size_t h : g.holes)
@@ -621,9 +618,7 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
         // (or nearly touches) together, the others alone.
         detail::ClippedTows clipped;
         if (r.mesh.cell) {
-            std::vector<std::size_t> sharedBefore(tows.size());
-            for (std::size_t t = 0; t < tows.size(); ++t) sharedBefore[t] = sharedOf[t].size();
-            clipped = detail::clipTowsToCell(tows, r, sharedFaces, built, solids, sharedBefore, o.matrix);
+            clipped = detail::clipTowsToCell(tows, r, sharedFaces, built, solids, o.matrix);
             sharedCount = clipped.sharedFaces;
         }
         for (std::size_t t = 0; t < tows.size(); ++t) {
@@ -632,7 +627,10 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
             impl->solids.push_back(built[t]);
             impl->names.push_back(tows[t].name());
             BrepSolid& out = solids[t];
-            if (!r.mesh.cell) out.sharedFaces = sharedOf[t].size();
+            if (!r.mesh.cell)
+                out.sharedFaces = static_cast<std::size_t>(std::count_if(sharedFaces.begin(), sharedFaces.end(), [&](const detail::SharedFace& f) {
+                    return f.towA == t || f.towB == t;
+                }));
             out.valid = BRepCheck_Analyzer(built[t]).IsValid();
             out.maxTolerance = maxToleranceOf(built[t]);
         }

@@ -163,16 +163,19 @@ CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const st
             // tow's size): the face cuts it on its rim, whether the section lies a hair inside,
             // on or beyond the plane.
             const double touch = kOnFace * tow.towSize();
-            const bool startOn = sectionOnPlane(s, r.uMin, a, c, r, touch), endOn = sectionOnPlane(s, r.uMax, a, c, r, touch);
             if (lo >= -touch) {  // wholly beyond the plane, or touching it from there
                 outside = true;
                 break;
             }
-            if ((startOn || endOn) && hi <= touch) {
-                candidates.push_back({face, startOn ? 0 : 1, {}, true});
-                continue;
+            if (hi < -touch) continue;  // wholly inside this face's half-space
+            if (hi <= touch) {
+                const bool startOn = sectionOnPlane(s, r.uMin, a, c, r, touch);
+                if (startOn || sectionOnPlane(s, r.uMax, a, c, r, touch)) {
+                    candidates.push_back({face, startOn ? 0 : 1, {}, true});
+                    continue;
+                }
             }
-            if (hi < 0.0) continue;  // wholly inside this face's half-space
+            if (hi < 0.0) continue;  // inside, a hair from the plane but no end section on it
             int none = 0;
             bool many = false;
             for (int j = 0; j < kProbes && !many; ++j) {
@@ -217,14 +220,15 @@ CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const st
         // Stations at the tow's mesh size around the first cut.
         const int a0 = axisOf(candidates[0].face);
         const double c0 = cell.plane(candidates[0].face);
+        // A cut is kept a hair inside the tow's ends (1e-9 of the u range).
         const double hair = 1e-9 * (r.uMax - r.uMin);
-        const double rim = candidates[0].end == 0 ? r.uMin + hair : r.uMax - hair;
+        const auto rimOf = [&](int end) { return end == 0 ? r.uMin + hair : r.uMax - hair; };
         double perimeter = 0.0;
         Point3 previous;
         for (int j = 0; j <= kProbes; ++j) {
             bool inPlane = false;
             const double v = r.vMin + r.vPeriod() * (j % kProbes) / kProbes;
-            const std::vector<double> us = candidates[0].onRim ? std::vector<double>{rim} : crossings(s, v, a0, c0, r, inPlane);
+            const std::vector<double> us = candidates[0].onRim ? std::vector<double>{rimOf(candidates[0].end)} : crossings(s, v, a0, c0, r, inPlane);
             if (us.empty()) refuse("the plane of " + faceText(candidates[0].face) + " does not cut it once all around");
             const gp_Pnt g = s->Value(us.front(), v);
             const Point3 p{g.X(), g.Y(), g.Z()};
@@ -238,7 +242,7 @@ CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const st
                 // inside (1e-9 of the u range; its nodes are put on the plane all the same), so
                 // the end cap is dropped and the cut closes the tow.
                 if (cand.onRim) {
-                    cand.u.push_back(cand.end == 0 ? r.uMin + hair : r.uMax - hair);
+                    cand.u.push_back(rimOf(cand.end));
                     continue;
                 }
                 bool inPlane = false;
@@ -246,7 +250,7 @@ CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const st
                 const std::vector<double> us = crossings(s, v, axisOf(cand.face), cell.plane(cand.face), r, inPlane);
                 if (us.size() != 1 || inPlane)
                     refuse("the plane of " + faceText(cand.face) + " does not cut it once all around");
-                cand.u.push_back(cand.end == 0 ? std::max(us.front(), r.uMin + hair) : std::min(us.front(), r.uMax - hair));
+                cand.u.push_back(cand.end == 0 ? std::max(us.front(), rimOf(0)) : std::min(us.front(), rimOf(1)));
             }
         }
         // Per end the cut that bounds the kept part: of two faces across one end, one must lie
