@@ -666,6 +666,35 @@ TEST_CASE("towgeom resolve --formats step,brep: the exact solids, named, that Gm
     CHECK_FALSE(fs::exists(out));
 }
 
+TEST_CASE("towgeom resolve --formats step where three tows meet at a point: named solids that Gmsh meshes", "[cli][resolve][brep][triple]")
+{
+    const fs::path dir = scratch("brep_triple");
+    fs::create_directories(dir);
+    std::string files;
+    for (const TowStack& t : testing::threeTowsAtAPoint(0.3, 0.41)) {
+        std::ofstream o(dir / (t.name + ".stw"));
+        writeStack(o, t);
+        files += " '" + (dir / (t.name + ".stw")).string() + "'";
+    }
+    const fs::path out = dir / "out";
+    const Run r = cli("resolve" + files + " --out '" + out.string() + "' --formats step --quiet");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const testing::ReadShapes step = testing::readStep((out / "textile.step").string());
+    REQUIRE(step.solids.size() == 3);
+    for (std::size_t t = 0; t < 3; ++t) {
+        CHECK(step.solids[t].name == std::string(1, "xyw"[t]));
+        CHECK(step.solids[t].valid);
+    }
+    const Run gmsh = testing::runShell("gmsh '" + (out / "textile.step").string() + "' -3 -clmax 0.15 -o '" + (dir / "check.msh").string() +
+                                       "' 2>&1");
+    INFO(gmsh.out);
+    CHECK(gmsh.status == 0);
+    CHECK(gmsh.out.find("Error") == std::string::npos);
+    CHECK(fs::file_size(dir / "check.msh") > 10000);
+    fs::remove_all(dir);
+}
+
 TEST_CASE("towgeom resolve --cell --formats step,brep: the exact solids clipped to the box, the one outside left out", "[cli][resolve][brep][cell]")
 {
     const fs::path dir = scratch("brep_cell");

@@ -171,21 +171,6 @@ std::vector<TowStack> threeTows()
             w};
 }
 
-/// x and y cross as in threeTows(); w (radius 0.3) runs diagonally between them, its axis at
-/// height @p height, offset @p offset sideways from the crossing: each pair overlaps in one
-/// closed loop and the three loops cross where the three surfaces meet (triple points).
-std::vector<TowStack> threeTowsAtAPoint(double offset, double height, double startAngle = 0.0)
-{
-    testing::Sampling s = sampling(41, 48);
-    s.startAngle = startAngle;
-    TowStack w = testing::tubeAlongX(0.3, 3.0, -1.5, offset, 0.0, s, "w");
-    const double c = std::sqrt(0.5);
-    for (auto& section : w.sections)
-        for (Point3& p : section) p = {2.0 + c * p.x - c * p.y, c * p.x + c * p.y, p.z + height};
-    return {testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, sampling(41, 48), "x"), testing::tubeAlongY(0.4, 0.82, sampling(41, 48), "y"),
-            w};
-}
-
 /// The tows' surfaces tessellated finely and closed (CGAL corefinement input).
 TriangleMesh closedGrid(const TowSurface& t)
 {
@@ -258,7 +243,7 @@ void checkThreeTows(const std::vector<TowSurface>& tows, const ResolveResult& re
 
 TEST_CASE("three tows overlapping at one point: each keeps its volume minus the tows ranked above it", "[resolve][scan][triple]")
 {
-    const std::vector<TowSurface> tows = fit(threeTowsAtAPoint(0.3, 0.41));
+    const std::vector<TowSurface> tows = fit(testing::threeTowsAtAPoint(0.3, 0.41));
     const IntersectionReport loops = intersectTows(tows);
     REQUIRE(loops.loops.size() == 3);
     // In input order: x above y above w; the three loops meet in two triple points.
@@ -271,7 +256,7 @@ TEST_CASE("three tows overlapping at one point: each keeps its volume minus the 
 
 TEST_CASE("symmetric method where three tows overlap: the rank rule decides there, and says so", "[resolve][scan][triple][symmetric]")
 {
-    const std::vector<TowSurface> tows = fit(threeTowsAtAPoint(0.3, 0.41));
+    const std::vector<TowSurface> tows = fit(testing::threeTowsAtAPoint(0.3, 0.41));
     ResolveOptions o;
     o.method = ResolutionMethod::Symmetric;
     const ResolveResult res = resolveTextile(tows, o);
@@ -288,7 +273,7 @@ TEST_CASE("a triple point next to a tow's seam: no slivers", "[resolve][scan][tr
 {
     // w's seam (its sections' first point) turned to a triple point's angle plus a little: the
     // point a fraction of a period from the seam.
-    const std::vector<TowSurface> base = fit(threeTowsAtAPoint(0.3, 0.41));
+    const std::vector<TowSurface> base = fit(testing::threeTowsAtAPoint(0.3, 0.41));
     const ResolveResult ref = resolveTextile(base);
     REQUIRE(!ref.mesh.triplePoints.empty());
     const Point3 x = ref.mesh.nodes[ref.mesh.triplePoints[0].node];
@@ -297,7 +282,7 @@ TEST_CASE("a triple point next to a tow's seam: no slivers", "[resolve][scan][tr
     const double angle = std::atan2(zl, yl);
     for (const double fraction : {1e-2, 1e-3, 1e-4, 1e-5}) {
         INFO("triple point " << fraction << " of a period from w's seam");
-        const std::vector<TowSurface> tows = fit(threeTowsAtAPoint(0.3, 0.41, angle - 2.0 * kPi * fraction));
+        const std::vector<TowSurface> tows = fit(testing::threeTowsAtAPoint(0.3, 0.41, angle - 2.0 * kPi * fraction));
         const ResolveResult res = resolveTextile(tows);
         // Measured: at 1e-2 and 1e-3 resolved (14.0 and 4.8 degrees); closer, the triple point is
         // refused (it would make a sliver: 0.09 degrees at 1e-5) and its pairs left out cleanly.
@@ -313,14 +298,14 @@ TEST_CASE("a triple point next to a tow's seam: no slivers", "[resolve][scan][tr
         checkClosed(res);
     }
     // Down to 1e-3 of a period the triple points are kept.
-    CHECK(resolveTextile(fit(threeTowsAtAPoint(0.3, 0.41, angle - 2.0 * kPi * 1e-3))).unresolved.empty());
+    CHECK(resolveTextile(fit(testing::threeTowsAtAPoint(0.3, 0.41, angle - 2.0 * kPi * 1e-3))).unresolved.empty());
 }
 
 TEST_CASE("three tows at one point resolve at mesh sizes from the largest accepted to a tenth of it", "[resolve][scan][triple][sweep]")
 {
     // Symmetric: w right over the crossing of x and y; four triple points, two of them close
     // together on each loop.
-    const std::vector<TowSurface> tows = fit(threeTowsAtAPoint(0.0, 0.6));
+    const std::vector<TowSurface> tows = fit(testing::threeTowsAtAPoint(0.0, 0.6));
     for (const double h : {0.785, 0.4, 0.2, 0.15, 0.1, 0.0785}) {
         INFO("relative mesh size " << h);
         ResolveOptions o;
@@ -347,16 +332,6 @@ TEST_CASE("a tow through another where a third meets them: bands, triple points,
 
 namespace {
 
-/// A thin tube along y (radius 0.1, axis at x = 2, z = 0) right through a round tube along x
-/// (radius 0.5), or, @p endsInside, ending at y = 0 on the other's axis.
-std::vector<TowStack> thinThrough(bool endsInside, bool startsInside = false)
-{
-    TowStack thin = testing::tubeAlongY(0.1, 0.0, sampling(41, 32), "thin");
-    if (endsInside) thin.sections.resize(21);  // y from -2 to 0
-    if (startsInside) thin.sections.erase(thin.sections.begin(), thin.sections.begin() + 20);  // y from 0 to 2
-    return {testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, sampling(41, 32), "outer"), thin};
-}
-
 /// The connected pieces of a mesh (triangles joined through their nodes).
 std::size_t pieces(const std::vector<std::array<std::size_t, 3>>& triangles)
 {
@@ -382,7 +357,7 @@ TEST_CASE("a tow through another, or ending inside it: each keeps its volume min
 {
     for (const int kind : {0, 1, 2}) {  // through, ending inside, starting inside
         const bool endsInside = kind > 0;
-        const std::vector<TowSurface> tows = fit(thinThrough(kind == 1, kind == 2));
+        const std::vector<TowSurface> tows = fit(testing::thinThrough(kind == 1, kind == 2));
         const IntersectionReport loops = intersectTows(tows);
         // Through: two loops around the thin tube; ending inside: one.
         REQUIRE(loops.loops.size() == (endsInside ? 1u : 2u));
@@ -515,7 +490,7 @@ TEST_CASE("towgeom resolve names a pair it could not resolve, writes the rest an
 TEST_CASE("towgeom resolve lists the triple points in report.json", "[resolve][scan][triple][cli]")
 {
     const auto dir = std::filesystem::temp_directory_path() / ("towgeom_triple_" + std::to_string(::getpid()));
-    const std::string files = writeStacks(dir, threeTowsAtAPoint(0.3, 0.41));
+    const std::string files = writeStacks(dir, testing::threeTowsAtAPoint(0.3, 0.41));
     const testing::Run r = testing::cli("resolve" + files + " --quiet --out '" + (dir / "out").string() + "'");
     INFO(r.err);
     CHECK(r.status == 0);
@@ -778,7 +753,7 @@ TEST_CASE("connectRegions: two tows failing in one pass, one pair between them, 
 
 TEST_CASE("connectRegions: triple points of pairs left out are not reported", "[resolve][connect][triple]")
 {
-    const std::vector<TowSurface> tows = fit(threeTowsAtAPoint(0.3, 0.41));
+    const std::vector<TowSurface> tows = fit(testing::threeTowsAtAPoint(0.3, 0.41));
     ResolveOptions o;
     const ResolveResult meshed = meshTows(tows, intersectTows(tows), o);
     REQUIRE(meshed.mesh.loops.size() == 3);

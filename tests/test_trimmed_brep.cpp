@@ -16,6 +16,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <set>
 #include <string>
 
 #include <unistd.h>
@@ -44,6 +45,7 @@ void writeUntrimmed(const std::vector<TowSurface>& tows, const ResolveResult& r,
 {
     ResolveResult whole = r;
     whole.mesh.regions.clear();
+    whole.mesh.triplePoints.clear();
     whole.mesh.cell.reset();
     trimmedBrep(tows, whole).writeBrep(path);
 }
@@ -461,4 +463,131 @@ TEST_CASE("trimmed B-rep: what is not built yet is refused, naming it", "[brep]"
     }
     const std::vector<TowSurface> fewer(tows.begin(), tows.begin() + 3);
     CHECK_THROWS_AS(trimmedBrep(fewer, symmetric), Error);
+}
+
+TEST_CASE("trimmed B-rep where three tows meet at a point: each tow minus the tows ranked above it, faces shared",
+          "[brep][triple]")
+{
+    // The loops of the three pairs cross each other at two triple points: their faces are not
+    // bounded by whole loops, and the solids come from OpenCASCADE's general fuse of the whole
+    // tows, each split given to the highest-ranked tow it lies in.
+    const std::vector<TowSurface> tows = testing::fitAll(testing::threeTowsAtAPoint(0.3, 0.41));
+    const fs::path dir = freshDirectory("towgeom_brep_triple");
+    const std::string wholeFile = (dir / "whole.brep").string();
+    for (const bool wFirst : {false, true}) {
+        INFO((wFirst ? "w ranked first" : "in input order"));
+        ResolveOptions o;
+        if (wFirst) o.primaryPatterns = {"w"};
+        const ResolveResult r = resolveTextile(tows, o);
+        REQUIRE(r.mesh.triplePoints.size() == 2);
+        REQUIRE(r.unresolved.empty());
+        const TrimmedBrep brep = trimmedBrep(tows, r);
+        const std::string file = (dir / "three.brep").string();
+        brep.writeBrep(file);
+        if (!wFirst) writeUntrimmed(tows, r, wholeFile);
+        const testing::ReadShapes back = testing::readBrep(file);
+        REQUIRE(back.solids.size() == 3);
+        // The highest-ranked tow keeps its whole volume; the second loses its overlap with it
+        // (OCCT's boolean of the untrimmed tows); every tow its mesh's volume within 0.5 %.
+        const std::size_t top = wFirst ? 2 : 0, second = wFirst ? 0 : 1;
+        CHECK(relative(brep.solids()[top].volume, tows[top].volume()) <= 1e-9);
+        CHECK(relative(brep.solids()[second].volume, tows[second].volume() - testing::commonVolume(wholeFile, second, top)) <= 1e-6);
+        double kept = 0.0;
+        for (std::size_t t = 0; t < 3; ++t) {
+            const BrepSolid& s = brep.solids()[t];
+            INFO(s.name << ": volume " << s.volume << ", read back " << back.solids[t].volume << ", mesh " << r.tows[t].volumeAfter
+                        << ", faces " << s.faces << ", shared " << s.sharedFaces);
+            CHECK(s.valid);
+            CHECK(back.solids[t].valid);
+            CHECK(relative(back.solids[t].volume, s.volume) <= 1e-6);
+            CHECK(relative(s.volume, r.tows[t].volumeAfter) <= 5e-3);
+            CHECK(s.sharedFaces >= 2);  // with each of the two others
+            CHECK(relative(testing::readBrepArea(file, t), s.area) <= 1e-6);
+            kept += s.volume;
+        }
+        // Each pair shares a face, the same face in both solids.
+        std::set<std::pair<std::size_t, std::size_t>> pairs;
+        for (const auto& [pair, count] : back.sharedFaces) pairs.insert(pair);
+        CHECK(pairs == std::set<std::pair<std::size_t, std::size_t>>{{0, 1}, {0, 2}, {1, 2}});
+        CHECK(brep.sharedFaceCount() >= 3);
+        // Nothing counted twice or lost: the three solids fill the tows' union (OCCT's fuse of the
+        // untrimmed tows: the same whichever ranks first).
+        CHECK(relative(kept, testing::unionVolume(wholeFile)) <= 1e-6);
+    }
+    fs::remove_all(dir);
+}
+
+TEST_CASE("trimmed B-rep of a tow through another or ending inside it: cut into pieces, its cap given way", "[brep][through]")
+{
+    for (const bool endsInside : {false, true}) {
+        INFO((endsInside ? "thin ends inside outer" : "thin passes through outer"));
+        const std::vector<TowSurface> tows = testing::fitAll(testing::thinThrough(endsInside));
+        const ResolveResult r = resolveTextile(tows);  // outer (given first) above thin
+        REQUIRE(r.unresolved.empty());
+        const TrimmedBrep brep = trimmedBrep(tows, r);
+        const fs::path dir = freshDirectory("towgeom_brep_through");
+        const std::string file = (dir / "through.brep").string(), wholeFile = (dir / "whole.brep").string();
+        brep.writeBrep(file);
+        writeUntrimmed(tows, r, wholeFile);
+        const testing::ReadShapes back = testing::readBrep(file);
+        // thin through outer leaves two pieces, one on each side; ending inside, one.
+        REQUIRE(back.solids.size() == (endsInside ? 2u : 3u));
+        const BrepSolid &outer = brep.solids()[0], &thin = brep.solids()[1];
+        CHECK(outer.valid);
+        CHECK(thin.valid);
+        CHECK(relative(outer.volume, tows[0].volume()) <= 1e-9);
+        CHECK(relative(thin.volume, tows[1].volume() - testing::commonVolume(wholeFile, 1, 0)) <= 1e-6);
+        CHECK(relative(thin.volume, r.tows[1].volumeAfter) <= 5e-3);
+        double thinBack = 0.0;
+        for (std::size_t k = 1; k < back.solids.size(); ++k) {
+            CHECK(back.solids[k].valid);
+            thinBack += back.solids[k].volume;
+        }
+        CHECK(relative(back.solids[0].volume, outer.volume) <= 1e-6);
+        CHECK(relative(thinBack, thin.volume) <= 1e-6);
+        // Each piece of thin shares with outer the part of outer's surface it gave way to.
+        for (std::size_t k = 1; k < back.solids.size(); ++k) {
+            const bool shares = std::any_of(back.sharedFaces.begin(), back.sharedFaces.end(),
+                                            [&](const auto& s) { return s.first == std::make_pair(std::size_t{0}, k); });
+            CHECK(shares);
+        }
+        fs::remove_all(dir);
+    }
+}
+
+TEST_CASE("trimmed B-rep where three tows meet inside a cell: clipped by the box, the matrix around them", "[brep][triple][cell]")
+{
+    const std::vector<TowSurface> tows = testing::fitAll(testing::threeTowsAtAPoint(0.3, 0.41));
+    ResolveOptions o;
+    Cell cell;
+    cell.min = {0.3, -1.3, -0.7};  // x and y cut at both ends, w (ends inside) not
+    cell.max = {3.3, 1.7, 1.4};
+    o.cell = cell;
+    const ResolveResult r = resolveTextile(tows, o);
+    REQUIRE(r.mesh.triplePoints.size() == 2);
+    const TrimmedBrep brep = trimmedBrep(tows, r);
+    const fs::path dir = freshDirectory("towgeom_brep_triple_cell");
+    const std::string file = (dir / "cell.brep").string();
+    brep.writeBrep(file);
+    const testing::ReadShapes back = testing::readBrep(file);
+    const BrepSolid& matrix = brep.matrix();
+    INFO(brep.matrixNote());
+    REQUIRE(matrix.faces > 0);
+    double total = 0.0;  // read back: the tows' and the matrix's solids fill the box
+    for (const testing::ReadSolid& s : back.solids) {
+        CHECK(s.valid);
+        total += s.volume;
+    }
+    CHECK(relative(total, cell.volume()) <= 1e-6);
+    CHECK(relative(back.solids.back().volume, matrix.volume) <= 1e-6);
+    CHECK(relative(testing::readBrepArea(file, back.solids.size() - 1), matrix.area) <= 1e-6);
+    for (std::size_t t = 0; t < 3; ++t) {
+        const BrepSolid& s = brep.solids()[t];
+        INFO(s.name << ": volume " << s.volume << ", mesh " << r.tows[t].volumeAfter << ", cut faces " << s.cellFaces);
+        CHECK(s.valid);
+        CHECK(s.cellFaces == (t < 2 ? 2u : 0u));
+        CHECK(relative(s.volume, r.tows[t].volumeAfter) <= 5e-3);
+        CHECK(relative(back.solids[t].volume, s.volume) <= 1e-6);
+    }
+    fs::remove_all(dir);
 }

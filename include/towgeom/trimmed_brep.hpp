@@ -44,8 +44,9 @@ struct BrepSolid {
     /// of their volume).
     double volume = 0.0;
     double area = 0.0;          ///< the area of its boundary (computed as the volume is)
-    /// Faces of its shell: its own (tube pieces, caps or cut faces on a cell's box) and the
-    /// shared ones; 0 for a tow wholly outside the cell (no solid).
+    /// Faces of its shell (of all its solids, for a tow cut apart): its own (tube pieces, caps
+    /// or cut faces on a cell's box) and the shared ones; 0 for a tow wholly outside the cell
+    /// (no solid).
     std::size_t faces = 0;
     std::size_t sharedFaces = 0;  ///< faces it shares with another tow's solid (the same face in both)
     /// With a cell: its cut faces, made of the box's faces where the box cuts it (2 for a tow
@@ -57,7 +58,8 @@ struct BrepSolid {
 };
 
 /// The resolved textile as one compound of solids, one per tow in input order (with a cell, one
-/// per tow inside it); faces shared by two tows are one face used by both solids (with opposite
+/// per tow inside it; several for a tow cut apart by a tow ranked above it or by the box, see
+/// trimmedBrep()); faces shared by two tows are one face used by both solids (with opposite
 /// orientations).
 class TOWGEOM_EXPORT TrimmedBrep {
 public:
@@ -156,12 +158,21 @@ private:
 /// brep.writeStep("textile.step");
 /// @endcode
 ///
+/// Where the loops alone cannot bound the faces — three tows meeting at a point (loops of two
+/// pairs crossing on a tow), a loop that winds around a tow (one passes through the other, which
+/// it cuts into pieces) or runs across an end cap (a tow ending inside another), a region inside
+/// another's island, loops that leave no v around a tow free for its face's seam, a tow the
+/// cell's box cuts into more than one solid — the solids are built from the tows' whole solids
+/// instead: OpenCASCADE's general fuse of them all (and of the cell's box) splits them where they
+/// meet, each split goes to the highest-ranked tow it lies in (of a pair, its regions' primary),
+/// and each tow is the union of its splits, so the surface where tows overlapped is one face of
+/// both there too, and with a cell the box's splits inside no tow are the matrix. A tow cut
+/// apart is then several solids of its name in the compound and the files (BrepSolid sums them).
+///
 /// @throws towgeom::Error (InvalidArgument) when @p resolved is not of @p tows; (Unsupported)
-///         naming the tow or tow pair for what this version does not build yet: other methods
-///         than Connect, a tow the cell's box cuts into more than one solid, triple points, a loop that winds around a
-///         tow or runs across an end cap, loops of two regions that overlap on one tow (a third
-///         tow), a region inside another's island, loops that leave no v around a tow free for
-///         its face's seam, an end section that is not planar; (Internal) if OpenCASCADE fails.
+///         naming what this version does not build: other methods than Connect, an end section
+///         that is not planar, and, where the general fuse is needed, a tow pair or loop that
+///         resolveTextile() left overlapping; (Internal) if OpenCASCADE fails.
 TOWGEOM_EXPORT TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult& resolved,
                                        const BrepOptions& options = {});
 

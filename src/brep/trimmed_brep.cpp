@@ -32,10 +32,12 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <utility>
 
 #include "brep/cell_clip.hpp"
+#include "brep/rank_fuse.hpp"
 #include "brep/trimmed_brep_impl.hpp"
 #include "surface/occt_convert.hpp"
 #include "surface/tow_surface_impl.hpp"
@@ -341,7 +343,9 @@ double maxToleranceOf(const TopoDS_Shape& shape)
     return m;
 }
 
-void checkSupported(const std::vector<TowSurface>& tows, const ResolveResult& r)
+/// @throws towgeom::Error (InvalidArgument) when @p r is not of @p tows, (Unsupported) when it
+/// was not made by the connect method.
+void checkInput(const std::vector<TowSurface>& tows, const ResolveResult& r)
 {
     if (r.tows.size() != tows.size() || r.mesh.tows.size() != tows.size())
         throw Error(ErrorCode::InvalidArgument, "trimmedBrep: the resolve result is of " + std::to_string(r.tows.size()) +
@@ -353,6 +357,13 @@ void checkSupported(const std::vector<TowSurface>& tows, const ResolveResult& r)
     if (r.method != ResolutionMethod::Connect)
         throw Error(ErrorCode::Unsupported, "the trimmed B-rep is built for the connect method only (the symmetric method's "
                                             "mid-surfaces and the shrunk tows are not B-spline faces of the input tows)");
+}
+
+/// @throws towgeom::Error (Unsupported) for what the loops alone do not build (fuseByRank()
+/// does): triple points, loops that wind around a tow or run across a cap; (Internal) for an
+/// open loop bounding a region.
+void checkLoopsTrim(const std::vector<TowSurface>& tows, const ResolveResult& r)
+{
     if (!r.mesh.triplePoints.empty())
         throw Error(ErrorCode::Unsupported, "the trimmed B-rep is not built where three tows meet (" +
                                                 std::to_string(r.mesh.triplePoints.size()) + " triple points)");
@@ -475,15 +486,14 @@ BrepSolid buildMatrix(TrimmedBrep::Impl& impl, const ResolveResult& r, const std
 
 }  // namespace
 
-TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult& r, const BrepOptions& o)
+namespace {
+
+/// The tows trimmed by their loops (each loop one edge; see trimmedBrep()).
+/// @throws towgeom::Error (Unsupported) for what the loops alone do not build.
+TrimmedBrep loopTrimmed(const std::vector<TowSurface>& tows, const ResolveResult& r, const BrepOptions& o, double tolerance)
 {
-    if (!(o.tolerance >= 0.0) || !std::isfinite(o.tolerance) || !(o.relativeTolerance > 0.0) || !std::isfinite(o.relativeTolerance))
-        throw Error(ErrorCode::InvalidArgument, "trimmedBrep: the tolerances must be finite, tolerance >= 0 and relativeTolerance > 0");
-    checkSupported(tows, r);
+    checkLoopsTrim(tows, r);
     const std::vector<IntersectionLoop>& loops = r.intersections.loops;
-    double smallest = 1e300;
-    for (const TowSurface& t : tows) smallest = std::min(smallest, t.towSize());
-    const double tolerance = o.tolerance > 0.0 ? o.tolerance : o.relativeTolerance * smallest;
 
     // The loops on each tow, its seam, and per tow the loops whose inside is not part of its own
     // main face.
@@ -639,6 +649,129 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
         throw Error(ErrorCode::Internal, std::string("OpenCASCADE failed building the trimmed B-rep: ") + e.GetMessageString());
     }
     return TrimmedBrep(std::move(impl), std::move(solids), sharedCount, std::move(matrix), std::move(matrixNote));
+}
+
+/// Tow @p t's whole solid: its B-spline face with its natural boundary (seam at vMin) and its two
+/// planar caps; @p area the area of its boundary.
+TopoDS_Solid wholeSolid(const TowSurface& tow, double tolerance, double& area)
+{
+    const Handle(Geom_BSplineSurface)& s = tow.impl().surface;
+    const ParameterRange pr = tow.parameterRange();
+    TopoDS_Edge rims[2];
+    BRep_Builder b;
+    TopoDS_Shell shell;
+    b.MakeShell(shell);
+    b.Add(shell, tubeFace(s, pr, pr.vMin, tolerance, rims));
+    area = tow.area();
+    for (int k = 0; k < 2; ++k) {
+        const double u = k == 0 ? pr.uMin : pr.uMax;
+        const TopoDS_Face cap = capFace(s, u, pr.vMin, pr.vPeriod(), rims[k], outwardAtEnd(s, u, pr.vMin, pr.vPeriod(), k == 0),
+                                        tow.towSize(), tow.name(), k == 0 ? "first" : "last");
+        b.Add(shell, cap);
+        area += areaOf(cap);
+    }
+    shell.Closed(BRep_Tool::IsClosed(shell));
+    TopoDS_Solid solid;
+    b.MakeSolid(solid);
+    b.Add(solid, shell);
+    return solid;
+}
+
+/// The tows by the rank rule on their whole solids (fuseByRank()): what the loops alone do not
+/// build (three tows at a point, loops across caps or around a tow, a tow cut apart).
+/// @throws towgeom::Error (Unsupported) naming a pair that still overlaps (the mesh leaves it
+///         overlapping: the solids would not agree with it).
+TrimmedBrep rankFused(const std::vector<TowSurface>& tows, const ResolveResult& r, const BrepOptions& o, double tolerance)
+{
+    const std::vector<UnresolvedPairEntry> overlapping = overlappingPairs(r);
+    if (!overlapping.empty())
+        throw Error(ErrorCode::Unsupported, "tows '" + tows[overlapping.front().towA].name() + "' and '" +
+                                                tows[overlapping.front().towB].name() + "' still overlap [" + overlapping.front().code +
+                                                "]: the trimmed B-rep of tows that meet at a point of three or across a cap is built "
+                                                "only when every pair is resolved");
+    for (const SkippedLoop& k : r.skippedLoops)
+        if (k.reason != SkippedLoop::Reason::OutsideCell)
+            throw Error(ErrorCode::Unsupported, "a loop the mesh leaves unresolved (" + k.message +
+                                                    "): the trimmed B-rep of tows that meet at a point of three or across a cap is "
+                                                    "built only when every loop is resolved");
+    // Of a pair with a region, its primary ranks above; otherwise the tow given first (the rank
+    // rule's order when no pattern tells them apart).
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> primary;
+    for (const ConnectedRegion& g : r.mesh.regions) primary[std::minmax(g.primary, g.secondary)] = g.primary;
+    const auto above = [&](std::size_t a, std::size_t b) {
+        if (a == b) return false;
+        const auto it = primary.find(std::minmax(a, b));
+        return it != primary.end() ? it->second == a : a < b;
+    };
+    std::vector<TopoDS_Solid> whole(tows.size());
+    std::vector<double> area(tows.size());
+    std::vector<std::string> names;
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        whole[t] = wholeSolid(tows[t], tolerance, area[t]);
+        names.push_back(tows[t].name());
+    }
+    std::optional<Cell> box;
+    if (r.mesh.cell) box = r.mesh.cell->box;
+    const detail::RankFusion fused = detail::fuseByRank(whole, area, above, box, names);
+
+    auto impl = std::make_shared<TrimmedBrep::Impl>();
+    BRep_Builder b;
+    b.MakeCompound(impl->compound);
+    const auto fill = [&](BrepSolid& out, const detail::FusedSolid& f, const std::string& name) {
+        out.name = name;
+        out.faces = f.faces;
+        out.sharedFaces = f.sharedFaces;
+        out.cellFaces = f.cellFaces;
+        out.valid = !f.solids.empty();
+        for (const TopoDS_Solid& s : f.solids) {
+            out.valid = out.valid && BRepCheck_Analyzer(s).IsValid();
+            out.maxTolerance = std::max(out.maxTolerance, maxToleranceOf(s));
+            b.Add(impl->compound, s);
+            impl->solids.push_back(s);
+            impl->names.push_back(name);
+        }
+    };
+    std::vector<BrepSolid> solids(tows.size());
+    double onBoxAreas = 0.0, freeAreas = 0.0;
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        const detail::FusedSolid& f = fused.tows[t];
+        fill(solids[t], f, tows[t].name());
+        if (f.solids.empty()) continue;  // nothing kept (outside the cell, or inside tows above it)
+        solids[t].volume = tows[t].volume() - f.lostVolume;
+        solids[t].area = f.area;
+        for (const ConnectedRegion& g : r.mesh.regions)
+            if (g.primary == t || g.secondary == t) solids[t].loops += 1 + g.holes.size();
+        onBoxAreas += f.onBoxArea;
+        freeAreas += f.freeArea;
+    }
+    BrepSolid matrix;
+    if (box && o.matrix) {
+        fill(matrix, fused.matrix, "MATRIX");
+        const Cell& c = *box;
+        const double dx = c.max.x - c.min.x, dy = c.max.y - c.min.y, dz = c.max.z - c.min.z;
+        matrix.volume = c.volume();
+        for (const BrepSolid& t : solids) matrix.volume -= t.volume;
+        matrix.area = 2.0 * (dx * dy + dy * dz + dz * dx) - onBoxAreas + freeAreas;
+    }
+    return TrimmedBrep(std::move(impl), std::move(solids), fused.sharedFaces, std::move(matrix), {});
+}
+
+}  // namespace
+
+TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult& r, const BrepOptions& o)
+{
+    if (!(o.tolerance >= 0.0) || !std::isfinite(o.tolerance) || !(o.relativeTolerance > 0.0) || !std::isfinite(o.relativeTolerance))
+        throw Error(ErrorCode::InvalidArgument, "trimmedBrep: the tolerances must be finite, tolerance >= 0 and relativeTolerance > 0");
+    checkInput(tows, r);
+    double smallest = 1e300;
+    for (const TowSurface& t : tows) smallest = std::min(smallest, t.towSize());
+    const double tolerance = o.tolerance > 0.0 ? o.tolerance : o.relativeTolerance * smallest;
+    try {
+        return loopTrimmed(tows, r, o, tolerance);
+    } catch (const Error& e) {
+        if (e.code() != ErrorCode::Unsupported) throw;
+    }
+    return rankFused(tows, r, o, tolerance);
 }
 
 TOWGEOM_END_NAMESPACE

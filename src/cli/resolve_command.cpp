@@ -46,7 +46,8 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                    triangle on each box face: the matrix's and the tows' caps)
   DIR/textile.step with --formats step: STEP AP214, one solid per tow named after it (with
                    --cell: per tow inside the box, clipped to it, and the matrix, the box
-                   minus the tows, a solid named MATRIX), for CAD-based FE tools
+                   minus the tows, a solid named MATRIX; a tow cut apart by a tow ranked
+                   above it or by the box: a solid per piece), for CAD-based FE tools
                    (Abaqus/CAE, ANSYS, Gmsh's OpenCASCADE kernel); your units written as
                    millimetres. DIR/textile.brep with --formats brep: the
                    same in OpenCASCADE's BREP, where shared faces stay one face of both solids
@@ -140,7 +141,9 @@ Options:
   --formats LIST     comma-separated from stl,vtk,msh,inp,step,brep (default stl,vtk); step
                      and brep are the exact solids (--method connect): each tow's B-spline
                      face trimmed by its loops, the faces two tows share one face of both,
-                     planar caps; with --cell clipped to the box (see DIR/textile.step below)
+                     planar caps; with --cell clipped to the box (see DIR/textile.step below);
+                     where three tows meet or a loop goes around a tow or across a cap, from
+                     OpenCASCADE's general fuse of the whole tows by the rank rule
   --tolerance T      intersection point tolerance (default: 1e-7 x the tow size)
   --report FILE      take the intersection loops from FILE, written by 'towgeom detect
                      --save-report FILE' for the same tows in the same order, instead of

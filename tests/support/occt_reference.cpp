@@ -1,6 +1,8 @@
 #include "occt_reference.hpp"
 
 #include <BRepAlgoAPI_Common.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
+#include <TopTools_ListOfShape.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -131,6 +133,25 @@ double commonVolume(const std::string& path, std::size_t i, std::size_t j)
     if (!common.IsDone()) throw std::runtime_error("BRepAlgoAPI_Common failed");
     GProp_GProps p;
     BRepGProp::VolumeProperties(common.Shape(), p, 1e-7, Standard_True);
+    return p.Mass();
+}
+
+double unionVolume(const std::string& path)
+{
+    const TopoDS_Shape shape = brepShape(path);
+    TopTools_ListOfShape solids;
+    for (TopExp_Explorer x(shape, TopAbs_SOLID); x.More(); x.Next()) solids.Append(x.Current());
+    if (solids.Extent() < 2) throw std::runtime_error("unionVolume: fewer than two solids");
+    TopTools_ListOfShape first, rest = solids;
+    first.Append(rest.First());
+    rest.RemoveFirst();
+    BRepAlgoAPI_Fuse fuse;
+    fuse.SetArguments(first);
+    fuse.SetTools(rest);
+    fuse.Build();
+    if (!fuse.IsDone() || fuse.HasErrors()) throw std::runtime_error("BRepAlgoAPI_Fuse failed");
+    GProp_GProps p;
+    BRepGProp::VolumeProperties(fuse.Shape(), p, 1e-7, Standard_True);
     return p.Mass();
 }
 

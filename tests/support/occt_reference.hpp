@@ -47,6 +47,8 @@ double boxCommonVolume(const std::string& path, std::size_t i, const std::array<
 /// inside the box [@p min, @p max] (two BRepAlgoAPI_Common).
 double boxCommonVolume(const std::string& path, std::size_t i, std::size_t j, const std::array<double, 3>& min,
                        const std::array<double, 3>& max);
+/// The volume of the union of the solids of the BREP file @p path (BRepAlgoAPI_Fuse).
+double unionVolume(const std::string& path);
 /// The boundary area of solid @p i of the BREP file @p path (BRepGProp, relative precision 1e-7).
 double readBrepArea(const std::string& path, std::size_t i);
 

@@ -209,6 +209,31 @@ std::vector<TowSurface> fittedTwill22SixBySix()
     return fitAll(generateWeave(w).stacks());
 }
 
+std::vector<TowStack> threeTowsAtAPoint(double offset, double height, double startAngle)
+{
+    Sampling s;
+    s.sections = 41;
+    s.points = 48;
+    const Sampling round = s;
+    s.startAngle = startAngle;
+    TowStack w = tubeAlongX(0.3, 3.0, -1.5, offset, 0.0, s, "w");
+    const double c = std::sqrt(0.5);
+    for (auto& section : w.sections)
+        for (Point3& p : section) p = {2.0 + c * p.x - c * p.y, c * p.x + c * p.y, p.z + height};
+    return {tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, round, "x"), tubeAlongY(0.4, 0.82, round, "y"), w};
+}
+
+std::vector<TowStack> thinThrough(bool endsInside, bool startsInside)
+{
+    Sampling s;
+    s.sections = 41;
+    s.points = 32;
+    TowStack thin = tubeAlongY(0.1, 0.0, s, "thin");
+    if (endsInside) thin.sections.resize(21);  // y from -2 to 0
+    if (startsInside) thin.sections.erase(thin.sections.begin(), thin.sections.begin() + 20);  // y from 0 to 2
+    return {tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "outer"), thin};
+}
+
 std::vector<TowSurface> crossingTubes(bool far)
 {
     Sampling s;

@@ -62,6 +62,15 @@ TowStack dentedTubeAlongY(double r, double d, double dent, double width, const S
 /// turned by @p degrees about the vertical through (2, 0), then moved by @p side along y and
 /// @p lift along z. Where their sections overlap they interpenetrate along their length.
 std::vector<TowStack> tubesCrossingAt(double degrees, double width, double height, double lift, double side = 0.0);
+/// "x" (r 0.5 along x from 0 to 4) and "y" (r 0.4 along y) crossing at x = 2, and "w" (r 0.3)
+/// running diagonally between them, its axis at height @p height, offset @p offset sideways from
+/// the crossing: each pair overlaps in one closed loop and the three loops cross where the three
+/// surfaces meet (triple points). 41 sections x 48 points; @p startAngle of w's first points.
+std::vector<TowStack> threeTowsAtAPoint(double offset, double height, double startAngle = 0.0);
+/// "outer" (r 0.5 along x from 0 to 4) and "thin" (r 0.1 along y at x = 2, z = 0) right through
+/// it, or, @p endsInside, ending at y = 0 on outer's axis (@p startsInside: starting there).
+/// 41 sections x 32 points.
+std::vector<TowStack> thinThrough(bool endsInside, bool startsInside = false);
 /// Fitted tubes "x" (r 0.5, along x from 0 to 4) and "y" (r 0.4, along y) crossing, 48 points
 /// per section; with @p far also "far" (r 0.3, along x at y = 3).
 std::vector<TowSurface> crossingTubes(bool far);
