@@ -41,18 +41,25 @@ struct BrepSolid {
     /// The solid's volume: the tow's exact volume (TowSurface::volume()) changed by what its
     /// loops cut out and put in (OpenCASCADE's BRepGProp over the faces inside the loops, 1e-9
     /// relative) and, with a cell, less what the box cuts off (BRepGProp over those parts, 1e-9
-    /// of their volume).
+    /// of their volume). Built by the general fuse (TrimmedBrep::fusedBecause()): the tow's exact
+    /// volume less its splits it gives to tows ranked above it or that lie outside the box
+    /// (BRepGProp, 1e-9 of theirs); the solid's own integral read back agrees within its
+    /// edges' tolerance times its area (OpenCASCADE's intersection curves of nearly tangent
+    /// surfaces carry a few 1e-6 of the tow size).
     double volume = 0.0;
     double area = 0.0;          ///< the area of its boundary (computed as the volume is)
     /// Faces of its shell (of all its solids, for a tow cut apart): its own (tube pieces, caps
-    /// or cut faces on a cell's box) and the shared ones; 0 for a tow wholly outside the cell
-    /// (no solid).
+    /// or cut faces on a cell's box) and the shared ones; 0 for a tow wholly outside the cell,
+    /// or (general fuse) wholly inside tows ranked above it (no solid). The general fuse splits
+    /// a tow's surface where other tows' surfaces meet it, so it counts more tube pieces.
     std::size_t faces = 0;
     std::size_t sharedFaces = 0;  ///< faces it shares with another tow's solid (the same face in both)
     /// With a cell: its cut faces, made of the box's faces where the box cuts it (2 for a tow
     /// cut at both ends; 0 for a tow wholly inside); 0 without a cell.
     std::size_t cellFaces = 0;
-    std::size_t loops = 0;      ///< intersection loops on its boundary (trimming curves)
+    /// Intersection loops of its regions (trimming curves; built by the general fuse, its own
+    /// trimming curves are OpenCASCADE's intersections of the whole tows).
+    std::size_t loops = 0;
     bool valid = false;         ///< BRepCheck_Analyzer accepts the solid (false where there is none: faces 0)
     double maxTolerance = 0.0;  ///< the largest tolerance of its edges and vertices, in your units
 };
@@ -69,14 +76,17 @@ public:
     /// The number of faces shared by two solids.
     std::size_t sharedFaceCount() const { return sharedFaces_; }
     /// With a cell (and BrepOptions::matrix): the matrix, the cell's box minus the tows' clipped
-    /// solids, named MATRIX in the files (one solid, or several where tows cut the box apart).
+    /// solids, named MATRIX in the files (one solid, or several where tows cut the box apart;
+    /// with a cavity where tows lie wholly inside the box).
     /// Its faces are the box's faces minus the tows' cut faces, and the tows' faces that no other
     /// tow shares: in writeBrep() those are the tows' own faces (the same face in both solids),
     /// in writeStep() written again for the matrix. volume is the box's less the tows' volumes
     /// (BrepSolid::volume), area the box's less the tows' faces on it plus the tows' faces it
     /// bounds (their BRepGProp areas), sharedFaces the faces it shares with the tows, cellFaces
     /// its faces on the box; valid: OpenCASCADE's checker accepts every piece, and its faces on
-    /// the tows are exactly the tows' faces no other tow shares and not on the box. faces 0
+    /// the tows are exactly the tows' faces no other tow shares and not on the box (built by the
+    /// general fuse, TrimmedBrep::fusedBecause(): the box's splits inside no tow, valid as its
+    /// checker says). faces 0
     /// without a cell, without BrepOptions::matrix, or when it is not built (matrixNote() says
     /// why; then the files hold the tows only). A tow named MATRIX cannot be told from it in the
     /// files.
@@ -84,8 +94,13 @@ public:
     /// Why the matrix was not built although asked for (a cell and BrepOptions::matrix): tows
     /// that still overlap (the box less the tows would not be the matrix; the first pair named,
     /// as overlappingPairs() gives them), or OpenCASCADE's boolean failing or giving a solid
-    /// that fails the checks above. Empty when it was built or not asked for.
+    /// that fails the checks above. Empty when it was built or not asked for (with the general
+    /// fuse, pairs that still overlap are refused instead).
     const std::string& matrixNote() const { return matrixNote_; }
+    /// Empty when the loops bound every face; otherwise why the solids were built from the whole
+    /// tows by OpenCASCADE's general fuse (what the loops alone do not build, as the loop path
+    /// refused it; see trimmedBrep()).
+    const std::string& fusedBecause() const { return fusedBecause_; }
 
     /// Writes the compound as STEP AP214 to @p path, each solid named after its tow (the name of
     /// its MANIFOLD_SOLID_BREP), lengths in millimetres as STEP needs a unit: your units are
@@ -112,7 +127,7 @@ public:
     const Impl& impl() const { return *impl_; }
     /// Made by trimmedBrep().
     TrimmedBrep(std::shared_ptr<const Impl> impl, std::vector<BrepSolid> solids, std::size_t sharedFaces, BrepSolid matrix = {},
-                std::string matrixNote = {});
+                std::string matrixNote = {}, std::string fusedBecause = {});
 
 private:
     std::shared_ptr<const Impl> impl_;
@@ -120,6 +135,7 @@ private:
     std::size_t sharedFaces_ = 0;
     BrepSolid matrix_;
     std::string matrixNote_;
+    std::string fusedBecause_;
 };
 
 /// Builds the resolved tows of @p resolved (resolveTextile() of @p tows, ResolutionMethod::

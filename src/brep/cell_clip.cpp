@@ -6,10 +6,8 @@
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepCheck_Analyzer.hxx>
-#include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <Bnd_Box.hxx>
-#include <GProp_GProps.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_DataMapIteratorOfDataMapOfShapeInteger.hxx>
 #include <TopTools_DataMapOfShapeInteger.hxx>
@@ -23,16 +21,14 @@
 #include <set>
 #include <utility>
 
+#include "brep/general_fuse.hpp"
+#include "brep/measure.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/volume_mesh.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
 namespace {
-
-/// BRepGProp's relative precision for the cut-off parts (their faces have no holes: quick); the
-/// clipped volume, the whole solid's less theirs, is within 1e-9 of their volume.
-constexpr double kMeasureEps = 1e-9;
 
 /// Fills @p out from its inside part (when there is one) and the parts cut off (@p outside):
 /// its faces on the box are those in @p boxImages (the boolean's images of the box's faces),
@@ -45,17 +41,14 @@ void measure(ClippedSolid& out, const TopTools_IndexedMapOfShape& boxImages, con
         if (!boxImages.Contains(x.Current())) continue;
         out.onBox.push_back(TopoDS::Face(x.Current()));
         if (ownImages.Contains(x.Current())) continue;  // its own face coinciding with the box's
-        GProp_GProps a;
-        BRepGProp::SurfaceProperties(x.Current(), a, kMeasureEps);
-        out.cutArea += a.Mass();
+        out.cutArea += areaOf(x.Current());
         ++out.cutFaces;
     }
+    // The cut-off parts' faces have no holes: quick to integrate (the clipped volume, the whole
+    // solid's less theirs, is within kMeasureEps of their volume).
     for (const TopoDS_Shape& part : outside) {
-        GProp_GProps v, a;
-        BRepGProp::VolumeProperties(part, v, kMeasureEps);
-        BRepGProp::SurfaceProperties(part, a, kMeasureEps);
-        out.outsideVolume += std::abs(v.Mass());
-        out.outsideArea += a.Mass();
+        out.outsideVolume += volumeOf(part);
+        out.outsideArea += areaOf(part);
     }
 }
 
@@ -119,17 +112,9 @@ std::vector<ClippedSolid> clipTogether(const std::vector<TopoDS_Solid>& solids, 
     for (const TopoDS_Solid& solid : solids) arguments.Append(solid);
     arguments.Append(box);
     BRepAlgoAPI_BuilderAlgo fuse;
-    fuse.SetArguments(arguments);
-    fuse.SetRunParallel(Standard_True);
-    fuse.Build();
-    if (!fuse.IsDone() || fuse.HasErrors())
+    if (!runGeneralFuse(fuse, arguments))
         throw Error(ErrorCode::Internal, who + ": OpenCASCADE's general fuse of their solids with the cell's box failed");
-    const auto splits = [&](const TopoDS_Shape& s) {
-        std::vector<TopoDS_Shape> out;
-        for (TopTools_ListIteratorOfListOfShape m(fuse.Modified(s)); m.More(); m.Next()) out.push_back(m.Value());
-        if (out.empty() && !fuse.IsDeleted(s)) out.push_back(s);  // not split: as it was
-        return out;
-    };
+    const auto splits = [&](const TopoDS_Shape& s) { return splitsOf(fuse, s); };
     // A solid the box does not cut is one of the box's splits when it lies inside (the general
     // fuse makes one solid of splits bounded by the same faces), not when outside.
     TopTools_IndexedMapOfShape boxParts, boxImages;
@@ -206,13 +191,6 @@ TopTools_DataMapOfShapeInteger faceUses(const Solids& solids)
                 ++uses.ChangeFind(x.Current());
             }
     return uses;
-}
-
-double areaOf(const TopoDS_Shape& shape)
-{
-    GProp_GProps a;
-    BRepGProp::SurfaceProperties(shape, a, kMeasureEps);
-    return a.Mass();
 }
 
 }  // namespace

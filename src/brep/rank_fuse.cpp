@@ -1,11 +1,12 @@
 #include "brep/rank_fuse.hpp"
 
-#include <BRepAlgoAPI_BuilderAlgo.hxx>
+#include <BOPAlgo_Alerts.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <GProp_GProps.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
-#include <GProp_GProps.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -20,37 +21,13 @@
 
 #include <numeric>
 
+#include "brep/general_fuse.hpp"
+#include "brep/measure.hpp"
 #include "towgeom/error.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
 namespace {
-
-/// BRepGProp's relative precision (the faces measured are the small ones that changed).
-constexpr double kMeasureEps = 1e-9;
-
-double areaOf(const TopoDS_Shape& s)
-{
-    GProp_GProps a;
-    BRepGProp::SurfaceProperties(s, a, kMeasureEps);
-    return a.Mass();
-}
-
-double volumeOf(const TopoDS_Shape& s)
-{
-    GProp_GProps v;
-    BRepGProp::VolumeProperties(s, v, kMeasureEps);
-    return std::abs(v.Mass());
-}
-
-/// What the fuse made of @p shape: its splits (itself when it was not split).
-std::vector<TopoDS_Shape> splitsOf(BRepAlgoAPI_BuilderAlgo& fuse, const TopoDS_Shape& shape)
-{
-    std::vector<TopoDS_Shape> out;
-    for (TopTools_ListIteratorOfListOfShape m(fuse.Modified(shape)); m.More(); m.Next()) out.push_back(m.Value());
-    if (out.empty() && !fuse.IsDeleted(shape)) out.push_back(shape);
-    return out;
-}
 
 /// The faces of @p shape as the fuse left them: each face's splits, or the face itself.
 TopTools_IndexedMapOfShape faceImages(BRepAlgoAPI_BuilderAlgo& fuse, const TopoDS_Shape& shape)
@@ -114,13 +91,39 @@ std::vector<TopoDS_Solid> unionOf(const std::vector<TopoDS_Shape>& pieces)
         }
         b.Add(shells[s], boundary[k]);
     }
+    // A shell whose faces (oriented outward from the material) enclose a negative volume bounds
+    // a cavity (a tow ranked above lying wholly inside, the tows inside the matrix): it is an
+    // inner shell of the solid whose outer shell holds it. The sign needs no precision: OCCT's
+    // fixed Gauss points, not its adaptive integration.
     std::vector<TopoDS_Solid> out;
+    std::vector<TopoDS_Shell> cavities;
     for (TopoDS_Shell& shell : shells) {
         shell.Closed(BRep_Tool::IsClosed(shell));
+        GProp_GProps v;
+        BRepGProp::VolumeProperties(shell, v);
+        if (v.Mass() < 0.0) {
+            cavities.push_back(shell);
+            continue;
+        }
         TopoDS_Solid solid;
         b.MakeSolid(solid);
         b.Add(solid, shell);
         out.push_back(solid);
+    }
+    for (const TopoDS_Shell& cavity : cavities) {
+        TopExp_Explorer vertex(cavity, TopAbs_VERTEX);
+        const gp_Pnt at = BRep_Tool::Pnt(TopoDS::Vertex(vertex.Current()));
+        std::size_t holder = out.size();
+        for (std::size_t k = 0; k < out.size() && holder == out.size(); ++k) {
+            if (out.size() == 1) {
+                holder = 0;
+                break;
+            }
+            BRepClass3d_SolidClassifier inside(out[k], at, BRep_Tool::Tolerance(TopoDS::Vertex(vertex.Current())));
+            if (inside.State() == TopAbs_IN || inside.State() == TopAbs_ON) holder = k;
+        }
+        if (holder == out.size()) throw Error(ErrorCode::Internal, "a cavity of a solid of the general fuse lies in none of its shells");
+        b.Add(out[holder], cavity);
     }
     return out;
 }
@@ -143,11 +146,13 @@ RankFusion fuseByRank(const std::vector<TopoDS_Solid>& whole, const std::vector<
             arguments.Append(box);
         }
         BRepAlgoAPI_BuilderAlgo fuse;
-        fuse.SetArguments(arguments);
-        fuse.SetRunParallel(Standard_True);
-        fuse.Build();
-        if (!fuse.IsDone() || fuse.HasErrors())
-            throw Error(ErrorCode::Internal, "OpenCASCADE's general fuse of the tows' solids failed");
+        // OCCT 7.6 reports splits it could not build as warnings, not errors: a split lost would
+        // go unnoticed in the volumes (the whole's less what is given away).
+        if (!runGeneralFuse(fuse, arguments) || fuse.HasWarning(STANDARD_TYPE(BOPAlgo_AlertSolidBuilderFailed)) ||
+            fuse.HasWarning(STANDARD_TYPE(BOPAlgo_AlertSolidBuilderUnusedFaces)) ||
+            fuse.HasWarning(STANDARD_TYPE(BOPAlgo_AlertShellSplitterFailed)) ||
+            fuse.HasWarning(STANDARD_TYPE(BOPAlgo_AlertIntersectionOfPairOfShapesFailed)))
+            throw Error(ErrorCode::Internal, "OpenCASCADE's general fuse of the tows' solids failed (or left a part unbuilt)");
 
         // Every split, the tows it lies in (a split inside two tows is a split of both).
         TopTools_IndexedMapOfShape splits;
@@ -167,16 +172,16 @@ RankFusion fuseByRank(const std::vector<TopoDS_Solid>& whole, const std::vector<
         for (int k = 1; k <= splits.Extent(); ++k) {
             const TopoDS_Shape& s = splits(k);
             const std::vector<std::size_t>& in = inTows[static_cast<std::size_t>(k - 1)];
+            if (cell && !boxSplits.Contains(s)) {
+                for (std::size_t t : in) out.tows[t].lostVolume += volumeOf(s);
+                continue;
+            }
             std::size_t top = in.front();
             for (std::size_t t : in)
                 if (above(t, top)) top = t;
             for (std::size_t t : in)
                 if (t != top && !above(top, t))
                     throw Error(ErrorCode::Internal, "tows '" + names[top] + "' and '" + names[t] + "' overlap and neither ranks above the other");
-            if (cell && !boxSplits.Contains(s)) {
-                for (std::size_t t : in) out.tows[t].lostVolume += volumeOf(s);
-                continue;
-            }
             kept[top].push_back(s);
             for (std::size_t t : in)
                 if (t != top) out.tows[t].lostVolume += volumeOf(s);

@@ -37,6 +37,7 @@
 #include <utility>
 
 #include "brep/cell_clip.hpp"
+#include "brep/measure.hpp"
 #include "brep/rank_fuse.hpp"
 #include "brep/trimmed_brep_impl.hpp"
 #include "surface/occt_convert.hpp"
@@ -48,6 +49,9 @@
 TOWGEOM_BEGIN_NAMESPACE
 
 namespace {
+
+using detail::areaOf;
+using detail::kMeasureEps;
 
 /// A loop on one tow: which loop, and whether the tow's solid keeps the inside as a face of its
 /// own surface (an island of a region, or the primary's shared face) or not.
@@ -322,17 +326,6 @@ TopoDS_Face capFace(const Handle(Geom_BSplineSurface)& s, double u, double v0, d
     return face;
 }
 
-/// The relative error of OCCT's adaptive integrals of volumes and areas.
-constexpr double kMeasureEps = 1e-9;
-
-/// The area of @p shape's faces (BRepGProp).
-double areaOf(const TopoDS_Shape& shape)
-{
-    GProp_GProps a;
-    BRepGProp::SurfaceProperties(shape, a, kMeasureEps);
-    return a.Mass();
-}
-
 /// The largest tolerance of @p shape's edges and vertices.
 double maxToleranceOf(const TopoDS_Shape& shape)
 {
@@ -422,12 +415,13 @@ bool overlapInUv(const std::vector<UV>& a, const std::vector<UV>& b)
 }  // namespace
 
 TrimmedBrep::TrimmedBrep(std::shared_ptr<const Impl> impl, std::vector<BrepSolid> solids, std::size_t sharedFaces, BrepSolid matrix,
-                         std::string matrixNote)
+                         std::string matrixNote, std::string fusedBecause)
     : impl_(std::move(impl)),
       solids_(std::move(solids)),
       sharedFaces_(sharedFaces),
       matrix_(std::move(matrix)),
-      matrixNote_(std::move(matrixNote))
+      matrixNote_(std::move(matrixNote)),
+      fusedBecause_(std::move(fusedBecause))
 {
 }
 
@@ -681,19 +675,27 @@ TopoDS_Solid wholeSolid(const TowSurface& tow, double tolerance, double& area)
 /// build (three tows at a point, loops across caps or around a tow, a tow cut apart).
 /// @throws towgeom::Error (Unsupported) naming a pair that still overlaps (the mesh leaves it
 ///         overlapping: the solids would not agree with it).
-TrimmedBrep rankFused(const std::vector<TowSurface>& tows, const ResolveResult& r, const BrepOptions& o, double tolerance)
+TrimmedBrep rankFused(const std::vector<TowSurface>& tows, const ResolveResult& r, const BrepOptions& o, double tolerance,
+                      std::string because)
 {
+    // The whole solids first: an end section that is not planar is refused for what it is.
+    std::vector<TopoDS_Solid> whole(tows.size());
+    std::vector<double> area(tows.size());
+    std::vector<std::string> names;
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        whole[t] = wholeSolid(tows[t], tolerance, area[t]);
+        names.push_back(tows[t].name());
+    }
+    const std::string why = " (the general fuse builds the solids only when every pair and loop is resolved; the loops alone "
+                            "do not bound every face: " + because + ")";
     const std::vector<UnresolvedPairEntry> overlapping = overlappingPairs(r);
     if (!overlapping.empty())
         throw Error(ErrorCode::Unsupported, "tows '" + tows[overlapping.front().towA].name() + "' and '" +
                                                 tows[overlapping.front().towB].name() + "' still overlap [" + overlapping.front().code +
-                                                "]: the trimmed B-rep of tows that meet at a point of three or across a cap is built "
-                                                "only when every pair is resolved");
+                                                "]" + why);
     for (const SkippedLoop& k : r.skippedLoops)
         if (k.reason != SkippedLoop::Reason::OutsideCell)
-            throw Error(ErrorCode::Unsupported, "a loop the mesh leaves unresolved (" + k.message +
-                                                    "): the trimmed B-rep of tows that meet at a point of three or across a cap is "
-                                                    "built only when every loop is resolved");
+            throw Error(ErrorCode::Unsupported, "a loop the mesh leaves unresolved (" + k.message + ")" + why);
     // Of a pair with a region, its primary ranks above; otherwise the tow given first (the rank
     // rule's order when no pattern tells them apart).
     std::map<std::pair<std::size_t, std::size_t>, std::size_t> primary;
@@ -703,13 +705,6 @@ TrimmedBrep rankFused(const std::vector<TowSurface>& tows, const ResolveResult& 
         const auto it = primary.find(std::minmax(a, b));
         return it != primary.end() ? it->second == a : a < b;
     };
-    std::vector<TopoDS_Solid> whole(tows.size());
-    std::vector<double> area(tows.size());
-    std::vector<std::string> names;
-    for (std::size_t t = 0; t < tows.size(); ++t) {
-        whole[t] = wholeSolid(tows[t], tolerance, area[t]);
-        names.push_back(tows[t].name());
-    }
     std::optional<Cell> box;
     if (r.mesh.cell) box = r.mesh.cell->box;
     const detail::RankFusion fused = detail::fuseByRank(whole, area, above, box, names);
@@ -753,7 +748,7 @@ TrimmedBrep rankFused(const std::vector<TowSurface>& tows, const ResolveResult& 
         for (const BrepSolid& t : solids) matrix.volume -= t.volume;
         matrix.area = 2.0 * (dx * dy + dy * dz + dz * dx) - onBoxAreas + freeAreas;
     }
-    return TrimmedBrep(std::move(impl), std::move(solids), fused.sharedFaces, std::move(matrix), {});
+    return TrimmedBrep(std::move(impl), std::move(solids), fused.sharedFaces, std::move(matrix), {}, std::move(because));
 }
 
 }  // namespace
@@ -766,12 +761,14 @@ TrimmedBrep trimmedBrep(const std::vector<TowSurface>& tows, const ResolveResult
     double smallest = 1e300;
     for (const TowSurface& t : tows) smallest = std::min(smallest, t.towSize());
     const double tolerance = o.tolerance > 0.0 ? o.tolerance : o.relativeTolerance * smallest;
+    std::string because;
     try {
         return loopTrimmed(tows, r, o, tolerance);
     } catch (const Error& e) {
         if (e.code() != ErrorCode::Unsupported) throw;
+        because = e.what();
     }
-    return rankFused(tows, r, o, tolerance);
+    return rankFused(tows, r, o, tolerance, std::move(because));
 }
 
 TOWGEOM_END_NAMESPACE

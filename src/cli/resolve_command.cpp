@@ -467,6 +467,10 @@ int runResolve(int argc, char** argv, int first)
             printer.update("building the trimmed B-rep (OpenCASCADE)", 0, 1);
             brep = trimmedBrep(tows, result);
             printer.update("building the trimmed B-rep (OpenCASCADE)", 1, 1);
+            if (!quiet && !brep->fusedBecause().empty())
+                std::cerr << "towgeom resolve: note: the exact solids are built from the whole tows by OpenCASCADE's general fuse "
+                             "(slower: it intersects them again), as their loops alone do not bound every face: "
+                          << brep->fusedBecause() << "\n";
         }
 
         // Everything is computed before anything is written.
