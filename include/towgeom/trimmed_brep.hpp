@@ -178,7 +178,8 @@ private:
 /// pairs crossing on a tow), a loop that winds around a tow (one passes through the other, which
 /// it cuts into pieces) or runs across an end cap (a tow ending inside another), a region inside
 /// another's island, loops that leave no v around a tow free for its face's seam, a tow the
-/// cell's box cuts into more than one solid — the solids are built from the tows' whole solids
+/// cell's box cuts into more than one solid (untested: resolveTextile() refuses a cell face
+/// that crosses a tow twice) — the solids are built from the tows' whole solids
 /// instead: OpenCASCADE's general fuse of them all (and of the cell's box) splits them where they
 /// meet, each split goes to the highest-ranked tow it lies in (of a pair, its regions' primary),
 /// and each tow is the union of its splits, so the surface where tows overlapped is one face of
