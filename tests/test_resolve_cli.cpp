@@ -677,9 +677,11 @@ TEST_CASE("towgeom resolve --formats step where three tows meet at a point: name
         files += " '" + (dir / (t.name + ".stw")).string() + "'";
     }
     const fs::path out = dir / "out";
-    const Run r = cli("resolve" + files + " --out '" + out.string() + "' --formats step --quiet");
+    const Run r = cli("resolve" + files + " --out '" + out.string() + "' --formats step");
     INFO(r.err);
     REQUIRE(r.status == 0);
+    CHECK(r.err.find("built from the whole tows by OpenCASCADE's general fuse") != std::string::npos);  // a note says why
+    CHECK(testing::slurp(out / "report.json").find("\"brep\":") != std::string::npos);  // its time
     const testing::ReadShapes step = testing::readStep((out / "textile.step").string());
     REQUIRE(step.solids.size() == 3);
     for (std::size_t t = 0; t < 3; ++t) {

@@ -54,6 +54,7 @@ struct ReportTimes {
     double read = -1.0;   ///< reading the input files
     double fit = -1.0;    ///< fitting the surfaces
     double volume = -1.0; ///< meshing the tows' volumes (meshVolumes())
+    double brep = -1.0;   ///< building the exact solids (trimmedBrep())
     double write = -1.0;  ///< writing the output files
     double total = -1.0;  ///< everything
 };

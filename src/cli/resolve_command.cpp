@@ -62,7 +62,8 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                    "skipped":[{"tow_a","tow_b","code","reason"}], "node_count",
                    "mesh_quality":{"min_angle_deg","angle_histogram","fraction_at_least_20",
                    "triangles","faces_over_bounds"},
-                   "mesh_rounds", "method", "timings_ms":{...}}
+                   "mesh_rounds", "method", "timings_ms":{"read","fit","intersect","mesh",
+                   "regions","volume" (--volume),"brep" (step, brep),"write","total"}}
 
   role            primary (keeps its surface; with --method symmetric it gives way too, to
                   the mid-surface), secondary (gave volume), both, or none
@@ -463,10 +464,13 @@ int runResolve(int argc, char** argv, int first)
         }
 
         std::optional<TrimmedBrep> brep;  // the exact solids (--formats step, brep)
+        double brepMs = -1.0;
         if (exact) {
+            const auto brepStart = std::chrono::steady_clock::now();
             printer.update("building the trimmed B-rep (OpenCASCADE)", 0, 1);
             brep = trimmedBrep(tows, result);
             printer.update("building the trimmed B-rep (OpenCASCADE)", 1, 1);
+            brepMs = msSince(brepStart);
             if (!quiet && !brep->fusedBecause().empty())
                 std::cerr << "towgeom resolve: note: the exact solids are built from the whole tows by OpenCASCADE's general fuse "
                              "(slower: it intersects them again), as their loops alone do not bound every face: "
@@ -537,6 +541,7 @@ int runResolve(int argc, char** argv, int first)
         written.times.fit = fitMs;
         written.times.write = writeMs;
         written.times.volume = volumeMs;
+        written.times.brep = brepMs;
         if (tetrahedra) written.volumes = &volumes;
         written.volumeRefused = volumeRefused;
         written.times.total = msSince(start);

@@ -244,6 +244,7 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
     timings["mesh"] = result.timings.mesh;
     timings["regions"] = result.timings.regions;
     putTime(timings, "volume", options.times.volume);
+    putTime(timings, "brep", options.times.brep);
     putTime(timings, "write", options.times.write);
     putTime(timings, "total", options.times.total);
     j["timings_ms"] = std::move(timings);
