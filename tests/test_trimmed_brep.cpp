@@ -321,6 +321,19 @@ TEST_CASE("trimmed B-rep with a cell face through an overlap: the shared face cu
     for (const auto& entry : back.sharedFaces)
         if (entry.first == std::make_pair(std::size_t{0}, std::size_t{1})) ab = entry.second;
     CHECK(ab == 1);
+    // The same pair also left overlapping (hand-made): clipped tow by tow, their shared face cut
+    // by the box cannot stay shared; refused as unsupported, naming the pair (was an internal
+    // error).
+    ResolveResult still = r;
+    still.unresolved.push_back({0, 1, UnresolvedPair::Reason::RegionFailed, "region failed"});
+    try {
+        trimmedBrep(tows, still);
+        FAIL("no error");
+    } catch (const Error& e) {
+        INFO(e.what());
+        CHECK(e.code() == ErrorCode::Unsupported);
+        CHECK(std::string(e.what()).find("still overlap") != std::string::npos);
+    }
     fs::remove_all(dir);
 }
 

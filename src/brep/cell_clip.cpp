@@ -268,6 +268,13 @@ ClippedTows clipTowsToCell(const std::vector<TowSurface>& tows, const ResolveRes
             else if (onBox.Contains(x.Current()))
                 onBoxArea += areaOf(x.Current());
         }
+        // A pair that still overlaps is clipped tow by tow (its common part would be a piece of
+        // both in a joint clip), so a face it shares that the box cuts is cut twice.
+        const bool overlaps = std::any_of(overlapping.begin(), overlapping.end(),
+                                          [&](const std::pair<std::size_t, std::size_t>& p) { return p.first == t || p.second == t; });
+        if (s.sharedFaces < sharedBefore[t] && overlaps)
+            throw Error(ErrorCode::Unsupported, "tow '" + tows[t].name() + "' still overlaps a tow (a pair left unresolved): a face it "
+                                                    "shares that the cell's box cuts is not kept shared");
         if (s.sharedFaces < sharedBefore[t])
             throw Error(ErrorCode::Internal, "tow '" + tows[t].name() + "': clipped to the cell it keeps " + std::to_string(s.sharedFaces) +
                                                  " of the " + std::to_string(sharedBefore[t]) + " faces it shares with other tows");
