@@ -669,13 +669,7 @@ TEST_CASE("towgeom resolve --formats step,brep: the exact solids, named, that Gm
 TEST_CASE("towgeom resolve --formats step where three tows meet at a point: named solids that Gmsh meshes", "[cli][resolve][brep][triple]")
 {
     const fs::path dir = scratch("brep_triple");
-    fs::create_directories(dir);
-    std::string files;
-    for (const TowStack& t : testing::threeTowsAtAPoint(0.3, 0.41)) {
-        std::ofstream o(dir / (t.name + ".stw"));
-        writeStack(o, t);
-        files += " '" + (dir / (t.name + ".stw")).string() + "'";
-    }
+    const std::string files = testing::writeStacks(dir, testing::threeTowsAtAPoint(0.3, 0.41));
     const fs::path out = dir / "out";
     const Run r = cli("resolve" + files + " --out '" + out.string() + "' --formats step");
     INFO(r.err);
@@ -700,17 +694,11 @@ TEST_CASE("towgeom resolve --formats step where three tows meet at a point: name
 TEST_CASE("towgeom resolve --cell --formats step,brep: the exact solids clipped to the box, the one outside left out", "[cli][resolve][brep][cell]")
 {
     const fs::path dir = scratch("brep_cell");
-    fs::create_directories(dir);
     testing::Sampling s;
     s.points = 48;
-    std::string files;
     // Two crossing tubes cut by the box's x and y faces, a third wholly outside it.
-    for (const TowStack& t : {testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "x"), testing::tubeAlongY(0.4, 0.7, s, "y"),
-                              testing::tubeAlongX(0.3, 4.0, 0.0, 3.0, 0.0, s, "far")}) {
-        std::ofstream o(dir / (t.name + ".stw"));
-        writeStack(o, t);
-        files += " '" + (dir / (t.name + ".stw")).string() + "'";
-    }
+    const std::string files = testing::writeStacks(dir, {testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "x"), testing::tubeAlongY(0.4, 0.7, s, "y"),
+                                                         testing::tubeAlongX(0.3, 4.0, 0.0, 3.0, 0.0, s, "far")});
     const fs::path out = dir / "out";
     const Run r = cli("resolve" + files + " --out '" + out.string() + "' --cell 0.5,-1.5,-1,3.5,1.5,1.5 --formats step,brep --quiet");
     INFO(r.err);

@@ -451,27 +451,13 @@ TEST_CASE("resolveTextile refuses bad intersection options", "[resolve][scan]")
 
 namespace {
 
-/// Writes @p stacks as NAME.stw into a fresh @p dir: the quoted paths, for a command line.
-std::string writeStacks(const std::filesystem::path& dir, const std::vector<TowStack>& stacks)
-{
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    std::string files;
-    for (const TowStack& t : stacks) {
-        const auto path = dir / (t.name + ".stw");
-        std::ofstream out(path);
-        writeStack(out, t);
-        files += " '" + path.string() + "'";
-    }
-    return files;
-}
 
 }  // namespace
 
 TEST_CASE("towgeom resolve names a pair it could not resolve, writes the rest and exits 3", "[resolve][scan][unresolved][cli]")
 {
     const auto dir = std::filesystem::temp_directory_path() / ("towgeom_three_tows_" + std::to_string(::getpid()));
-    const std::string files = writeStacks(dir, threeTows());
+    const std::string files = testing::writeStacks(dir, threeTows());
     const testing::Run r = testing::cli("resolve" + files + " --quiet --no-caps --out '" + (dir / "out").string() + "'");
     INFO(r.err);
     CHECK(r.status == 3);
@@ -490,7 +476,7 @@ TEST_CASE("towgeom resolve names a pair it could not resolve, writes the rest an
 TEST_CASE("towgeom resolve lists the triple points in report.json", "[resolve][scan][triple][cli]")
 {
     const auto dir = std::filesystem::temp_directory_path() / ("towgeom_triple_" + std::to_string(::getpid()));
-    const std::string files = writeStacks(dir, testing::threeTowsAtAPoint(0.3, 0.41));
+    const std::string files = testing::writeStacks(dir, testing::threeTowsAtAPoint(0.3, 0.41));
     const testing::Run r = testing::cli("resolve" + files + " --quiet --out '" + (dir / "out").string() + "'");
     INFO(r.err);
     CHECK(r.status == 0);

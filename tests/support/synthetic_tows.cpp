@@ -4,6 +4,7 @@
 #include <towgeom/weave.hpp>
 
 #include <cmath>
+#include <fstream>
 #include <functional>
 
 namespace towgeom::testing {
@@ -232,6 +233,20 @@ std::vector<TowStack> thinThrough(bool endsInside, bool startsInside)
     if (endsInside) thin.sections.resize(21);  // y from -2 to 0
     if (startsInside) thin.sections.erase(thin.sections.begin(), thin.sections.begin() + 20);  // y from 0 to 2
     return {tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "outer"), thin};
+}
+
+std::string writeStacks(const std::filesystem::path& dir, const std::vector<TowStack>& stacks)
+{
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::string files;
+    for (const TowStack& t : stacks) {
+        const auto path = dir / (t.name + ".stw");
+        std::ofstream out(path);
+        writeStack(out, t);
+        files += " '" + path.string() + "'";
+    }
+    return files;
 }
 
 std::vector<TowSurface> crossingTubes(bool far)

@@ -6,6 +6,7 @@
 #include <towgeom/tow_surface.hpp>
 
 #include <cstddef>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,9 @@ std::vector<TowStack> threeTowsAtAPoint(double offset, double height, double sta
 /// it, or, @p endsInside, ending at y = 0 on outer's axis (@p startsInside: starting there).
 /// 41 sections x 32 points.
 std::vector<TowStack> thinThrough(bool endsInside, bool startsInside = false);
+/// Writes @p stacks as NAME.stw into a fresh @p dir (removed first): their quoted paths, each
+/// after a space, for a command line.
+std::string writeStacks(const std::filesystem::path& dir, const std::vector<TowStack>& stacks);
 /// Fitted tubes "x" (r 0.5, along x from 0 to 4) and "y" (r 0.4, along y) crossing, 48 points
 /// per section; with @p far also "far" (r 0.3, along x at y = 3).
 std::vector<TowSurface> crossingTubes(bool far);
