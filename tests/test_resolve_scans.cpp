@@ -449,10 +449,6 @@ TEST_CASE("resolveTextile refuses bad intersection options", "[resolve][scan]")
     }
 }
 
-namespace {
-
-
-}  // namespace
 
 TEST_CASE("towgeom resolve names a pair it could not resolve, writes the rest and exits 3", "[resolve][scan][unresolved][cli]")
 {

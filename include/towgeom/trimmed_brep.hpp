@@ -164,7 +164,8 @@ private:
 ///
 /// Tow pairs resolveTextile() left unresolved (ResolveResult::unresolved) and loops it skipped
 /// (ResolveResult::skippedLoops) are not trimmed here either: those tows' solids overlap there,
-/// as their meshes do.
+/// as their meshes do (refused instead where the general fuse is needed, or where the cell's
+/// box cuts a face such a pair shares).
 ///
 /// @code
 /// const towgeom::ResolveResult r = towgeom::resolveTextile(tows);

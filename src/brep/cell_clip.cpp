@@ -112,8 +112,8 @@ std::vector<ClippedSolid> clipTogether(const std::vector<TopoDS_Solid>& solids, 
     for (const TopoDS_Solid& solid : solids) arguments.Append(solid);
     arguments.Append(box);
     BRepAlgoAPI_BuilderAlgo fuse;
-    if (!runGeneralFuse(fuse, arguments))
-        throw Error(ErrorCode::Internal, who + ": OpenCASCADE's general fuse of their solids with the cell's box failed");
+    const std::string failure = runGeneralFuse(fuse, arguments);
+    if (!failure.empty()) throw Error(ErrorCode::Internal, who + ": OpenCASCADE's general fuse of their solids with the cell's box " + failure);
     const auto splits = [&](const TopoDS_Shape& s) { return splitsOf(fuse, s); };
     // A solid the box does not cut is one of the box's splits when it lies inside (the general
     // fuse makes one solid of splits bounded by the same faces), not when outside.
@@ -270,11 +270,13 @@ ClippedTows clipTowsToCell(const std::vector<TowSurface>& tows, const ResolveRes
         }
         // A pair that still overlaps is clipped tow by tow (its common part would be a piece of
         // both in a joint clip), so a face it shares that the box cuts is cut twice.
-        const bool overlaps = std::any_of(overlapping.begin(), overlapping.end(),
-                                          [&](const std::pair<std::size_t, std::size_t>& p) { return p.first == t || p.second == t; });
-        if (s.sharedFaces < sharedBefore[t] && overlaps)
-            throw Error(ErrorCode::Unsupported, "tow '" + tows[t].name() + "' still overlaps a tow (a pair left unresolved): a face it "
-                                                    "shares that the cell's box cuts is not kept shared");
+        const auto partner = std::find_if(shared.begin(), shared.end(), [&](const SharedFace& f) {
+            return (f.towA == t || f.towB == t) && overlapping.count(std::minmax(f.towA, f.towB));
+        });
+        if (s.sharedFaces < sharedBefore[t] && partner != shared.end())
+            throw Error(ErrorCode::Unsupported, "tows '" + tows[partner->towA].name() + "' and '" + tows[partner->towB].name() +
+                                                    "' share a face and still overlap (a pair left unresolved): clipped one by one, the "
+                                                    "part of that face the cell's box keeps is not shared");
         if (s.sharedFaces < sharedBefore[t])
             throw Error(ErrorCode::Internal, "tow '" + tows[t].name() + "': clipped to the cell it keeps " + std::to_string(s.sharedFaces) +
                                                  " of the " + std::to_string(sharedBefore[t]) + " faces it shares with other tows");

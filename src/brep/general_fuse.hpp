@@ -3,11 +3,13 @@
 // each, a face between splits one face of both.
 #pragma once
 
+#include <BOPAlgo_Alerts.hxx>
 #include <BRepAlgoAPI_BuilderAlgo.hxx>
 #include <TopTools_ListIteratorOfListOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS_Shape.hxx>
 
+#include <string>
 #include <vector>
 
 #include "towgeom/export.hpp"
@@ -15,13 +17,20 @@
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
 
-/// Runs @p fuse on @p arguments (in parallel, OCCT's thread pool); false when it fails.
-inline bool runGeneralFuse(BRepAlgoAPI_BuilderAlgo& fuse, const TopTools_ListOfShape& arguments)
+/// Runs @p fuse on @p arguments (in parallel, OCCT's thread pool): empty when it succeeded, else
+/// what failed ("failed", or the warning of a part it could not build: OCCT 7.6 reports faces
+/// its shell splitter or solid builder drops as warnings, and a split lost that way would go
+/// unnoticed in volumes taken as the whole's less what is cut off or given away).
+inline std::string runGeneralFuse(BRepAlgoAPI_BuilderAlgo& fuse, const TopTools_ListOfShape& arguments)
 {
     fuse.SetArguments(arguments);
     fuse.SetRunParallel(Standard_True);
     fuse.Build();
-    return fuse.IsDone() && !fuse.HasErrors();
+    if (!fuse.IsDone() || fuse.HasErrors()) return "failed";
+    if (fuse.HasWarning(STANDARD_TYPE(BOPAlgo_AlertShellSplitterFailed))) return "could not split a shell (BOPAlgo_AlertShellSplitterFailed)";
+    if (fuse.HasWarning(STANDARD_TYPE(BOPAlgo_AlertSolidBuilderUnusedFaces)))
+        return "left faces out of its solids (BOPAlgo_AlertSolidBuilderUnusedFaces)";
+    return {};
 }
 
 /// What @p fuse made of @p shape: its splits, or @p shape itself when it was not split.

@@ -1,6 +1,5 @@
 #include "brep/rank_fuse.hpp"
 
-#include <BOPAlgo_Alerts.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
@@ -93,12 +92,16 @@ std::vector<TopoDS_Solid> unionOf(const std::vector<TopoDS_Shape>& pieces)
     }
     // A shell whose faces (oriented outward from the material) enclose a negative volume bounds
     // a cavity (a tow ranked above lying wholly inside, the tows inside the matrix): it is an
-    // inner shell of the solid whose outer shell holds it. The sign needs no precision: OCCT's
-    // fixed Gauss points, not its adaptive integration.
+    // inner shell of the smallest solid whose outer shell holds it (the innermost, where outer
+    // shells nest). The sign and the comparison need no precision: OCCT's fixed Gauss points,
+    // not its adaptive integration.
     std::vector<TopoDS_Solid> out;
+    std::vector<double> size;  // each solid's outer volume
     std::vector<TopoDS_Shell> cavities;
     for (TopoDS_Shell& shell : shells) {
-        shell.Closed(BRep_Tool::IsClosed(shell));
+        if (!BRep_Tool::IsClosed(shell))
+            throw Error(ErrorCode::Internal, "a shell of the general fuse's splits is open (an edge on one face only)");
+        shell.Closed(Standard_True);
         GProp_GProps v;
         BRepGProp::VolumeProperties(shell, v);
         if (v.Mass() < 0.0) {
@@ -109,18 +112,18 @@ std::vector<TopoDS_Solid> unionOf(const std::vector<TopoDS_Shape>& pieces)
         b.MakeSolid(solid);
         b.Add(solid, shell);
         out.push_back(solid);
+        size.push_back(v.Mass());
     }
     for (const TopoDS_Shell& cavity : cavities) {
         TopExp_Explorer vertex(cavity, TopAbs_VERTEX);
-        const gp_Pnt at = BRep_Tool::Pnt(TopoDS::Vertex(vertex.Current()));
+        const TopoDS_Vertex& at = TopoDS::Vertex(vertex.Current());
         std::size_t holder = out.size();
-        for (std::size_t k = 0; k < out.size() && holder == out.size(); ++k) {
-            if (out.size() == 1) {
-                holder = 0;
-                break;
+        for (std::size_t k = 0; k < out.size(); ++k) {
+            if (out.size() > 1) {
+                BRepClass3d_SolidClassifier inside(out[k], BRep_Tool::Pnt(at), BRep_Tool::Tolerance(at));
+                if (inside.State() != TopAbs_IN) continue;
             }
-            BRepClass3d_SolidClassifier inside(out[k], at, BRep_Tool::Tolerance(TopoDS::Vertex(vertex.Current())));
-            if (inside.State() == TopAbs_IN || inside.State() == TopAbs_ON) holder = k;
+            if (holder == out.size() || size[k] < size[holder]) holder = k;
         }
         if (holder == out.size()) throw Error(ErrorCode::Internal, "a cavity of a solid of the general fuse lies in none of its shells");
         b.Add(out[holder], cavity);
@@ -146,13 +149,8 @@ RankFusion fuseByRank(const std::vector<TopoDS_Solid>& whole, const std::vector<
             arguments.Append(box);
         }
         BRepAlgoAPI_BuilderAlgo fuse;
-        // OCCT 7.6 reports splits it could not build as warnings, not errors: a split lost would
-        // go unnoticed in the volumes (the whole's less what is given away).
-        if (!runGeneralFuse(fuse, arguments) || fuse.HasWarning(STANDARD_TYPE(BOPAlgo_AlertSolidBuilderFailed)) ||
-            fuse.HasWarning(STANDARD_TYPE(BOPAlgo_AlertSolidBuilderUnusedFaces)) ||
-            fuse.HasWarning(STANDARD_TYPE(BOPAlgo_AlertShellSplitterFailed)) ||
-            fuse.HasWarning(STANDARD_TYPE(BOPAlgo_AlertIntersectionOfPairOfShapesFailed)))
-            throw Error(ErrorCode::Internal, "OpenCASCADE's general fuse of the tows' solids failed (or left a part unbuilt)");
+        const std::string failure = runGeneralFuse(fuse, arguments);
+        if (!failure.empty()) throw Error(ErrorCode::Internal, "OpenCASCADE's general fuse of the tows' solids " + failure);
 
         // Every split, the tows it lies in (a split inside two tows is a split of both).
         TopTools_IndexedMapOfShape splits;

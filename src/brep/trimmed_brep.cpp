@@ -686,8 +686,8 @@ TrimmedBrep rankFused(const std::vector<TowSurface>& tows, const ResolveResult& 
         whole[t] = wholeSolid(tows[t], tolerance, area[t]);
         names.push_back(tows[t].name());
     }
-    const std::string why = " (the general fuse builds the solids only when every pair and loop is resolved; the loops alone "
-                            "do not bound every face: " + because + ")";
+    const std::string why = " (the general fuse builds the solids only when every pair and loop is resolved; the loop path "
+                            "refused: " + because + ")";
     const std::vector<UnresolvedPairEntry> overlapping = overlappingPairs(r);
     if (!overlapping.empty())
         throw Error(ErrorCode::Unsupported, "tows '" + tows[overlapping.front().towA].name() + "' and '" +

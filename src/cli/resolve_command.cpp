@@ -143,8 +143,9 @@ Options:
                      and brep are the exact solids (--method connect): each tow's B-spline
                      face trimmed by its loops, the faces two tows share one face of both,
                      planar caps; with --cell clipped to the box (see DIR/textile.step below);
-                     where three tows meet or a loop goes around a tow or across a cap, from
-                     OpenCASCADE's general fuse of the whole tows by the rank rule
+                     where three tows meet, a loop goes around a tow or across a cap, or
+                     loops nest three deep, from OpenCASCADE's general fuse of the whole tows
+                     by the rank rule
   --tolerance T      intersection point tolerance (default: 1e-7 x the tow size)
   --report FILE      take the intersection loops from FILE, written by 'towgeom detect
                      --save-report FILE' for the same tows in the same order, instead of
@@ -580,6 +581,10 @@ int runResolve(int argc, char** argv, int first)
                     std::cerr << "towgeom resolve: warning: the solid of tow '" << solid.name
                               << "' in textile.step/.brep is not valid for OpenCASCADE's checker (BRepCheck_Analyzer; "
                                  "largest edge tolerance " << solid.maxTolerance << "): CAD tools may refuse it\n";
+        if (brep && brep->matrix().faces > 0 && !brep->matrix().valid)
+            std::cerr << "towgeom resolve: warning: the MATRIX solid in textile.step/.brep is not valid for OpenCASCADE's checker "
+                         "(BRepCheck_Analyzer; largest edge tolerance "
+                      << brep->matrix().maxTolerance << "): CAD tools may refuse it\n";
         const bool noMatrix = brep && !brep->matrixNote().empty();
         if (noMatrix)
             std::cerr << "towgeom resolve: warning: no MATRIX solid in textile.step/.brep (the tows only): " << brep->matrixNote()
