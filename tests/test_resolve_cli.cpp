@@ -640,6 +640,21 @@ TEST_CASE("towgeom resolve --knot-spans: each tow's elements classified in JSON 
     fs::remove_all(out);
 }
 
+namespace {
+
+/// Gmsh's OpenCASCADE kernel reads @p step and meshes it with @p options into @p msh: exit 0, no
+/// error printed, a mesh of some size.
+void checkGmshMeshes(const fs::path& step, const std::string& options, const fs::path& msh)
+{
+    const Run gmsh = testing::runShell("gmsh '" + step.string() + "' " + options + " -o '" + msh.string() + "' 2>&1");
+    INFO(gmsh.out);
+    CHECK(gmsh.status == 0);
+    CHECK(gmsh.out.find("Error") == std::string::npos);
+    CHECK(fs::file_size(msh) > 10000);
+}
+
+}  // namespace
+
 TEST_CASE("towgeom resolve --formats step,brep: the exact solids, named, that Gmsh reads, refused where not built", "[cli][resolve][brep]")
 {
     const fs::path out = scratch("brep");
@@ -651,12 +666,7 @@ TEST_CASE("towgeom resolve --formats step,brep: the exact solids, named, that Gm
     CHECK(testing::count(step, "MANIFOLD_SOLID_BREP('weft_0'") == 1);
     CHECK(testing::slurp(out / "textile.brep").substr(0, 64).find("CASCADE Topology") != std::string::npos);
     // Gmsh's OpenCASCADE kernel reads it and meshes its faces, without an error.
-    const Run gmsh = testing::runShell("gmsh '" + (out / "textile.step").string() + "' -2 -clmax 0.2 -o '" + (out / "check.msh").string() +
-                                       "' 2>&1");
-    INFO(gmsh.out);
-    CHECK(gmsh.status == 0);
-    CHECK(gmsh.out.find("Error") == std::string::npos);
-    CHECK(fs::file_size(out / "check.msh") > 10000);
+    checkGmshMeshes(out / "textile.step", "-2 -clmax 0.2", out / "check.msh");
     fs::remove_all(out);
     // Only the connect method's surfaces are the tows' B-splines: exit 2, nothing written.
     const Run refused = cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + out.string() +
@@ -685,12 +695,7 @@ TEST_CASE("towgeom resolve --formats step where three tows meet at a point: name
         CHECK(step.solids[t].name == std::string(1, "xyw"[t]));
         CHECK(step.solids[t].valid);
     }
-    const Run gmsh = testing::runShell("gmsh '" + (out / "textile.step").string() + "' -3 -clmax 0.15 -o '" + (dir / "check.msh").string() +
-                                       "' 2>&1");
-    INFO(gmsh.out);
-    CHECK(gmsh.status == 0);
-    CHECK(gmsh.out.find("Error") == std::string::npos);
-    CHECK(fs::file_size(dir / "check.msh") > 10000);
+    checkGmshMeshes(out / "textile.step", "-3 -clmax 0.15", dir / "check.msh");
     fs::remove_all(dir);
 }
 
