@@ -170,8 +170,14 @@ RankFusion fuseByRank(const std::vector<TopoDS_Solid>& whole, const std::vector<
         for (int k = 1; k <= splits.Extent(); ++k) {
             const TopoDS_Shape& s = splits(k);
             const std::vector<std::size_t>& in = inTows[static_cast<std::size_t>(k - 1)];
+            // Its volume, measured once however many tows lose it.
+            double volume = -1.0;
+            const auto lose = [&](std::size_t t) {
+                if (volume < 0.0) volume = volumeOf(s);
+                out.tows[t].lostVolume += volume;
+            };
             if (cell && !boxSplits.Contains(s)) {
-                for (std::size_t t : in) out.tows[t].lostVolume += volumeOf(s);
+                for (std::size_t t : in) lose(t);
                 continue;
             }
             std::size_t top = in.front();
@@ -182,7 +188,7 @@ RankFusion fuseByRank(const std::vector<TopoDS_Solid>& whole, const std::vector<
                     throw Error(ErrorCode::Internal, "tows '" + names[top] + "' and '" + names[t] + "' overlap and neither ranks above the other");
             kept[top].push_back(s);
             for (std::size_t t : in)
-                if (t != top) out.tows[t].lostVolume += volumeOf(s);
+                if (t != top) lose(t);
         }
         if (cell)
             for (int k = 1; k <= boxSplits.Extent(); ++k)

@@ -4,7 +4,6 @@
 // (three tows at a point, loops across end caps or around a tow, a tow cut into pieces).
 #pragma once
 
-#include <TopoDS_Face.hxx>
 #include <TopoDS_Solid.hxx>
 
 #include <cstddef>
