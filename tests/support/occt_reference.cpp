@@ -30,6 +30,8 @@
 #include <XCAFApp_Application.hxx>
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
+#include <math.hxx>
+#include <math_Vector.hxx>
 
 #include <stdexcept>
 
@@ -192,6 +194,16 @@ double boxCommonVolume(const std::string& path, std::size_t i, std::size_t j, co
     GProp_GProps p;
     BRepGProp::VolumeProperties(inside.Shape(), p, 1e-7, Standard_True);
     return p.Mass();
+}
+
+std::vector<std::array<double, 2>> gaussLegendre01(int n)
+{
+    math_Vector points(1, n), weights(1, n);
+    math::GaussPoints(n, points);
+    math::GaussWeights(n, weights);
+    std::vector<std::array<double, 2>> rule;
+    for (int i = 1; i <= n; ++i) rule.push_back({0.5 * (points(i) + 1.0), 0.5 * weights(i)});
+    return rule;
 }
 
 }  // namespace towgeom::testing

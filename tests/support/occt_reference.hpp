@@ -51,5 +51,8 @@ double boxCommonVolume(const std::string& path, std::size_t i, std::size_t j, co
 double unionVolume(const std::string& path);
 /// The boundary area of solid @p i of the BREP file @p path (BRepGProp, relative precision 1e-7).
 double readBrepArea(const std::string& path, std::size_t i);
+/// The @p n-point Gauss-Legendre rule on [0, 1] as (point, weight) pairs (OCCT's
+/// math::GaussPoints and math::GaussWeights on [-1, 1], mapped).
+std::vector<std::array<double, 2>> gaussLegendre01(int n);
 
 }  // namespace towgeom::testing
