@@ -464,6 +464,9 @@ ResolveResult checkTwoResolved(const std::vector<TowSurface>& tows, const std::v
     for (const TowResolution& t : r.tows) CHECK(t.boundaryLoops == 0);
     CHECK(testing::crossingPairsBetweenTows(r.mesh) == 0);
     const std::size_t primary = tows[0].name() == primaryPattern ? 0 : 1, secondary = 1 - primary;
+    REQUIRE(r.ranks.size() == 2);
+    CHECK(r.ranks[primary] == 0);
+    CHECK(r.ranks[secondary] == 1);
     const double overlap = testing::intersectionVolume(facetedTube(stacks[0], true), facetedTube(stacks[1], true));
     CHECK(r.tows[primary].volumeAfter == Approx(r.tows[primary].volumeBefore).epsilon(1e-12));
     CHECK(r.tows[secondary].volumeBefore - r.tows[secondary].volumeAfter == Approx(overlap).epsilon(0.02));

@@ -253,6 +253,10 @@ struct ResolveResult {
     /// The method the regions were made with (ResolveOptions::method); per region,
     /// ConnectedRegion::surface says which surface it got.
     ResolutionMethod method = ResolutionMethod::Connect;
+    /// Each tow's rank (0 first) as the regions were made: the tows whose name matches one of
+    /// ResolveOptions::primaryPatterns, then the others, each in input order; a tow gives way to
+    /// every tow ranked above it. Empty in a result not made by connectRegions() (meshTows()'s).
+    std::vector<std::size_t> ranks;
     /// ResolutionMethod::Shrink: per tow, its sections' scales and exact volumes before and after
     /// (empty otherwise). Then intersections holds the curves left between the shrunk tows (none
     /// when every pair was separated), TowResolution::volumeAfter is the shrunk tow's mesh volume

@@ -182,7 +182,8 @@ private:
 /// cell's box cuts into more than one solid (untested: resolveTextile() refuses a cell face
 /// that crosses a tow twice) — the solids are built from the tows' whole solids
 /// instead: OpenCASCADE's general fuse of them all (and of the cell's box) splits them where they
-/// meet, each split goes to the highest-ranked tow it lies in (of a pair, its regions' primary),
+/// meet, each split goes to the highest-ranked tow it lies in (of a pair, its regions' primary;
+/// without a region, ResolveResult::ranks),
 /// and each tow is the union of its splits, so the surface where tows overlapped is one face of
 /// both there too, and with a cell the box's splits inside no tow are the matrix. A tow cut
 /// apart is then several solids of its name in the compound and the files (BrepSolid sums them).

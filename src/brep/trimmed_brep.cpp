@@ -696,14 +696,16 @@ TrimmedBrep rankFused(const std::vector<TowSurface>& tows, const ResolveResult& 
     for (const SkippedLoop& k : r.skippedLoops)
         if (k.reason != SkippedLoop::Reason::OutsideCell)
             throw Error(ErrorCode::Unsupported, "a loop the mesh leaves unresolved (" + k.message + ")" + why);
-    // Of a pair with a region, its primary ranks above; otherwise the tow given first (the rank
-    // rule's order when no pattern tells them apart).
+    // Of a pair with a region, its primary ranks above; otherwise the rank the regions were made
+    // by (ResolveResult::ranks; input order without them).
     std::map<std::pair<std::size_t, std::size_t>, std::size_t> primary;
     for (const ConnectedRegion& g : r.mesh.regions) primary[std::minmax(g.primary, g.secondary)] = g.primary;
+    const bool ranked = r.ranks.size() == tows.size();
     const auto above = [&](std::size_t a, std::size_t b) {
         if (a == b) return false;
         const auto it = primary.find(std::minmax(a, b));
-        return it != primary.end() ? it->second == a : a < b;
+        if (it != primary.end()) return it->second == a;
+        return ranked ? r.ranks[a] < r.ranks[b] : a < b;
     };
     std::optional<Cell> box;
     if (r.mesh.cell) box = r.mesh.cell->box;

@@ -835,6 +835,7 @@ ResolveResult connectRegions(const std::vector<TowSurface>& tows, ResolveResult 
 #pragma GCC diagnostic pop
             out.meshRounds = meshed.meshRounds;
             out.method = options.method;
+            out.ranks = detail::towRanks(tows, options.primaryPatterns);
             out.timings = meshed.timings;
             out.timings.regions = msSince(t0);
             return out;
