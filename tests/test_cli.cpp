@@ -119,7 +119,8 @@ TEST_CASE("towgeom help texts teach every subcommand", "[cli]")
 {
     const Run top = cli("--help");
     CHECK(top.status == 0);
-    CHECK(top.out.find("fit") != std::string::npos);
+    for (const char* command : {"fit", "detect", "resolve", "export", "generate", "ply", "courses"})
+        CHECK(top.out.find(std::string("\n  ") + command + " ") != std::string::npos);
     const Run fit = cli("fit --help");
     CHECK(fit.status == 0);
     for (const char* word : {"--mode", "--tolerance", "--out", "start_shifts", "Exit status", "Example"})
@@ -130,7 +131,7 @@ TEST_CASE("towgeom help texts teach every subcommand", "[cli]")
 TEST_CASE("every subcommand takes each option its --help lists and refuses the other commands' options (CLI11)", "[cli]")
 {
     // The options each --help lists (a line starting with --NAME), per command.
-    const std::vector<std::string> commands{"fit", "detect", "resolve", "generate"};
+    const std::vector<std::string> commands{"fit", "detect", "resolve", "export", "generate"};
     std::map<std::string, std::set<std::string>> documented;
     std::set<std::string> all;
     for (const std::string& c : commands) {
@@ -159,7 +160,7 @@ TEST_CASE("every subcommand takes each option its --help lists and refuses the o
             CHECK(r.status != 0);
         }
     // The same errors for every subcommand: a value missing, any value given to a flag.
-    const std::map<std::string, std::string> valueOption{{"fit", "--out"}, {"detect", "--tolerance"}, {"resolve", "--out"}, {"generate", "--out"}};
+    const std::map<std::string, std::string> valueOption{{"fit", "--out"}, {"detect", "--tolerance"}, {"resolve", "--out"}, {"export", "--step"}, {"generate", "--out"}};
     for (const std::string& c : commands) {
         const Run missing = cli(c + " " + valueOption.at(c));
         CHECK(missing.status == 2);

@@ -728,6 +728,64 @@ TEST_CASE("towgeom resolve --cell --formats step,brep: the exact solids clipped 
     for (const auto& pair : brep.sharedFaces) CHECK(pair.second == 1);
 }
 
+TEST_CASE("towgeom export --step --brep: resolve's exact solids without its meshes; bad usage exit 2, a failed write exit 1, nothing written", "[cli][export][brep]")
+{
+    const fs::path dir = scratch("export");
+    const fs::path step = dir / "solids" / "twill.step", brep = dir / "solids" / "twill.brep";
+    const Run r = cli("export" + twill({"warp_0", "weft_0"}) + " --step '" + step.string() + "' --brep '" + brep.string() + "'");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.err.find("2 tow solids, 1 face shared by two tows") != std::string::npos);
+    const testing::ReadShapes read = testing::readStep(step.string());
+    REQUIRE(read.solids.size() == 2);
+    CHECK(read.solids[0].name == "warp_0");
+    CHECK(read.solids[1].name == "weft_0");
+    // The same solids as resolve --formats step: volumes within 1e-9.
+    const fs::path out = dir / "resolved";
+    REQUIRE(cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + out.string() + "' --formats step --quiet").status == 0);
+    const testing::ReadShapes resolved = testing::readStep((out / "textile.step").string());
+    REQUIRE(resolved.solids.size() == 2);
+    for (std::size_t t = 0; t < 2; ++t) {
+        CHECK(read.solids[t].valid);
+        CHECK(read.solids[t].volume > 0.1);
+        CHECK(std::abs(read.solids[t].volume - resolved.solids[t].volume) <= 1e-9 * resolved.solids[t].volume);
+    }
+    CHECK(read.solids[1].volume < read.solids[0].volume);  // weft_0 gave way to warp_0 (command-line order)
+    const testing::ReadShapes shared = testing::readBrep(brep.string(), false);
+    REQUIRE(shared.solids.size() == 2);
+    CHECK(shared.sharedFaces.size() == 1);  // the face inside the loop: one face of both solids
+    // --primary: the other tow keeps its volume.
+    const Run weftFirst = cli("export" + twill({"warp_0", "weft_0"}) + " --primary 'weft_*' --step '" + step.string() + "' --quiet");
+    REQUIRE(weftFirst.status == 0);
+    const testing::ReadShapes swapped = testing::readStep(step.string());
+    REQUIRE(swapped.solids.size() == 2);
+    CHECK(swapped.solids[0].volume < read.solids[0].volume - 1e-3);
+    CHECK(swapped.solids[1].volume > read.solids[1].volume + 1e-3);
+    fs::remove_all(dir);
+    // Usage: nothing to write, one file twice, an option of resolve's that export has not.
+    for (const std::string& bad : {std::string(" --quiet"), " --step '" + step.string() + "' --brep '" + step.string() + "'",
+                                   " --step '" + step.string() + "' --method symmetric"}) {
+        INFO(bad);
+        const Run refused = cli("export" + twill({"warp_0", "weft_0"}) + bad);
+        CHECK(refused.status == 2);
+        CHECK_FALSE(refused.err.empty());
+        CHECK_FALSE(fs::exists(dir));
+    }
+    // A STEP path that cannot be written (its directory is a file): exit 1 naming that, and the
+    // BREP file is not written either.
+    fs::create_directories(dir);
+    std::ofstream(dir / "file") << "x";
+    const Run unwritable = cli("export" + twill({"warp_0", "weft_0"}) + " --brep '" + brep.string() + "' --step '" +
+                               (dir / "file" / "x.step").string() + "' --quiet");
+    CHECK(unwritable.status == 1);
+    INFO(unwritable.err);
+    CHECK(unwritable.err.find((dir / "file").string()) != std::string::npos);
+    CHECK(unwritable.err.find("[write_failed]") != std::string::npos);
+    CHECK_FALSE(fs::exists(brep));
+    CHECK_FALSE(fs::exists(dir / "solids"));
+    fs::remove_all(dir);
+}
+
 TEST_CASE("towgeom resolve --cell DIR/textile.json takes the generator's periodic unit cell", "[cli][resolve][cell]")
 {
     const fs::path gen = scratch("cell_gen"), out = scratch("cell_from_json");

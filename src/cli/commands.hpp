@@ -1,6 +1,6 @@
 // The towgeom subcommands. Each returns the process exit code:
 //   0 success, 2 bad input or usage (one line on stderr), 1 failure to write or internal error,
-//   3 (detect, resolve) a tow pair is unresolved: an open intersection curve, tows that overlap
+//   3 (detect, resolve, export) a tow pair is unresolved: an open intersection curve, tows that overlap
 //   without a curve (nested, identical, touching), or (resolve) a loop around a tow.
 #pragma once
 
@@ -19,6 +19,9 @@ int runDetect(int argc, char** argv, int first);
 
 /// `towgeom resolve FILE.stw... --out DIR [options]`.
 int runResolve(int argc, char** argv, int first);
+
+/// `towgeom export FILE.stw... --step FILE [--brep FILE] [options]`.
+int runExport(int argc, char** argv, int first);
 
 /// `towgeom generate --weave KIND --out DIR [options]`.
 int runGenerate(int argc, char** argv, int first);

@@ -21,6 +21,8 @@ Commands:
   detect    find every interpenetration between tows as intersection loops (JSON)
   resolve   mesh every tow and make the meshes compatible where tows interpenetrate
             (shared connected regions; STL, VTK, Gmsh .msh, Abaqus .inp, report.json)
+  export    the resolved tows (and, in a cell, the matrix) as exact trimmed B-spline solids:
+            STEP AP214, OpenCASCADE BREP
   generate  generate a woven textile (plain, twill, satin, basket, 3D orthogonal) as tow
             stacks, with controlled overlap or flattened to just touching
   ply       fibre placement: plies on a tool surface (STEP, IGES) as trivariate NURBS for
@@ -91,6 +93,7 @@ int main(int argc, char** argv)
         if (!std::strcmp(command, "fit")) return runFit(argc, argv, 2);
         if (!std::strcmp(command, "detect")) return runDetect(argc, argv, 2);
         if (!std::strcmp(command, "resolve")) return runResolve(argc, argv, 2);
+        if (!std::strcmp(command, "export")) return runExport(argc, argv, 2);
         if (!std::strcmp(command, "generate")) return runGenerate(argc, argv, 2);
         if (!std::strcmp(command, "ply")) return runPly(argc, argv, 2);
         if (!std::strcmp(command, "courses")) return runCourses(argc, argv, 2);

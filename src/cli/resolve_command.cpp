@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "cli/args.hpp"
+#include "cli/brep_output.hpp"
+#include "cli/cell_option.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress_printer.hpp"
 #include "cli/tow_input.hpp"
@@ -237,80 +239,6 @@ Examples:
   (then open resolved/*.vtk in ParaView and colour by region_id)
 )";
 
-/// --cell XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX.
-/// The "cell" of a generator's textile.json (periodic; --periodic changes nothing then).
-/// @throws towgeom::Error (FileNotFound, FileUnreadable, InvalidArgument) naming the file.
-Cell readCellFile(const std::string& path)
-{
-    std::ifstream in(path);
-    if (!std::filesystem::exists(path)) throw Error(ErrorCode::FileNotFound, "the file given to --cell does not exist", path);
-    if (!in) throw Error(ErrorCode::FileUnreadable, "cannot read the file given to --cell", path);
-    try {
-        nlohmann::json j;
-        in >> j;
-        if (!j.is_object() || !j.contains("cell"))
-            throw Error(ErrorCode::InvalidArgument,
-                        "no \"cell\": the generator writes one for a 2D weave with at least a repeat + 2 wefts and warps "
-                        "(e.g. 6 x 6 for a 2/2 twill); give --cell X0,Y0,Z0,X1,Y1,Z1 instead",
-                        path);
-        const nlohmann::json& cell = j["cell"];
-        if (!cell.is_object()) throw Error(ErrorCode::InvalidArgument, "\"cell\" must be an object {\"min\", \"max\", \"periodic\"}", path);
-        const auto corner = [&](const char* key) {
-            if (!cell.contains(key) || !cell[key].is_array() || cell[key].size() != 3 || !cell[key][0].is_number() ||
-                !cell[key][1].is_number() || !cell[key][2].is_number())
-                throw Error(ErrorCode::InvalidArgument, std::string("\"cell\".\"") + key + "\" must be three numbers", path);
-            return Point3{cell[key][0].get<double>(), cell[key][1].get<double>(), cell[key][2].get<double>()};
-        };
-        Cell c;
-        c.min = corner("min");
-        c.max = corner("max");
-        if (cell.contains("periodic") && !cell["periodic"].is_boolean())
-            throw Error(ErrorCode::InvalidArgument, "\"cell\".\"periodic\" must be true or false", path);
-        c.periodic = cell.value("periodic", false);
-        if (!(c.min.x < c.max.x && c.min.y < c.max.y && c.min.z < c.max.z))
-            throw Error(ErrorCode::InvalidArgument, "\"cell\": each minimum must lie below its maximum", path);
-        return c;
-    } catch (const nlohmann::json::exception& e) {
-        throw Error(ErrorCode::InvalidArgument, std::string("not a textile.json with a cell: ") + e.what(), path);
-    }
-}
-
-/// The finite numbers of a comma-separated list; empty if any part is not one.
-std::vector<double> numberList(const std::string& text)
-{
-    std::vector<double> v;
-    std::size_t at = 0;
-    while (at <= text.size()) {
-        const std::size_t comma = std::min(text.find(',', at), text.size());
-        const std::string part = text.substr(at, comma - at);
-        char* end = nullptr;
-        const double x = std::strtod(part.c_str(), &end);
-        if (part.empty() || end != part.c_str() + part.size() || !std::isfinite(x)) return {};
-        v.push_back(x);
-        at = comma + 1;
-    }
-    return v;
-}
-
-Cell parseCell(const std::string& text, bool periodic)
-{
-    // A file (textile.json): any text that is not a list of numbers.
-    if (text.find(',') == std::string::npos) {
-        Cell c = readCellFile(text);
-        c.periodic = c.periodic || periodic;
-        return c;
-    }
-    const std::vector<double> v = numberList(text);
-    if (v.size() != 6) throw UsageError("--cell takes six numbers XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX, not '" + text + "'");
-    Cell c;
-    c.min = {v[0], v[1], v[2]};
-    c.max = {v[3], v[4], v[5]};
-    c.periodic = periodic;
-    if (!(c.min.x < c.max.x && c.min.y < c.max.y && c.min.z < c.max.z))
-        throw UsageError("--cell: each minimum must lie below its maximum ('" + text + "')");
-    return c;
-}
-
 double msSince(std::chrono::steady_clock::time_point t0)
 {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -468,14 +396,8 @@ int runResolve(int argc, char** argv, int first)
         double brepMs = -1.0;
         if (exact) {
             const auto brepStart = std::chrono::steady_clock::now();
-            printer.update("building the trimmed B-rep (OpenCASCADE)", 0, 1);
-            brep = trimmedBrep(tows, result);
-            printer.update("building the trimmed B-rep (OpenCASCADE)", 1, 1);
+            brep = buildTrimmedBrep("resolve", tows, result, printer, quiet);
             brepMs = msSince(brepStart);
-            if (!quiet && !brep->fusedBecause().empty())
-                std::cerr << "towgeom resolve: note: the exact solids are built from the whole tows by OpenCASCADE's general fuse "
-                             "(slower: it intersects them again), as their loops alone do not bound every face: "
-                          << brep->fusedBecause() << "\n";
         }
 
         // Everything is computed before anything is written.
@@ -575,20 +497,7 @@ int runResolve(int argc, char** argv, int first)
         if (!quiet)
             for (const ConnectedRegion& g : mesh.regions)
                 if (!g.note.empty()) std::cerr << "towgeom resolve: note: " << g.note << "\n";
-        if (brep)  // warnings, whatever --quiet says
-            for (const BrepSolid& solid : brep->solids())
-                if (solid.faces > 0 && !solid.valid)  // faces 0: wholly outside the cell, no solid
-                    std::cerr << "towgeom resolve: warning: the solid of tow '" << solid.name
-                              << "' in textile.step/.brep is not valid for OpenCASCADE's checker (BRepCheck_Analyzer; "
-                                 "largest edge tolerance " << solid.maxTolerance << "): CAD tools may refuse it\n";
-        if (brep && brep->matrix().faces > 0 && !brep->matrix().valid)
-            std::cerr << "towgeom resolve: warning: the MATRIX solid in textile.step/.brep is not valid for OpenCASCADE's checker "
-                         "(BRepCheck_Analyzer; largest edge tolerance "
-                      << brep->matrix().maxTolerance << "): CAD tools may refuse it\n";
-        const bool noMatrix = brep && !brep->matrixNote().empty();
-        if (noMatrix)
-            std::cerr << "towgeom resolve: warning: no MATRIX solid in textile.step/.brep (the tows only): " << brep->matrixNote()
-                      << "\n";
+        const bool noMatrix = brep && warnAboutBrep("resolve", *brep, "textile.step/.brep");  // whatever --quiet says
         if (!volumeRefused.empty())  // a warning, whatever --quiet says
             std::cerr << "towgeom resolve: warning: no volume mesh written (--volume): " << volumeRefused
                       << "; the surfaces are written, the pairs are named below\n";
