@@ -786,6 +786,37 @@ TEST_CASE("towgeom export --step --brep: resolve's exact solids without its mesh
     fs::remove_all(dir);
 }
 
+TEST_CASE("towgeom export and resolve --formats step with --cell while a pair still overlaps: the tows, no MATRIX, exit 3", "[cli][export][brep][cell][unresolved]")
+{
+    // A short tube inside a longer one the box cuts: nested, no curve; the box less the tows
+    // would not be the matrix.
+    const fs::path dir = scratch("export_nested");
+    testing::Sampling s;
+    s.points = 32;
+    const std::string files = testing::writeStacks(dir, {testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "outer"),
+                                                         testing::tubeAlongX(0.2, 1.0, 1.5, 0.0, 0.0, s, "inner")});
+    const std::string cell = " --cell 0.5,-1,-1,3.5,1,1 --quiet";
+    const Run exported = cli("export" + files + cell + " --step '" + (dir / "n.step").string() + "'");
+    const Run resolved = cli("resolve" + files + cell + " --formats step --out '" + (dir / "r").string() + "'");
+    for (const Run* r : {&exported, &resolved}) {
+        INFO(r->err);
+        CHECK(r->status == 3);
+        CHECK(r->err.find("no MATRIX solid") != std::string::npos);
+        CHECK(r->err.find("[nested]") != std::string::npos);
+    }
+    for (const fs::path& step : {dir / "n.step", dir / "r" / "textile.step"}) {
+        INFO(step);
+        const testing::ReadShapes read = testing::readStep(step.string());
+        REQUIRE(read.solids.size() == 2);  // the two tows, clipped; no MATRIX
+        CHECK(read.solids[0].name == "outer");
+        CHECK(read.solids[1].name == "inner");
+        const double pi = std::acos(-1.0);
+        CHECK(std::abs(read.solids[0].volume - pi * 0.25 * 3.0) <= 1e-4 * pi * 0.25 * 3.0);  // x from 0.5 to 3.5
+        CHECK(std::abs(read.solids[1].volume - pi * 0.04 * 1.0) <= 1e-3 * pi * 0.04);
+    }
+    fs::remove_all(dir);
+}
+
 TEST_CASE("towgeom resolve --cell DIR/textile.json takes the generator's periodic unit cell", "[cli][resolve][cell]")
 {
     const fs::path gen = scratch("cell_gen"), out = scratch("cell_from_json");
