@@ -1,6 +1,7 @@
 // The --cell option: six numbers or a generator's textile.json.
 #include "cli/cell_option.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>

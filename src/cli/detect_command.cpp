@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "cli/tow_input.hpp"
 #include "cli/progress_printer.hpp"
+#include "cli/stopwatch.hpp"
 #include "cli/unresolved_pairs.hpp"
 #include "towgeom/towgeom.hpp"
 
@@ -74,11 +75,6 @@ Examples:
   towgeom resolve examples/data/twill/*.stw --report twill.loops.json --mesh-size 0.05 --out h05
 )";
 
-double msSince(std::chrono::steady_clock::time_point t0)
-{
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
 }  // namespace
 
 int runDetect(int argc, char** argv, int first)
@@ -91,7 +87,7 @@ int runDetect(int argc, char** argv, int first)
             std::cout << kDetectHelp;
             return kExitOk;
         }
-        if (args.positional().empty()) throw UsageError("no input files; see towgeom detect --help");
+        if (args.positional().empty()) throw UsageError("no input files");
         IntersectionOptions options;
         options.tolerance = args.positive("tolerance");
         options.chordalTolerance = args.positive("chordal");

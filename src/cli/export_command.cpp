@@ -8,7 +8,8 @@
 
 #include "cli/args.hpp"
 #include "cli/brep_output.hpp"
-#include "cli/cell_option.hpp"
+#include "cli/resolve_input.hpp"
+#include "cli/stopwatch.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress_printer.hpp"
 #include "cli/tow_input.hpp"
@@ -20,7 +21,7 @@ namespace towgeom::cli {
 
 namespace {
 
-const char* kExportHelp = R"(Usage: towgeom export FILE.stw... --step FILE [--brep FILE] [options]
+const char* kExportHelp = R"(Usage: towgeom export FILE.stw... (--step FILE | --brep FILE | both) [options]
 
 Writes the resolved textile as exact solids for CAD-based finite-element tools (Abaqus/CAE,
 ANSYS, Gmsh's OpenCASCADE kernel) and CAD: fits every tow, finds where tows interpenetrate and
@@ -52,7 +53,10 @@ Options:
   --cell X0,Y0,Z0,X1,Y1,Z1 | --cell DIR/textile.json
                      clip every tow by this box and add the MATRIX solid (as 'towgeom resolve
                      --cell'; the faces must cut tows across, away from crossings)
-  --periodic         with --cell: the textile repeats with the box (as 'towgeom resolve')
+  --periodic         with --cell: check that the textile repeats with the box, as 'towgeom
+                     resolve --periodic' does (exit 2 where a tow's cuts on opposite faces
+                     differ); the solids are the same either way. A --cell textile.json
+                     marked periodic is checked so always
   --mesh-size H      edge length of the surface meshes that decide the regions (default: 0.1 x
                      each tow's own size); the solids' faces are exact whatever H is
   --loop-spacing S   node spacing along intersection loops in those meshes (default: the
@@ -61,7 +65,9 @@ Options:
   --report FILE      take the intersection loops from FILE ('towgeom detect --save-report FILE'
                      for the same tows in the same order) instead of intersecting again
   --max-triangles N  refuse (exit 2) meshes estimated at more than N triangles (default 20000000)
-  --allow-open       exit 0 even when an intersection curve is open (still named on stderr)
+  --allow-open       exit 0 even when an intersection curve is open (still named on stderr);
+                     with --cell the MATRIX solid is then not built (exit 3), and where the
+                     general fuse is needed the open pair is refused (exit 2)
   --threads N        worker threads (default: all hardware threads)
   --quiet            no progress lines on stderr (warnings are always printed)
   -h, --help         this help
@@ -80,11 +86,6 @@ Examples:
   (then mesh it: gmsh -3 cell.step, or import cell.step into Abaqus/CAE)
 )";
 
-double msSince(std::chrono::steady_clock::time_point t0)
-{
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
 }  // namespace
 
 int runExport(int argc, char** argv, int first)
@@ -98,23 +99,17 @@ int runExport(int argc, char** argv, int first)
             std::cout << kExportHelp;
             return kExitOk;
         }
-        if (args.positional().empty()) throw UsageError("no input files; see towgeom export --help");
+        if (args.positional().empty()) throw UsageError("no input files");
         const std::optional<std::string> stepPath = args.value("step"), brepPath = args.value("brep");
         if (!stepPath && !brepPath) throw UsageError("nothing to write: give --step FILE and/or --brep FILE");
-        if (stepPath && brepPath && std::filesystem::absolute(*stepPath) == std::filesystem::absolute(*brepPath))
-            throw UsageError("--step and --brep name the same file '" + *stepPath + "'");
+        if (stepPath && brepPath) {  // the same file however written (./, .., symbolic links)
+            std::error_code e1, e2;
+            const std::filesystem::path a = std::filesystem::weakly_canonical(*stepPath, e1), b = std::filesystem::weakly_canonical(*brepPath, e2);
+            if (e1 || e2 || a == b) throw UsageError("--step and --brep must name two different files, not '" + *stepPath + "' and '" + *brepPath + "'");
+        }
         ResolveOptions options;  // --method connect: the only one whose faces are the tows' B-splines
-        options.primaryPatterns = args.values("primary");
-        options.mesh.edgeLength = args.positive("mesh-size");
-        options.mesh.loopSpacing = args.positive("loop-spacing");
-        options.mesh.maxTriangles = args.maxTriangles(options.mesh.maxTriangles);
-        options.intersection.tolerance = args.positive("tolerance");
-        options.threads = args.threads();
-        if (const auto cell = args.value("cell")) options.cell = parseCell(*cell, args.has("periodic"));
-        else if (args.has("periodic")) throw UsageError("--periodic needs --cell");
+        readResolveOptions(args, options);
         const auto reportPath = args.value("report");
-        if (reportPath && options.intersection.tolerance > 0.0)
-            throw UsageError("--tolerance has no effect with --report: the loops were computed with the report's tolerance");
         const bool quiet = args.has("quiet");
         ProgressPrinter printer("export", quiet);
         options.monitor = &printer;
@@ -122,16 +117,7 @@ int runExport(int argc, char** argv, int first)
         const auto start = std::chrono::steady_clock::now();
         const std::vector<TowStack> stacks = readStacks(args.positional(), options.threads);
         const std::vector<TowSurface> tows = fitSurfaces(stacks, {}, "export", quiet, options.threads);
-        const ResolveResult result = [&] {
-            try {
-                if (reportPath) return resolveTextile(tows, readIntersectionReport(*reportPath, tows), options);
-                return resolveTextile(tows, options);
-            } catch (const Error& e) {
-                if (e.code() != ErrorCode::TooLarge) throw;
-                throw Error(e.code(), e.message() + "; --max-triangles N raises the limit, a larger --mesh-size or "
-                                                    "--loop-spacing makes fewer", e.file(), e.line());
-            }
-        }();
+        const ResolveResult result = resolveExplained(tows, options, reportPath);
         const TrimmedBrep brep = buildTrimmedBrep("export", tows, result, printer, quiet);
 
         // Everything is computed before anything is written.
@@ -149,10 +135,10 @@ int runExport(int argc, char** argv, int first)
         std::string written = stepPath ? *stepPath : *brepPath;
         if (stepPath && brepPath) written += " and " + *brepPath;
         if (!quiet) {
-            std::size_t solids = 0;
-            for (const BrepSolid& s : brep.solids()) solids += s.faces > 0 ? 1 : 0;
-            std::cerr << "towgeom export: " << solids << " tow solids" << (brep.matrix().faces > 0 ? " and the MATRIX solid" : "")
-                      << ", " << brep.sharedFaceCount() << (brep.sharedFaceCount() == 1 ? " face" : " faces") << " shared by two tows, in " << msSince(start) / 1000.0
+            std::size_t kept = 0;  // tows with a solid (a tow cut apart has several)
+            for (const BrepSolid& s : brep.solids()) kept += s.faces > 0 ? 1 : 0;
+            std::cerr << "towgeom export: " << kept << (kept == 1 ? " tow" : " tows") << (brep.matrix().faces > 0 ? " and the MATRIX" : "")
+                      << " as solids, " << brep.sharedFaceCount() << (brep.sharedFaceCount() == 1 ? " face" : " faces") << " shared by two tows, in " << msSince(start) / 1000.0
                       << " s; written to " << written << "\n";
         }
         const bool noMatrix = warnAboutBrep("export", brep, written);

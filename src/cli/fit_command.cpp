@@ -114,7 +114,7 @@ int runFit(int argc, char** argv, int first)
             std::cout << kFitHelp;
             return kExitOk;
         }
-        if (args.positional().empty()) throw UsageError("no input files; see towgeom fit --help");
+        if (args.positional().empty()) throw UsageError("no input files");
         FitOptions options;
         options.mode = parseMode(args.value("mode"));
         if (const auto tol = args.number("tolerance")) {

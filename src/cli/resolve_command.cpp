@@ -1,20 +1,19 @@
 // towgeom resolve: compatible tow surface meshes sharing one surface where tows interpenetrated.
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <optional>
 #include <set>
 #include <sstream>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
 #include "cli/args.hpp"
 #include "cli/brep_output.hpp"
 #include "cli/cell_option.hpp"
+#include "cli/resolve_input.hpp"
+#include "cli/stopwatch.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress_printer.hpp"
 #include "cli/tow_input.hpp"
@@ -23,7 +22,6 @@
 #include "io/output_files.hpp"
 #include "towgeom/towgeom.hpp"
 
-#include <nlohmann/json.hpp>
 
 namespace towgeom::cli {
 
@@ -239,11 +237,6 @@ Examples:
   (then open resolved/*.vtk in ParaView and colour by region_id)
 )";
 
-double msSince(std::chrono::steady_clock::time_point t0)
-{
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
 std::set<std::string> parseFormats(const std::optional<std::string>& text)
 {
     std::set<std::string> formats;
@@ -271,11 +264,11 @@ int runResolve(int argc, char** argv, int first)
             std::cout << kResolveHelp;
             return kExitOk;
         }
-        if (args.positional().empty()) throw UsageError("no input files; see towgeom resolve --help");
+        if (args.positional().empty()) throw UsageError("no input files");
         const auto outDir = args.value("out");
         if (!outDir) throw UsageError("--out DIR is required");
         ResolveOptions options;
-        options.primaryPatterns = args.values("primary");
+        readResolveOptions(args, options);
         options.shrink.both = args.has("shrink-both");
         if (const auto method = args.value("method")) {
             if (*method == "symmetric") options.method = ResolutionMethod::Symmetric;
@@ -284,18 +277,11 @@ int runResolve(int argc, char** argv, int first)
         }
         if (options.shrink.both && options.method != ResolutionMethod::Shrink && !args.value("report-methods"))
             throw UsageError("--shrink-both needs --method shrink (or shrink in --report-methods)");
-        options.mesh.edgeLength = args.positive("mesh-size");
-        options.mesh.loopSpacing = args.positive("loop-spacing");
         if (const auto a = args.number("min-angle")) {
             if (!(*a > 0.0 && *a <= 30.0)) throw UsageError("--min-angle must lie in (0, 30] degrees");
             options.mesh.minAngle = *a;
         }
-        options.mesh.maxTriangles = args.maxTriangles(options.mesh.maxTriangles);
-        options.intersection.tolerance = args.positive("tolerance");
-        options.threads = args.threads();
         options.mesh.caps = !args.has("no-caps");
-        if (const auto cell = args.value("cell")) options.cell = parseCell(*cell, args.has("periodic"));
-        else if (args.has("periodic")) throw UsageError("--periodic needs --cell");
         if (const auto grading = args.value("face-grading")) {
             if (!options.cell) throw UsageError("--face-grading needs --cell");
             const std::vector<double> g = numberList(*grading);
@@ -332,8 +318,6 @@ int runResolve(int argc, char** argv, int first)
         const std::vector<TowSurface> tows = fitSurfaces(stacks, {}, "resolve", quiet, options.threads);
         const double fitMs = msSince(t0);
         const auto reportPath = args.value("report");
-        if (reportPath && options.intersection.tolerance > 0.0)
-            throw UsageError("--tolerance has no effect with --report: the loops were computed with the report's tolerance");
         // --report-methods: the methods side by side (the first is --method's, whose meshes are written).
         std::vector<ResolutionMethod> methods;
         if (const auto list = args.value("report-methods")) {
@@ -349,21 +333,11 @@ int runResolve(int argc, char** argv, int first)
             }
         }
         std::optional<MethodComparison> comparison;
-        const ResolveResult result = [&] {
-            try {
-                if (!methods.empty()) {
-                    std::vector<ResolveResult> results;
-                    comparison = compareMethods(tows, methods, options, &results);
-                    return std::move(results.front());
-                }
-                if (reportPath) return resolveTextile(tows, readIntersectionReport(*reportPath, tows), options);
-                return resolveTextile(tows, options);
-            } catch (const Error& e) {
-                if (e.code() != ErrorCode::TooLarge) throw;
-                throw Error(e.code(), e.message() + "; --max-triangles N raises the limit, a larger --mesh-size or "
-                                                    "--loop-spacing makes fewer", e.file(), e.line());
-            }
-        }();
+        const ResolveResult result = methods.empty() ? resolveExplained(tows, options, reportPath) : explainingBudget([&] {
+            std::vector<ResolveResult> results;
+            comparison = compareMethods(tows, methods, options, &results);
+            return std::move(results.front());
+        });
         const TextileMesh& mesh = result.mesh;
         // --volume with tows that still overlap (an unresolved pair): the surfaces, no tetrahedra.
         const std::vector<UnresolvedPairEntry> overlapping = volume ? overlappingPairs(result) : std::vector<UnresolvedPairEntry>{};

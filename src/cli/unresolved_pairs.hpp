@@ -1,7 +1,7 @@
 // Tow pairs that meet but are not resolved: open curves, loops around a tow, complete overlaps
 // (one tow inside another, identical or touching tows), and (resolve) pairs left out because a
-// tow could not be meshed with their loops. detect and resolve name each on stderr whatever
-// --quiet says, resolve lists them in report.json, and both exit 3 for them.
+// tow could not be meshed with their loops. detect, resolve and export name each on stderr
+// whatever --quiet says, resolve lists them in report.json, and all three exit 3 for them.
 #pragma once
 
 #include <cstddef>

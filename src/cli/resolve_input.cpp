@@ -1,0 +1,38 @@
+// The options resolve and export share, and the resolve they run.
+#include "cli/resolve_input.hpp"
+
+#include "cli/cell_option.hpp"
+#include "towgeom/error.hpp"
+#include "towgeom/intersection_report_json.hpp"
+
+namespace towgeom::cli {
+
+void readResolveOptions(const Args& args, ResolveOptions& o)
+{
+    o.primaryPatterns = args.values("primary");
+    o.mesh.edgeLength = args.positive("mesh-size");
+    o.mesh.loopSpacing = args.positive("loop-spacing");
+    o.mesh.maxTriangles = args.maxTriangles(o.mesh.maxTriangles);
+    o.intersection.tolerance = args.positive("tolerance");
+    o.threads = args.threads();
+    if (const auto cell = args.value("cell")) o.cell = parseCell(*cell, args.has("periodic"));
+    else if (args.has("periodic")) throw UsageError("--periodic needs --cell");
+    if (args.has("report") && o.intersection.tolerance > 0.0)
+        throw UsageError("--tolerance has no effect with --report: the loops were computed with the report's tolerance");
+}
+
+Error budgetExplained(const Error& e)
+{
+    return Error(e.code(), e.message() + "; --max-triangles N raises the limit, a larger --mesh-size or --loop-spacing makes fewer",
+                 e.file(), e.line());
+}
+
+ResolveResult resolveExplained(const std::vector<TowSurface>& tows, const ResolveOptions& o, const std::optional<std::string>& reportPath)
+{
+    return explainingBudget([&] {
+        if (reportPath) return resolveTextile(tows, readIntersectionReport(*reportPath, tows), o);
+        return resolveTextile(tows, o);
+    });
+}
+
+}  // namespace towgeom::cli
