@@ -1,7 +1,9 @@
 #include "cli/args.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <iterator>
 
 #include <CLI/CLI.hpp>
@@ -92,5 +94,21 @@ std::size_t Args::whole(const std::string& name, std::size_t fallback, double lo
 std::size_t Args::threads() const { return whole("threads", 0, 1.0, 1024.0, "1 to 1024"); }
 
 std::size_t Args::maxTriangles(std::size_t fallback) const { return whole("max-triangles", fallback, 1.0, 1e15, "1 to 1e15"); }
+
+std::vector<double> numberList(const std::string& text)
+{
+    std::vector<double> v;
+    std::size_t at = 0;
+    while (at <= text.size()) {
+        const std::size_t comma = std::min(text.find(',', at), text.size());
+        const std::string part = text.substr(at, comma - at);
+        char* end = nullptr;
+        const double x = std::strtod(part.c_str(), &end);
+        if (part.empty() || end != part.c_str() + part.size() || !std::isfinite(x)) return {};
+        v.push_back(x);
+        at = comma + 1;
+    }
+    return v;
+}
 
 }  // namespace towgeom::cli

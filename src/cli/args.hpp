@@ -21,6 +21,10 @@ struct OptionSpec {
     bool takesValue = false;
 };
 
+/// The finite numbers of a comma-separated list (each as strtod reads it, whole); empty if any
+/// part is not one.
+std::vector<double> numberList(const std::string& text);
+
 class Args {
 public:
     /// Parses argv[first..argc) with CLI11; throws UsageError (CLI11's message) for unknown

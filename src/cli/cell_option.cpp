@@ -1,9 +1,6 @@
 // The --cell option: six numbers or a generator's textile.json.
 #include "cli/cell_option.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -54,22 +51,6 @@ Cell readCellFile(const std::string& path)
 }
 
 }  // namespace
-
-std::vector<double> numberList(const std::string& text)
-{
-    std::vector<double> v;
-    std::size_t at = 0;
-    while (at <= text.size()) {
-        const std::size_t comma = std::min(text.find(',', at), text.size());
-        const std::string part = text.substr(at, comma - at);
-        char* end = nullptr;
-        const double x = std::strtod(part.c_str(), &end);
-        if (part.empty() || end != part.c_str() + part.size() || !std::isfinite(x)) return {};
-        v.push_back(x);
-        at = comma + 1;
-    }
-    return v;
-}
 
 Cell parseCell(const std::string& text, bool periodic)
 {

@@ -9,9 +9,6 @@
 
 namespace towgeom::cli {
 
-/// The finite numbers of a comma-separated list; empty if any part is not one.
-std::vector<double> numberList(const std::string& text);
-
 /// --cell XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX, or --cell DIR/textile.json (its "cell", periodic as it
 /// says; @p periodic (--periodic) makes either periodic).
 /// @throws UsageError for a malformed list; towgeom::Error (FileNotFound, FileUnreadable,

@@ -2,7 +2,6 @@
 // reference curve, with their errors, the gaps and overlaps between tows, and each tow as a
 // .stw ribbon for towgeom detect.
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -133,18 +132,7 @@ std::vector<Row> readColumns(const std::string& path, std::size_t count)
 /// The six numbers of "X,Y,Z,NX,NY,NZ".
 std::vector<double> planeNumbers(const std::string& text)
 {
-    std::vector<double> x;
-    std::size_t from = 0;
-    while (from <= text.size()) {
-        const std::size_t comma = std::min(text.find(',', from), text.size());
-        const std::string word = text.substr(from, comma - from);
-        double value = 0.0;
-        const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
-        if (word.empty() || ec != std::errc() || end != word.data() + word.size() || !std::isfinite(value))
-            throw UsageError("--reference plane:X,Y,Z,NX,NY,NZ takes six numbers, got '" + text + "'");
-        x.push_back(value);
-        from = comma + 1;
-    }
+    const std::vector<double> x = numberList(text);
     if (x.size() != 6) throw UsageError("--reference plane:X,Y,Z,NX,NY,NZ takes six numbers, got '" + text + "'");
     return x;
 }
