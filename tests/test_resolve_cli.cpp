@@ -765,6 +765,7 @@ TEST_CASE("towgeom export --step --brep: resolve's exact solids without its mesh
     // Usage: nothing to write, one file twice, an option of resolve's that export has not.
     const std::string sameWrittenOtherwise = (dir / "solids" / ".." / "solids" / "twill.step").string();
     for (const std::string& bad : {std::string(" --quiet"), " --step '" + step.string() + "' --brep '" + sameWrittenOtherwise + "'",
+
                                    " --step '" + step.string() + "' --method symmetric"}) {
         INFO(bad);
         const Run refused = cli("export" + twill({"warp_0", "weft_0"}) + bad);
@@ -772,6 +773,14 @@ TEST_CASE("towgeom export --step --brep: resolve's exact solids without its mesh
         CHECK_FALSE(refused.err.empty());
         CHECK_FALSE(fs::exists(dir));
     }
+    // Relative paths, the first of whose directories does not exist yet: still the same file.
+    fs::create_directories(dir);
+    const Run relative = testing::runShell("(cd '" + dir.string() + "' && '" + TOWGEOM_CLI + "' export" + twill({"warp_0", "weft_0"}) +
+                                          " --step solids/twill.step --brep ./solids/twill.step --quiet 2>&1)");
+    CHECK(relative.status == 2);
+    CHECK(relative.out.find("two different files") != std::string::npos);
+    CHECK_FALSE(fs::exists(dir / "solids"));
+    fs::remove_all(dir);
     // A STEP path that cannot be written (its directory is a file): exit 1 naming that, and the
     // BREP file is not written either.
     fs::create_directories(dir);

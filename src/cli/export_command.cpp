@@ -104,8 +104,12 @@ int runExport(int argc, char** argv, int first)
         if (!stepPath && !brepPath) throw UsageError("nothing to write: give --step FILE and/or --brep FILE");
         if (stepPath && brepPath) {  // the same file however written (./, .., symbolic links)
             std::error_code e1, e2;
-            const std::filesystem::path a = std::filesystem::weakly_canonical(*stepPath, e1), b = std::filesystem::weakly_canonical(*brepPath, e2);
-            if (e1 || e2 || a == b) throw UsageError("--step and --brep must name two different files, not '" + *stepPath + "' and '" + *brepPath + "'");
+            const std::filesystem::path a = std::filesystem::weakly_canonical(std::filesystem::absolute(*stepPath), e1),
+                                        b = std::filesystem::weakly_canonical(std::filesystem::absolute(*brepPath), e2);
+            const bool same = e1 || e2 ? std::filesystem::absolute(*stepPath).lexically_normal() ==
+                                                 std::filesystem::absolute(*brepPath).lexically_normal()
+                                       : a == b;  // a path it cannot resolve fails when written, naming it
+            if (same) throw UsageError("--step and --brep must name two different files, not '" + *stepPath + "' and '" + *brepPath + "'");
         }
         ResolveOptions options;  // --method connect: the only one whose faces are the tows' B-splines
         readResolveOptions(args, options);
