@@ -728,7 +728,7 @@ TEST_CASE("towgeom resolve --cell --formats step,brep: the exact solids clipped 
     for (const auto& pair : brep.sharedFaces) CHECK(pair.second == 1);
 }
 
-TEST_CASE("towgeom export --step --brep: resolve's exact solids without its meshes; bad usage exit 2, a failed write exit 1, nothing written", "[cli][export][brep]")
+TEST_CASE("towgeom export --step --brep: resolve's exact solids without its meshes, bad usage exit 2, a failed write exit 1 and nothing written", "[cli][export][brep]")
 {
     const fs::path dir = scratch("export");
     const fs::path step = dir / "solids" / "twill.step", brep = dir / "solids" / "twill.brep";
