@@ -102,15 +102,16 @@ int runExport(int argc, char** argv, int first)
         if (args.positional().empty()) throw UsageError("no input files");
         const std::optional<std::string> stepPath = args.value("step"), brepPath = args.value("brep");
         if (!stepPath && !brepPath) throw UsageError("nothing to write: give --step FILE and/or --brep FILE");
-        if (stepPath && brepPath) {  // the same file however written (./, .., symbolic links)
-            std::error_code e1, e2;
-            const std::filesystem::path a = std::filesystem::weakly_canonical(std::filesystem::absolute(*stepPath), e1),
-                                        b = std::filesystem::weakly_canonical(std::filesystem::absolute(*brepPath), e2);
-            const bool same = e1 || e2 ? std::filesystem::absolute(*stepPath).lexically_normal() ==
-                                                 std::filesystem::absolute(*brepPath).lexically_normal()
-                                       : a == b;  // a path it cannot resolve fails when written, naming it
-            if (same) throw UsageError("--step and --brep must name two different files, not '" + *stepPath + "' and '" + *brepPath + "'");
-        }
+        // The same file however written (./, .., symbolic links); a path that cannot be resolved
+        // is compared as written, made absolute (its write fails later, naming it).
+        const auto where = [](const std::string& path) {
+            const std::filesystem::path absolute = std::filesystem::absolute(path);
+            std::error_code failed;
+            const std::filesystem::path resolved = std::filesystem::weakly_canonical(absolute, failed);
+            return failed ? absolute.lexically_normal() : resolved;
+        };
+        if (stepPath && brepPath && where(*stepPath) == where(*brepPath))
+            throw UsageError("--step and --brep must name two different files, not '" + *stepPath + "' and '" + *brepPath + "'");
         ResolveOptions options;  // --method connect: the only one whose faces are the tows' B-splines
         readResolveOptions(args, options);
         const auto reportPath = args.value("report");
