@@ -18,6 +18,7 @@
 #include <type_traits>
 
 #include "towgeom/error.hpp"
+#include "core/parallel.hpp"
 #include "volume/gmsh_library.hpp"
 #include "towgeom/export.hpp"
 
@@ -134,11 +135,12 @@ private:
     const Gmsh& g_;
     bool hadCurrent_ = false, added_ = false;
     std::string hostModel_;
-    std::pair<const char*, double> saved_[8] = {{"General.Terminal", 0.0},
+    std::pair<const char*, double> saved_[9] = {{"General.Terminal", 0.0},
                                                 {"Mesh.ElementOrder", 0.0},
                                                 {"Mesh.SubdivisionAlgorithm", 0.0},
                                                 {"Mesh.HighOrderOptimize", 0.0},
                                                 {"General.NumThreads", 0.0},
+                                                {"Mesh.MaxNumThreads3D", 0.0},
                                                 {"Mesh.Algorithm3D", 0.0},
                                                 {"Mesh.Optimize", 0.0},
                                                 {"Mesh.Renumber", 0.0}};
@@ -260,11 +262,18 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     // One volume per shell of each tow (a tow cut through by one ranked above it has several).
     std::vector<std::vector<std::size_t>> shell(towCount);
     std::vector<std::size_t> firstVolume(towCount + 1, 0);  // volume v of tow t: firstVolume[t] + shell
-    for (std::size_t t = 0; t < towCount; ++t) {
-        std::size_t count = 0;
-        shell[t] = shellsOf(surfaces.tows[t].triangles, "tow '" + surfaces.tows[t].name + "'", count);
-        firstVolume[t + 1] = firstVolume[t] + count;
-    }
+    std::vector<std::size_t> shellCount(towCount, 0);
+    std::vector<std::exception_ptr> refused(towCount);  // the first tow's is thrown, whatever the threads did
+    detail::parallelFor(towCount, detail::workerCount(options.threads), [&](std::size_t t) {
+        try {
+            shell[t] = shellsOf(surfaces.tows[t].triangles, "tow '" + surfaces.tows[t].name + "'", shellCount[t]);
+        } catch (...) {
+            refused[t] = std::current_exception();
+        }
+    });
+    for (const std::exception_ptr& e : refused)
+        if (e) std::rethrow_exception(e);
+    for (std::size_t t = 0; t < towCount; ++t) firstVolume[t + 1] = firstVolume[t] + shellCount[t];
     // Clipped to a cell: the matrix is one more volume, "tow" towCount.
     const bool matrix = surfaces.cell.has_value();
     std::vector<std::size_t> volumeTow(firstVolume[towCount] + (matrix ? 1 : 0), towCount);
@@ -419,7 +428,11 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         const auto option = [&](const char* name, double value) { g.call("gmshOptionSetNumber", api.gmshOptionSetNumber, name, value); };
         option("Mesh.Algorithm3D", 10);  // HXT
         option("Mesh.Optimize", options.optimize ? 1 : 0);
-        option("General.NumThreads", static_cast<double>(options.threads));
+        // HXT runs on General.NumThreads threads: 0 there means one (not one per hardware
+        // thread, as options.threads == 0 does here).
+        const double threads = static_cast<double>(detail::workerCount(options.threads));
+        option("General.NumThreads", threads);
+        option("Mesh.MaxNumThreads3D", threads);
         option("Mesh.Renumber", 0);  // keep the surface nodes' tags (= index + 1)
         // Linear elements from generate() whatever the host set (order 2 comes after the check
         // below), no subdivision, no high-order optimisation.
@@ -449,18 +462,32 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         // Every node: the surface's keep their indices, Gmsh's new ones are appended.
         nodesOn(-1, tags, coords);
         std::vector<std::size_t> index;  // by Gmsh tag
+        std::vector<std::size_t> added;  // positions in tags of the nodes Gmsh added
         for (std::size_t k = 0; k < tags.size(); ++k) {
             const std::size_t tag = tags[k];
             if (index.size() <= tag) index.resize(tag + 1, SIZE_MAX);
-            const Point3 at{coords[3 * k], coords[3 * k + 1], coords[3 * k + 2]};
             if (tag <= surfaces.nodes.size() && classified[tag - 1]) {
+                const Point3 at{coords[3 * k], coords[3 * k + 1], coords[3 * k + 2]};
                 if (!(distance(surfaces.nodes[tag - 1], at) == 0.0))
                     throw Error(ErrorCode::Internal, "Gmsh moved or renumbered surface node " + std::to_string(tag));
                 index[tag] = tag - 1;
             } else {
-                index[tag] = out.nodes.size();
-                out.nodes.push_back(at);
+                added.push_back(k);
             }
+        }
+        // HXT on several threads (Gmsh 4.8) may insert one point twice, as two nodes with the
+        // same coordinates, each with its own tetrahedra: a crack of zero width. Nodes at the same
+        // point are one node (then every inner face is shared by two tetrahedra again).
+        const auto at = [&](std::size_t k) { return std::make_tuple(coords[3 * k], coords[3 * k + 1], coords[3 * k + 2]); };
+        std::stable_sort(added.begin(), added.end(), [&](std::size_t a, std::size_t b) { return at(a) < at(b); });
+        for (std::size_t i = 0; i < added.size(); ++i) {
+            const std::size_t k = added[i];
+            if (i > 0 && at(k) == at(added[i - 1])) {
+                index[tags[k]] = index[tags[added[i - 1]]];
+                continue;
+            }
+            index[tags[k]] = out.nodes.size();
+            out.nodes.push_back({coords[3 * k], coords[3 * k + 1], coords[3 * k + 2]});
         }
         const auto node = [&](std::size_t tag) {
             if (tag >= index.size() || index[tag] == SIZE_MAX) throw Error(ErrorCode::Internal, "Gmsh gave a tetrahedron an unknown node");
