@@ -1066,6 +1066,39 @@ TEST_CASE("towgeom resolve --volume with tows that still overlap: the surfaces, 
     fs::remove_all(dir);
 }
 
+TEST_CASE("towgeom resolve --volume with tows touching tangentially: the surfaces, no tetrahedra, exit 3", "[cli][resolve][volume][tangent]")
+{
+    // Racetrack tows pressed flat together with no gap: resolved, but their surfaces meet at
+    // thousandths of a degree, where Gmsh's HXT stops. Was exit 1 ([internal]) with nothing written.
+    const fs::path dir = scratch("volume_tangent");
+    const fs::path in = dir / "in", out = dir / "out";
+    REQUIRE(cli("generate --weave orthogonal --tows 1x1 --layers 1 --section racetrack --overlap 0 --width 0.9 --sections 30 "
+                "--points 32 --quiet --out '" + in.string() + "'")
+                .status == 0);
+    std::string files;
+    std::set<std::string> expected{"textile.msh", "report.json"};
+    for (const auto& entry : fs::directory_iterator(in))
+        if (entry.path().extension() == ".stw") {
+            files += " '" + entry.path().string() + "'";
+            expected.insert(entry.path().stem().string() + ".stl");
+            expected.insert(entry.path().stem().string() + ".vtk");
+        }
+    REQUIRE(expected.size() == 2 + 2 * 4);
+    const Run r = cli("resolve" + files + " --out '" + out.string() + "' --volume --formats stl,vtk,msh --quiet");
+    INFO(r.err);
+    CHECK(r.status == 3);
+    CHECK(r.err.rfind("towgeom resolve: warning: no volume mesh written (--volume): the tows' volumes: tow '", 0) == 0);
+    CHECK(r.err.find("touch tangentially") != std::string::npos);
+    CHECK(r.err.find("[unsupported]; the surfaces are written\n") != std::string::npos);
+    CHECK(r.err.find("named below") == std::string::npos);  // no pair is unresolved
+    std::set<std::string> written;
+    for (const auto& entry : testing::snapshot(out)) written.insert(entry.first);
+    CHECK(written == expected);
+    const std::string report = testing::slurp(out / "report.json");
+    CHECK(report.find("\"volume_mesh\":{\"refused\":\"the tows' volumes: tow '") != std::string::npos);
+    fs::remove_all(dir);
+}
+
 TEST_CASE("towgeom resolve --quiet still notes a mesh too coarse for the tows' curvature", "[cli][resolve][unresolved]")
 {
     // The bundled twill at h = 0.4: the smallest 3D angle is about 3 degrees.

@@ -252,6 +252,52 @@ TEST_CASE("meshVolumes refuses a triangle given twice or turned over before Gmsh
     }
 }
 
+TEST_CASE("meshVolumes refuses tows touching tangentially, naming them and the place, before Gmsh", "[volume][tangent]")
+{
+    // Pressed flat together with no gap (towgeom generate --weave orthogonal --tows 1x1
+    // --layers 1 --section racetrack --overlap 0): where the flat faces touch, the resolved
+    // surfaces meet at thousandths of a degree, below the 0.01 degrees Gmsh's HXT accepts (it
+    // stops there, printing "two nearly self-intersecting facets").
+    WeaveOptions o;
+    o.kind = WeaveKind::Orthogonal;
+    o.warps = o.wefts = 1;
+    o.layers = 1;
+    o.shape = SectionShape::Racetrack;
+    o.overlap = 0.0;
+    o.width = 0.9;
+    o.sectionsPerYarn = 30;
+    o.pointsPerSection = 32;
+    std::vector<TowSurface> tows;
+    for (const TowStack& s : generateWeave(o).stacks()) tows.push_back(TowSurface::fit(s));
+    const ResolveResult res = resolveTextile(tows, ResolveOptions{});
+    REQUIRE(res.unresolved.empty());
+    REQUIRE(overlappingPairs(res).empty());
+    try {
+        meshVolumes(res);
+        FAIL("meshed");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::Unsupported);
+        CHECK_THAT(e.message(), Catch::Matchers::Contains("their surfaces meet at") && Catch::Matchers::Contains("touch tangentially"));
+        // Two of the tows, by name, and a place on both of their surfaces.
+        std::vector<std::size_t> named;
+        for (std::size_t t = 0; t < tows.size(); ++t)
+            if (e.message().find("tow '" + tows[t].name() + "'") != std::string::npos) named.push_back(t);
+        REQUIRE(named.size() == 2);
+        const std::size_t open = e.message().find("near ("), close = e.message().find(')', open);
+        REQUIRE(close != std::string::npos);
+        std::istringstream place(e.message().substr(open + 6, close - open - 6));
+        Point3 at;
+        char comma = 0;
+        place >> at.x >> comma >> at.y >> comma >> at.z;
+        for (std::size_t t : named) {  // the middle of an edge both tows' meshes have: a node of each close by
+            double nearest = 1e300;
+            for (const auto& tri : res.mesh.tows[t].triangles)
+                for (std::size_t n : tri) nearest = std::min(nearest, distance(res.mesh.nodes[n], at));
+            CHECK(nearest < 0.02 * tows[t].boundingBox().diagonal());
+        }
+    }
+}
+
 TEST_CASE("meshVolumes refuses tows that are not closed", "[volume]")
 {
     ResolveOptions o;

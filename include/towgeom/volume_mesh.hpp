@@ -95,6 +95,10 @@ TOWGEOM_EXPORT TetrahedronQuality tetrahedronQuality(const VolumeMesh& volumes);
 ///         (InvalidArgument) if a tow's surface is not a closed 2-manifold (every edge of its
 ///         triangles shared by exactly two of them, no triangle twice) or a triangle is in two
 ///         regions (Gmsh would end the process on such input);
+///         (Unsupported) naming the tows and the place if two triangles on an edge where
+///         surfaces meet (a loop's, a cap's rim) lie at under 0.01 degrees to each other, the
+///         least angle Gmsh 4.8's HXT accepts: tows touching tangentially (pressed flat together)
+///         leave no room for a tetrahedron there (ResolutionMethod::Shrink leaves a gap);
 ///         (Internal) with Gmsh's message if Gmsh fails, if it added, moved or renumbered a
 ///         surface node, or (order 2) if a tetrahedron has no node at the middle of an edge.
 TOWGEOM_EXPORT VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& options = {});

@@ -173,8 +173,10 @@ Options:
                      "min_dihedral_histogram_bins_deg" (lower edges: 0 5 10 20 ... 60, the last
                      bin up to 70.53),"min_dihedral_histogram"}}, with --cell also "matrix":
                      {"tetrahedra","volume"} and "tow_volume_fraction". Not made while two
-                     tows still overlap (an unresolved pair other than not_separated; exit 3,
-                     also with --allow-open): the surfaces are written, no new
+                     tows still overlap (an unresolved pair other than not_separated) or where
+                     two tows' surfaces meet at under 0.01 degrees (tows touching tangentially:
+                     no tetrahedron fits between them; --method shrink leaves a gap); exit 3,
+                     also with --allow-open: the surfaces are written, no new
                      DIR/textile_volume.*, report.json "volume_mesh": {"refused": why}.
                      Needs Gmsh's library (Debian: libgmsh4.8). With --cell also the matrix:
                      physical volume / ELSET MATRIX, groups / NSETs XMIN ... ZMAX of every node
@@ -351,7 +353,7 @@ int runResolve(int argc, char** argv, int first)
                             tows[p.towA].name() + "' and '" + tows[p.towB].name() + "' [" + p.code + "]" +
                             (n > 1 ? " and others" : "") + "): their tetrahedra would overlap";
         }
-        const bool tetrahedra = volume && overlapping.empty();
+        bool tetrahedra = volume && overlapping.empty();
         VolumeMesh volumes;
         double volumeMs = -1.0;
         if (tetrahedra) {
@@ -360,8 +362,16 @@ int runResolve(int argc, char** argv, int first)
             VolumeMeshOptions vo;
             vo.threads = options.threads;
             vo.order = order;
-            volumes = meshVolumes(mesh, vo);
-            addFibreDirections(volumes, tows, options.threads);
+            try {
+                volumes = meshVolumes(mesh, vo);
+                addFibreDirections(volumes, tows, options.threads);
+            } catch (const Error& e) {
+                // Surfaces the tetrahedral mesher cannot take (tows touching tangentially): the
+                // surfaces are still written, the volume mesh is refused as for overlapping tows.
+                if (e.code() != ErrorCode::Unsupported) throw;
+                volumeRefused = e.message() + " [" + errorCodeName(e.code()) + "]";
+                tetrahedra = false;
+            }
             printer.update("meshing the tows' volumes (Gmsh HXT)", 1, 1);
             volumeMs = msSince(t0);
         }
@@ -473,8 +483,8 @@ int runResolve(int argc, char** argv, int first)
                 if (!g.note.empty()) std::cerr << "towgeom resolve: note: " << g.note << "\n";
         const bool noMatrix = brep && warnAboutBrep("resolve", *brep, "textile.step/.brep");  // whatever --quiet says
         if (!volumeRefused.empty())  // a warning, whatever --quiet says
-            std::cerr << "towgeom resolve: warning: no volume mesh written (--volume): " << volumeRefused
-                      << "; the surfaces are written, the pairs are named below\n";
+            std::cerr << "towgeom resolve: warning: no volume mesh written (--volume): " << volumeRefused << "; the surfaces are written"
+                      << (overlapping.empty() ? "" : ", the pairs are named below") << "\n";
         reportContacts("resolve", result.intersections, tows);
         reportUnresolved("resolve", unresolved, tows);
         // A refused volume mesh or a missing matrix solid exits 3 even with --allow-open: an

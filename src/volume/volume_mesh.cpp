@@ -4,14 +4,16 @@
 // meshed by HXT.
 #include "towgeom/volume_mesh.hpp"
 
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <exception>
+#include <iomanip>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -19,6 +21,7 @@
 
 #include "towgeom/error.hpp"
 #include "core/parallel.hpp"
+#include "volume/facet_folds.hpp"
 #include "volume/gmsh_library.hpp"
 #include "towgeom/export.hpp"
 
@@ -32,6 +35,12 @@ std::mutex& gmshMutex()
     static std::mutex m;
     return m;
 }
+
+/// Degrees per radian.
+constexpr double kDegree = 57.295779513082321;
+/// The smallest angle between two faces on an edge HXT's boundary recovery accepts (Gmsh 4.8:
+/// 0.01 degrees, fixed; Mesh.AngleToleranceFacetOverlap does not change it, measured).
+constexpr double kHxtFoldTolerance = 0.01 / kDegree;
 
 double signedVolume(const Point3& a, const Point3& b, const Point3& c, const Point3& d)
 {
@@ -288,6 +297,8 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         std::vector<std::size_t> triangles; // 3 node tags each
     };
     std::vector<Surface> patches;
+    constexpr std::size_t kNoTow = static_cast<std::size_t>(-1);
+    std::vector<std::array<std::size_t, 2>> patchTows;  // the tows (towCount: the matrix) each patch bounds
     std::vector<std::vector<int>> bounds(volumeTow.size());
     std::vector<char> classified(surfaces.nodes.size(), 0);
     // No triangle twice (regions sharing one): each given one's sorted nodes and who gave it,
@@ -325,6 +336,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
                 bounds[v].push_back(s.tag);
                 if (!cellPart) matrixBounds.push_back(-s.tag);  // the tow's outward normal points into the matrix
                 patches.push_back(std::move(s));
+                patchTows.push_back({t, cellPart || !matrix ? kNoTow : towCount});
             }
     }
     if (matrix) {  // the box's faces minus the tows' caps, outward
@@ -337,6 +349,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
             if (s.triangles.empty()) continue;
             matrixBounds.push_back(s.tag);
             patches.push_back(std::move(s));
+            patchTows.push_back({towCount, kNoTow});
         }
     }
     // A region's triangles, split by the shells they lie on (a third tow may cut a region's
@@ -373,6 +386,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
             bounds[firstVolume[reg.primary] + shells.first].push_back(part.tag);
             bounds[firstVolume[reg.secondary] + shells.second].push_back(-part.tag);  // the primary's orientation: inward for the secondary
             patches.push_back(std::move(part));
+            patchTows.push_back({reg.primary, reg.secondary});
         }
     }
     std::sort(given.begin(), given.end());
@@ -404,6 +418,31 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     std::string where = "the tows' volumes";  // for messages
     try {
         GmshSession session(g);
+        {
+            // Surfaces meeting at an angle below HXT's tolerance (tows touching tangentially) stop
+            // it with a message on the terminal: refused here, naming the tows and the place.
+            std::vector<const std::vector<std::size_t>*> triangles;
+            for (const Surface& s : patches) triangles.push_back(&s.triangles);
+            if (const std::optional<detail::FacetFold> fold = detail::sharpestFold(surfaces.nodes, triangles, kHxtFoldTolerance)) {
+                std::vector<std::size_t> involved;
+                for (std::size_t t : {patchTows[fold->surfaceA][0], patchTows[fold->surfaceA][1], patchTows[fold->surfaceB][0],
+                                      patchTows[fold->surfaceB][1]})
+                    if (t != kNoTow && std::find(involved.begin(), involved.end(), t) == involved.end()) involved.push_back(t);
+                std::sort(involved.begin(), involved.end());
+                std::string who;
+                for (std::size_t i = 0; i < involved.size(); ++i)
+                    who += (i == 0 ? "" : i + 1 == involved.size() ? " and " : ", ") + nameOf(involved[i]);
+                std::ostringstream text;
+                text.precision(2);
+                text << who << ": their surfaces meet at " << fold->angle * kDegree << " degrees near (";
+                text.precision(6);
+                text << fold->at.x << ", " << fold->at.y
+                     << ", " << fold->at.z << "), below the " << std::setprecision(2) << kHxtFoldTolerance * kDegree
+                     << " degrees Gmsh's HXT needs between faces on an edge: the tows touch tangentially (e.g. pressed flat "
+                        "together) and no tetrahedron fits in the wedge between them (the shrink method leaves a gap)";
+                throw Error(ErrorCode::Unsupported, text.str());
+            }
+        }
         for (Surface& s : patches) {
             g.call("gmshModelAddDiscreteEntity", api.gmshModelAddDiscreteEntity, 2, s.tag, nullptr, std::size_t(0));
             std::vector<std::size_t> tags;
