@@ -486,20 +486,10 @@ TEST_CASE("towgeom resolve lists the triple points in report.json", "[resolve][s
 
 namespace {
 
-/// A pressed 3D orthogonal weave (towgeom generate --weave orthogonal --tows NxN --layers L
-/// --section racetrack --overlap 0.15 --width 0.9 --sections 30 --points 32); 8 x 8 x 3: 63 tows.
+/// The pressed 3D orthogonal weave of these tests, 0.15 pressed; 8 x 8 x 3: 63 tows.
 std::vector<TowStack> pressedOrthogonal(std::size_t tows = 8, std::size_t layers = 3)
 {
-    WeaveOptions o;
-    o.kind = WeaveKind::Orthogonal;
-    o.warps = o.wefts = tows;
-    o.layers = layers;
-    o.shape = SectionShape::Racetrack;
-    o.overlap = 0.15;
-    o.width = 0.9;
-    o.sectionsPerYarn = 30;
-    o.pointsPerSection = 32;
-    return generateWeave(o).stacks();
+    return testing::pressedOrthogonal(tows, layers, 0.15);
 }
 
 const TowStack& named(const std::vector<TowStack>& stacks, const std::string& name)

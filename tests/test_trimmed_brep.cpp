@@ -620,17 +620,8 @@ TEST_CASE("trimmed B-rep of pressed layers: loops nested three deep, built by th
 {
     // A warp and a weft of a pressed 3D orthogonal weave whose flat faces touch with no gap: the
     // fitted surfaces cross a little over the contact, in shallow loops inside loops inside loops.
-    WeaveOptions w;
-    w.kind = WeaveKind::Orthogonal;
-    w.warps = w.wefts = 2;
-    w.layers = 2;
-    w.shape = SectionShape::Racetrack;
-    w.overlap = 0.0;
-    w.width = 0.9;
-    w.sectionsPerYarn = 30;
-    w.pointsPerSection = 32;
     std::vector<TowStack> pair;
-    for (const TowStack& s : generateWeave(w).stacks())
+    for (const TowStack& s : testing::pressedOrthogonal(2, 2, 0.0))
         if (s.name == "warp_L0_0" || s.name == "weft_L0_0") pair.push_back(s);
     REQUIRE(pair.size() == 2);
     const std::vector<TowSurface> tows = testing::fitAll(pair);

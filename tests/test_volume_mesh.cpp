@@ -258,17 +258,7 @@ TEST_CASE("meshVolumes refuses tows touching tangentially, naming them and the p
     // --layers 1 --section racetrack --overlap 0): where the flat faces touch, the resolved
     // surfaces meet at thousandths of a degree, below the 0.01 degrees Gmsh's HXT accepts (it
     // stops there, printing "two nearly self-intersecting facets").
-    WeaveOptions o;
-    o.kind = WeaveKind::Orthogonal;
-    o.warps = o.wefts = 1;
-    o.layers = 1;
-    o.shape = SectionShape::Racetrack;
-    o.overlap = 0.0;
-    o.width = 0.9;
-    o.sectionsPerYarn = 30;
-    o.pointsPerSection = 32;
-    std::vector<TowSurface> tows;
-    for (const TowStack& s : generateWeave(o).stacks()) tows.push_back(TowSurface::fit(s));
+    const std::vector<TowSurface> tows = testing::fitAll(testing::pressedOrthogonal(1, 1, 0.0));
     const ResolveResult res = resolveTextile(tows, ResolveOptions{});
     REQUIRE(res.unresolved.empty());
     REQUIRE(overlappingPairs(res).empty());

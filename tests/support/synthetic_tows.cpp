@@ -191,6 +191,20 @@ std::vector<TowSurface> bundledTwill(const std::string& exampleData)
     return tows;
 }
 
+std::vector<TowStack> pressedOrthogonal(std::size_t tows, std::size_t layers, double overlap)
+{
+    WeaveOptions o;
+    o.kind = WeaveKind::Orthogonal;
+    o.warps = o.wefts = tows;
+    o.layers = layers;
+    o.shape = SectionShape::Racetrack;
+    o.overlap = overlap;
+    o.width = 0.9;
+    o.sectionsPerYarn = 30;
+    o.pointsPerSection = 32;
+    return generateWeave(o).stacks();
+}
+
 std::vector<TowSurface> fittedTwill22()
 {
     WeaveOptions w;

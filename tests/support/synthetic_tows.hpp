@@ -103,6 +103,11 @@ TracedTow tracedRacetrack(std::size_t m, std::size_t n, const std::vector<double
 /// Every stack fitted (TowSurface::fit, default options), in order.
 std::vector<TowSurface> fitAll(const std::vector<TowStack>& stacks);
 
+/// A pressed 3D orthogonal weave (towgeom generate --weave orthogonal --tows NxN --layers L
+/// --section racetrack --width 0.9 --sections 30 --points 32 --overlap O): racetrack sections
+/// pressed @p overlap into each other (0: flat faces touching with no gap), binders between.
+std::vector<TowStack> pressedOrthogonal(std::size_t tows, std::size_t layers, double overlap);
+
 /// The generator's 4x4 2/2 twill (overlap 0.08, default sampling), fitted: 8 tows, 16 loops.
 std::vector<TowSurface> fittedTwill22();
 
