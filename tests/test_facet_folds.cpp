@@ -50,6 +50,10 @@ TEST_CASE("sharpestFold: the sharpest of several wings, and only edges where sur
     REQUIRE(fold);
     CHECK(fold->angle == Approx(0.4 * kPi / 180.0).epsilon(1e-9));
     CHECK(((fold->surfaceA == 0 && fold->surfaceB == 2) || (fold->surfaceA == 2 && fold->surfaceB == 0)));
+    // A wing of no area (its third node on the edge's line) has no direction: passed over.
+    std::vector<Point3> flat = hinge(0.0);
+    flat[3] = {0.0, 0.0, 0.5};
+    CHECK_FALSE(detail::sharpestFold(flat, {&a, &b}, 2.0 * kPi / 180.0));
     // The same wings in one surface: no node lies on two surfaces, so no edge is looked at.
     const std::vector<std::size_t> one{1, 2, 3, 2, 1, 4, 2, 1, 5};
     CHECK_FALSE(detail::sharpestFold(nodes, {&one}, 2.0 * kPi / 180.0));

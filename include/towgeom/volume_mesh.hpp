@@ -23,7 +23,8 @@ struct VolumeMeshOptions {
     /// 1: linear tetrahedra (4 nodes); 2: quadratic (10 nodes: Gmsh's node in the middle of every
     /// edge, the edges straight, shared by the tetrahedra and the two tows at a region).
     int order = 1;
-    /// Threads for HXT; 0: as many as the machine has. The tetrahedra may differ slightly from
+    /// Threads for HXT (and the surfaces' checks before it); 0: as many as the machine has (so
+    /// the default mesh is made on several threads). The tetrahedra may differ slightly from
     /// call to call (HXT's parallel insertion; within one process also Gmsh's state between
     /// calls); one thread in a fresh process gives the same mesh every time. Volumes and
     /// conformity do not change.

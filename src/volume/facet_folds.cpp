@@ -48,6 +48,7 @@ std::optional<FacetFold> sharpestFold(const std::vector<Point3>& nodes, const st
         for (std::size_t p = i; p < j && length2 > 0.0; ++p)
             for (std::size_t q = p + 1; q < j; ++q) {
                 const Vector3 u = away(wings[p]), v = away(wings[q]);
+                if (!(dot(u, u) > 0.0) || !(dot(v, v) > 0.0)) continue;  // a triangle of no area: no direction to compare
                 const double angle = std::atan2(norm(cross(u, v)), dot(u, v));
                 if (angle < tolerance && (!sharpest || angle < sharpest->angle))
                     sharpest = FacetFold{wings[p].surface, wings[q].surface, 0.5 * (a + b), angle};

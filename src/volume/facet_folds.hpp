@@ -24,7 +24,9 @@ struct FacetFold {
 /// The smallest angle between two triangles on a shared edge, around that edge (0: folded onto
 /// each other, pi: in one plane), among the edges whose two nodes both lie on two or more of
 /// @p surfaces (the edges where surfaces meet: a loop's, a cap's rim); nullopt if none is below
-/// @p tolerance (radians). @p surfaces hold 1-based node indices into @p nodes, three per triangle.
+/// @p tolerance (radians). Triangles of no area (the third node on the edge's line) and edges of
+/// no length are passed over. @p surfaces hold 1-based node indices into @p nodes, three per
+/// triangle.
 std::optional<FacetFold> sharpestFold(const std::vector<Point3>& nodes, const std::vector<const std::vector<std::size_t>*>& surfaces,
                                       double tolerance);
 

@@ -408,6 +408,32 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     for (std::size_t v = 0; v < bounds.size(); ++v)
         if (bounds[v].empty()) throw Error(ErrorCode::Internal, nameOf(volumeTow[v]) + ": a piece of it has no surface");
 
+    {
+        // Surfaces meeting at an angle below HXT's tolerance (tows touching tangentially) stop it
+        // with a message on the terminal: refused here, before Gmsh, naming the tows and the place.
+        std::vector<const std::vector<std::size_t>*> triangles;
+        for (const Surface& s : patches) triangles.push_back(&s.triangles);
+        if (const std::optional<detail::FacetFold> fold = detail::sharpestFold(surfaces.nodes, triangles, kHxtFoldTolerance)) {
+            std::vector<std::size_t> involved;
+            for (std::size_t t : {patchTows[fold->surfaceA][0], patchTows[fold->surfaceA][1], patchTows[fold->surfaceB][0],
+                                  patchTows[fold->surfaceB][1]})
+                if (t != kNoTow && std::find(involved.begin(), involved.end(), t) == involved.end()) involved.push_back(t);
+            std::sort(involved.begin(), involved.end());
+            std::string who;
+            for (std::size_t i = 0; i < involved.size(); ++i)
+                who += (i == 0 ? "" : i + 1 == involved.size() ? " and " : ", ") + nameOf(involved[i]);
+            std::ostringstream text;
+            text.precision(2);
+            text << who << ": two surface triangles on an edge meet at " << fold->angle * kDegree << " degrees near (";
+            text.precision(6);
+            text << fold->at.x << ", " << fold->at.y << ", " << fold->at.z << "), below the " << std::setprecision(2)
+                 << kHxtFoldTolerance * kDegree
+                 << " degrees Gmsh's HXT needs: no tetrahedron fits in that wedge (tows touching tangentially, e.g. pressed "
+                    "flat together; the shrink method leaves a gap)";
+            throw Error(ErrorCode::Unsupported, text.str());
+        }
+    }
+
     VolumeMesh out;
     out.nodes = surfaces.nodes;
     out.surfaceNodes = surfaces.nodes.size();
@@ -418,31 +444,6 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     std::string where = "the tows' volumes";  // for messages
     try {
         GmshSession session(g);
-        {
-            // Surfaces meeting at an angle below HXT's tolerance (tows touching tangentially) stop
-            // it with a message on the terminal: refused here, naming the tows and the place.
-            std::vector<const std::vector<std::size_t>*> triangles;
-            for (const Surface& s : patches) triangles.push_back(&s.triangles);
-            if (const std::optional<detail::FacetFold> fold = detail::sharpestFold(surfaces.nodes, triangles, kHxtFoldTolerance)) {
-                std::vector<std::size_t> involved;
-                for (std::size_t t : {patchTows[fold->surfaceA][0], patchTows[fold->surfaceA][1], patchTows[fold->surfaceB][0],
-                                      patchTows[fold->surfaceB][1]})
-                    if (t != kNoTow && std::find(involved.begin(), involved.end(), t) == involved.end()) involved.push_back(t);
-                std::sort(involved.begin(), involved.end());
-                std::string who;
-                for (std::size_t i = 0; i < involved.size(); ++i)
-                    who += (i == 0 ? "" : i + 1 == involved.size() ? " and " : ", ") + nameOf(involved[i]);
-                std::ostringstream text;
-                text.precision(2);
-                text << who << ": their surfaces meet at " << fold->angle * kDegree << " degrees near (";
-                text.precision(6);
-                text << fold->at.x << ", " << fold->at.y
-                     << ", " << fold->at.z << "), below the " << std::setprecision(2) << kHxtFoldTolerance * kDegree
-                     << " degrees Gmsh's HXT needs between faces on an edge: the tows touch tangentially (e.g. pressed flat "
-                        "together) and no tetrahedron fits in the wedge between them (the shrink method leaves a gap)";
-                throw Error(ErrorCode::Unsupported, text.str());
-            }
-        }
         for (Surface& s : patches) {
             g.call("gmshModelAddDiscreteEntity", api.gmshModelAddDiscreteEntity, 2, s.tag, nullptr, std::size_t(0));
             std::vector<std::size_t> tags;
@@ -516,13 +517,17 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         }
         // HXT on several threads (Gmsh 4.8) may insert one point twice, as two nodes with the
         // same coordinates, each with its own tetrahedra: a crack of zero width. Nodes at the same
-        // point are one node (then every inner face is shared by two tetrahedra again).
+        // point are one node (then every inner face is shared by two tetrahedra again), the first
+        // in Gmsh's order; the others keep Gmsh's order.
         const auto at = [&](std::size_t k) { return std::make_tuple(coords[3 * k], coords[3 * k + 1], coords[3 * k + 2]); };
-        std::stable_sort(added.begin(), added.end(), [&](std::size_t a, std::size_t b) { return at(a) < at(b); });
-        for (std::size_t i = 0; i < added.size(); ++i) {
-            const std::size_t k = added[i];
-            if (i > 0 && at(k) == at(added[i - 1])) {
-                index[tags[k]] = index[tags[added[i - 1]]];
+        std::vector<std::size_t> byPlace = added;
+        std::stable_sort(byPlace.begin(), byPlace.end(), [&](std::size_t a, std::size_t b) { return at(a) < at(b); });
+        std::vector<std::size_t> same(tags.size(), SIZE_MAX);  // by position in tags: the first node at its point
+        for (std::size_t i = 1; i < byPlace.size(); ++i)
+            if (at(byPlace[i]) == at(byPlace[i - 1])) same[byPlace[i]] = same[byPlace[i - 1]] == SIZE_MAX ? byPlace[i - 1] : same[byPlace[i - 1]];
+        for (std::size_t k : added) {
+            if (same[k] != SIZE_MAX) {
+                index[tags[k]] = index[tags[same[k]]];
                 continue;
             }
             index[tags[k]] = out.nodes.size();
