@@ -1,11 +1,16 @@
-# Sanitizer and fuzzer builds. Both apply to every target of the build (library, CLI, tests,
-# benchmarks): include this before any target is made.
+# Sanitizer and fuzzer builds. The sanitizers apply to every target of the build (library, CLI,
+# tests, benchmarks): include this before any target is made.
 #
 #   TOWGEOM_SANITIZE=address,undefined   ASan + UBSan (any -fsanitize= list); every UBSan report
 #                                        halts the program (-fno-sanitize-recover=all). Tests
 #                                        labelled 'skip-sanitize' are not meant for this build.
-#   TOWGEOM_BUILD_FUZZERS=ON             clang only: the library is instrumented for libFuzzer
-#                                        (-fsanitize=fuzzer-no-link) and tests/fuzz is built.
+#   TOWGEOM_BUILD_FUZZERS=ON             clang only: the library's objects are instrumented for
+#                                        libFuzzer (-fsanitize=fuzzer-no-link: coverage counters
+#                                        and comparison hooks, no-ops outside a fuzzer) and
+#                                        tests/fuzz is built. With TOWGEOM_SANITIZE the same build
+#                                        runs the tests under the sanitizers and fuzzes
+#                                        (tests/build_sanitized.sh): the library is compiled once
+#                                        for both.
 #
 # OpenCASCADE, CGAL's compiled parts and the C++ runtime come from Debian and are not
 # instrumented; ASan still sees every allocation they make through malloc/new.
@@ -27,8 +32,11 @@ if(TOWGEOM_SANITIZE)
   add_compile_options(-fsanitize=${TOWGEOM_SANITIZE} -fno-sanitize-recover=all -fno-omit-frame-pointer)
   add_link_options(-fsanitize=${TOWGEOM_SANITIZE} -fno-sanitize-recover=all)
 endif()
+# The instrumentation for libFuzzer, given to the library's objects (src/CMakeLists.txt): the
+# code a fuzzer explores. Tests and benchmarks in the same build are not instrumented.
+set(TOWGEOM_FUZZ_INSTRUMENTATION "")
 if(TOWGEOM_BUILD_FUZZERS)
-  add_compile_options(-fsanitize=fuzzer-no-link)
+  set(TOWGEOM_FUZZ_INSTRUMENTATION -fsanitize=fuzzer-no-link)
 endif()
 
 # Every test runs with these options (ctest reads this file before it starts any test, and the

@@ -1,17 +1,13 @@
 #!/usr/bin/env bash
 # The test suite under AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer:
-# builds build-sanitize/ (Debug at -O1: assertions on, still quick; -g1: line tables for the
-# sanitizers' stack traces without full debug info, which made this build take longer than the
-# Release build and its tests together; reused) and runs every test
-# not labelled skip-sanitize and not listed in tests/sanitizer/not_sanitized.txt (larger variants
-# of tests that do run; the file says why each is there). Sanitizer options come from the build
-# (cmake/towgeomSanitize.cmake).
+# builds build-sanitize/ (tests/build_sanitized.sh: clang, the build the fuzzers use too) and
+# runs every test not labelled skip-sanitize and not listed in tests/sanitizer/not_sanitized.txt
+# (larger variants of tests that do run; the file says why each is there). Sanitizer options
+# come from the build (cmake/towgeomSanitize.cmake).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=$root/build-sanitize
-bash "$root/cmake/build.sh" --dir build-sanitize -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-g1 -O1" \
-  -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE -DTOWGEOM_SANITIZE=address,undefined \
-  -DTOWGEOM_BUILD_TESTS=ON -DTOWGEOM_BUILD_BENCHMARKS=ON -DTOWGEOM_BUILD_DOCS=OFF
+bash "$root/tests/build_sanitized.sh"
 
 # One anchored alternative per listed name, regex characters escaped; a name that matches no
 # test fails the run (a renamed test must not silently come back or drop out of the list).

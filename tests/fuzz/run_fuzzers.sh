@@ -2,13 +2,14 @@
 # Fuzzes every towgeom reader with libFuzzer (clang; ASan + UBSan, assertions on) for SECONDS
 # per target (default 60); the long run is `run_fuzzers.sh 600`.
 #
-# Builds build-fuzz/ (reused) and runs the targets side by side, TOWGEOM_JOBS at a time (default:
+# Builds build-sanitize/ (tests/build_sanitized.sh: clang with ASan, UBSan and the library
+# instrumented for libFuzzer; the sanitized tests run from the same build; reused) and runs the targets side by side, TOWGEOM_JOBS at a time (default:
 # the number of cores). Each target starts from its committed seeds and regression inputs
 # (tests/fuzz/corpus/TARGET, tests/fuzz/regressions/TARGET, read only) and from what earlier runs
-# found (build-fuzz/fuzz/TARGET/corpus). A crash, a leak,
+# found (build-sanitize/fuzz/TARGET/corpus). A crash, a leak,
 # an uncaught exception, an input taking over 10 s or needing over 2 GB fails the run; the input
-# that did it is kept in build-fuzz/fuzz/TARGET/artifacts/ and the log in build-fuzz/fuzz/TARGET.log.
-# Reproduce with: build-fuzz/tests/fuzz/fuzz_TARGET ARTIFACT
+# that did it is kept in build-sanitize/fuzz/TARGET/artifacts/ and the log in build-sanitize/fuzz/TARGET.log.
+# Reproduce with: build-sanitize/tests/fuzz/fuzz_TARGET ARTIFACT
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -17,19 +18,13 @@ parallel=${TOWGEOM_JOBS:-$(nproc 2>/dev/null || echo 2)}
 targets=(stack_reader stack_fit)
 declare -A max_len=([stack_reader]=20000 [stack_fit]=20000)
 
-if ! command -v clang++ >/dev/null; then
-  echo "run_fuzzers: clang++ not found (apt-get install clang libclang-rt-14-dev)" >&2
-  exit 1
-fi
-bash "$root/cmake/build.sh" --dir build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug \
-  "-DCMAKE_CXX_FLAGS_DEBUG=-g1 -O1" -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE -DBUILD_SHARED_LIBS=OFF \
-  -DTOWGEOM_BUILD_FUZZERS=ON -DTOWGEOM_BUILD_TESTS=OFF -DTOWGEOM_BUILD_BENCHMARKS=OFF -DTOWGEOM_BUILD_DOCS=OFF \
-  >/dev/null
+bash "$root/tests/build_sanitized.sh"
+build=$root/build-sanitize
 
 fuzz() {
-  local target=$1 work=$root/build-fuzz/fuzz/$1
+  local target=$1 work=$build/fuzz/$1
   mkdir -p "$work/corpus" "$work/artifacts"
-  "$root/build-fuzz/tests/fuzz/fuzz_$target" "$work/corpus" "$here/corpus/$target" "$here/regressions/$target" \
+  "$build/tests/fuzz/fuzz_$target" "$work/corpus" "$here/corpus/$target" "$here/regressions/$target" \
     -dict="$here/stw.dict" -max_total_time="$seconds" -max_len="${max_len[$target]}" \
     -timeout=10 -rss_limit_mb=2048 -artifact_prefix="$work/artifacts/" -print_final_stats=1 \
     >"$work.log" 2>&1
@@ -44,7 +39,7 @@ done
 failed=0
 for i in "${!targets[@]}"; do
   target=${targets[$i]}
-  log=$root/build-fuzz/fuzz/$target.log
+  log=$build/fuzz/$target.log
   status=0
   wait "${pids[$i]}" || status=$?
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)

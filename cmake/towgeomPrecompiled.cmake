@@ -1,0 +1,29 @@
+# Precompiled headers: the engines' and the standard library's headers most sources include,
+# parsed once per target instead of once per source (CMake's target_precompile_headers).
+# They change no code: a source still includes what it uses, and builds the same without them
+# (-DTOWGEOM_PRECOMPILE_HEADERS=OFF, e.g. to check that its includes are complete).
+option(TOWGEOM_PRECOMPILE_HEADERS "Precompile the engines' common headers for each target" ON)
+
+# The library's sources: CGAL's inexact kernel and 2D polygons, Eigen, nlohmann-json,
+# OpenCASCADE's geometry basics and the standard headers most of them include.
+set(TOWGEOM_PCH_LIBRARY
+  <algorithm> <array> <cmath> <cstddef> <cstdint> <filesystem> <functional> <limits> <map>
+  <memory> <mutex> <optional> <set> <sstream> <string> <utility> <vector>
+  # CGAL before OpenCASCADE: OCCT's macro Handle(Class) would rewrite CGAL::Handle.
+  <CGAL/Exact_predicates_inexact_constructions_kernel.h> <CGAL/Polygon_2_algorithms.h>
+  <Eigen/Dense> <nlohmann/json.hpp>
+  <Standard_Failure.hxx> <Geom_BSplineSurface.hxx> <GeomAdaptor_Surface.hxx> <gp_Pnt.hxx> <gp_Vec.hxx>
+  <TColStd_Array1OfReal.hxx> <TColgp_Array2OfPnt.hxx>)
+
+# The tests' and benchmarks' sources: Catch2's single header (the largest part of each test
+# source's parse), the standard headers and towgeom's public API.
+set(TOWGEOM_PCH_TESTS
+  <algorithm> <array> <cmath> <filesystem> <fstream> <map> <regex> <set> <sstream> <string> <vector>
+  <catch2/catch.hpp> <towgeom/towgeom.hpp>)
+
+# towgeom_precompile(TARGET LIST): TARGET's sources start from the precompiled headers LIST.
+function(towgeom_precompile target)
+  if(TOWGEOM_PRECOMPILE_HEADERS)
+    target_precompile_headers(${target} PRIVATE ${ARGN})
+  endif()
+endfunction()
