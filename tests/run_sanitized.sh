@@ -4,10 +4,17 @@
 # runs every test not labelled skip-sanitize and not listed in tests/sanitizer/not_sanitized.txt
 # (larger variants of tests that do run; the file says why each is there). Sanitizer options
 # come from the build (cmake/towgeomSanitize.cmake).
+#   run_sanitized.sh             builds build-sanitize/ and runs the selection there
+#   run_sanitized.sh --in DIR    runs the same selection in the (built) build directory DIR,
+#                                e.g. the coverage build of tests/sanitizer/measure_coverage.sh
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-build=$root/build-sanitize
-bash "$root/tests/build_sanitized.sh"
+if [[ "${1:-}" == "--in" ]]; then
+  build=$2
+else
+  build=$root/build-sanitize
+  bash "$root/tests/build_sanitized.sh"
+fi
 
 # One anchored alternative per listed name, regex characters escaped; a name that matches no
 # test fails the run (a renamed test must not silently come back or drop out of the list).

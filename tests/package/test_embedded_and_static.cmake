@@ -1,14 +1,19 @@
 # towgeom inside a host's build, then as a static package:
-#  1. examples/embed adds towgeom's source tree with add_subdirectory and builds the consumer
-#     (examples/consumer) against towgeom::towgeom. The host sets no build type and no
-#     BUILD_SHARED_LIBS: towgeom must set neither, build a static library, no tests, no CLI.
+#  1. examples/embed adds towgeom's source tree with add_subdirectory (compiled by EMBED_CXX
+#     when given: clang) and builds the consumer (examples/consumer) against towgeom::towgeom.
+#     The host sets no build type and no BUILD_SHARED_LIBS: towgeom must set neither, build a
+#     static library, no tests, no CLI.
 #  2. The host's build installed (TOWGEOM_INSTALL=ON) gives a static towgeom package; the same
 #     consumer is built against it with find_package(towgeom), which must find OpenCASCADE and
 #     CGAL for the link.
 include("${CMAKE_CURRENT_LIST_DIR}/consumer_common.cmake")
 file(REMOVE_RECURSE "${WORK}")
+set(host_compiler "")
+if(EMBED_CXX)
+  set(host_compiler "-DCMAKE_CXX_COMPILER=${EMBED_CXX}")
+endif()
 run(${CMAKE_COMMAND} -S "${EMBED_SOURCE}" -B "${WORK}/host" -G "${GENERATOR}" "-DTOWGEOM_SOURCE_DIR=${SOURCE_DIR}"
-    -DTOWGEOM_INSTALL=ON -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE)
+    -DTOWGEOM_INSTALL=ON -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE ${host_compiler})
 file(STRINGS "${WORK}/host/CMakeCache.txt" build_type REGEX "^CMAKE_BUILD_TYPE:")
 if(NOT build_type STREQUAL "CMAKE_BUILD_TYPE:STRING=")
   message(FATAL_ERROR "towgeom changed the host's build type: ${build_type}")
