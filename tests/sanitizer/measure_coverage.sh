@@ -23,13 +23,14 @@ unrun=0
 while IFS= read -r source; do
   rel=${source#"$root/src/"}
   objects=$build/src/CMakeFiles/towgeom_objects.dir
-  [[ "$rel" == cli/* ]] && objects=$build/src/CMakeFiles/towgeom_cli.dir
-  summary=$(cd "$(dirname "$objects/$rel")" && gcov -n -o "$(dirname "$objects/$rel")" "$source" 2>/dev/null |
-    awk -v f="$source" '$0 ~ "^File .*"f"'"'"'" {hit=1; next} hit && /^Lines executed:/ {print; exit}')
+  if [[ "$rel" == cli/* ]]; then objects=$build/src/CMakeFiles/towgeom_cli.dir; fi
+  object=$objects/$rel.o
+  summary=$(cd "$(dirname "$object")" && gcov -n -o "$object" "$source" 2>/dev/null |
+    grep -A1 -F "File '$source'" | grep '^Lines executed:' || true)
   percent=$(sed -n 's/^Lines executed:\([0-9.]*\)% of \([0-9]*\)$/\1 \2/p' <<<"$summary")
-  [[ -z "$percent" ]] && percent="0.00 ?"
+  if [[ -z "$percent" ]]; then percent="0.00 ?"; fi
   printf '%7s%% of %5s lines  %s\n' $percent "$rel" >>"$report"
-  [[ "${percent%% *}" == "0.00" ]] && unrun=$((unrun + 1))
+  if [[ "${percent%% *}" == "0.00" ]]; then unrun=$((unrun + 1)); fi
 done < <(find "$root/src" -name '*.cpp' | sort)
 sort -n "$report"
 if ((unrun)); then
