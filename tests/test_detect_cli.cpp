@@ -166,9 +166,10 @@ TEST_CASE("towgeom detect exits 3 naming nested and identical tows, --quiet or n
     const std::string nestedLine =
         "towgeom detect: unresolved tow pair 'outer' and 'inner': tow 'inner' lies inside tow 'outer' (a complete overlap: no "
         "intersection curve) [nested]\n";
+    // Plain blocks, not sections: Catch would run the whole case again per section.
     for (const char* options : {" --quiet", " --quiet --allow-open", ""}) {
-        DYNAMIC_SECTION("nested," << options)
         {
+            INFO("nested," << options);
             const Run r = cli("detect" + outer + inner + options);
             CHECK(r.status == 3);
             CHECK(r.out.find("\"loops\":[]") != std::string::npos);
@@ -178,8 +179,8 @@ TEST_CASE("towgeom detect exits 3 naming nested and identical tows, --quiet or n
             else
                 CHECK(count(r.err, nestedLine) == 1);
         }
-        DYNAMIC_SECTION("identical," << options)
         {
+            INFO("identical," << options);
             const Run r = cli("detect" + outer + twin + options);
             CHECK(r.status == 3);
             CHECK(r.out.find("\"loops\":[]") != std::string::npos);
@@ -211,8 +212,8 @@ TEST_CASE("towgeom detect refuses bad input and usage with exit 2", "[cli][inter
     CHECK(r.err.find("[self_intersecting_section]") != std::string::npos);
     for (const std::string& args : {std::string("detect"), "detect" + twillFiles() + " --threads 0",
                                     "detect" + twillFiles() + " --tolerance -1", "detect" + twillFiles() + " --spacing x"}) {
-        DYNAMIC_SECTION(args)
-        {
+        {  // a block, not a section: Catch would rerun the whole case per section
+            INFO(args);
             const Run u = cli(args);
             CHECK(u.status == 2);
             CHECK(u.out.empty());

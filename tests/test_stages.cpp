@@ -243,9 +243,11 @@ TEST_CASE("connectRegions: a pair whose loop is wrong on one tow is left unresol
 
 TEST_CASE("connectRegions refuses meshes that do not fit the tows, naming the tow or loop", "[stages][connect]")
 {
-    const std::vector<TowSurface> tows = testing::bundledTwill(TOWGEOM_EXAMPLE_DATA);
+    // Fitted, intersected and meshed once for the nine sections (Catch runs this part once per
+    // section; each section copies what it breaks).
+    static const std::vector<TowSurface> tows = testing::bundledTwill(TOWGEOM_EXAMPLE_DATA);
     const ResolveOptions o = atSize(0.3);
-    const ResolveResult meshed = meshTows(tows, intersectTows(tows), o);
+    static const ResolveResult meshed = meshTows(tows, intersectTows(tows), atSize(0.3));
     const auto messageOf = [&](const ResolveResult& bad, const std::vector<TowSurface>& with) {
         try {
             connectRegions(with, bad, o);
@@ -338,9 +340,10 @@ TEST_CASE("mesh-size study: one intersection report meshed at three sizes", "[st
 
 TEST_CASE("intersection report JSON: a report for other tows or a broken file is refused", "[stages][json]")
 {
-    const std::vector<TowSurface> tows = testing::bundledTwill(TOWGEOM_EXAMPLE_DATA);
-    const IntersectionReport found = intersectTows(tows);
-    const std::string json = jsonOf(found, tows);
+    // Once for the four sections.
+    static const std::vector<TowSurface> tows = testing::bundledTwill(TOWGEOM_EXAMPLE_DATA);
+    static const IntersectionReport found = intersectTows(tows);
+    static const std::string json = jsonOf(found, tows);
 
     SECTION("the tows in another order: by name on reading, by name in resolveTextile()")
     {
@@ -410,7 +413,7 @@ struct Recorder : Progress {
 
 TEST_CASE("one Progress for every stage: counted updates, and cancel() stops the stage in hand", "[stages][progress]")
 {
-    const std::vector<TowSurface> tows = testing::bundledTwill(TOWGEOM_EXAMPLE_DATA);
+    static const std::vector<TowSurface> tows = testing::bundledTwill(TOWGEOM_EXAMPLE_DATA);  // once for the three sections
     ResolveOptions o = atSize(0.3);
     o.threads = 2;
 

@@ -123,7 +123,7 @@ TEST_CASE("symmetric on the twill: the largest volume a tow loses is at most 0.6
     REQUIRE(symmetric.mesh.regions.size() == connect.mesh.regions.size());
     REQUIRE(symmetric.mesh.regions.size() == 16);
     checkClosedAndApart(symmetric);
-    double worstConnect = 0.0, worstSymmetric = 0.0, totalSymmetric = 0.0, overlap = 0.0;  // (totalSymmetric = overlap by construction)
+    double worstConnect = 0.0, worstSymmetric = 0.0, totalSymmetric = 0.0, overlap = 0.0;
     for (std::size_t t = 0; t < tows.size(); ++t) {
         worstConnect = std::max(worstConnect, lossOf(connect, t));
         worstSymmetric = std::max(worstSymmetric, lossOf(symmetric, t));
@@ -141,6 +141,8 @@ TEST_CASE("symmetric on the twill: the largest volume a tow loses is at most 0.6
     WARN("twill: largest loss " << worstSymmetric << " (symmetric) vs " << worstConnect << " (connect): ratio "
                                 << worstSymmetric / worstConnect << "; total loss " << totalSymmetric << " vs overlap " << overlap);
     CHECK(worstSymmetric <= 0.6 * worstConnect);
+    // The tows' losses add up to the overlaps the regions removed (README: within 1e-12 of it).
+    CHECK(totalSymmetric == Approx(overlap).epsilon(1e-12));
     // Each tow loses about half of each overlap it has (the twill's crossings are near symmetric).
     for (std::size_t t = 0; t < tows.size(); ++t) {
         INFO("tow " << tows[t].name() << ": lost " << lossOf(symmetric, t) << ", half its overlaps " << halfOfOverlaps[t]);

@@ -1,7 +1,7 @@
 # Runs `towgeom SUBCOMMAND GOOD... INPUT --out WORK/out --quiet` and checks that a bad input is
 # refused properly: exit status 2, one stderr line "towgeom SUBCOMMAND: " naming the file (and
 # line, when LINE > 0) and the error code, nothing on stdout, and no file left in the output
-# directory (GOOD alone would have written one).
+# directory, not even an empty one (GOOD alone would have written one).
 #   SUBCOMMAND  default fit; GOOD  valid inputs given before INPUT, separated by '|'
 if(NOT SUBCOMMAND)
   set(SUBCOMMAND fit)
@@ -36,7 +36,9 @@ string(FIND "${err}" "[${CODE}]" at)
 if(at EQUAL -1)
   message(FATAL_ERROR "stderr does not give the code [${CODE}]: ${err}")
 endif()
-file(GLOB_RECURSE left "${WORK}/*")
+# Directories too (GLOB_RECURSE lists only files by default): an empty WORK/out left behind is
+# output too.
+file(GLOB_RECURSE left LIST_DIRECTORIES true "${WORK}/*")
 if(left)
   message(FATAL_ERROR "output left behind after an input error: ${left}")
 endif()
