@@ -192,7 +192,7 @@ TEST_CASE("a plane reference cuts the surface, points are projected onto it, bot
     }
 }
 
-TEST_CASE("a laminate family: the fixed-angle curve crosses every 0° tow at theta within 0.1 degree", "[placement][laminate]")
+TEST_CASE("a laminate family: the fixed-angle curve crosses every 0° tow at theta within 0.021 (45°) or 0.08 degree (90°)", "[placement][laminate]")
 {
     SECTION("on a cylinder the 45° curve across axial tows is a helix")
     {
@@ -240,7 +240,7 @@ TEST_CASE("a laminate family: the fixed-angle curve crosses every 0° tow at the
                 CHECK(std::abs(c.angle - theta) <= 0.01);
             }
             WARN("laminate family on a saddle, theta " << theta << ": largest difference measured from the points " << worst << " degree");
-            CHECK(worst <= 0.1);
+            CHECK(worst <= (theta == 45.0 ? 0.021 : 0.08));  // README: within 0.0021 (45) and 0.0080 degree (90)
         }
     }
     SECTION("refusals")
