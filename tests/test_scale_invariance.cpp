@@ -93,8 +93,10 @@ void checkIntersectionScales(const std::vector<TowStack>& stacks, std::size_t ex
             CHECK(relative(a.length() / s, b.length()) <= 1e-9);
             CHECK(relative(a.enclosedArea(LoopSide::A) / (s * s), b.enclosedArea(LoopSide::A)) <= 1e-9);
             CHECK(relative(a.enclosedArea(LoopSide::B) / (s * s), b.enclosedArea(LoopSide::B)) <= 1e-9);
-            CHECK(a.maxDistance(LoopSide::A) <= a.tolerance());
-            CHECK(a.maxDistance(LoopSide::B) <= a.tolerance());
+            INFO("scale " << s << ": points off the surfaces by " << a.maxDistance(LoopSide::A) / s << " and "
+                          << a.maxDistance(LoopSide::B) / s << " of the scale");
+            CHECK(a.maxDistance(LoopSide::A) <= 1e-14 * s);
+            CHECK(a.maxDistance(LoopSide::B) <= 1e-14 * s);
             // The curve, evaluated, has the same length as the polyline (chordal tolerance 1e-4).
             CHECK(relative(a.curve().length() / s, b.length()) <= 1e-4);
         }
