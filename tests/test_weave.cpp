@@ -149,6 +149,16 @@ TEST_CASE("flattening leaves the yarns just touching", "[weave][flatten]")
         CHECK(r.gap <= tau);
     }
     CHECK(detectCollisions(t.stacks()).collisions.empty());
+    // Measured independently of the generator's own gap: the faceted yarns of every crossing
+    // (the facets the flattening works on) are apart, by at most tau (CGAL's exact distances of
+    // triangle pairs: vertex-triangle and edge-edge).
+    const std::vector<TowStack> stacks = t.stacks();
+    for (const Crossing& c : t.crossings) {
+        INFO(t.yarns[c.warp].name << " x " << t.yarns[c.weft].name);
+        const double d = testing::minimumDistance(facetedTube(stacks[c.warp], false), facetedTube(stacks[c.weft], false), 10.0 * tau);
+        CHECK(d > 0.0);
+        CHECK(d <= tau);
+    }
 }
 
 TEST_CASE("3D orthogonal weave: layers and binders, all stacks valid", "[weave]")

@@ -8,6 +8,9 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/box_intersection_d.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace towgeom::testing {
@@ -110,6 +113,45 @@ TriangleCrossings crossingTrianglePairs(const std::vector<Point3>& nodes,
     };
     CGAL::box_intersection_d(ba.begin(), ba.end(), bb.begin(), bb.end(), test);
     return r;
+}
+
+double minimumDistance(const TriangleMesh& a, const TriangleMesh& b, double within)
+{
+    using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
+    const auto point = [](const TriangleMesh& m, std::size_t n) {
+        return Kernel::Point_3(m.vertices[n].x, m.vertices[n].y, m.vertices[n].z);
+    };
+    const auto triangle = [&](const TriangleMesh& m, std::size_t k) {
+        const auto& t = m.triangles[k];
+        return Kernel::Triangle_3(point(m, t[0]), point(m, t[1]), point(m, t[2]));
+    };
+    const auto boxes = [&](const TriangleMesh& m) {
+        std::vector<Box> out;
+        for (std::size_t k = 0; k < m.triangles.size(); ++k) {
+            const CGAL::Bbox_3 box = triangle(m, k).bbox();
+            out.emplace_back(CGAL::Bbox_3(box.xmin() - within, box.ymin() - within, box.zmin() - within, box.xmax() + within,
+                                          box.ymax() + within, box.zmax() + within),
+                             k);
+        }
+        return out;
+    };
+    std::vector<Box> ba = boxes(a), bb = boxes(b);
+    double least = std::numeric_limits<double>::infinity();
+    CGAL::box_intersection_d(ba.begin(), ba.end(), bb.begin(), bb.end(), [&](const Box& x, const Box& y) {
+        const Kernel::Triangle_3 s = triangle(a, x.info()), t = triangle(b, y.info());
+        if (CGAL::do_intersect(s, t)) {
+            least = 0.0;
+            return;
+        }
+        for (int i = 0; i < 3; ++i) {
+            least = std::min(least, CGAL::squared_distance(s.vertex(i), t));
+            least = std::min(least, CGAL::squared_distance(t.vertex(i), s));
+            for (int j = 0; j < 3; ++j)
+                least = std::min(least, CGAL::squared_distance(Kernel::Segment_3(s.vertex(i), s.vertex((i + 1) % 3)),
+                                                               Kernel::Segment_3(t.vertex(j), t.vertex((j + 1) % 3))));
+        }
+    });
+    return std::sqrt(least);
 }
 
 double closedMeshVolume(const TriangleMesh& m) { return PMP::volume(closedCgal(m, "volume")); }

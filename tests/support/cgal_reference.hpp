@@ -47,6 +47,13 @@ TriangleCrossings crossingTrianglePairs(const std::vector<Point3>& nodes,
 /// crossingTrianglePairs() summed over every two tows of @p mesh: the crossing pairs.
 std::size_t crossingPairsBetweenTows(const TextileMesh& mesh);
 
+/// The least distance between the triangles of @p a and those of @p b that come within
+/// @p within of each other (boxes grown by it, CGAL::box_intersection_d), +infinity when none
+/// do: for each such pair the least of the six vertex-triangle and nine edge-edge distances
+/// (CGAL::squared_distance, Epick), which is the triangles' distance when they do not
+/// intersect (0 where they do).
+double minimumDistance(const TriangleMesh& a, const TriangleMesh& b, double within);
+
 /// CGAL::Polygon_mesh_processing::volume of a closed triangle mesh (oriented outwards first).
 double closedMeshVolume(const TriangleMesh& m);
 
