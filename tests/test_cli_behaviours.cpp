@@ -4,6 +4,7 @@
 
 #include <towgeom/tow_surface.hpp>
 #include <towgeom/stack_reader.hpp>
+#include <towgeom/textile_io.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -21,6 +22,7 @@
 #include "cgal_reference.hpp"
 #include "cli_runner.hpp"
 #include "occt_reference.hpp"
+#include "synthetic_tows.hpp"
 
 namespace fs = std::filesystem;
 using namespace towgeom;
@@ -266,5 +268,37 @@ TEST_CASE("courses.vtk of towgeom courses is read by VTK: a polyline per centrel
     CHECK(lines == 9);
     CHECK(cells == 9);
     CHECK(largest <= 1e-12);  // the same points (17 significant digits written)
+    fs::remove_all(dir);
+}
+
+TEST_CASE("resolve --volume refused while tows overlap leaves an earlier run's textile_volume files as they were", "[cli][behaviour][volume]")
+{
+    // Nested tows (one inside the other: an unresolved pair) give no tetrahedra: README says the
+    // surfaces are written, exit 3, and textile_volume.* of an earlier run are left as they were.
+    const fs::path dir = scratch("volume_kept");
+    fs::create_directories(dir / "out");
+    testing::Sampling s;
+    s.points = 32;
+    std::string files;
+    for (const TowStack& t : {testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, s, "outer"), testing::tubeAlongX(0.25, 4.0, 0.0, 0.0, 0.0, s, "inner")}) {
+        std::ofstream o(dir / (t.name + ".stw"));
+        writeStack(o, t);
+        files += " '" + (dir / (t.name + ".stw")).string() + "'";
+    }
+    const std::map<std::string, std::string> earlier{{"textile_volume.inp", "*HEADING\nan earlier run\n"},
+                                                     {"textile_volume.vtu", "<VTKFile>an earlier run</VTKFile>\n"},
+                                                     {"textile_volume.msh", "$MeshFormat\nan earlier run\n"}};
+    for (const auto& [name, text] : earlier) std::ofstream(dir / "out" / name) << text;
+    const Run r = cli("resolve" + files + " --volume --formats inp,msh,vtk --quiet --out '" + (dir / "out").string() + "'");
+    INFO(r.err);
+    CHECK(r.status == 3);
+    CHECK(r.err.find("[nested]") != std::string::npos);
+    for (const auto& [name, text] : earlier) {
+        INFO(name);
+        CHECK(testing::slurp(dir / "out" / name) == text);
+    }
+    const nlohmann::json report = jsonFile(dir / "out" / "report.json");
+    CHECK(report["volume_mesh"].contains("refused"));
+    CHECK(fs::exists(dir / "out" / "outer.vtk"));  // the surfaces are written
     fs::remove_all(dir);
 }
