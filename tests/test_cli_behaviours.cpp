@@ -218,7 +218,7 @@ TEST_CASE("towgeom resolve --method shrink --shrink-both: every tow of a pair gi
             if (!both && t["name"].get<std::string>().rfind("warp", 0) == 0) CHECK(change == 0.0);
         }
         CHECK(shrunk == (both ? 8u : 4u));
-        CHECK(lost == Approx(both ? 0.934 : 0.818).margin(0.005));  // README: 0.934 with --shrink-both
+        CHECK(lost == Approx(both ? 0.933 : 0.818).margin(0.005));  // README: 0.933 with --shrink-both, 0.818 without
         // The shrunk tows, fitted again and faceted densely: CGAL finds no curve between any two.
         std::vector<TriangleMesh> faceted;
         for (const auto& e : fs::directory_iterator(o / "shrunk")) {
