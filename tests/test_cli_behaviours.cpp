@@ -1,5 +1,6 @@
 // Behaviour users rely on that no other test covered (issue 37): Ctrl-C, detect --chordal,
-// determinism on one thread, the .msh physical groups, --shrink-both, courses.vtk read by VTK. Each through the command line, as users meet it.
+// determinism on one thread, --shrink-both, courses.vtk read by VTK, an earlier run's volume
+// files kept (the .msh physical groups: test_msh_groups.cpp). Each through the command line, as users meet it.
 #include <catch2/catch.hpp>
 
 #include <towgeom/tow_surface.hpp>
@@ -157,45 +158,6 @@ TEST_CASE("towgeom resolve on one thread is deterministic: the same files twice,
     }
     CHECK(files == 8 * 2 + 3);  // STL and VTK per tow, textile.msh, textile.inp, report.json
     fs::remove_all(dir);
-}
-
-TEST_CASE("textile.msh: a physical group per tow, per region and per tow's caps, that gmsh reads", "[cli][behaviour][msh]")
-{
-    const fs::path out = scratch("msh");
-    const Run r = cli("resolve" + quoted(twillFiles()) + " --formats msh --quiet --out '" + out.string() + "'");
-    REQUIRE(r.status == 0);
-    // $PhysicalNames read here, independently of towgeom: "dim tag "name"" per line.
-    const std::string msh = testing::slurp(out / "textile.msh");
-    const auto begin = msh.find("$PhysicalNames\n"), end = msh.find("$EndPhysicalNames");
-    REQUIRE(begin != std::string::npos);
-    REQUIRE(end != std::string::npos);
-    std::istringstream lines(msh.substr(begin + 15, end - begin - 15));
-    std::size_t count = 0;
-    lines >> count;
-    std::set<std::string> names;
-    std::set<int> tags;
-    for (std::size_t k = 0; k < count; ++k) {
-        int dim = 0, tag = 0;
-        std::string name;
-        lines >> dim >> tag >> name;
-        CHECK(dim == 2);
-        tags.insert(tag);
-        names.insert(name);
-    }
-    CHECK(tags.size() == count);
-    std::set<std::string> expected;
-    const nlohmann::json report = jsonFile(out / "report.json");
-    for (const auto& t : report["tows"]) {
-        expected.insert("\"TOW_" + t["name"].get<std::string>() + "\"");
-        expected.insert("\"CAPS_" + t["name"].get<std::string>() + "\"");
-    }
-    for (std::size_t k = 1; k <= report["regions"].size(); ++k) expected.insert("\"REGION_" + std::to_string(k) + "\"");
-    CHECK(report["regions"].size() == 16);
-    CHECK(names == expected);  // 8 tows, 8 caps, 16 regions
-    const Run check = testing::runShell("gmsh -check '" + (out / "textile.msh").string() + "' 2>&1");
-    CHECK(check.status == 0);
-    CHECK(check.out.find("Error") == std::string::npos);
-    fs::remove_all(out);
 }
 
 TEST_CASE("towgeom resolve --method shrink --shrink-both: every tow of a pair gives way, none overlaps after", "[cli][behaviour][shrink]")
