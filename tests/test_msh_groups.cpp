@@ -1,7 +1,7 @@
 // textile.msh's physical groups as Gmsh itself reads them (issue 37): the gmsh binary reads the
 // file and writes it again as MSH 2.2, where an element is listed once per physical group it
 // belongs to; the triangles of each group there are those report.json and the tows' .vtk files
-// give for it. The names alone are checked in test_cli_behaviours.cpp.
+// give for it; the names in the file are exactly those expected, and gmsh -check reads it.
 #include <catch2/catch.hpp>
 
 #include <nlohmann/json.hpp>
@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -115,9 +116,29 @@ TEST_CASE("textile.msh as gmsh reads it: each tow's, region's and caps' group ho
         }
         regionTriangles += n;
     }
-    // textile.msh itself lists every triangle once: a shared region's triangle is in two tows.
+    // textile.msh itself: its $PhysicalNames exactly a TOW_ and a CAPS_ per tow and REGION_1..16,
+    // surfaces, each its own tag; gmsh -check reads it; every triangle listed once (a shared
+    // region's triangle is in two tows).
     const testing::MshFile written = testing::readMsh((dir / "out" / "textile.msh").string());
     CHECK(written.version == "4.1");
+    std::set<std::string> names, expected;
+    std::size_t notSurfaces = 0;
+    for (const auto& [key, name] : written.names) {
+        notSurfaces += key.first != 2;
+        names.insert(name);
+    }
+    for (const auto& t : report["tows"]) {
+        expected.insert("TOW_" + t["name"].get<std::string>());
+        expected.insert("CAPS_" + t["name"].get<std::string>());
+    }
+    for (std::size_t k = 1; k <= report["regions"].size(); ++k) expected.insert("REGION_" + std::to_string(k));
+    CHECK(notSurfaces == 0);
+    CHECK(written.names.size() == written.declaredNames);  // no (dim, tag) twice
+    CHECK(names.size() == written.declaredNames);          // no name twice
+    CHECK(names == expected);
+    const Run check = testing::runShell("gmsh -check '" + (dir / "out" / "textile.msh").string() + "' 2>&1");
+    CHECK(check.status == 0);
+    CHECK(check.out.find("Error") == std::string::npos);
     CHECK(written.elements.size() == towTriangles - regionTriangles);
     CHECK(byGmsh.nodes.size() == written.nodes.size());
     fs::remove_all(dir);

@@ -27,6 +27,7 @@ struct MshFile {
     };
     std::string version;                                  ///< "4.1" or "2.2"
     std::map<std::pair<int, int>, std::string> names;     ///< (dim, physical tag) -> name, quotes removed
+    std::size_t declaredNames = 0;                        ///< the count in the $PhysicalNames header
     std::map<std::pair<int, int>, std::vector<int>> entityPhysicals;  ///< 4.1: (dim, entity tag) -> physical tags
     std::map<std::size_t, Point3> nodes;                  ///< node tag -> coordinates
     std::vector<Element> elements;                        ///< in file order (2.2: an element once per line)
@@ -89,9 +90,8 @@ inline MshFile readMsh(const std::string& path)
             if (binary != 0) throw std::runtime_error("MSH: binary");
             expect(in, "$EndMeshFormat");
         } else if (section == "$PhysicalNames") {
-            std::size_t n = 0;
-            in >> n;
-            for (std::size_t k = 0; k < n; ++k) {
+            in >> m.declaredNames;
+            for (std::size_t k = 0; k < m.declaredNames; ++k) {
                 int dim = 0, tag = 0;
                 in >> dim >> tag >> std::ws;
                 std::string name;
