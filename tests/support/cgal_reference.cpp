@@ -12,6 +12,8 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace towgeom::testing {
 
@@ -125,24 +127,45 @@ double minimumDistance(const TriangleMesh& a, const TriangleMesh& b, double with
         const auto& t = m.triangles[k];
         return Kernel::Triangle_3(point(m, t[0]), point(m, t[1]), point(m, t[2]));
     };
-    const auto boxes = [&](const TriangleMesh& m) {
+    const auto boundingBox = [&](const TriangleMesh& m) {
+        CGAL::Bbox_3 box;
+        for (std::size_t n = 0; n < m.vertices.size(); ++n) box += point(m, n).bbox();
+        return box;
+    };
+    // Each triangle's box grown by within; only those reaching the other mesh's box so grown
+    // (no other triangle can come within reach).
+    const auto boxes = [&](const TriangleMesh& m, const CGAL::Bbox_3& other) {
+        const CGAL::Bbox_3 reach(other.xmin() - 2.0 * within, other.ymin() - 2.0 * within, other.zmin() - 2.0 * within,
+                                 other.xmax() + 2.0 * within, other.ymax() + 2.0 * within, other.zmax() + 2.0 * within);
         std::vector<Box> out;
         for (std::size_t k = 0; k < m.triangles.size(); ++k) {
             const CGAL::Bbox_3 box = triangle(m, k).bbox();
+            if (!CGAL::do_overlap(box, reach)) continue;
             out.emplace_back(CGAL::Bbox_3(box.xmin() - within, box.ymin() - within, box.zmin() - within, box.xmax() + within,
                                           box.ymax() + within, box.zmax() + within),
                              k);
         }
         return out;
     };
-    std::vector<Box> ba = boxes(a), bb = boxes(b);
-    double least = std::numeric_limits<double>::infinity();
+    std::vector<Box> ba = boxes(a, boundingBox(b)), bb = boxes(b, boundingBox(a));
+    // The candidate pairs, nearest boxes first: a pair whose triangles' boxes lie further apart
+    // than the least distance found cannot be nearer (nor intersect), so the rest is skipped.
+    std::vector<std::pair<double, std::pair<std::size_t, std::size_t>>> pairs;
     CGAL::box_intersection_d(ba.begin(), ba.end(), bb.begin(), bb.end(), [&](const Box& x, const Box& y) {
-        const Kernel::Triangle_3 s = triangle(a, x.info()), t = triangle(b, y.info());
-        if (CGAL::do_intersect(s, t)) {
-            least = 0.0;
-            return;
+        const CGAL::Bbox_3 p = triangle(a, x.info()).bbox(), q = triangle(b, y.info()).bbox();
+        double gap = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            const double g = std::max({0.0, p.min(k) - q.max(k), q.min(k) - p.max(k)});
+            gap += g * g;
         }
+        pairs.push_back({gap, {x.info(), y.info()}});
+    });
+    std::sort(pairs.begin(), pairs.end());
+    double least = std::numeric_limits<double>::infinity();
+    for (const auto& [gap, pair] : pairs) {
+        if (gap >= least) break;
+        const Kernel::Triangle_3 s = triangle(a, pair.first), t = triangle(b, pair.second);
+        if (CGAL::do_intersect(s, t)) return 0.0;
         for (int i = 0; i < 3; ++i) {
             least = std::min(least, CGAL::squared_distance(s.vertex(i), t));
             least = std::min(least, CGAL::squared_distance(t.vertex(i), s));
@@ -150,7 +173,7 @@ double minimumDistance(const TriangleMesh& a, const TriangleMesh& b, double with
                 least = std::min(least, CGAL::squared_distance(Kernel::Segment_3(s.vertex(i), s.vertex((i + 1) % 3)),
                                                                Kernel::Segment_3(t.vertex(j), t.vertex((j + 1) % 3))));
         }
-    });
+    }
     return std::sqrt(least);
 }
 

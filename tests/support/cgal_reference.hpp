@@ -51,7 +51,8 @@ std::size_t crossingPairsBetweenTows(const TextileMesh& mesh);
 /// @p within of each other (boxes grown by it, CGAL::box_intersection_d), +infinity when none
 /// do: for each such pair the least of the six vertex-triangle and nine edge-edge distances
 /// (CGAL::squared_distance, Epick), which is the triangles' distance when they do not
-/// intersect (0 where they do).
+/// intersect (0 where they do). Pairs are taken nearest boxes first and no further once their
+/// boxes lie further apart than the least distance found (they cannot come nearer).
 double minimumDistance(const TriangleMesh& a, const TriangleMesh& b, double within);
 
 /// CGAL::Polygon_mesh_processing::volume of a closed triangle mesh (oriented outwards first).
