@@ -1,7 +1,8 @@
 // trimmedBrep(): the resolved bundled twill as exact solids, checked on the files read back by
 // OpenCASCADE (BRepCheck_Analyzer, BRepGProp, the STEP reader's names, faces shared in the BREP)
-// against the tows' exact volumes, an OCCT boolean of the untrimmed tows, resolve's mesh
-// volumes, and meshed by Gmsh from the STEP file.
+// against the tows' exact volumes, OCCT booleans of the untrimmed tows (solids the test builds
+// itself from the tows' B-spline data, not by trimmedBrep()), resolve's mesh volumes, and meshed
+// by Gmsh from the STEP file.
 #include <catch2/catch.hpp>
 
 #include <towgeom/error.hpp>
@@ -40,15 +41,25 @@ fs::path freshDirectory(const std::string& name)
 
 double relative(double a, double b) { return std::abs(a - b) / std::abs(b); }
 
-/// Writes the references' solids to the BREP file @p path: @p tows as resolved in @p r but
-/// untrimmed and unclipped (no regions, no cell), each its whole exact solid.
-void writeUntrimmed(const std::vector<TowSurface>& tows, const ResolveResult& r, const std::string& path)
+/// Writes the references' solids to the BREP file @p path: @p tows whole (no regions, no cell),
+/// each its exact solid built without trimmedBrep() (testing::writeWholeTowSolids(): OCCT's own
+/// face on the tow's B-spline data, planar caps, sewn). Each must be valid, its surface the tow's
+/// (within 1e-13 of its size at 400 points; measured up to 3.7e-15) and its volume (BRepGProp,
+/// asked for 1e-5: 1e-7 takes 0.2 s a tow) the tow's own (TowSurface::volume(): Gauss quadrature
+/// of the divergence theorem, not OCCT) within 1e-4 (measured up to 1.1e-5), which a solid
+/// inside out or a cap missing would not be.
+void writeUntrimmed(const std::vector<TowSurface>& tows, const std::string& path)
 {
-    ResolveResult whole = r;
-    whole.mesh.regions.clear();
-    whole.mesh.triplePoints.clear();
-    whole.mesh.cell.reset();
-    trimmedBrep(tows, whole).writeBrep(path);
+    const std::vector<testing::WholeTowSolid> whole = testing::writeWholeTowSolids(tows, path);
+    REQUIRE(whole.size() == tows.size());
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        INFO("reference solid of " << tows[t].name() << ": volume " << whole[t].volume << ", off the tow's by "
+                                   << relative(whole[t].volume, tows[t].volume()) << " relative; surface off by "
+                                   << whole[t].surfaceError / tows[t].towSize() << " of the tow's size");
+        CHECK(whole[t].valid);
+        CHECK(whole[t].surfaceError <= 1e-13 * tows[t].towSize());
+        CHECK(relative(whole[t].volume, tows[t].volume()) <= 1e-4);
+    }
 }
 
 /// A cell's box corners as testing::boxCommonVolume() takes them.
@@ -59,10 +70,10 @@ std::array<std::array<double, 3>, 2> cornersOf(const Cell& cell)
 
 /// The exact volumes of testing::crossingTubes() x and y inside @p cell, y less its overlap with x: OCCT
 /// booleans on the untrimmed tubes (written to @p wholeFile).
-std::array<double, 2> exactTubesInCell(const std::vector<TowSurface>& tows, const ResolveResult& r, const Cell& cell,
+std::array<double, 2> exactTubesInCell(const std::vector<TowSurface>& tows, const Cell& cell,
                                        const std::string& wholeFile)
 {
-    writeUntrimmed(tows, r, wholeFile);
+    writeUntrimmed(tows, wholeFile);
     const auto [lo, hi] = cornersOf(cell);
     return {testing::boxCommonVolume(wholeFile, 0, lo, hi),
             testing::boxCommonVolume(wholeFile, 1, lo, hi) - testing::commonVolume(wholeFile, 1, 0)};
@@ -103,7 +114,7 @@ TEST_CASE("trimmed B-rep of the bundled twill: valid named solids, exact volumes
 
     // The untrimmed tows (no regions): each pair's overlap by OCCT's boolean, independent of the loops.
     const std::string wholeFile = (dir / "whole.brep").string();
-    writeUntrimmed(tows, r, wholeFile);
+    writeUntrimmed(tows, wholeFile);
     std::vector<double> exact(tows.size());
     for (std::size_t t = 0; t < tows.size(); ++t) exact[t] = tows[t].volume();
     for (const ConnectedRegion& g : r.mesh.regions) exact[g.secondary] -= testing::commonVolume(wholeFile, g.secondary, g.primary);
@@ -162,7 +173,7 @@ TEST_CASE("trimmed B-rep clipped to a cell: two crossing tubes cut by the box, a
     const fs::path dir = freshDirectory("towgeom_brep_cell_tubes");
     const std::string file = (dir / "cell.brep").string(), wholeFile = (dir / "whole.brep").string();
     brep.writeBrep(file);
-    const auto [exactX, exactY] = exactTubesInCell(tows, r, cell, wholeFile);
+    const auto [exactX, exactY] = exactTubesInCell(tows, cell, wholeFile);
     const double pi = std::acos(-1.0);
     const testing::ReadShapes back = testing::readBrep(file);
     REQUIRE(back.solids.size() == 3);  // x, y and the matrix; "far" has no solid
@@ -243,7 +254,7 @@ TEST_CASE("trimmed B-rep clipped to a cell: a tow's end cap on a face of the box
     const fs::path dir = freshDirectory("towgeom_brep_cell_cap");
     const std::string file = (dir / "cell.brep").string(), wholeFile = (dir / "whole.brep").string();
     brep.writeBrep(file);
-    const auto [exactX, exactY] = exactTubesInCell(tows, r, cell, wholeFile);
+    const auto [exactX, exactY] = exactTubesInCell(tows, cell, wholeFile);
     const BrepSolid& x = brep.solids()[0];
     INFO("x: volume " << x.volume << " (" << exactX << "), area " << x.area << ", cut faces " << x.cellFaces);
     CHECK(x.valid);
@@ -291,7 +302,7 @@ TEST_CASE("trimmed B-rep with a cell face through an overlap: the shared face cu
 
     // References: the untrimmed, unclipped tubes by OCCT booleans: a inside the box, b inside
     // it less its overlap with a there.
-    writeUntrimmed(tows, r, wholeFile);
+    writeUntrimmed(tows, wholeFile);
     const auto [lo, hi] = cornersOf(cell);
     const double exactA = testing::boxCommonVolume(wholeFile, 0, lo, hi);
     const double exactB = testing::boxCommonVolume(wholeFile, 1, lo, hi) - testing::boxCommonVolume(wholeFile, 0, 1, lo, hi);
@@ -361,7 +372,7 @@ TEST_CASE("trimmed B-rep of a periodic twill cell: solids clipped by the box, cu
     // primaries (nothing to subtract); of the wefts one (weft_1) is measured so (each overlap is
     // an OCCT boolean of two tows, seconds each); every solid is also measured on the STEP file.
     const std::string wholeFile = (dir / "whole.brep").string();
-    writeUntrimmed(tows, r, wholeFile);
+    writeUntrimmed(tows, wholeFile);
     const auto [lo, hi] = cornersOf(cell);
     std::vector<double> exact(tows.size(), -1.0);  // -1: not measured
     for (std::size_t t = 0; t < tows.size(); ++t)
@@ -440,9 +451,7 @@ TEST_CASE("trimmed B-rep of a ring-shaped overlap: the island is a face of both 
     const fs::path dir = freshDirectory("towgeom_brep_ring");
     const std::string file = (dir / "ring.brep").string(), whole = (dir / "whole.brep").string();
     brep.writeBrep(file);
-    ResolveResult untrimmed = r;
-    untrimmed.mesh.regions.clear();
-    trimmedBrep(tows, untrimmed).writeBrep(whole);
+    writeUntrimmed(tows, whole);
     const double overlap = testing::commonVolume(whole, 0, 1);
     const testing::ReadShapes back = testing::readBrep(file);
     REQUIRE(back.solids.size() == 2);
@@ -500,7 +509,7 @@ TEST_CASE("trimmed B-rep where three tows meet at a point: each tow minus the to
         CHECK(brep.fusedBecause().find("three tows meet") != std::string::npos);
         const std::string file = (dir / "three.brep").string();
         brep.writeBrep(file);
-        if (!wFirst) writeUntrimmed(tows, r, wholeFile);
+        if (!wFirst) writeUntrimmed(tows, wholeFile);
         const testing::ReadShapes back = testing::readBrep(file);
         REQUIRE(back.solids.size() == 3);
         // The highest-ranked tow keeps its whole volume; the second loses its overlap with it
@@ -544,7 +553,7 @@ TEST_CASE("trimmed B-rep of a tow through another or ending inside it: cut into 
         const fs::path dir = freshDirectory("towgeom_brep_through");
         const std::string file = (dir / "through.brep").string(), wholeFile = (dir / "whole.brep").string();
         brep.writeBrep(file);
-        writeUntrimmed(tows, r, wholeFile);
+        writeUntrimmed(tows, wholeFile);
         const testing::ReadShapes back = testing::readBrep(file);
         // thin through outer leaves two pieces, one on each side; ending inside, one.
         REQUIRE(back.solids.size() == (endsInside ? 2u : 3u));
@@ -633,19 +642,32 @@ TEST_CASE("trimmed B-rep of pressed layers: loops nested three deep, built by th
     const fs::path dir = freshDirectory("towgeom_brep_pressed");
     const std::string file = (dir / "pressed.brep").string(), wholeFile = (dir / "whole.brep").string();
     brep.writeBrep(file);
-    writeUntrimmed(tows, r, wholeFile);
+    writeUntrimmed(tows, wholeFile);
     const testing::ReadShapes back = testing::readBrep(file);
     REQUIRE(back.solids.size() == 2);
     // The warp (given first) keeps its volume; the weft loses the shallow overlap (OCCT's boolean
-    // of the untrimmed tows).
-    const double exact[2] = {tows[0].volume(), tows[1].volume() - testing::commonVolume(wholeFile, 1, 0)};
+    // of the untrimmed tows, built independently).
+    const double overlap = testing::commonVolume(wholeFile, 1, 0);
+    const double exact[2] = {tows[0].volume(), tows[1].volume() - overlap};
     for (std::size_t t = 0; t < 2; ++t) {
         const BrepSolid& s = brep.solids()[t];
         INFO(s.name << ": volume " << s.volume << ", exact " << exact[t] << ", read back " << back.solids[t].volume << ", mesh "
-                    << r.tows[t].volumeAfter << ", faces " << s.faces);
+                    << r.tows[t].volumeAfter << ", faces " << s.faces << ", overlap " << overlap);
         CHECK(s.valid);
         CHECK(back.solids[t].valid);
-        CHECK(relative(s.volume, exact[t]) <= 1e-6);
+        if (t == 0) {
+            CHECK(relative(s.volume, exact[t]) <= 1e-6);
+        } else {
+            // The overlap is a sliver 2.6e-5 of the volume between nearly tangent surfaces, whose
+            // OCCT booleans disagree: the solid read back (its own faces) is the tow less the
+            // independent boolean's overlap within 10 % of that overlap (measured 2.9 %: 1.4e-6 of
+            // the volume); the volume trimmedBrep() reports (the tow's exact volume less the fuse's
+            // lost split, measured on the split) within 30 % of it (measured 17 %: 8.6e-6 of the
+            // volume; against solids from trimmedBrep() itself this was 0). A weft that kept its
+            // overlap would be off by all of it.
+            CHECK(std::abs(back.solids[t].volume - exact[t]) <= 0.1 * overlap);
+            CHECK(std::abs(s.volume - exact[t]) <= 0.3 * overlap);
+        }
         // Read back, the solid's own integral: OpenCASCADE's curves where the surfaces are nearly
         // tangent carry a tolerance (5e-6 here), and a gap that wide between faces moves the
         // integral by up to the tolerance times the area (measured: 3.7e-6 for the weft, 7e-6

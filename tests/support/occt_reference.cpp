@@ -32,7 +32,21 @@
 #include <XCAFDoc_ShapeTool.hxx>
 #include <math.hxx>
 #include <math_Vector.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepLib.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <TopoDS_Compound.hxx>
 
+#include <towgeom/bezier_extraction.hpp>
+
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace towgeom::testing {
@@ -124,6 +138,92 @@ void writeCylinderFace(const std::string& path, double radius, double height, do
     STEPControl_Writer writer;
     if (writer.Transfer(lateral, STEPControl_AsIs) != IFSelect_RetDone || writer.Write(path.c_str()) != IFSelect_RetDone)
         throw std::runtime_error("cannot write STEP " + path);
+}
+
+namespace {
+
+/// A flat knot vector as OCCT's distinct knots and multiplicities.
+void knotsAndMultiplicities(const std::vector<double>& flat, TColStd_Array1OfReal& knots, TColStd_Array1OfInteger& mults)
+{
+    std::vector<double> k;
+    std::vector<int> m;
+    for (const double x : flat)
+        if (!k.empty() && x == k.back())
+            ++m.back();
+        else {
+            k.push_back(x);
+            m.push_back(1);
+        }
+    knots.Resize(1, static_cast<int>(k.size()), false);
+    mults.Resize(1, static_cast<int>(k.size()), false);
+    for (std::size_t i = 0; i < k.size(); ++i) {
+        knots(static_cast<int>(i) + 1) = k[i];
+        mults(static_cast<int>(i) + 1) = m[i];
+    }
+}
+
+}  // namespace
+
+std::vector<WholeTowSolid> writeWholeTowSolids(const std::vector<TowSurface>& tows, const std::string& path)
+{
+    std::vector<WholeTowSolid> out;
+    BRep_Builder b;
+    TopoDS_Compound all;
+    b.MakeCompound(all);
+    for (const TowSurface& tow : tows) {
+        const BezierSurface z = extractBezier(tow);
+        const int p = static_cast<int>(z.uDegree), q = static_cast<int>(z.vDegree);
+        const int nu = static_cast<int>(z.uFunctions), nvPeriod = static_cast<int>(z.vFunctions);
+        const int nv = static_cast<int>(z.vKnots.size()) - q - 1;  // the unrolled functions
+        if (static_cast<int>(z.uKnots.size()) != nu + p + 1 || nv < nvPeriod || z.controlPoints.size() != z.uFunctions * z.vFunctions)
+            throw std::runtime_error("writeWholeTowSolids: tow '" + tow.name() + "': B-spline data of unexpected sizes");
+        TColgp_Array2OfPnt poles(1, nu, 1, nv);
+        for (int i = 0; i < nu; ++i)
+            for (int j = 0; j < nv; ++j) {
+                const Point3& c = z.controlPoints[static_cast<std::size_t>(i * nvPeriod + j % nvPeriod)];
+                poles(i + 1, j + 1) = gp_Pnt(c.x, c.y, c.z);
+            }
+        TColStd_Array1OfReal uk(1, 1), vk(1, 1);
+        TColStd_Array1OfInteger um(1, 1), vm(1, 1);
+        knotsAndMultiplicities(z.uKnots, uk, um);
+        knotsAndMultiplicities(z.vKnots, vk, vm);
+        Handle(Geom_BSplineSurface) s = new Geom_BSplineSurface(poles, uk, vk, um, vm, p, q, Standard_False, Standard_False);
+        // One period in v, clamped at its ends (exact: knot insertion).
+        const double u0 = z.uKnots.front(), u1 = z.uKnots.back();
+        const double v0 = z.vKnots[static_cast<std::size_t>(q)], v1 = z.vKnots[static_cast<std::size_t>(q + nvPeriod)];
+        s->Segment(u0, u1, v0, v1);
+        WholeTowSolid w;
+        for (int i = 0; i <= 19; ++i)
+            for (int j = 0; j < 20; ++j) {
+                const double u = u0 + (u1 - u0) * i / 19.0, v = v0 + (v1 - v0) * (j + 0.5) / 20.0;
+                const Point3 a = tow.point(u, v);
+                w.surfaceError = std::max(w.surfaceError, s->Value(u, v).Distance(gp_Pnt(a.x, a.y, a.z)));
+            }
+        const double tolerance = 1e-7 * tow.towSize();
+        BRepBuilderAPI_Sewing sewing(tolerance);
+        sewing.Add(BRepBuilderAPI_MakeFace(s, u0, u1, v0, v1, tolerance).Face());
+        for (const double u : {u0, u1}) {
+            const TopoDS_Wire rim = BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(s->UIso(u)).Edge()).Wire();
+            BRepBuilderAPI_MakeFace cap(rim, Standard_True);
+            if (!cap.IsDone()) throw std::runtime_error("writeWholeTowSolids: tow '" + tow.name() + "': an end is not planar");
+            sewing.Add(cap.Face());
+        }
+        sewing.Perform();
+        const TopoDS_Shape sewn = sewing.SewedShape();
+        TopExp_Explorer shells(sewn, TopAbs_SHELL);
+        if (!shells.More() || sewing.NbFreeEdges() != 0)
+            throw std::runtime_error("writeWholeTowSolids: tow '" + tow.name() + "': not sewn into one closed shell");
+        TopoDS_Solid solid = BRepBuilderAPI_MakeSolid(TopoDS::Shell(shells.Current())).Solid();
+        BRepLib::OrientClosedSolid(solid);
+        w.valid = BRepCheck_Analyzer(solid).IsValid();
+        GProp_GProps g;
+        BRepGProp::VolumeProperties(solid, g, 1e-5, Standard_True);  // 1e-7 takes 0.2 s a tow
+        w.volume = g.Mass();
+        b.Add(all, solid);
+        out.push_back(w);
+    }
+    if (!BRepTools::Write(all, path.c_str())) throw std::runtime_error("cannot write BREP " + path);
+    return out;
 }
 
 double commonVolume(const std::string& path, std::size_t i, std::size_t j)

@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include <towgeom/tow_surface.hpp>
+
 namespace towgeom::testing {
 
 /// One solid read back.
@@ -36,6 +38,22 @@ ReadShapes readBrep(const std::string& path, bool volumes = true);
 /// @p fromAngle < @p toAngle only the part between those angles (a face on OCCT's cylindrical
 /// surface).
 void writeCylinderFace(const std::string& path, double radius, double height, double fromAngle = 0.0, double toAngle = 0.0);
+
+/// One whole tow as built by writeWholeTowSolids().
+struct WholeTowSolid {
+    bool valid = false;   ///< BRepCheck_Analyzer accepts it
+    double volume = 0.0;  ///< BRepGProp, relative precision 1e-5
+    double surfaceError = 0.0;  ///< largest distance of its surface from TowSurface::point() at 400 (u,v): the data carried over
+};
+
+/// Writes every tow of @p tows whole (untrimmed, unclipped) as one solid to the BREP file @p path,
+/// in order, built without trimmedBrep(): a Geom_BSplineSurface from the tow's B-spline data
+/// (extractBezier(): degrees, knots, control points; periodic in v unrolled, cut to one period by
+/// Geom_BSplineSurface::Segment), its face with its natural bounds, two planar caps on its end
+/// iso-curves (BRepBuilderAPI_MakeFace, planes only), sewn (BRepBuilderAPI_Sewing) and made a
+/// solid oriented outwards (BRepLib::OrientClosedSolid).
+/// @throws std::runtime_error when a step fails (not sewn into one closed shell, a cap not planar).
+std::vector<WholeTowSolid> writeWholeTowSolids(const std::vector<TowSurface>& tows, const std::string& path);
 
 /// The volume of the common part of solids @p i and @p j of the BREP file @p path
 /// (BRepAlgoAPI_Common).
