@@ -1,7 +1,7 @@
 // Collision detection benchmark (issue 5): a 2/2 twill of 4 x 4 yarns with 0.08 overlap,
 // 200 sections x 48 points per yarn. Times the hierarchy (CGAL box intersection + exact tests)
 // on the whole textile and, for a few yarn pairs, the hierarchy against brute force (every
-// triangle pair) on the same pairs, and prints the ratio. Goal: hierarchy >= 10x faster; exits 1
+// triangle pair) on the same pairs, and prints the ratio. Goal: hierarchy >= 10x faster; exits 3
 // when it is missed (bench_goal.hpp; --smoke: the ratio is only required to be measured).
 //   bench_collision [--sections M] [--points N] [--pairs K] [--smoke]
 #include <towgeom/towgeom.hpp>
