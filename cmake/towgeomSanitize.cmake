@@ -1,5 +1,4 @@
-# Sanitizer and fuzzer builds. The sanitizers apply to every target of the build (library, CLI,
-# tests, benchmarks): include this before any target is made.
+# Sanitizer and fuzzer builds: include this before any target is made.
 #
 #   TOWGEOM_SANITIZE=address,undefined   ASan + UBSan (any -fsanitize= list); every UBSan report
 #                                        halts the program (-fno-sanitize-recover=all). Tests
@@ -27,9 +26,17 @@ if(TOWGEOM_BUILD_FUZZERS)
   endif()
 endif()
 
+# TOWGEOM_SANITIZE_OPTIONS: the compile options that instrument code, given to towgeom's own code
+# (src/CMakeLists.txt: the library and the CLI; tests/fuzz: the fuzz harnesses). The tests'
+# and benchmarks' code (Catch2, the CGAL and OCCT oracles, tests/support) is not instrumented:
+# the sanitizers watch the code under test, and the oracles, which run in the Release tests as
+# well, made up much of the sanitized tests' time uninstrumented code avoids. Every program and
+# shared library is linked with the sanitizers' runtime (add_link_options), so the library's
+# checks run whoever calls it.
+set(TOWGEOM_SANITIZE_OPTIONS "")
 if(TOWGEOM_SANITIZE)
-  message(STATUS "towgeom: every target built with -fsanitize=${TOWGEOM_SANITIZE}")
-  add_compile_options(-fsanitize=${TOWGEOM_SANITIZE} -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  message(STATUS "towgeom: library, CLI and fuzz harnesses built with -fsanitize=${TOWGEOM_SANITIZE}")
+  set(TOWGEOM_SANITIZE_OPTIONS -fsanitize=${TOWGEOM_SANITIZE} -fno-sanitize-recover=all -fno-omit-frame-pointer)
   add_link_options(-fsanitize=${TOWGEOM_SANITIZE} -fno-sanitize-recover=all)
 endif()
 # The instrumentation for libFuzzer, given to the library's objects (src/CMakeLists.txt): the

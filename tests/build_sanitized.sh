@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Builds build-sanitize/ (reused): the library, CLI, tests, benchmarks and fuzz targets with clang
-# under AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer, the library's
-# objects also instrumented for libFuzzer. One build serves both tests/run_sanitized.sh and
+# Builds build-sanitize/ (reused) with clang: the library, CLI and fuzz harnesses instrumented
+# for AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer, the library's objects
+# also for libFuzzer; the tests and benchmarks linked with the sanitizers' runtime, their own
+# code not instrumented (cmake/towgeomSanitize.cmake says why). One build serves both tests/run_sanitized.sh and
 # tests/fuzz/run_fuzzers.sh. Debug at -O1 (assertions on, still quick) with -g1 (line tables: the
 # sanitizers' stack traces keep function, file and line, without full debug info).
 set -euo pipefail

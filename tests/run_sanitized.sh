@@ -2,8 +2,9 @@
 # The test suite under AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer:
 # builds build-sanitize/ (tests/build_sanitized.sh: clang, the build the fuzzers use too) and
 # runs every test not labelled skip-sanitize and not listed in tests/sanitizer/not_sanitized.txt
-# (larger variants of tests that do run; the file says why each is there). Sanitizer options
-# come from the build (cmake/towgeomSanitize.cmake).
+# (costly tests whose every line of library code other sanitized tests run, as measured by
+# tests/sanitizer/select_by_coverage.py, which writes the list). Sanitizer options come from the
+# build (cmake/towgeomSanitize.cmake).
 #   run_sanitized.sh             builds build-sanitize/ and runs the selection there
 #   run_sanitized.sh --in DIR    runs the same selection in the (built) build directory DIR,
 #                                e.g. the coverage build of tests/sanitizer/measure_coverage.sh

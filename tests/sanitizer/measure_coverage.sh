@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The measurement behind tests/sanitizer/not_sanitized.txt: which of the library's source files
+# A check of tests/sanitizer/not_sanitized.txt (which select_by_coverage.py writes): which of the library's source files
 # the sanitized selection of tests runs. Builds build-coverage/ (g++ -O1 --coverage; reused),
 # runs exactly the tests tests/run_sanitized.sh runs (same labels, same exclusions), then prints
 # per source file of src/ (library and CLI) the share of its lines executed (gcov) and fails when a file's code
