@@ -20,12 +20,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -190,14 +192,39 @@ int main(int argc, char** argv)
     // intersecting. (Curve counts are no common measure here: the faceted tubes are open at the
     // tows' ends, where towgeom closes its loops across the caps, and CGAL's polylines break
     // wherever pressed flat faces are coplanar.)
+    // A pair only towgeom finds: the fitted surfaces are not the faceted tubes (they bulge between
+    // the traced points and sections, up to a third of the thickness over the binders' bends).
+    // Such a pair must either have faceted tubes that touch (CGAL's least triangle distance within
+    // 1 % of the tows' thickness, 0.2), or the same fitted surfaces, tessellated densely (8 x the
+    // sections by 4 x the points), must intersect in CGAL's surface_intersection.
     const std::set<std::pair<std::string, std::string>> towgeomPairs = loopPairs(loopsJson);
-    std::size_t onlyCgal = 0, onlyTowgeom = 0;
+    std::map<std::string, std::size_t> index;
+    for (std::size_t i = 0; i < stacks.size(); ++i) index[stacks[i].name] = i;
+    const double touching = 0.01 * 0.2;
+    std::size_t onlyCgal = 0, onlyTowgeom = 0, onlyTowgeomApart = 0, onlyTowgeomUnconfirmed = 0;
+    double farthest = 0.0;
     for (const auto& p : cgalPairs) onlyCgal += !towgeomPairs.count(p);
-    for (const auto& p : towgeomPairs) onlyTowgeom += !cgalPairs.count(p);
-    std::printf("intersecting tow pairs: towgeom %zu, CGAL %zu; %zu only CGAL's, %zu only towgeom's\n", towgeomPairs.size(),
-                cgalPairs.size(), onlyCgal, onlyTowgeom);
+    for (const auto& p : towgeomPairs) {
+        if (cgalPairs.count(p)) continue;
+        ++onlyTowgeom;
+        const double d = towgeom::testing::minimumDistance(faceted[index.at(p.first)], faceted[index.at(p.second)], 0.2);
+        farthest = std::max(farthest, d);
+        if (d <= touching) continue;
+        ++onlyTowgeomApart;
+        const auto dense = [&](const std::string& name) {
+            const towgeom::TowStack& s = stacks[index.at(name)];
+            return towgeom::TowSurface::fit(s).tessellate(8 * s.sections.size(), 4 * s.sections.front().size());
+        };
+        const auto q = towgeom::testing::surfaceIntersection(dense(p.first), dense(p.second));
+        if (q.closed + q.open == 0) ++onlyTowgeomUnconfirmed;
+    }
+    std::printf("intersecting tow pairs: towgeom %zu, CGAL %zu; %zu only CGAL's, %zu only towgeom's (%zu of them with faceted "
+                "tubes further apart than %g, the farthest %g; of those, %zu whose densely tessellated fitted surfaces CGAL finds apart)\n",
+                towgeomPairs.size(), cgalPairs.size(), onlyCgal, onlyTowgeom, onlyTowgeomApart, touching, farthest,
+                onlyTowgeomUnconfirmed);
     goals.require("towgeom detect exits 0", WEXITSTATUS(detectStatus) == 0);
-    goals.require("CGAL and towgeom find the same tow pairs intersecting", onlyCgal == 0 && onlyTowgeom == 0 && !cgalPairs.empty());
+    goals.require("every pair CGAL finds intersecting, towgeom finds too", onlyCgal == 0 && !cgalPairs.empty());
+    goals.require("every pair only towgeom finds touches, or intersects densely tessellated", onlyTowgeomUnconfirmed == 0);
     std::printf("%-10s %12s %12s %10s\n", "", "towgeom_s", "cgal_s", "ratio");
     std::printf("%-10s %12.2f %12.2f %9.2fx  (goal >= 2x)\n", "detect", detectWall, cgalWall, cgalWall / detectWall);
     goals.ratioAtLeast("detect vs CGAL", cgalWall / detectWall, 2.0);
