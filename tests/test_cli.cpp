@@ -126,6 +126,9 @@ TEST_CASE("towgeom help texts teach every subcommand", "[cli]")
     for (const char* word : {"--mode", "--tolerance", "--out", "start_shifts", "Exit status", "Example"})
         CHECK(fit.out.find(word) != std::string::npos);
     CHECK(cli("--version").out.find(TOWGEOM_VERSION_STRING) != std::string::npos);
+    const Run exportHelp = cli("export --help");
+    CHECK(exportHelp.status == 0);
+    for (const char* word : {"--step", "--brep", "Exit status"}) CHECK(exportHelp.out.find(word) != std::string::npos);
 }
 
 TEST_CASE("every subcommand takes each option its --help lists and refuses the other commands' options (CLI11)", "[cli]")
@@ -185,7 +188,7 @@ TEST_CASE("usage errors exit 2 with one line on stderr", "[cli]")
 {
     for (const std::string& args : std::vector<std::string>{"fit", "fit --bogus x.stw", "frobnicate", "fit '" + kTube + "' --mode fancy",
                                    "fit '" + kTube + "' --tolerance 1e-3", "fit '" + kTube + "' --mode approximate --tolerance -1",
-                                   "fit '" + kTube + "' '" + kTube + "'"}) {
+                                   "fit '" + kTube + "' '" + kTube + "'", "fit --quiet=1 '" + kTube + "'", "detect --tolerance"}) {
         {  // a block, not a section: Catch would rerun the whole case per section
             INFO(args);
             const Run r = cli(args);

@@ -112,6 +112,18 @@ TEST_CASE("section areas count only the tow's own pass through a section's plane
     }
 }
 
+TEST_CASE("compareMethods refuses no method, or a method asked for twice, before any work", "[report]")
+{
+    testing::Sampling s;
+    s.sections = 9;
+    s.points = 16;
+    const std::vector<TowSurface> two = {TowSurface::fit(testing::tubeAlongX(0.05, 1.0, 0.0, 10.0, 0.0, s, "x")),
+                                         TowSurface::fit(testing::tubeAlongX(0.05, 1.0, 0.5, 10.0, 0.0, s, "y"))};
+    CHECK_THROWS_WITH(compareMethods(two, {}), Catch::Contains("needs at least one method"));
+    CHECK_THROWS_WITH(compareMethods(two, {ResolutionMethod::Connect, ResolutionMethod::Symmetric, ResolutionMethod::Connect}),
+                      Catch::Contains("method 'connect' is asked for twice"));
+}
+
 TEST_CASE("report.html keeps its scripts whatever the tows are called", "[report]")
 {
     std::vector<TowSurface> tows = testing::fittedTwill22();

@@ -216,6 +216,18 @@ TEST_CASE("trimmed B-rep clipped to a cell: two crossing tubes cut by the box, a
     // x-y share the region's face; each shares its own face with the matrix.
     REQUIRE(back.sharedFaces.size() == 3);
     for (const auto& pair : back.sharedFaces) CHECK(pair.second == 1);
+    // The same solids through the library's STEP writer (the CLI's --formats step is another
+    // path): read back by OCCT's STEP reader, the same three solids (STEP keeps a shared face as
+    // two equal faces, one per solid).
+    const std::string stepFile = (dir / "cell.step").string();
+    brep.writeStep(stepFile);
+    const testing::ReadShapes step = testing::readStep(stepFile);
+    REQUIRE(step.solids.size() == 3);
+    CHECK(step.solids[0].valid);
+    CHECK(step.solids[1].valid);
+    CHECK(relative(step.solids[0].volume, exactX) <= 1e-6);
+    CHECK(relative(step.solids[1].volume, exactY) <= 1e-6);
+    CHECK(relative(step.solids[2].volume, cell.volume() - exactX - exactY) <= 1e-6);
     // BrepOptions::matrix false: the tows only.
     BrepOptions noMatrix;
     noMatrix.matrix = false;
@@ -539,6 +551,41 @@ TEST_CASE("trimmed B-rep where three tows meet at a point: each tow minus the to
         // untrimmed tows: the same whichever ranks first).
         CHECK(relative(kept, testing::unionVolume(wholeFile)) <= 1e-6);
     }
+    fs::remove_all(dir);
+}
+
+TEST_CASE("trimmed B-rep of a tow crossed by two others, above and below: two loops on it, apart, each face shared",
+          "[brep]")
+{
+    // x (r 0.5 along x) ranked first; y1 and y2 (r 0.3 along y at x = 2) cross it at its top
+    // (axis z = 0.45) and its bottom (z = -0.45), 0.3 apart: two loops on x whose (u,v) boxes do
+    // not overlap, each region a face shared by x and one y.
+    const std::vector<TowSurface> tows = testing::fitAll(
+        {testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0), testing::tubeAlongY(0.3, 0.45, {}, "y1"), testing::tubeAlongY(0.3, -0.45, {}, "y2")});
+    const ResolveResult r = resolveTextile(tows);
+    REQUIRE(r.unresolved.empty());
+    REQUIRE(r.mesh.regions.size() == 2);
+    const TrimmedBrep brep = trimmedBrep(tows, r);
+    const fs::path dir = freshDirectory("towgeom_brep_two_loops");
+    const std::string file = (dir / "two.brep").string(), wholeFile = (dir / "whole.brep").string();
+    brep.writeBrep(file);
+    writeUntrimmed(tows, wholeFile);
+    const testing::ReadShapes back = testing::readBrep(file);
+    REQUIRE(back.solids.size() == 3);
+    for (std::size_t t = 0; t < 3; ++t) {
+        INFO(tows[t].name() << ": volume " << brep.solids()[t].volume);
+        CHECK(brep.solids()[t].valid);
+        CHECK(back.solids[t].valid);
+        // x keeps its whole volume; each y its own less its overlap with x (OCCT's common of the
+        // untrimmed reference solids).
+        const double expected = t == 0 ? tows[0].volume() : tows[t].volume() - testing::commonVolume(wholeFile, t, 0);
+        CHECK(relative(brep.solids()[t].volume, expected) <= 1e-6);
+        CHECK(relative(back.solids[t].volume, expected) <= 1e-6);
+    }
+    std::set<std::pair<std::size_t, std::size_t>> pairs;
+    for (const auto& [pair, count] : back.sharedFaces) pairs.insert(pair);
+    CHECK(pairs == std::set<std::pair<std::size_t, std::size_t>>{{0, 1}, {0, 2}});
+    CHECK(relative(back.solids[0].volume + back.solids[1].volume + back.solids[2].volume, testing::unionVolume(wholeFile)) <= 1e-6);
     fs::remove_all(dir);
 }
 

@@ -9,7 +9,7 @@ one executed. Then a greedy weighted set cover, the cost of a test being its tim
 sanitizers (from a sanitized run's CTest log; tests missing from it are estimated from their
 coverage-build time): every test cheaper than --keep-below seconds stays, then the test that
 adds the most not yet covered lines per second is taken, until the selection covers every line
-any test covers. The tests left out (each costly, and each line of it run by a test that stays)
+any test covers; last, a costly test whose lines the others cover after all is dropped. The tests left out (each costly, and each line of it run by a test that stays)
 are written to tests/sanitizer/not_sanitized.txt with, for each, its sanitized time and the
 tests that run its lines.
 
@@ -108,9 +108,13 @@ def sanitized_costs(log):
     return costs
 
 
-def measure(build, jobs, cache):
+def measure(build, jobs, cache, keep=None, again=()):
+    """Measures every test, or with @p keep (an earlier measurement) only the tests it lacks and
+    those whose names contain one of @p again; returns all, and writes them to @p cache."""
     tests = tests_of(build)
-    measured = {}
+    names = {name for _, name in tests}
+    measured = {n: m for n, m in (keep or {}).items() if n in names and not any(a in n for a in again)}
+    tests = [(n, name) for n, name in tests if name not in measured]
     with tempfile.TemporaryDirectory(prefix="towgeom-cov-") as scratch, \
             concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
         futures = [pool.submit(run_one, build, n, name, scratch) for n, name in tests]
@@ -138,6 +142,12 @@ def select(measured, costs, keep_below):
                    key=lambda n: (len(lines[n] - covered) / max(cost[n], 0.01), -cost[n]))
         kept.add(best)
         covered |= lines[best]
+    # Then the other way: a costly test whose lines the rest now cover (a greedy pick made
+    # redundant by later ones) goes, the costliest first.
+    for name in sorted((n for n in kept if cost[n] >= keep_below), key=lambda n: -cost[n]):
+        rest = set().union(*(lines[k] for k in kept if k != name))
+        if lines[name] <= rest:
+            kept.remove(name)
     return kept, set(measured) - kept, cost, lines, universe
 
 
@@ -179,12 +189,16 @@ def main():
     parser.add_argument("--costs", required=True, help="LastTest.log of a sanitized CTest run")
     parser.add_argument("--keep-below", type=float, default=5.0, help="seconds sanitized under which a test always stays")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
-    parser.add_argument("--reuse", action="store_true", help="reuse the last measurement (BUILD/coverage_per_test.json)")
+    parser.add_argument("--reuse", action="store_true",
+                        help="reuse the last measurement (BUILD/coverage_per_test.json); measure only tests it lacks")
+    parser.add_argument("--again", action="append", default=[],
+                        help="with --reuse, measure again the tests whose names contain this text (repeatable)")
     parser.add_argument("--out", default=str(ROOT / "tests" / "sanitizer" / "not_sanitized.txt"))
     args = parser.parse_args()
     build = pathlib.Path(args.build)
     cache = build / "coverage_per_test.json"
-    measured = json.loads(cache.read_text()) if args.reuse else measure(build, args.jobs, cache)
+    earlier = json.loads(cache.read_text()) if args.reuse and cache.exists() else None
+    measured = measure(build, args.jobs, cache, earlier, args.again)
     failed = [n for n, m in measured.items() if not m["ok"]]
     if failed:
         print("select_by_coverage: tests failed in the coverage build (their lines still count):\n  " +
