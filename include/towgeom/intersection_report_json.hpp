@@ -21,7 +21,7 @@ TOWGEOM_BEGIN_NAMESPACE
 /// closed (or why not), its point tolerance and its points, each as
 /// `[x, y, z, uA, vA, uB, vB, s]`: the 3D point, its (u,v) on tow A and on tow B, and the arc
 /// length s from the first point. Numbers are written to round-trip exactly: the points, their
-/// (u,v), arc lengths, tolerances, open reasons, the pair findings (touching, nested, contact)
+/// (u,v), arc lengths, tolerances, open reasons, the pair findings (touching, nested, contact, incomplete)
 /// and the counts of the search read back bit for bit, so a report read back gives the same
 /// meshes as the one written. IntersectionLoop::maxDistance() is recomputed from the points
 /// (it may differ in the last bits); timings are written but not read back.

@@ -31,7 +31,8 @@ struct UnresolvedPairEntry {
     /// cap, or the surfaces are tangent), `crosses_cap` (a loop runs across a tow's end cap,
     /// IntersectionLoop::crossesCap(), and the tows are meshed without caps), `winds_around` (a loop goes around a tow without caps, or around
     /// both tows, or a pair's loops around a tow do not cut it into alternating bands), `nested` (one tow inside the other), `identical_or_touching` (surfaces that
-    /// coincide or touch, no curve), `loops_meet`, `mesh_failed` or `region_failed`
+    /// coincide or touch, no curve), `search_incomplete` (the search for loops stopped at its budget,
+    /// PairFinding::Kind::Incomplete: a loop may be missing), `loops_meet`, `mesh_failed` or `region_failed`
     /// (UnresolvedPair::Reason).
     std::string code;
     std::string message;  ///< a sentence saying what was found

@@ -31,7 +31,10 @@ struct PairFinding {
         Nested,    ///< one tow lies inside the other (no surface crossing, full overlap)
         /// closed curves that enclose no area (thinner than 1e-4 of the tow size): the surfaces
         /// touch along a line (pressed tows); no interpenetration to resolve, so no loop
-        Contact
+        Contact,
+        /// the search for loops stopped at its budget of patch pairs (surfaces nearly touching
+        /// over a wide area): a loop may be missing; the pair is reported unresolved
+        Incomplete
     };
     std::size_t towA = 0;  ///< lower tow index
     std::size_t towB = 0;  ///< higher tow index

@@ -39,7 +39,10 @@ prints one JSON object on stdout with one entry per intersection curve:
                 these go to the exact surface-surface intersection
   findings      pairs that meet without an intersection curve: "touching" (surfaces tangent
                 or coincident, e.g. identical tows) or "nested" (one tow inside the other):
-                complete overlaps, unresolved pairs (exit 3, named on stderr)
+                complete overlaps, unresolved pairs (exit 3, named on stderr); "contact"
+                (closed curves enclosing no area: the surfaces touch along a line; not
+                unresolved); "incomplete" (the search for loops stopped at its budget where
+                the surfaces nearly touch over a wide area: a loop may be missing; unresolved)
 
 Options:
   --tolerance T       largest distance of a curve point from either surface, in the input's
@@ -65,7 +68,7 @@ tows end inside each other (cap against cap) or the walk cannot go on.
 Exit status: 0 every curve is closed and no tows overlap without one; 3 a tow pair is
 unresolved: a curve is open (unless --allow-open), or two tows overlap with no curve (one inside
 the other, identical or touching). One stderr line per such pair, also with --quiet:
-  towgeom detect: unresolved tow pair 'a' and 'b': MESSAGE [open_curve|nested|identical_or_touching]
+  towgeom detect: unresolved tow pair 'a' and 'b': MESSAGE [open_curve|nested|identical_or_touching|search_incomplete]
 and the JSON is printed all the same. 2 invalid input or usage (one line on stderr naming file
 and line); 1 internal failure; 130 stopped by Ctrl-C or SIGTERM (nothing printed or written).
 

@@ -77,6 +77,8 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                   (a loop goes around a tow, one passing through the other, with --no-caps;
                   or around both tows), nested (one tow
                   inside the other), identical_or_touching (surfaces coincide or touch, no curve),
+                  search_incomplete (the search for loops stopped at its budget where the
+                  surfaces nearly touch over a wide area: a loop may be missing),
                   loops_meet (a loop of the pair crosses another pair's loop on a tow where no
                   triple point joins them, e.g. the third pair's loop is open, goes around a
                   tow, or the point lies at a seam; or meets it while the third pair has no

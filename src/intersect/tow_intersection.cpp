@@ -17,6 +17,7 @@
 #include "intersect/intersection_loop_data.hpp"
 #include "intersect/loop_tracing.hpp"
 #include "intersect/seed_search.hpp"
+#include "intersect/subdivision_search.hpp"
 #include "intersect/surface_walk.hpp"
 #include "intersect/textile_frame.hpp"
 #include "surface/tow_surface_impl.hpp"
@@ -40,10 +41,19 @@ struct PairResult {
     std::vector<PairFinding> findings;
     std::size_t seeds = 0;
     std::size_t walks = 0;
+    detail::SubdivisionStats subdivision;
 };
 
 /// The mean width, relative to the tow size, below which a closed curve is a line contact.
 constexpr double kContactWidth = 1e-4;
+/// Patch pairs whose normal cones exclude a closed loop are walked from once both patches are
+/// this small (relative to the tow size; about the facets' size around a tow).
+constexpr double kSeedPatchSize = 0.05;
+/// Patch pairs this small (relative to the tow size) are walked from whatever their normals: a
+/// loop under 1e-3 of the tow size long is the smallest the subdivision promises to find.
+constexpr double kSmallestPatch = 2.5e-4;
+/// Patch pairs examined at most per tow pair: past it the search is reported incomplete.
+constexpr std::size_t kSubdivisionBudget = 200000;
 
 PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::vector<detail::SurfaceGrid>& grids,
                               const detail::CandidatePair& c, const IntersectionOptions& o)
@@ -65,26 +75,38 @@ PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::ve
         return std::any_of(proximity.begin(), proximity.end(),
                            [&](const detail::CurveProximity& c) { return c.within(p, within); });
     };
+    // Walks from a start guess unless a curve walked already passes there; true when a curve
+    // passes there now.
+    const auto settle = [&](const detail::Seed& s) {
+        // Cheap pre-check before Newton: the guess lies within a facet's size of the curve it
+        // comes from. The smaller facet is used so that a second loop near the first (a
+        // thin tow through a coarse one) is never skipped, only refined for nothing.
+        if (near(s.guess.point, s.facetSize)) return true;
+        detail::PointOn2 start = s.guess;
+        if (!detail::refineNearest(surfaces, start, tol.point)) return false;
+        if (near(start.point, 2.0 * tol.chordal + tol.closing)) return true;
+        ++result.walks;
+        detail::TracedCurve t = detail::traceCurve(surfaces, walker, start, tol);
+        if (t.points.size() < 2) return false;
+        if (near(t.points[t.points.size() / 2].point, 2.0 * tol.chordal + tol.closing)) return true;
+        curves.push_back(std::move(t));
+        proximity.clear();  // the curves may have moved
+        for (const detail::TracedCurve& c : curves) proximity.emplace_back(c);
+        return true;
+    };
+    // The facets' crossings first (cheap, and they find every deep overlap), then the patch
+    // subdivision, which finds what they miss and mostly meets curves walked already.
     for (const detail::WindowPair& w : c.windows) {
         const std::vector<detail::Seed> seeds = detail::findSeeds(grids[c.a], grids[c.b], w);
         result.seeds += seeds.size();
-        for (const detail::Seed& s : seeds) {
-            // Cheap pre-check before Newton: the guess lies within a facet's size of the curve it
-            // comes from. The smaller facet is used so that a second loop near the first (a
-            // thin tow through a coarse one) is never skipped, only refined for nothing.
-            if (near(s.guess.point, s.facetSize)) continue;
-            detail::PointOn2 start = s.guess;
-            if (!detail::refineNearest(surfaces, start, tol.point)) continue;
-            if (near(start.point, 2.0 * tol.chordal + tol.closing)) continue;
-            ++result.walks;
-            detail::TracedCurve t = detail::traceCurve(surfaces, walker, start, tol);
-            if (t.points.size() < 2) continue;
-            if (near(t.points[t.points.size() / 2].point, 2.0 * tol.chordal + tol.closing)) continue;
-            curves.push_back(std::move(t));
-            proximity.clear();  // the curves may have moved
-            for (const detail::TracedCurve& c : curves) proximity.emplace_back(c);
-        }
+        for (const detail::Seed& s : seeds) settle(s);
     }
+    detail::SubdivisionLimits limits;
+    limits.overlap = tol.point;
+    limits.seedSize = kSeedPatchSize * size;
+    limits.smallest = kSmallestPatch * size;
+    limits.budget = kSubdivisionBudget;
+    result.subdivision = detail::searchPatchPairs(surfaces.a, surfaces.b, c.windows, limits, settle);
     detail::joinOpenCurves(surfaces, curves, tol);
     // Tows are closed solids: curves into a tow's end continue across its cap.
     detail::closeAcrossCaps(a, b, curves, tol);
@@ -156,6 +178,14 @@ PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::ve
         result.findings.push_back({c.a, c.b, PairFinding::Kind::Contact,
                                    std::to_string(slivers) + " closed intersection curve(s) enclose no area (thinner than 1e-4 "
                                    "of the tow size): the surfaces touch along a line there"});
+    // A search stopped at its budget where the surfaces touch or coincide with no curve is said
+    // in the Touching finding below (one finding per pair); with curves, a loop may be missing.
+    const bool touchingOnly = result.loops.empty() && slivers == 0 && result.seeds > 0;
+    if (result.subdivision.exhausted && !touchingOnly)
+        result.findings.push_back({c.a, c.b, PairFinding::Kind::Incomplete,
+                                   "the search for intersection loops between tows '" + a.name() + "' and '" + b.name() +
+                                       "' stopped after " + std::to_string(kSubdivisionBudget) +
+                                       " patch pairs (the surfaces nearly touch over a wide area): a loop may be missing"});
     if (result.loops.empty() && slivers == 0) {
         // No curve: say why, if the tows meet at all (their surfaces touch or coincide: facets
         // cross, yet no transversal curve; or one tow lies inside the other).

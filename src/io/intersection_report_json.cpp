@@ -48,6 +48,7 @@ const char* kindName(PairFinding::Kind k)
     case PairFinding::Kind::Touching: return "touching";
     case PairFinding::Kind::Nested: return "nested";
     case PairFinding::Kind::Contact: return "contact";
+    case PairFinding::Kind::Incomplete: return "incomplete";
     }
     return "touching";
 }
@@ -283,7 +284,8 @@ private:
         if (k == "touching") out.kind = PairFinding::Kind::Touching;
         else if (k == "nested") out.kind = PairFinding::Kind::Nested;
         else if (k == "contact") out.kind = PairFinding::Kind::Contact;
-        else fail(where + ": unknown kind \"" + k + "\" (touching, nested, contact)");
+        else if (k == "incomplete") out.kind = PairFinding::Kind::Incomplete;
+        else fail(where + ": unknown kind \"" + k + "\" (touching, nested, contact, incomplete)");
         out.message = message.get<std::string>();
         return out;
     }

@@ -71,7 +71,10 @@ Json findingsJson(const IntersectionReport& report, const std::vector<TowSurface
 {
     Json findings = Json::array();
     for (const PairFinding& f : report.findings) {
-        const char* kind = f.kind == PairFinding::Kind::Nested ? "nested" : f.kind == PairFinding::Kind::Contact ? "contact" : "touching";
+        const char* kind = f.kind == PairFinding::Kind::Nested       ? "nested"
+                           : f.kind == PairFinding::Kind::Contact    ? "contact"
+                           : f.kind == PairFinding::Kind::Incomplete ? "incomplete"
+                                                                     : "touching";
         findings.push_back({{"tow_a", towName(tows, f.towA)}, {"tow_b", towName(tows, f.towB)}, {"kind", kind}, {"message", f.message}});
     }
     return findings;

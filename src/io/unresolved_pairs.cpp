@@ -16,6 +16,10 @@ void addFindings(const IntersectionReport& report, std::vector<UnresolvedPairEnt
 {
     for (const PairFinding& f : report.findings) {
         if (f.kind == PairFinding::Kind::Contact) continue;  // nothing interpenetrates: not unresolved
+        if (f.kind == PairFinding::Kind::Incomplete) {
+            pairs.push_back({f.towA, f.towB, "search_incomplete", f.message});
+            continue;
+        }
         const bool nested = f.kind == PairFinding::Kind::Nested;
         pairs.push_back({f.towA, f.towB, nested ? "nested" : "identical_or_touching",
                          nested ? f.message + " (a complete overlap: no intersection curve)" : f.message});

@@ -53,6 +53,19 @@ IntersectionPolylines surfaceIntersection(const TriangleMesh& a, const TriangleM
     return r;
 }
 
+std::vector<std::vector<Point3>> surfaceIntersectionCurves(const TriangleMesh& a, const TriangleMesh& b)
+{
+    Mesh ma = toCgal(a), mb = toCgal(b);
+    std::vector<std::vector<Kernel::Point_3>> polylines;
+    CGAL::Polygon_mesh_processing::surface_intersection(ma, mb, std::back_inserter(polylines));
+    std::vector<std::vector<Point3>> out;
+    for (const auto& p : polylines) {
+        out.emplace_back();
+        for (const auto& q : p) out.back().push_back({q.x(), q.y(), q.z()});
+    }
+    return out;
+}
+
 TriangleCrossings crossingTrianglePairs(const std::vector<Point3>& nodes,
                                         const std::vector<std::array<std::size_t, 3>>& a,
                                         const std::vector<std::array<std::size_t, 3>>& b)

@@ -21,6 +21,9 @@ struct IntersectionPolylines {
 /// CGAL::Polygon_mesh_processing::surface_intersection of two triangle meshes.
 IntersectionPolylines surfaceIntersection(const TriangleMesh& a, const TriangleMesh& b);
 
+/// The polylines of surfaceIntersection(): a closed one ends on its first point.
+std::vector<std::vector<Point3>> surfaceIntersectionCurves(const TriangleMesh& a, const TriangleMesh& b);
+
 /// What crossingTrianglePairs() found.
 struct TriangleCrossings {
     std::size_t crossing = 0;         ///< pairs that intersect beyond what they share (see below)
