@@ -34,6 +34,7 @@ int main(int argc, char** argv)
     }
     towgeom::bench::Goals goals(smoke);
     std::printf("towgeom bench_scan_family: %u scan-like textiles from seed %u\n", count, first);
+    std::size_t atEnds = 0, walkStops = 0;  // open curves by reason
     std::size_t tows = 0, loops = 0, open = 0, pairs = 0, considered = 0, matched = 0, withOpen = 0, failedToFit = 0;
     double longestMissed = 0.0, farthest = 0.0, detectSeconds = 0.0, oracleSeconds = 0.0, slowest = 0.0;
     unsigned slowestSeed = 0;
@@ -54,6 +55,12 @@ int main(int argc, char** argv)
         tows += fitted.size();
         loops += report.loops.size();
         open += report.openCount();
+        for (const towgeom::IntersectionLoop& l : report.loops) {
+            if (l.closed()) continue;
+            const auto k = l.openKind();
+            (k == towgeom::IntersectionLoop::OpenKind::ReachesEndOfA || k == towgeom::IntersectionLoop::OpenKind::ReachesEndOfB ? atEnds
+                                                                                                                                : walkStops) += 1;
+        }
         withOpen += report.openCount() > 0;
         pairs += c.pairs;
         considered += c.considered;
@@ -74,7 +81,9 @@ int main(int argc, char** argv)
     std::printf("oracle curves longer than 1e-3 of the tow size: %zu, found by towgeom %zu, longest missed %.3g x tow size\n", considered,
                 matched, longestMissed);
     std::printf("largest distance of a found oracle curve from its loop: %.3g x tow size\n", farthest);
-    std::printf("open curves: %zu in %zu textiles (issue 38: every curve must close across the caps; not yet a check)\n", open, withOpen);
+    std::printf("open curves: %zu in %zu textiles, %zu at a tow's end, %zu where the walk stops (issue 38: every curve must close "
+                "across the caps; not yet a check)\n",
+                open, withOpen, atEnds, walkStops);
     std::printf("              towgeom_s    oracle_s      ratio\n");
     std::printf("detect      %10.3f  %10.3f  %9.1fx   (slowest textile: seed %u, %.3f s)\n", detectSeconds, oracleSeconds,
                 oracleSeconds / detectSeconds, slowestSeed, slowest);
