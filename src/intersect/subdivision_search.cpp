@@ -17,9 +17,9 @@ using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 3, std::size_t, 
 
 using Node = BoundedPatch;
 
-/// The guess of a leaf: the closest pair of control points (near the surface when the patches
-/// are small), at their Greville parameters.
-Seed guessOf(const Node& a, const Node& b)
+/// The leaf of @p a and @p b; its guess is the closest pair of control points (near the surface
+/// when the patches are small), at their Greville parameters.
+Leaf leafOf(const Node& a, const Node& b)
 {
     const BezierPatch &pa = a.patch, &pb = b.patch;
     std::size_t bestA = 0, bestB = 0;
@@ -44,8 +44,8 @@ Seed guessOf(const Node& a, const Node& b)
     param(pa, bestA, s.guess.ua, s.guess.va);
     param(pb, bestB, s.guess.ub, s.guess.vb);
     s.guess.point = 0.5 * (pa.poles[bestA] + pb.poles[bestB]);
-    s.facetSize = std::max(a.bounds.diameter, b.bounds.diameter);
-    return s;
+    s.facetSize = std::min(a.bounds.diameter, b.bounds.diameter);
+    return {s, pa.u0, pa.u1, pa.v0, pa.v1, pb.u0, pb.u1, pb.v0, pb.v1};
 }
 
 /// The direction to halve @p p in: the longer of its control net's mean extents along u and v.
@@ -62,7 +62,7 @@ bool longerAlongU(const BezierPatch& p)
 
 class Search {
 public:
-    Search(const SubdivisionLimits& limits, const std::function<bool(const Seed&)>& settle) : limits_(limits), settle_(settle) {}
+    Search(const SubdivisionLimits& limits, const std::function<bool(const Leaf&)>& settle) : limits_(limits), settle_(settle) {}
 
     void pair(const Node& a, const Node& b)
     {
@@ -76,7 +76,7 @@ public:
         const bool smallest = size <= limits_.smallest;
         if (smallest || (size <= limits_.seedSize && conesApart(a.normals(), b.normals()))) {
             ++stats_.offered;
-            if (settle_(guessOf(a, b))) return;
+            if (settle_(leafOf(a, b))) return;
             if (smallest) {
                 ++stats_.unsettled;
                 return;
@@ -100,7 +100,7 @@ public:
 
 private:
     const SubdivisionLimits& limits_;
-    const std::function<bool(const Seed&)>& settle_;
+    const std::function<bool(const Leaf&)>& settle_;
     SubdivisionStats stats_;
 };
 
@@ -116,7 +116,8 @@ std::vector<Node> patchesIn(const Handle(Geom_BSplineSurface)& s, std::vector<UW
             merged.push_back(w);
     }
     std::vector<Node> nodes;
-    for (const UWindow& w : merged) addBoundedPatches(s, w.uMin, w.uMax, nodes);
+    for (const UWindow& w : merged)
+        if (w.uMax > w.uMin) addBoundedPatches(s, w.uMin, w.uMax, nodes);
     return nodes;
 }
 
@@ -155,7 +156,7 @@ BoundingBox boxOf(const std::vector<Node>& nodes)
 
 SubdivisionStats searchPatchPairs(const Handle(Geom_BSplineSurface)& sa, const Handle(Geom_BSplineSurface)& sb,
                                   const std::vector<WindowPair>& windows, const SubdivisionLimits& limits,
-                                  const std::function<bool(const Seed&)>& settle)
+                                  const std::function<bool(const Leaf&)>& settle)
 {
     std::vector<UWindow> wa, wb;
     for (const WindowPair& w : windows) {

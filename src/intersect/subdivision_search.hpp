@@ -26,6 +26,13 @@ struct SubdivisionLimits {
     std::size_t budget = 0;    ///< patch pairs examined at most
 };
 
+/// A leaf offered as a start guess: the guess, and the two patches' parts of the tows' (u, v).
+struct Leaf {
+    Seed seed;  ///< guess.point between the closest control points; facetSize the smaller patch's size
+    double ua0 = 0.0, ua1 = 0.0, va0 = 0.0, va1 = 0.0;  ///< patch of tow A
+    double ub0 = 0.0, ub1 = 0.0, vb0 = 0.0, vb1 = 0.0;  ///< patch of tow B
+};
+
 /// What the subdivision did.
 struct SubdivisionStats {
     std::size_t examined = 0;   ///< patch pairs tested
@@ -36,11 +43,10 @@ struct SubdivisionStats {
 
 /// Offers start guesses for every intersection branch of the tubes @p a and @p b within the
 /// broad phase's u-windows @p windows (outside them they cannot meet).
-/// @p settle takes a guess (a point on each patch, the closest control points) and returns true
-/// when a curve passes there.
+/// @p settle takes a leaf and returns true when a curve passes through it (both patches).
 SubdivisionStats searchPatchPairs(const Handle(Geom_BSplineSurface)& a, const Handle(Geom_BSplineSurface)& b,
                                   const std::vector<WindowPair>& windows, const SubdivisionLimits& limits,
-                                  const std::function<bool(const Seed&)>& settle);
+                                  const std::function<bool(const Leaf&)>& settle);
 
 }  // namespace detail
 TOWGEOM_END_NAMESPACE

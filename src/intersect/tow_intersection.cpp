@@ -94,6 +94,28 @@ PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::ve
         for (const detail::TracedCurve& c : curves) proximity.emplace_back(c);
         return true;
     };
+    // A leaf of the subdivision is settled only by a curve through it: one found already within
+    // the smaller patch's size of the guess, or one through the point Newton reaches from it if
+    // that lies on both patches (their (u, v) grown by a quarter). A point elsewhere is walked if
+    // it is on no curve yet, and the leaf is halved further all the same.
+    const double periodA = a.parameterRange().vPeriod(), periodB = b.parameterRange().vPeriod();
+    const auto within = [](double x, double lo, double hi, double period) {
+        const double grow = 0.25 * (hi - lo), mid = 0.5 * (lo + hi);
+        if (period > 0.0) x = mid + std::remainder(x - mid, period);
+        return x >= lo - grow && x <= hi + grow;
+    };
+    const auto settleLeaf = [&](const detail::Leaf& leaf) {
+        const detail::Seed& s = leaf.seed;
+        if (near(s.guess.point, s.facetSize)) return true;
+        detail::PointOn2 start = s.guess;
+        if (!detail::refineNearest(surfaces, start, tol.point)) return false;
+        const bool inLeaf = within(start.ua, leaf.ua0, leaf.ua1, 0.0) && within(start.va, leaf.va0, leaf.va1, periodA) &&
+                            within(start.ub, leaf.ub0, leaf.ub1, 0.0) && within(start.vb, leaf.vb0, leaf.vb1, periodB);
+        detail::Seed at = s;
+        at.guess = start;
+        at.facetSize = 0.0;  // refined: on a curve if within its tolerance
+        return settle(at) && inLeaf;
+    };
     // The facets' crossings first (cheap, and they find every deep overlap), then the patch
     // subdivision, which finds what they miss and mostly meets curves walked already.
     for (const detail::WindowPair& w : c.windows) {
@@ -106,7 +128,7 @@ PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::ve
     limits.seedSize = kSeedPatchSize * size;
     limits.smallest = kSmallestPatch * size;
     limits.budget = kSubdivisionBudget;
-    result.subdivision = detail::searchPatchPairs(surfaces.a, surfaces.b, c.windows, limits, settle);
+    result.subdivision = detail::searchPatchPairs(surfaces.a, surfaces.b, c.windows, limits, settleLeaf);
     detail::joinOpenCurves(surfaces, curves, tol);
     // Tows are closed solids: curves into a tow's end continue across its cap.
     detail::closeAcrossCaps(a, b, curves, tol);
@@ -178,8 +200,9 @@ PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::ve
         result.findings.push_back({c.a, c.b, PairFinding::Kind::Contact,
                                    std::to_string(slivers) + " closed intersection curve(s) enclose no area (thinner than 1e-4 "
                                    "of the tow size): the surfaces touch along a line there"});
-    // A search stopped at its budget where the surfaces touch or coincide with no curve is said
-    // in the Touching finding below (one finding per pair); with curves, a loop may be missing.
+    // A search stopped at its budget where the surfaces touch or coincide with no curve (e.g.
+    // identical tows) is the Touching finding below (one finding per pair); otherwise a loop may
+    // be missing.
     const bool touchingOnly = result.loops.empty() && slivers == 0 && result.seeds > 0;
     if (result.subdivision.exhausted && !touchingOnly)
         result.findings.push_back({c.a, c.b, PairFinding::Kind::Incomplete,
@@ -193,6 +216,8 @@ PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::ve
             result.findings.push_back({c.a, c.b, PairFinding::Kind::Touching,
                                        "the surfaces touch or coincide (their facets cross) but do not cross each other "
                                        "along a curve: no interpenetration loop"});
+        else if (result.subdivision.exhausted)
+            ;  // Incomplete above: the surfaces meet closely, not one inside the other
         else if (detail::pointOfInsideOther(b, a))
             result.findings.push_back({c.a, c.b, PairFinding::Kind::Nested, "tow '" + b.name() + "' lies inside tow '" + a.name() + "'"});
         else if (detail::pointOfInsideOther(a, b))
