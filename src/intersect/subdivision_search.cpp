@@ -48,7 +48,8 @@ Leaf leafOf(const Node& a, const Node& b)
     return {s, pa.u0, pa.u1, pa.v0, pa.v1, pb.u0, pb.u1, pb.v0, pb.v1};
 }
 
-/// The direction to halve @p p in: the longer of its control net's mean extents along u and v.
+/// The direction to halve @p p in: the longer of its control polygons' mean lengths along u (over
+/// its degreeV + 1 rows) and along v (over its degreeU + 1 columns).
 bool longerAlongU(const BezierPatch& p)
 {
     double lu = 0.0, lv = 0.0;
@@ -57,7 +58,7 @@ bool longerAlongU(const BezierPatch& p)
             if (i < p.degreeU) lu += distance(p.pole(i + 1, j), p.pole(i, j));
             if (j < p.degreeV) lv += distance(p.pole(i, j + 1), p.pole(i, j));
         }
-    return lu / std::max(1, p.degreeU * (p.degreeV + 1)) * p.degreeU >= lv / std::max(1, p.degreeV * (p.degreeU + 1)) * p.degreeV;
+    return lu / (p.degreeV + 1) >= lv / (p.degreeU + 1);
 }
 
 class Search {
