@@ -8,6 +8,7 @@
 #include <cmath>
 #include <sstream>
 #include <map>
+#include <random>
 
 #include "analytic_reference.hpp"
 #include "cgal_reference.hpp"
@@ -316,6 +317,85 @@ TEST_CASE("a tow that ends inside another: its curve closes across the tow's end
     const IntersectionLoop back = readIntersectionReport(json, {x, y}).loops.front();
     CHECK(back.closed());
     CHECK(back.points().size() == l.points().size());
+}
+
+TEST_CASE("two tows ending inside each other: the curve closes across both caps, its length in closed form", "[intersection][caps]")
+{
+    // In a frame of its own (turned and moved at random): tow A along +x ending at x = a, tow B
+    // along +y ending at y = b, both round of radius r about the axes z = 0 (a, b in (-r, 0)).
+    // With m = min(a, b), M = max(a, b), the curve is one loop: the bicylinder's arc in the
+    // plane x = y where x = y <= m (x = -r cos t, z = r sin t, |t| <= acos(-m / r), length
+    // r * integral of sqrt(1 + sin^2 t)), two lines of length M - m on the cap at m (at z = +-h,
+    // h = sqrt(r^2 - m^2)), and the segment x = a, y = b, |z| <= h where both caps meet.
+    std::mt19937 rng(38);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int trial = 0; trial < 12; ++trial) {
+        const double r = 0.2 + 2.0 * unit(rng);
+        double a = -r * (0.1 + 0.8 * unit(rng)), b = -r * (0.1 + 0.8 * unit(rng));
+        if (std::abs(a - b) < 0.1 * r) b = a > -0.5 * r ? a - 0.2 * r : a + 0.2 * r;
+        // A random rotation (a unit quaternion) and shift.
+        double q[4];
+        double norm = 0.0;
+        for (double& c : q) {
+            c = unit(rng) - 0.5;
+            norm += c * c;
+        }
+        for (double& c : q) c /= std::sqrt(norm);
+        const double w = q[0], x = q[1], y = q[2], z = q[3];
+        const double R[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
+                                {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
+                                {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}};
+        const Point3 shift{10.0 * unit(rng), -5.0 * unit(rng), 3.0 * unit(rng)};
+        const auto place = [&](const Point3& p) {
+            return Point3{shift.x + R[0][0] * p.x + R[0][1] * p.y + R[0][2] * p.z, shift.y + R[1][0] * p.x + R[1][1] * p.y + R[1][2] * p.z,
+                          shift.z + R[2][0] * p.x + R[2][1] * p.y + R[2][2] * p.z};
+        };
+        const auto local = [&](const Point3& p) {
+            const Point3 d{p.x - shift.x, p.y - shift.y, p.z - shift.z};
+            return Point3{R[0][0] * d.x + R[1][0] * d.y + R[2][0] * d.z, R[0][1] * d.x + R[1][1] * d.y + R[2][1] * d.z,
+                          R[0][2] * d.x + R[1][2] * d.y + R[2][2] * d.z};
+        };
+        const double length = 4.0 * r;
+        TowStack ta = testing::ellipticalTube(r, r, length, sampling(6.28 * unit(rng)), "a");
+        TowStack tb = testing::ellipticalTube(r, r, length, sampling(6.28 * unit(rng)), "b");
+        for (auto& section : ta.sections)
+            for (Point3& p : section) p = place({p.x + a - length, p.y, p.z});
+        for (auto& section : tb.sections)
+            for (Point3& p : section) p = place({-p.y, p.x + b - length, p.z});  // turned a quarter about z
+        const TowSurface sa = TowSurface::fit(ta), sb = TowSurface::fit(tb);
+        const std::vector<IntersectionLoop> loops = intersectPair(sa, sb);
+        INFO("trial " << trial << ": r = " << r << ", a = " << a << ", b = " << b);
+        REQUIRE(loops.size() == 1);
+        const IntersectionLoop& l = loops.front();
+        CHECK(l.closed());
+        const double m = std::min(a, b), M = std::max(a, b), h = std::sqrt(r * r - m * m);
+        const double t0 = std::acos(-m / r);
+        double arc = 0.0;
+        const int n = 20000;
+        for (int i = 0; i < n; ++i) {
+            const double t = -t0 + 2.0 * t0 * (i + 0.5) / n;
+            arc += r * std::sqrt(1.0 + std::sin(t) * std::sin(t)) * (2.0 * t0 / n);
+        }
+        CHECK(l.length() == Approx(arc + 2.0 * (M - m) + 2.0 * h).epsilon(kPolylineLengthTolerance));
+        // The points on both caps lie on the line x = a, y = b, and span it.
+        const double uEndA = sa.parameterRange().uMax, uEndB = sb.parameterRange().uMax;
+        double zLow = 0.0, zHigh = 0.0;
+        std::size_t onBoth = 0;
+        for (const LoopPoint& p : l.resample(0.01 * r)) {
+            if (p.onA.u < uEndA || p.onB.u < uEndB) continue;
+            ++onBoth;
+            const Point3 o = local(p.point);
+            CHECK(o.x == Approx(a).margin(1e-7 * r));
+            CHECK(o.y == Approx(b).margin(1e-7 * r));
+            zLow = std::min(zLow, o.z);
+            zHigh = std::max(zHigh, o.z);
+        }
+        CHECK(static_cast<double>(onBoth) >= 190.0 * h / r);  // spaced 0.01 r over 2 h
+        CHECK(zLow == Approx(-h).margin(0.011 * r));
+        CHECK(zHigh == Approx(h).margin(0.011 * r));
+        CHECK(l.maxDistance(LoopSide::A) <= l.tolerance());
+        CHECK(l.maxDistance(LoopSide::B) <= l.tolerance());
+    }
 }
 
 TEST_CASE("resampled loop points are exact and evenly spaced", "[intersection]")

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "intersect/cap_cap_segment.hpp"
 #include "intersect/intersection_loop_data.hpp"
 #include "surface/occt_convert.hpp"
 #include "surface/tow_surface_impl.hpp"
@@ -42,27 +43,191 @@ bool reaches(const BoundingBox& b, const CapChart& cap, double r)
            c.z - r <= b.max.z;
 }
 
-/// The point where the chord from @p in (on the cap) to @p out (past its rim) crosses the rim,
-/// refined onto both tows. False if Newton's method fails.
-bool rimCrossing(const SurfacePair& closed, LoopSide side, const CapChart& cap, const PointOn2& in, const PointOn2& out,
-                 double tolerance, PointOn2& at)
+/// One line of the section of a cap's plane by the other tow, as OCCT gives it: in space and in
+/// the other tow's (u,v).
+struct SectionLine {
+    Handle(Geom_Curve) curve;
+    Handle(Geom2d_Curve) onOther;
+    double first = 0.0, last = 1.0;  ///< its parameter range
+    /// The parameter of the point @p t, which may run past the last one on a closed line.
+    double at(double t) const { return t > last ? t - (last - first) : t; }
+};
+
+/// What the points of one cap's section are computed against.
+struct CapSection {
+    const SurfacePair& closed;  ///< the two closed tows
+    const GeomAdaptor_Surface& ownTube;
+    const CapChart& cap;
+    LoopSide side;  ///< the side of the cap's tow
+    ParameterRange other;  ///< the other tow's (u,v) range
+    double tolerance = 0.0;
+};
+
+/// The point at @p t of @p line with its parameters: its own cap chart's (v next to @p vOwn) and
+/// the other tow's (v unwrapped next to @p vOther unless that is NaN). False where the chart has
+/// none (the cap's centre).
+bool sectionPoint(const CapSection& s, const SectionLine& line, double t, double vOwn, double vOther, PointOn2& x)
 {
-    const double a = ownU(in, side), b = ownU(out, side);
-    const double t = b != a ? std::clamp((cap.uRim - a) / (b - a), 0.0, 1.0) : 0.5;
-    PointOn2 x;
-    x.ua = in.ua + t * (out.ua - in.ua);
-    x.va = in.va + t * (out.va - in.va);
-    x.ub = in.ub + t * (out.ub - in.ub);
-    x.vb = in.vb + t * (out.vb - in.vb);
-    ownU(x, side) = cap.uRim;
-    x.point = in.point + t * (out.point - in.point);
+    const gp_Pnt p = line.curve->Value(line.at(t));
+    const gp_Pnt2d q = line.onOther->Value(line.at(t));
+    double u = 0.0, v = 0.0;
+    if (!capParameters(s.ownTube, s.cap, p, vOwn, u, v)) return false;
+    const double period = s.other.vPeriod();
+    ownU(x, s.side) = u;
+    ownV(x, s.side) = v;
+    otherU(x, s.side) = q.X();
+    otherV(x, s.side) = std::isnan(vOther) ? q.Y() : q.Y() + period * std::round((vOther - q.Y()) / period);
+    x.point = fromOcct(p);
+    return true;
+}
+
+/// Refines a point of the section on the cap onto both tows; where the section ends at the
+/// other tow's own end, exactly onto its rim (there the curve goes on across both caps,
+/// cap_cap_segment.hpp).
+bool refineOnCap(const CapSection& s, PointOn2& x)
+{
+    const double eps = 1e-6 * (s.other.uMax - s.other.uMin);
+    const double u = otherU(x, s.side);
+    if (u > s.other.uMin + eps && u < s.other.uMax - eps) return refineNearest(s.closed, x, s.tolerance);
     PointCondition c;
-    c.kind = side == LoopSide::A ? PointCondition::Kind::FixUA : PointCondition::Kind::FixUB;
-    c.value = cap.uRim;
-    if (!refineOnIntersection(closed, x, c, tolerance)) return false;
-    ownU(x, side) = cap.uRim;  // exactly on the rim
+    c.kind = s.side == LoopSide::A ? PointCondition::Kind::FixUB : PointCondition::Kind::FixUA;
+    c.value = u <= s.other.uMin + eps ? s.other.uMin : s.other.uMax;
+    otherU(x, s.side) = c.value;
+    if (!refineOnIntersection(s.closed, x, c, s.tolerance)) return false;
+    otherU(x, s.side) = c.value;
+    return true;
+}
+
+/// Where @p line crosses the cap's rim between @p tIn (on the cap) and @p tOut (beyond it):
+/// bisection on the line, then Newton with u exactly the rim's. @p near is a point of the
+/// section next to it. False if Newton's method fails.
+bool rimPoint(const CapSection& s, const SectionLine& line, double tIn, double tOut, const PointOn2& near, PointOn2& at)
+{
+    const double vOwn = s.side == LoopSide::A ? near.va : near.vb;
+    const double vOther = s.side == LoopSide::A ? near.vb : near.va;
+    for (int it = 0; it < 60 && std::abs(tOut - tIn) > 1e-13 * (line.last - line.first); ++it) {
+        const double mid = 0.5 * (tIn + tOut);
+        double u = 0.0, v = 0.0;
+        if (!capParameters(s.ownTube, s.cap, line.curve->Value(line.at(mid)), vOwn, u, v)) break;
+        (s.cap.contains(u) ? tIn : tOut) = mid;
+    }
+    PointOn2 x;
+    if (!sectionPoint(s, line, 0.5 * (tIn + tOut), vOwn, vOther, x)) return false;
+    PointCondition c;
+    c.kind = s.side == LoopSide::A ? PointCondition::Kind::FixUA : PointCondition::Kind::FixUB;
+    c.value = s.cap.uRim;
+    ownU(x, s.side) = c.value;
+    if (!refineOnIntersection(s.closed, x, c, s.tolerance)) return false;
+    ownU(x, s.side) = c.value;  // exactly on the rim
     at = x;
     return true;
+}
+
+/// An end of a section line on the other tow's seam (OCCT splits the lines there): exactly on
+/// the seam, so that it meets the next line's end.
+void snapToSeam(const CapSection& s, PointOn2& end)
+{
+    const double period = s.other.vPeriod();
+    const double r = (otherV(end, s.side) - s.other.vMin) / period;
+    if (std::abs(r - std::round(r)) > 1e-6) return;
+    PointOn2 x = end;
+    PointCondition c;
+    c.kind = s.side == LoopSide::A ? PointCondition::Kind::FixVB : PointCondition::Kind::FixVA;
+    c.value = s.other.vMin + period * std::round(r);
+    otherV(x, s.side) = c.value;
+    if (refineOnIntersection(s.closed, x, c, s.tolerance)) end = x;
+}
+
+/// One sample of a section line.
+struct SectionSample {
+    double t = 0.0;
+    bool in = false;       ///< on the cap (within its rim)
+    bool refined = false;  ///< x is on both tows
+    PointOn2 x;
+};
+
+/// The runs of @p line on the cap: each from rim to rim, or closed (the line lies on the cap
+/// whole), or ending where the line does (at the other tow's end or seam).
+void runsOnCap(const CapSection& s, const SectionLine& line, double step, std::vector<TracedCurve>& runs)
+{
+    const int n = std::clamp(static_cast<int>((line.last - line.first) / step), 64, 4000);
+    std::vector<SectionSample> samples;
+    double vOwn = s.cap.v.front(), vOther = std::nan("");
+    for (int k = 0; k <= n; ++k) {
+        SectionSample sample;
+        sample.t = line.first + (line.last - line.first) * k / n;
+        if (!sectionPoint(s, line, sample.t, vOwn, vOther, sample.x)) continue;
+        sample.in = s.cap.contains(ownU(sample.x, s.side));
+        sample.refined = sample.in && refineOnCap(s, sample.x);
+        vOwn = ownV(sample.x, s.side);
+        vOther = otherV(sample.x, s.side);
+        samples.push_back(sample);
+    }
+    if (samples.size() < 2) return;
+    // The other tow's rim lying in the cap's plane (both tows end in one plane, caps face to
+    // face): a contact of the caps, not a curve across them.
+    const double eps = 1e-6 * (s.other.uMax - s.other.uMin);
+    const auto atOtherEnd = [&](const SectionSample& x) {
+        const double u = s.side == LoopSide::A ? x.x.ub : x.x.ua;
+        return u <= s.other.uMin + eps || u >= s.other.uMax - eps;
+    };
+    if (std::all_of(samples.begin(), samples.end(), [&](const SectionSample& x) { return !x.in || atOtherEnd(x); })) return;
+    const double gap = line.curve->Value(line.first).Distance(line.curve->Value(line.last));
+    const bool closedLine = gap <= 1e-5 * s.cap.radius + 10.0 * s.tolerance;
+    if (closedLine) samples.pop_back();  // the first again
+    const std::size_t m = samples.size();
+    const char* const reason = s.side == LoopSide::A ? open_reason::kEndOfB : open_reason::kEndOfA;
+    const auto firstOut = std::find_if(samples.begin(), samples.end(), [](const SectionSample& x) { return !x.in; });
+    if (firstOut == samples.end()) {
+        TracedCurve c;
+        for (const SectionSample& x : samples)
+            if (x.refined) c.points.push_back(x.x);
+        if (c.points.size() < 3) return;
+        c.closed = closedLine;
+        if (!c.closed) {
+            c.openReason = reason;
+            snapToSeam(s, c.points.front());
+            snapToSeam(s, c.points.back());
+        }
+        runs.push_back(std::move(c));
+        return;
+    }
+    // From an outside sample on when the line is closed (then once around, its parameter
+    // unwrapped past the last); from the line's start when not.
+    const std::size_t start = closedLine ? static_cast<std::size_t>(firstOut - samples.begin()) : 0;
+    const std::size_t count = closedLine ? m + 1 : m;
+    TracedCurve run;
+    bool active = false, fromRim = false;
+    const auto finish = [&](const char* why) {
+        run.openReason = why;
+        if (!fromRim && !run.points.empty()) snapToSeam(s, run.points.front());
+        if (run.points.size() >= 2) runs.push_back(std::move(run));
+        run = TracedCurve{};
+        active = false;
+    };
+    SectionSample previous;
+    for (std::size_t i = 0; i < count; ++i) {
+        SectionSample sample = samples[(start + i) % m];
+        if (start + i >= m) sample.t += line.last - line.first;  // once around
+        if (sample.in && !active) {
+            PointOn2 r;
+            active = true;
+            fromRim = i > 0 && rimPoint(s, line, sample.t, previous.t, sample.x, r);
+            if (fromRim) run.points.push_back(r);
+        }
+        if (sample.in && sample.refined) run.points.push_back(sample.x);
+        if (!sample.in && active) {
+            PointOn2 r;
+            const bool rim = rimPoint(s, line, previous.t, sample.t, previous.x, r);
+            if (rim) run.points.push_back(r);
+            finish(rim ? reason : open_reason::kWalkStops);  // kWalkStops: the rim point not found
+        }
+        previous = sample;
+    }
+    if (active) {  // the line ends on the cap
+        if (!run.points.empty()) snapToSeam(s, run.points.back());
+        finish(reason);
+    }
 }
 
 /// The pieces of @p other's section by the plane of @p own's cap that lie on the cap: each runs
@@ -79,106 +244,22 @@ std::vector<TracedCurve> capRuns(const SurfacePair& closed, const TowSurface& ow
     Handle(Geom_RectangularTrimmedSurface) patch = new Geom_RectangularTrimmedSurface(plane, -half, half, -half, half);
     GeomInt_IntSS inter(patch, other.impl().surface, std::max(tol.point, 1e-6 * radius), Standard_True, Standard_False, Standard_True);
     if (!inter.IsDone()) return {};
-    const double otherPeriod = other.parameterRange().vPeriod();
-    const double otherMin = other.parameterRange().uMin, otherMax = other.parameterRange().uMax;
-    const double otherEps = 1e-6 * (otherMax - otherMin);
+    const CapSection section{closed, ownTube, cap, side, other.parameterRange(), tol.point};
     std::vector<TracedCurve> runs;
     for (int i = 1; i <= inter.NbLines(); ++i) {
         if (!inter.HasLineOnS2(i)) continue;
-        const Handle(Geom_Curve)& curve = inter.Line(i);
-        const Handle(Geom2d_Curve)& onOther = inter.LineOnS2(i);
-        const double f = curve->FirstParameter(), l = curve->LastParameter();
-        if (!(l > f) || !std::isfinite(f) || !std::isfinite(l)) continue;
+        SectionLine line{inter.Line(i), inter.LineOnS2(i)};
+        line.first = line.curve->FirstParameter();
+        line.last = line.curve->LastParameter();
+        if (!(line.last > line.first) || !std::isfinite(line.first) || !std::isfinite(line.last)) continue;
         double length = 0.0;
-        for (int k = 1; k <= 32; ++k) length += curve->Value(f + (l - f) * k / 32).Distance(curve->Value(f + (l - f) * (k - 1) / 32));
-        const int n = std::clamp(static_cast<int>(length / (0.01 * radius)), 64, 4000);
-        std::vector<PointOn2> pts;
-        std::vector<char> in;
-        double vOwn = cap.v.front(), vOther = std::nan("");
-        for (int k = 0; k <= n; ++k) {
-            const double t = f + (l - f) * k / n;
-            const gp_Pnt p = curve->Value(t);
-            const gp_Pnt2d q = onOther->Value(t);
-            PointOn2 x;
-            double u = 0.0, v = 0.0;
-            if (!capParameters(ownTube, cap, p, vOwn, u, v)) continue;
-            ownU(x, side) = u;
-            ownV(x, side) = v;
-            otherU(x, side) = q.X();
-            otherV(x, side) = std::isnan(vOther) ? q.Y() : q.Y() + otherPeriod * std::round((vOther - q.Y()) / otherPeriod);
-            x.point = fromOcct(p);
-            // The section reaches the other tow's own end on this cap (both tows end there, cap
-            // against cap): this line is not followed, the curves into it stay open.
-            if ((q.X() <= otherMin + otherEps || q.X() >= otherMax - otherEps) && cap.contains(u)) {
-                pts.clear();
-                break;
-            }
-            if (!refineNearest(closed, x, tol.point)) continue;
-            vOwn = ownV(x, side);
-            vOther = otherV(x, side);
-            pts.push_back(x);
-            in.push_back(cap.contains(ownU(x, side)) ? 1 : 0);
+        for (int k = 1; k <= 32; ++k) {
+            const double t0 = line.first + (line.last - line.first) * (k - 1) / 32, t1 = line.first + (line.last - line.first) * k / 32;
+            length += line.curve->Value(t1).Distance(line.curve->Value(t0));
         }
-        if (pts.size() < 3) continue;
-        // A section line that ends at the other tow's seam (OCCT splits it there): its end
-        // exactly on the seam, so that it meets the next line's start.
-        const ParameterRange otherRange = other.parameterRange();
-        for (PointOn2* end : {&pts.front(), &pts.back()}) {
-            const double r = (otherV(*end, side) - otherRange.vMin) / otherPeriod;
-            if (std::abs(r - std::round(r)) > 1e-6) continue;
-            PointOn2 x = *end;
-            PointCondition c;
-            c.kind = side == LoopSide::A ? PointCondition::Kind::FixVB : PointCondition::Kind::FixVA;
-            c.value = otherRange.vMin + otherPeriod * std::round(r);
-            otherV(x, side) = c.value;
-            if (refineOnIntersection(closed, x, c, tol.point)) *end = x;
-        }
-        const double step = length / n;
-        const bool closedLine = distance(pts.front().point, pts.back().point) <= 2.0 * step;
-        if (closedLine && distance(pts.front().point, pts.back().point) <= 1e-3 * step) {
-            pts.pop_back();
-            in.pop_back();
-        }
-        const std::size_t m = pts.size();
-        if (std::all_of(in.begin(), in.end(), [](char c) { return c != 0; })) {
-            TracedCurve c;
-            c.points = pts;
-            c.closed = closedLine;
-            c.openReason = c.closed ? "" : side == LoopSide::A ? open_reason::kEndOfB : open_reason::kEndOfA;
-            runs.push_back(std::move(c));
-            continue;
-        }
-        // Runs of points on the cap, from an outside point on (cyclically when the line closes).
-        std::size_t first = 0;
-        if (closedLine)
-            while (in[first]) ++first;
-        const std::size_t count = closedLine ? m : m - first;
-        TracedCurve run;
-        for (std::size_t s = 0; s <= count; ++s) {
-            const bool past = s == count;
-            const std::size_t k = (first + s) % m;
-            const bool inside = !past && in[k];
-            const std::size_t prev = (k + m - 1) % m;
-            const bool hasPrev = closedLine || first + s > 0;
-            if (inside && run.points.empty()) {
-                PointOn2 r;
-                if (hasPrev && !in[prev] && rimCrossing(closed, side, cap, pts[k], pts[prev], tol.point, r)) run.points.push_back(r);
-                run.points.push_back(pts[k]);
-            } else if (inside) {
-                run.points.push_back(pts[k]);
-            } else if (!run.points.empty()) {
-                PointOn2 r;
-                run.openReason = side == LoopSide::A ? open_reason::kEndOfB : open_reason::kEndOfA;
-                if (!past || closedLine) {
-                    if (rimCrossing(closed, side, cap, pts[prev], pts[k], tol.point, r))
-                        run.points.push_back(r);
-                    else
-                        run.openReason = open_reason::kWalkStops;  // the rim point not found
-                }
-                if (run.points.size() >= 2) runs.push_back(std::move(run));
-                run = TracedCurve{};
-            }
-        }
+        // Samples about 1 % of the cap's radius apart, in the line's parameter.
+        const double step = (line.last - line.first) * 0.01 * radius / std::max(length, 1e-300);
+        runsOnCap(section, line, step, runs);
     }
     return runs;
 }
@@ -225,6 +306,7 @@ void closeAcrossCaps(const TowSurface& a, const TowSurface& b, std::vector<Trace
     const SurfacePair closed = closedPairOf(a, b);
     const TowCaps& capsA = a.impl().caps;
     const TowCaps& capsB = b.impl().caps;
+    std::vector<const CapChart*> crossedA, crossedB;  // the caps a curve may cross
     for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
         const TowCaps& caps = side == LoopSide::A ? capsA : capsB;
         for (const CapChart* cap : {&caps.start, &caps.end}) {
@@ -239,6 +321,7 @@ void closeAcrossCaps(const TowSurface& a, const TowSurface& b, std::vector<Trace
                 const GeomAdaptor_Surface tube((side == LoopSide::A ? a : b).impl().surface);
                 if (!pierces(side == LoopSide::A ? b : a, *cap, rimRadius(tube, *cap))) continue;
             }
+            (side == LoopSide::A ? crossedA : crossedB).push_back(cap);
             try {
                 std::vector<TracedCurve> runs =
                     side == LoopSide::A ? capRuns(closed, a, b, side, *cap, tol) : capRuns(closed, b, a, side, *cap, tol);
@@ -260,6 +343,12 @@ void closeAcrossCaps(const TowSurface& a, const TowSurface& b, std::vector<Trace
             }
         }
     }
+    // Where both tows end inside each other, the curve goes on across both caps.
+    for (const CapChart* capA : crossedA)
+        for (const CapChart* capB : crossedB) {
+            const double step = 0.01 * std::min(capA->radius, capB->radius);
+            for (TracedCurve& s : capCapSegments(closed, a, *capA, b, *capB, step, tol)) curves.push_back(std::move(s));
+        }
     // Join open curves whose ends meet on a rim or a cap.
     const double periodA = a.parameterRange().vPeriod(), periodB = b.parameterRange().vPeriod();
     const double join = 10.0 * tol.closing;

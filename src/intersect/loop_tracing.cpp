@@ -255,12 +255,65 @@ struct Tracer {
 
 };
 
+/// The faces of a closed tow that u lies on: kStartCap, kTube, kEndCap; a rim point (u exactly
+/// a tube's end) is on both the tube and its cap. Only the tube without @p caps.
+constexpr unsigned kStartCap = 1, kTube = 2, kEndCap = 4;
+unsigned facesAt(const TowCaps* caps, double u)
+{
+    if (!caps) return kTube;
+    if (u < caps->uMin) return kStartCap;
+    if (u > caps->uMax) return kEndCap;
+    return kTube | (u == caps->uMin ? kStartCap : 0u) | (u == caps->uMax ? kEndCap : 0u);
+}
+
+/// A corner of a curve of two closed tows: where it passes from one face of a tow to another
+/// (exactly on a rim, as cap_crossing puts it).
+bool isCorner(const SurfacePair& s, const PointOn2& p)
+{
+    const auto two = [](unsigned f) { return (f & (f - 1)) != 0; };
+    return two(facesAt(s.capsA, p.ua)) || two(facesAt(s.capsB, p.ub));
+}
+
+/// Is @p m on a face that @p a and @p b share, on both tows (where they share one)? A point
+/// refined between two points of one face must not slip onto another branch of the curve
+/// across a rim (next to a corner the plane normal to the curve cuts both branches).
+bool onSharedFaces(const SurfacePair& s, const PointOn2& a, const PointOn2& b, const PointOn2& m)
+{
+    const auto ok = [](unsigned fa, unsigned fb, unsigned fm) { return (fa & fb) == 0 || (fa & fb & fm) != 0; };
+    return ok(facesAt(s.capsA, a.ua), facesAt(s.capsA, b.ua), facesAt(s.capsA, m.ua)) &&
+           ok(facesAt(s.capsB, a.ub), facesAt(s.capsB, b.ub), facesAt(s.capsB, m.ub));
+}
+
 void refineAll(const SurfacePair& s, std::vector<PointOn2>& pts, double tolerance)
 {
     for (PointOn2& p : pts) {
+        if (isCorner(s, p)) continue;  // exactly on a rim already
         PointOn2 q = p;
         if (refineNearest(s, q, tolerance)) p = q;
     }
+}
+
+/// The curve's point next to the guess @p m between @p a and @p b, on their shared faces:
+/// refineNearest(), else with one of the guess's parameters held (its u or v on either tow).
+bool refineBetween(const SurfacePair& s, const PointOn2& a, const PointOn2& b, PointOn2& m, double tolerance)
+{
+    PointOn2 x = m;
+    if (refineNearest(s, x, tolerance) && onSharedFaces(s, a, b, x)) {
+        m = x;
+        return true;
+    }
+    using Kind = PointCondition::Kind;
+    for (const Kind kind : {Kind::FixUA, Kind::FixUB, Kind::FixVA, Kind::FixVB}) {
+        PointCondition c;
+        c.kind = kind;
+        c.value = kind == Kind::FixUA ? m.ua : kind == Kind::FixUB ? m.ub : kind == Kind::FixVA ? m.va : m.vb;
+        x = m;
+        if (refineOnIntersection(s, x, c, tolerance) && onSharedFaces(s, a, b, x)) {
+            m = x;
+            return true;
+        }
+    }
+    return false;
 }
 
 /// Appends the points after @p a up to @p b, with refined midpoints inserted wherever the
@@ -278,7 +331,7 @@ void densify(const SurfacePair& s, const TraceTolerances& tol, std::vector<Point
         // On a cap a straight chord is a curve in (u,v): chords there turn at most 1/64 of a
         // period about its centre, so that (u,v) polygons of the loop follow it.
         const double turn = capGuess(s, a, b, m);
-        if (refineNearest(s, m, tol.point) && (distance(m.point, 0.5 * (a.point + b.point)) > tol.chordal || turn > 1.0 / 64.0)) {
+        if (refineBetween(s, a, b, m, tol.point) && (distance(m.point, 0.5 * (a.point + b.point)) > tol.chordal || turn > 1.0 / 64.0)) {
             densify(s, tol, out, a, m, depth + 1);
             densify(s, tol, out, m, b, depth + 1);
             return;
@@ -287,16 +340,16 @@ void densify(const SurfacePair& s, const TraceTolerances& tol, std::vector<Point
     out.push_back(b);
 }
 
-/// Keeps the first and last points and, greedily, as few others as possible such that every
-/// dropped point lies within @p within of the chord that replaces it.
-std::vector<PointOn2> decimate(const std::vector<PointOn2>& pts, double within)
+/// Keeps the first and last points, every corner (isCorner()) and, greedily, as few others as
+/// possible such that every dropped point lies within @p within of the chord that replaces it.
+std::vector<PointOn2> decimate(const SurfacePair& s, const std::vector<PointOn2>& pts, double within)
 {
     if (pts.size() < 3) return pts;
     std::vector<PointOn2> kept{pts.front()};
     std::size_t i = 0;
     while (i + 1 < pts.size()) {
         std::size_t j = i + 1;
-        while (j + 1 < pts.size()) {
+        while (j + 1 < pts.size() && !isCorner(s, pts[j])) {
             bool ok = true;
             for (std::size_t k = i + 1; k <= j && ok; ++k)
                 ok = segmentDistance(pts[k].point, pts[i].point, pts[j + 1].point) <= within;
@@ -311,7 +364,7 @@ std::vector<PointOn2> decimate(const std::vector<PointOn2>& pts, double within)
 
 /// decimate() for a closed loop: split at the point farthest from the first so that each half
 /// keeps its ends, and the loop at least three points.
-std::vector<PointOn2> decimateClosed(const std::vector<PointOn2>& pts, double within)
+std::vector<PointOn2> decimateClosed(const SurfacePair& s, const std::vector<PointOn2>& pts, double within)
 {
     if (pts.size() < 4) return pts;
     std::size_t far = 1;
@@ -320,8 +373,8 @@ std::vector<PointOn2> decimateClosed(const std::vector<PointOn2>& pts, double wi
     std::vector<PointOn2> first(pts.begin(), pts.begin() + static_cast<std::ptrdiff_t>(far) + 1);
     std::vector<PointOn2> second(pts.begin() + static_cast<std::ptrdiff_t>(far), pts.end());
     second.push_back(pts.front());
-    std::vector<PointOn2> kept = decimate(first, within);
-    const std::vector<PointOn2> rest = decimate(second, within);
+    std::vector<PointOn2> kept = decimate(s, first, within);
+    const std::vector<PointOn2> rest = decimate(s, second, within);
     kept.insert(kept.end(), rest.begin() + 1, rest.end() - 1);  // both ends are already kept
     if (kept.size() < 3) {  // a straight back-and-forth cannot happen on a loop; keep a triangle
         kept = {pts[0], pts[far / 2 > 0 ? far / 2 : 1], pts[far]};
@@ -527,7 +580,7 @@ void consolidateCurve(const SurfacePair& surfaces, TracedCurve& curve, const Tra
     // those onto both surfaces, then densify where a chord strays from the curve.
     const auto coincide = [&](const PointOn2& p, const PointOn2& q) { return distance(p.point, q.point) <= 1e-3 * tolerances.closing; };
     if (closed && chain.size() > 1 && distance(chain.back().point, chain.front().point) <= tolerances.point) chain.pop_back();
-    chain = closed ? decimateClosed(chain, 0.5 * tolerances.chordal) : decimate(chain, 0.5 * tolerances.chordal);
+    chain = closed ? decimateClosed(surfaces, chain, 0.5 * tolerances.chordal) : decimate(surfaces, chain, 0.5 * tolerances.chordal);
     refineAll(surfaces, chain, tolerances.point);
     // Drop points that coincide with their predecessor (piece junctions).
     std::vector<PointOn2> clean;
