@@ -5,33 +5,113 @@
 // tessellated at 8 x sections by 4 x points). Checks: every oracle curve longer than 1e-3 of
 // the tow size is found, and every curve closes (across the tows' caps). Printed: the worst case
 // of each statistic, the open curves by reason, and towgeom's time against the oracle's.
-//   bench_scan_family [--count N] [--first SEED] [--smoke]
+// With --resolve each textile is also resolved (its detected loops, default options) and checked:
+// no pair left unresolved, no two tows' triangles crossing (CGAL box intersection + exact
+// triangle tests), every tow's mesh closed; the smallest angle is printed. --no-oracle skips
+// the oracle (and its check).
+//   bench_scan_family [--count N] [--first SEED] [--resolve] [--no-oracle] [--smoke]
 #include <towgeom/towgeom.hpp>
 
 #include <chrono>
+#include <map>
+#include <set>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 
 #include "bench_goal.hpp"
+#include "cgal_reference.hpp"
 #include "dense_oracle.hpp"
 #include "scan_like.hpp"
 #include "synthetic_tows.hpp"
 
+namespace {
+
+/// What --resolve found over the family: each statistic's total and worst case.
+struct ResolveTally {
+    std::size_t textiles = 0, failed = 0, unresolvedPairs = 0, textilesUnresolved = 0, crossing = 0, textilesCrossing = 0;
+    std::size_t notClosed = 0;  ///< tows whose final mesh has a boundary
+    std::map<std::string, std::size_t> byCode;  ///< unresolved pairs by the reports' code
+    double seconds = 0.0, slowest = 0.0, smallestAngle = 180.0;
+    unsigned slowestSeed = 0, smallestAngleSeed = 0;
+};
+
+/// Resolves one textile with its detected loops and adds what it gives to @p tally; prints the
+/// textile's line when something is wrong.
+void resolveOne(unsigned seed, const std::string& what, const std::vector<towgeom::TowSurface>& tows,
+                const towgeom::IntersectionReport& report, ResolveTally& tally)
+{
+    ++tally.textiles;
+    const auto t0 = std::chrono::steady_clock::now();
+    towgeom::ResolveResult r;
+    try {
+        r = towgeom::resolveTextile(tows, report);
+    } catch (const towgeom::Error& e) {
+        ++tally.failed;
+        std::printf("seed %u: %s: resolve failed: %s\n", seed, what.c_str(), e.what());
+        return;
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    tally.seconds += seconds;
+    if (seconds > tally.slowest) {
+        tally.slowest = seconds;
+        tally.slowestSeed = seed;
+    }
+    if (r.quality.minAngle < tally.smallestAngle) {
+        tally.smallestAngle = r.quality.minAngle;
+        tally.smallestAngleSeed = seed;
+    }
+    const std::vector<towgeom::UnresolvedPairEntry> unresolved = towgeom::unresolvedPairs(r);
+    std::set<std::pair<std::size_t, std::size_t>> pairs;
+    std::string codes;
+    for (const towgeom::UnresolvedPairEntry& u : unresolved) {
+        if (!pairs.insert({u.towA, u.towB}).second) continue;
+        ++tally.byCode[u.code];
+        codes += " " + tows[u.towA].name() + "/" + tows[u.towB].name() + ":" + u.code;
+    }
+    tally.unresolvedPairs += pairs.size();
+    tally.textilesUnresolved += !pairs.empty();
+    std::size_t open = 0;
+    for (const towgeom::TowResolution& t : r.tows) open += t.boundaryLoops > 0;
+    tally.notClosed += open;
+    const std::size_t crossing = towgeom::testing::crossingPairsBetweenTows(r.mesh);
+    tally.crossing += crossing;
+    tally.textilesCrossing += crossing > 0;
+    if (!pairs.empty() || crossing > 0 || open > 0)
+        std::printf("seed %u: %s: resolve: %zu unresolved pair(s)%s; %zu crossing triangle pairs; %zu tow(s) not closed\n", seed,
+                    what.c_str(), pairs.size(), codes.c_str(), crossing, open);
+}
+
+void printResolveTally(const ResolveTally& t)
+{
+    std::printf("resolve: %zu textiles (%zu failed), unresolved pairs %zu in %zu textiles", t.textiles, t.failed, t.unresolvedPairs,
+                t.textilesUnresolved);
+    for (const auto& [code, n] : t.byCode) std::printf(", %s %zu", code.c_str(), n);
+    std::printf("\n  crossing triangle pairs between tows %zu in %zu textiles; tows not closed %zu\n", t.crossing, t.textilesCrossing,
+                t.notClosed);
+    std::printf("  smallest angle %.3g deg (seed %u); resolve %.1f s in all, slowest %.2f s (seed %u)\n", t.smallestAngle,
+                t.smallestAngleSeed, t.seconds, t.slowest, t.slowestSeed);
+}
+
+}  // namespace
+
 int main(int argc, char** argv)
 {
     unsigned count = 500, first = 1;
-    bool smoke = false;
+    bool smoke = false, resolve = false, oracle = true;
     for (int k = 1; k < argc; ++k) {
         const std::string a = argv[k];
         if (a == "--smoke") smoke = true;
+        else if (a == "--resolve") resolve = true;
+        else if (a == "--no-oracle") oracle = false;
         else if (a == "--count" && k + 1 < argc) count = static_cast<unsigned>(std::stoul(argv[++k]));
         else if (a == "--first" && k + 1 < argc) first = static_cast<unsigned>(std::stoul(argv[++k]));
         else {
-            std::fprintf(stderr, "usage: bench_scan_family [--count N] [--first SEED] [--smoke]\n");
+            std::fprintf(stderr, "usage: bench_scan_family [--count N] [--first SEED] [--resolve] [--no-oracle] [--smoke]\n");
             return 2;
         }
     }
+    ResolveTally tally;
     towgeom::bench::Goals goals(smoke);
     std::printf("towgeom bench_scan_family: %u scan-like textiles from seed %u\n", count, first);
     std::size_t atEnds = 0, walkStops = 0;  // open curves by reason
@@ -51,7 +131,9 @@ int main(int argc, char** argv)
         const auto t0 = std::chrono::steady_clock::now();
         const towgeom::IntersectionReport report = towgeom::intersectTows(fitted);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        const towgeom::testing::TextileOracleComparison c = towgeom::testing::compareTextileWithOracle(fitted, report);
+        const towgeom::testing::TextileOracleComparison c =
+            oracle ? towgeom::testing::compareTextileWithOracle(fitted, report) : towgeom::testing::TextileOracleComparison{};
+        if (resolve) resolveOne(seed, t.choices.describe(), fitted, report, tally);
         tows += fitted.size();
         loops += report.loops.size();
         open += report.openCount();
@@ -85,8 +167,15 @@ int main(int argc, char** argv)
     std::printf("              towgeom_s    oracle_s      ratio\n");
     std::printf("detect      %10.3f  %10.3f  %9.1fx   (slowest textile: seed %u, %.3f s)\n", detectSeconds, oracleSeconds,
                 oracleSeconds / detectSeconds, slowestSeed, slowest);
+    if (resolve) printResolveTally(tally);
     goals.require("every textile fits", failedToFit == 0);
-    goals.require("every oracle curve longer than 1e-3 of the tow size is found", matched == considered);
+    if (oracle) goals.require("every oracle curve longer than 1e-3 of the tow size is found", matched == considered);
     goals.require("every curve closes (across the tows' caps where it reaches an end)", open == 0);
+    if (resolve) {
+        goals.require("every textile resolves (no error)", tally.failed == 0);
+        goals.require("no tow pair left unresolved", tally.unresolvedPairs == 0);
+        goals.require("no two tows' output triangles cross", tally.crossing == 0);
+        goals.require("every tow's output mesh is closed", tally.notClosed == 0);
+    }
     return goals.exitStatus();
 }

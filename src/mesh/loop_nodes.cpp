@@ -190,6 +190,17 @@ SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, d
     // the others are inserted.
     std::vector<LoopPoint> points = base;
     std::vector<char> snapped(n, 0);
+    // A node on a tow's rim is a corner of the loop (from the tube onto a cap): it stays, a seam
+    // crossing next to it is a node of its own.
+    const auto atRimOfEither = [&](const LoopPoint& p) {
+        for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+            const ParameterRange r = rangeOf(loop, side);
+            const double eps = 1e-9 * (r.uMax - r.uMin);
+            const double u = sideOf(p, side).u;
+            if (std::abs(u - r.uMin) <= eps || std::abs(u - r.uMax) <= eps) return true;
+        }
+        return false;
+    };
     std::vector<std::vector<LoopPoint>> inserted(n);
     for (std::size_t k = 0; k < n; ++k) {
         const LoopPoint& p = base[k];
@@ -261,11 +272,14 @@ SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, d
             return true;
         };
         for (const auto& [t, c] : crossings) {
+            // A crossing at a rim node (a corner on the seam): that node, put on the seam.
+            for (const std::size_t end : {k, (k + 1) % n})
+                if (atRimOfEither(base[end]) && distance(c.point, base[end].point) <= same) snapped[end] = 1;
             if (onBoth(c, k, false) || onBoth(c, (k + 1) % n, k + 1 == n)) continue;
-            if (t < kSnap && !snapped[k]) {
+            if (t < kSnap && !snapped[k] && !atRimOfEither(base[k])) {
                 points[k] = c;
                 snapped[k] = 1;
-            } else if (t > 1.0 - kSnap && !snapped[(k + 1) % n]) {
+            } else if (t > 1.0 - kSnap && !snapped[(k + 1) % n] && !atRimOfEither(base[(k + 1) % n])) {
                 LoopPoint r = c;  // back to the first point's own turn on the closing chord
                 if (k + 1 == n) {
                     r.onA.v -= q.onA.v - base[0].onA.v;
