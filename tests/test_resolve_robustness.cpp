@@ -170,6 +170,40 @@ TEST_CASE("a loop that dips across the seam between two nodes keeps both sides o
     }
 }
 
+// A loop that crosses a tow's seam and back within one node spacing has two consecutive nodes on
+// that seam: its chord runs along the seam. Both tows must have that chord as one edge: a seam
+// station between its nodes (of the one tow only) once left a hole in the other tow's mesh after
+// the swap (region_failed on scan-like textiles). The x-tube's seam is put just past the angle
+// where the loop turns (asin(0.4) for d - r = 0.2, R = 0.5), so the loop dips across it over a
+// short stretch of u.
+TEST_CASE("a loop chord along a tow's seam is one edge of both tows", "[resolve][robustness][seam]")
+{
+    const double turn = std::asin(0.4);
+    std::size_t alongSeam = 0;
+    for (const double degrees : {0.15, 0.3, 0.6, 1.2}) {
+        testing::Sampling sx, sy;
+        sx.sections = sy.sections = 21;
+        sx.points = sy.points = 48;
+        sx.startAngle = turn + degrees * 3.14159265358979323846 / 180.0;
+        const std::vector<TowSurface> tows{TowSurface::fit(testing::tubeAlongX(0.5, 4.0, 0.0, 0.0, 0.0, sx, "x")),
+                                           TowSurface::fit(testing::tubeAlongY(0.4, 0.6, sy, "y"))};
+        const ResolveResult r = resolveTextile(tows);
+        INFO("seam " << degrees << " degrees past the loop's turn");
+        CHECK(r.unresolved.empty());
+        CHECK(r.mesh.regions.size() == 1);
+        checkClosed(r);
+        CHECK(crossingPairs(r) == 0);
+        // The x-tube's seam line: y = R cos(start), z = R sin(start).
+        const auto onSeam = [&](const Point3& p) {
+            return std::abs(p.y - 0.5 * std::cos(sx.startAngle)) < 1e-6 && std::abs(p.z - 0.5 * std::sin(sx.startAngle)) < 1e-6;
+        };
+        for (const MeshedLoop& l : r.mesh.loops)
+            for (std::size_t k = 0; k < l.nodes.size(); ++k)
+                alongSeam += onSeam(r.mesh.nodes[l.nodes[k]]) && onSeam(r.mesh.nodes[l.nodes[(k + 1) % l.nodes.size()]]);
+    }
+    CHECK(alongSeam > 0);  // the case this test is for did occur
+}
+
 // h near or over the tow's circumference: each tow is meshed at most at a quarter of its own
 // circumference (at least 4 edges around: 1.6656 / 4 = 0.4164 here), and says so in meshSize;
 // a relative size over pi / 4 is refused. Just below the limit, tubes without a triangle with a

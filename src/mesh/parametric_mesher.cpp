@@ -41,6 +41,9 @@ std::vector<double> stations(double from, double to, double h, const std::vector
     return s;
 }
 
+/// Loop chords lying along the seam: their ends' x (lower first) -> their two loop nodes.
+using SeamChords = std::map<std::pair<double, double>, std::pair<long, long>>;
+
 /// After refinement, the faces still bad are those whose circumcentre would encroach on a
 /// constraint (the mesher would have split it). Asks for those splits in @p requests: the middle
 /// of a loop chord (a node of both tows) or of a seam edge (a node of both sides); the stations
@@ -48,7 +51,8 @@ std::vector<double> stations(double from, double to, double h, const std::vector
 /// along x are not wanted (beyond a cell's cut): neither counted nor split for. Returns the
 /// number of bad faces.
 std::size_t requestSplits(const CDT& cdt, const Criteria& criteria, double ly, double uMin, double su, double keepFrom,
-                          double keepTo, MeshRequests& requests)
+                          double keepTo, const std::set<std::pair<long, long>>& loopChords, const SeamChords& seamChords,
+                          MeshRequests& requests)
 {
     const Criteria::Is_bad isBad = criteria.is_bad_object();
     std::set<std::pair<long, long>> chords;
@@ -61,11 +65,23 @@ std::size_t requestSplits(const CDT& cdt, const Criteria& criteria, double ly, d
     const auto request = [&](const CDT::Edge& e) {
         const CDT::Vertex_handle a = e.first->vertex(CDT::cw(e.second)), b = e.first->vertex(CDT::ccw(e.second));
         const K::Point_2 &pa = a->point(), &pb = b->point();
-        if ((pa.y() == 0.0 && pb.y() == 0.0) || (pa.y() == ly && pb.y() == ly)) {
+        const long lo = std::min(a->info().node, b->info().node), hi = std::max(a->info().node, b->info().node);
+        // A loop chord along the seam is split as a loop chord (a node of both tows), not as a
+        // seam edge (a station of this tow only, which the other tow's chord would not have).
+        const bool onSeam = (pa.y() == 0.0 && pb.y() == 0.0) || (pa.y() == ly && pb.y() == ly);
+        // The seam's other side of such a chord has plain vertices: the chord by its place.
+        const auto along = onSeam ? seamChords.find(std::minmax(pa.x(), pb.x())) : seamChords.end();
+        if (along != seamChords.end()) {
+            const auto [na, nb] = std::minmax(along->second.first, along->second.second);
+            if (chords.emplace(na, nb).second)
+                requests.onLoop.push_back({static_cast<std::size_t>(na), static_cast<std::size_t>(nb)});
+            return;
+        }
+        const bool chord = lo >= 0 && loopChords.count({lo, hi});
+        if (!chord && onSeam) {
             const double x = 0.5 * (pa.x() + pb.x());
             if (seam.insert(x).second) requests.seamU.push_back(uMin + x / su);
-        } else if (a->info().node >= 0 && b->info().node >= 0) {
-            const long lo = std::min(a->info().node, b->info().node), hi = std::max(a->info().node, b->info().node);
+        } else if (lo >= 0) {
             if (chords.emplace(lo, hi).second)
                 requests.onLoop.push_back({static_cast<std::size_t>(lo), static_cast<std::size_t>(hi)});
         }
@@ -140,6 +156,13 @@ struct ParametricMesher::Impl {
     Criteria criteria;
     CDT cdt;
     std::multimap<std::size_t, CDT::Vertex_handle> loopVertex;  // a seam node has two
+    std::set<std::pair<long, long>> loopChords;  // consecutive nodes of a loop piece (lower first)
+    SeamChords seamChords;  // those of them along the seam
+    /// Records the chord between loop nodes @p a and @p b.
+    void addChord(std::size_t a, std::size_t b)
+    {
+        loopChords.emplace(static_cast<long>(std::min(a, b)), static_cast<long>(std::max(a, b)));
+    }
     std::size_t badFaces = 0;
 
     Impl(const TowSurface& s, const MeshSizes& z)
@@ -196,7 +219,7 @@ struct ParametricMesher::Impl {
     void refine(MeshRequests& requests)
     {
         refineKeepingConstraints(cdt, criteria);
-        badFaces = requestSplits(cdt, criteria, scale.aroundV, range.uMin, su, keep0, keep1, requests);
+        badFaces = requestSplits(cdt, criteria, scale.aroundV, range.uMin, su, keep0, keep1, loopChords, seamChords, requests);
     }
 };
 
@@ -214,6 +237,8 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
     const double ly = m.scale.aroundV, h = m.sizes.edgeLength;
     m.cdt.clear();
     m.loopVertex.clear();
+    m.loopChords.clear();
+    m.seamChords.clear();
 
     // Seam stations: uniform along u plus every loop node on the seam, the same on both sides.
     // All four sides get stations h/2 apart: edges that short are seldom encroached, nor too
@@ -223,7 +248,22 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
     for (const LoopConstraint& c : constraints)
         for (std::size_t k = 0; k < c.uv.size(); ++k)
             if (c.uv[k].v == m.range.vMin || c.uv[k].v == m.range.vMax) seamX.push_back(m.toXY(c.uv[k]).x());
-    const std::vector<double> xs = stations(m.x0, m.x1, 0.5 * h, seamX);
+    // A loop chord along the seam (both its nodes on it) is one edge of the seam: no station
+    // between its nodes, which the other tow's mesh would not have on that chord.
+    for (const LoopConstraint& c : constraints)
+        for (std::size_t k = 0; k + 1 < c.uv.size(); ++k)
+            for (const double side : {m.range.vMin, m.range.vMax})
+                if (c.uv[k].v == side && c.uv[k + 1].v == side)
+                    m.seamChords[std::minmax(m.toXY(c.uv[k]).x(), m.toXY(c.uv[k + 1]).x())] = {static_cast<long>(c.nodes[k]),
+                                                                                               static_cast<long>(c.nodes[k + 1])};
+    std::vector<double> xs = stations(m.x0, m.x1, 0.5 * h, seamX);
+    xs.erase(std::remove_if(xs.begin(), xs.end(),
+                            [&](double x) {
+                                return std::find(seamX.begin(), seamX.end(), x) == seamX.end() &&
+                                       std::any_of(m.seamChords.begin(), m.seamChords.end(),
+                                                   [&](const auto& c) { return x > c.first.first && x < c.first.second; });
+                            }),
+             xs.end());
     // Loop nodes on the tow's ends (a loop across an end cap) are stations of those ends, so
     // that no station lies a hair's breadth from one.
     std::vector<double> startY, endY;
@@ -255,9 +295,13 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
             piece.push_back(m.toXY(c.uv[k]));
             vs.push_back(m.insertLoopNode(piece.back(), c.nodes[k]));
         }
-        for (std::size_t k = 0; k + 1 < vs.size(); ++k) m.cdt.insert_constraint(vs[k], vs[k + 1]);
+        for (std::size_t k = 0; k + 1 < vs.size(); ++k) {
+            m.cdt.insert_constraint(vs[k], vs[k + 1]);
+            m.addChord(c.nodes[k], c.nodes[k + 1]);
+        }
         if (c.closed && vs.size() > 2) {
             m.cdt.insert_constraint(vs.back(), vs.front());
+            m.addChord(c.nodes.back(), c.nodes.front());
             piece.push_back(piece.front());
         }
     }
@@ -294,6 +338,21 @@ bool ParametricMesher::split(const std::vector<ChordSplit>& splits, const std::v
         p = K::Point_2(p.x(), y);
         m.cdt.remove_constrained_edge(f, i);
         const CDT::Vertex_handle vm = m.insertLoopNode(p, s.node);
+        m.loopChords.erase({static_cast<long>(std::min(s.a, s.b)), static_cast<long>(std::max(s.a, s.b))});
+        m.addChord(s.a, s.node);
+        m.addChord(s.node, s.b);
+        if (y == 0.0 || y == m.scale.aroundV)  // a chord along the seam: its two halves
+            for (auto c = m.seamChords.begin(); c != m.seamChords.end(); ++c)
+                if (std::minmax(c->second.first, c->second.second) == std::minmax(static_cast<long>(s.a), static_cast<long>(s.b))) {
+                    const auto [x0, x1] = c->first;
+                    const auto [n0, n1] = c->second;
+                    const bool firstAtX0 = va->point().x() == x0 ? va->info().node == n0 : vb->info().node == n0;
+                    const long atX0 = firstAtX0 ? n0 : n1, atX1 = firstAtX0 ? n1 : n0;
+                    m.seamChords.erase(c);
+                    m.seamChords[{x0, p.x()}] = {atX0, static_cast<long>(s.node)};
+                    m.seamChords[{p.x(), x1}] = {static_cast<long>(s.node), atX1};
+                    break;
+                }
         if (y == 0.0 || y == m.scale.aroundV) m.cdt.insert(K::Point_2(p.x(), y == 0.0 ? m.scale.aroundV : 0.0));
         m.cdt.insert_constraint(va, vm);
         m.cdt.insert_constraint(vm, vb);

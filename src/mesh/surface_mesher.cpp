@@ -52,6 +52,10 @@ struct Pieces {
                 const std::size_t prev = k > 0 ? k - 1 : mc.closed ? mc.points.size() - 1 : k;
                 if (prev != k && mc.points[prev].u == p.u && mc.points[prev].v == p.v)
                     throw Error(ErrorCode::InvalidArgument, at + " repeats the point before it");
+                const auto seamPoint = [&](const UV& q) { return q.v == r.vMin || q.v == r.vMax; };
+                if (prev != k && seamPoint(p) && seamPoint(mc.points[prev]))
+                    throw Error(ErrorCode::InvalidArgument, at + " and the point before it run along the seam (v = vMin or vMax): a "
+                                                                 "constraint may cross the seam or touch it, not follow it");
                 std::size_t node = nodeUV.size();
                 const bool onSeam = p.v == r.vMin || p.v == r.vMax;
                 const UV key = onSeam ? UV{p.u, r.vMin} : p;
