@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "cgal_reference.hpp"
 #include "dense_oracle.hpp"
 #include "scan_like.hpp"
 #include "synthetic_tows.hpp"
@@ -28,6 +29,33 @@ TEST_CASE("scan-like family: explore", "[.explore]")
         std::printf("seed %u: %s\n  tows %zu loops %zu open %zu oracle %zu matched %zu longest missed %.3g farthest %.3g\n%s", seed,
                     t.choices.describe().c_str(), tows.size(), report.loops.size(), report.openCount(), r.considered, r.matched,
                     r.longestMissed, r.farthest, r.missed.c_str());
+    }
+}
+
+TEST_CASE("scan-like family: explore resolve", "[.explore]")
+{
+    // Resolves seeds FIRST.. (COUNT of them) and prints, per tow pair, the crossing triangle pairs
+    // of the output meshes with the pair's loops: for finding where resolve leaves tows crossing.
+    const unsigned first = static_cast<unsigned>(std::atoi(std::getenv("FIRST") ? std::getenv("FIRST") : "1"));
+    const unsigned count = static_cast<unsigned>(std::atoi(std::getenv("COUNT") ? std::getenv("COUNT") : "1"));
+    for (unsigned seed = first; seed < first + count; ++seed) {
+        const testing::ScanLikeTextile t = testing::scanLikeTextile(seed);
+        const std::vector<TowSurface> tows = testing::fitAll(t.stacks);
+        const ResolveResult r = resolveTextile(tows);
+        std::printf("seed %u: %s: %zu unresolved, smallest angle %.3g\n", seed, t.choices.describe().c_str(), r.unresolved.size(),
+                    r.quality.minAngle);
+        for (std::size_t a = 0; a < r.mesh.tows.size(); ++a)
+            for (std::size_t b = a + 1; b < r.mesh.tows.size(); ++b) {
+                const testing::TriangleCrossings c =
+                    testing::crossingTrianglePairs(r.mesh.nodes, r.mesh.tows[a].triangles, r.mesh.tows[b].triangles);
+                if (c.crossing == 0) continue;
+                std::printf("  %s / %s: %zu crossing pairs (%zu sharing a node)\n", tows[a].name().c_str(), tows[b].name().c_str(),
+                            c.crossing, c.crossingSharing);
+                for (const IntersectionLoop& l : r.intersections.loops)
+                    if ((l.towA() == a && l.towB() == b) || (l.towA() == b && l.towB() == a))
+                        std::printf("    loop: closed %d, length %.4g, %zu points, area A %.3g, B %.3g\n", int(l.closed()), l.length(),
+                                    l.points().size(), l.enclosedArea(LoopSide::A), l.enclosedArea(LoopSide::B));
+            }
     }
 }
 

@@ -41,8 +41,8 @@ std::vector<double> stations(double from, double to, double h, const std::vector
     return s;
 }
 
-/// Loop chords lying along the seam: their ends' x (lower first) -> their two loop nodes.
-using SeamChords = std::map<std::pair<double, double>, std::pair<long, long>>;
+/// Loop chords lying along the seam: their ends' x (lower first).
+using SeamChords = std::set<std::pair<double, double>>;
 
 /// After refinement, the faces still bad are those whose circumcentre would encroach on a
 /// constraint (the mesher would have split it). Asks for those splits in @p requests: the middle
@@ -69,16 +69,11 @@ std::size_t requestSplits(const CDT& cdt, const Criteria& criteria, double ly, d
         // A loop chord along the seam is split as a loop chord (a node of both tows), not as a
         // seam edge (a station of this tow only, which the other tow's chord would not have).
         const bool onSeam = (pa.y() == 0.0 && pb.y() == 0.0) || (pa.y() == ly && pb.y() == ly);
-        // The seam's other side of such a chord has plain vertices: the chord by its place.
-        const auto along = onSeam ? seamChords.find(std::minmax(pa.x(), pb.x())) : seamChords.end();
-        if (along != seamChords.end()) {
-            const auto [na, nb] = std::minmax(along->second.first, along->second.second);
-            if (chords.emplace(na, nb).second)
-                requests.onLoop.push_back({static_cast<std::size_t>(na), static_cast<std::size_t>(nb)});
-            return;
-        }
-        const bool chord = lo >= 0 && loopChords.count({lo, hi});
-        if (!chord && onSeam) {
+        // A loop chord along the seam (on the seam's other side its vertices are plain: found by
+        // its place) is not split: the curve between its nodes dips across the seam, a node there
+        // would lie off it, and a seam station would be this tow's only. The faces stay bad.
+        if (onSeam && ((lo >= 0 && loopChords.count({lo, hi})) || seamChords.count(std::minmax(pa.x(), pb.x())))) return;
+        if (onSeam) {
             const double x = 0.5 * (pa.x() + pb.x());
             if (seam.insert(x).second) requests.seamU.push_back(uMin + x / su);
         } else if (lo >= 0) {
@@ -114,6 +109,15 @@ std::size_t requestSplits(const CDT& cdt, const Criteria& criteria, double ly, d
         }
     }
     return bad;
+}
+
+/// The vertex at @p p, or none.
+CDT::Vertex_handle vertexAt(const CDT& cdt, const K::Point_2& p)
+{
+    CDT::Locate_type lt;
+    int li = 0;
+    const CDT::Face_handle f = cdt.locate(p, lt, li);
+    return lt == CDT::VERTEX ? f->vertex(li) : CDT::Vertex_handle();
 }
 
 /// The surface's mean lengths along u and around v (the scale of the parameter space).
@@ -157,7 +161,7 @@ struct ParametricMesher::Impl {
     CDT cdt;
     std::multimap<std::size_t, CDT::Vertex_handle> loopVertex;  // a seam node has two
     std::set<std::pair<long, long>> loopChords;  // consecutive nodes of a loop piece (lower first)
-    SeamChords seamChords;  // those of them along the seam
+    SeamChords seamChords;  // the x of those along the seam (lower first)
     /// Records the chord between loop nodes @p a and @p b.
     void addChord(std::size_t a, std::size_t b)
     {
@@ -221,6 +225,31 @@ struct ParametricMesher::Impl {
         refineKeepingConstraints(cdt, criteria);
         badFaces = requestSplits(cdt, criteria, scale.aroundV, range.uMin, su, keep0, keep1, loopChords, seamChords, requests);
     }
+    /// A loop chord along the seam (its two nodes on one side of it, @p va and @p vb): the curve
+    /// between them dips across the seam, and the new node lies off it, on the seam's one side or
+    /// the other. It goes on that side, joined to the chord's ends there by two new constraints;
+    /// the chord stays as the seam's edge (a thin triangle of the domain between them). False when
+    /// the chord is not along the seam or the node lies on it (split as any chord).
+    bool splitAlongSeam(const ChordSplit& s, CDT::Vertex_handle va, CDT::Vertex_handle vb)
+    {
+        Impl& m = *this;
+        const double ly = m.scale.aroundV, period = m.range.vPeriod() * m.sv;
+        const double ya = va->point().y(), yb = vb->point().y();
+        if (ya != yb || (ya != 0.0 && ya != ly)) return false;
+        const K::Point_2 at = m.toXY(s.at);
+        double y = at.y() - period * std::floor(at.y() / period);  // in [0, period)
+        if (y < 1e-9 * period || y > period - 1e-9 * period) return false;
+        const double side = y < 0.5 * period ? 0.0 : ly;
+        const CDT::Vertex_handle a = vertexAt(m.cdt, K::Point_2(va->point().x(), side)), b = vertexAt(m.cdt, K::Point_2(vb->point().x(), side));
+        if (a == CDT::Vertex_handle() || b == CDT::Vertex_handle()) return false;
+        const CDT::Vertex_handle vm = m.insertLoopNode(K::Point_2(at.x(), y), s.node);
+        m.loopChords.erase({static_cast<long>(std::min(s.a, s.b)), static_cast<long>(std::max(s.a, s.b))});
+        m.addChord(s.a, s.node);
+        m.addChord(s.node, s.b);
+        m.cdt.insert_constraint(a, vm);
+        m.cdt.insert_constraint(vm, b);
+        return true;
+    }
 };
 
 ParametricMesher::ParametricMesher(const TowSurface& surface, const MeshSizes& sizes)
@@ -254,14 +283,13 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
         for (std::size_t k = 0; k + 1 < c.uv.size(); ++k)
             for (const double side : {m.range.vMin, m.range.vMax})
                 if (c.uv[k].v == side && c.uv[k + 1].v == side)
-                    m.seamChords[std::minmax(m.toXY(c.uv[k]).x(), m.toXY(c.uv[k + 1]).x())] = {static_cast<long>(c.nodes[k]),
-                                                                                               static_cast<long>(c.nodes[k + 1])};
+                    m.seamChords.insert(std::minmax(m.toXY(c.uv[k]).x(), m.toXY(c.uv[k + 1]).x()));
     std::vector<double> xs = stations(m.x0, m.x1, 0.5 * h, seamX);
     xs.erase(std::remove_if(xs.begin(), xs.end(),
                             [&](double x) {
                                 return std::find(seamX.begin(), seamX.end(), x) == seamX.end() &&
                                        std::any_of(m.seamChords.begin(), m.seamChords.end(),
-                                                   [&](const auto& c) { return x > c.first.first && x < c.first.second; });
+                                                   [&](const std::pair<double, double>& c) { return x > c.first && x < c.second; });
                             }),
              xs.end());
     // Loop nodes on the tow's ends (a loop across an end cap) are stations of those ends, so
@@ -328,6 +356,7 @@ bool ParametricMesher::split(const std::vector<ChordSplit>& splits, const std::v
                     break;
                 }
         if (va == CDT::Vertex_handle()) return false;
+        if (m.splitAlongSeam(s, va, vb)) continue;
         // The new node's v, by whole periods, next to the chord's (a chord may end on the seam).
         // A node a hair's breadth from the seam goes on it, on both sides (as constraintsOn()).
         K::Point_2 p = m.toXY(s.at);
@@ -341,18 +370,6 @@ bool ParametricMesher::split(const std::vector<ChordSplit>& splits, const std::v
         m.loopChords.erase({static_cast<long>(std::min(s.a, s.b)), static_cast<long>(std::max(s.a, s.b))});
         m.addChord(s.a, s.node);
         m.addChord(s.node, s.b);
-        if (y == 0.0 || y == m.scale.aroundV)  // a chord along the seam: its two halves
-            for (auto c = m.seamChords.begin(); c != m.seamChords.end(); ++c)
-                if (std::minmax(c->second.first, c->second.second) == std::minmax(static_cast<long>(s.a), static_cast<long>(s.b))) {
-                    const auto [x0, x1] = c->first;
-                    const auto [n0, n1] = c->second;
-                    const bool firstAtX0 = va->point().x() == x0 ? va->info().node == n0 : vb->info().node == n0;
-                    const long atX0 = firstAtX0 ? n0 : n1, atX1 = firstAtX0 ? n1 : n0;
-                    m.seamChords.erase(c);
-                    m.seamChords[{x0, p.x()}] = {atX0, static_cast<long>(s.node)};
-                    m.seamChords[{p.x(), x1}] = {static_cast<long>(s.node), atX1};
-                    break;
-                }
         if (y == 0.0 || y == m.scale.aroundV) m.cdt.insert(K::Point_2(p.x(), y == 0.0 ? m.scale.aroundV : 0.0));
         m.cdt.insert_constraint(va, vm);
         m.cdt.insert_constraint(vm, vb);
