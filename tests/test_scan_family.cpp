@@ -51,6 +51,14 @@ TEST_CASE("scan-like family: explore resolve", "[.explore]")
                 if (c.crossing == 0) continue;
                 std::printf("  %s / %s: %zu crossing pairs (%zu sharing a node)\n", tows[a].name().c_str(), tows[b].name().c_str(),
                             c.crossing, c.crossingSharing);
+                const auto centroid = [&](const std::array<std::size_t, 3>& t) {
+                    return (1.0 / 3.0) * (r.mesh.nodes[t[0]] + r.mesh.nodes[t[1]] + r.mesh.nodes[t[2]]);
+                };
+                for (const auto& [ta, tb] : c.first) {
+                    const Point3 pa = centroid(r.mesh.tows[a].triangles[ta]), pb = centroid(r.mesh.tows[b].triangles[tb]);
+                    std::printf("    (%.4f %.4f %.4f) region %ld / (%.4f %.4f %.4f) region %ld\n", pa.x, pa.y, pa.z,
+                                r.mesh.tows[a].region[ta], pb.x, pb.y, pb.z, r.mesh.tows[b].region[tb]);
+                }
                 for (const IntersectionLoop& l : r.intersections.loops)
                     if ((l.towA() == a && l.towB() == b) || (l.towA() == b && l.towB() == a))
                         std::printf("    loop: closed %d, length %.4g, %zu points, area A %.3g, B %.3g\n", int(l.closed()), l.length(),

@@ -37,10 +37,11 @@ struct LoopPoint {
 /// into one piece (pieces split at either tow's periodic seam are joined, duplicates dropped).
 ///
 /// A closed loop bounds the region where the tows overlap, on the tows as closed solids: a curve
-/// that runs into a tow's end continues across that tow's end cap (crossesCap()). An open one
-/// (closed() false) is a curve that cannot be closed: both tows end inside each other there
-/// (cap against cap), or the surface-surface walk could not continue. Open curves are reported,
-/// never dropped or forced shut.
+/// that runs into a tow's end continues across that tow's end cap (crossesCap()), across both
+/// caps where both tows end inside each other. An open one (closed() false) is a curve that
+/// cannot be closed: both tows end in one plane (caps face to face, a contact), or the
+/// surface-surface walk could not continue. Open curves are reported, never dropped or forced
+/// shut.
 ///
 /// points() are exact intersection points (refined by Newton's method onto both surfaces),
 /// dense enough that the curve stays within the chordal tolerance of the polyline through them.

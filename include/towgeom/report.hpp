@@ -27,8 +27,8 @@ struct VolumeMesh;  // volume_mesh.hpp
 struct UnresolvedPairEntry {
     std::size_t towA = 0;  ///< the lower tow index
     std::size_t towB = 0;  ///< the higher tow index
-    /// Why, as the reports' code: `open_curve` (a curve stops: both tows end there, cap against
-    /// cap, or the surfaces are tangent), `crosses_cap` (a loop runs across a tow's end cap,
+    /// Why, as the reports' code: `open_curve` (a curve stops: both tows end in one
+    /// plane, caps face to face, or the surfaces are tangent), `crosses_cap` (a loop runs across a tow's end cap,
     /// IntersectionLoop::crossesCap(), and the tows are meshed without caps), `winds_around` (a loop goes around a tow without caps, or around
     /// both tows, or a pair's loops around a tow do not cut it into alternating bands), `nested` (one tow inside the other), `identical_or_touching` (surfaces that
     /// coincide or touch, no curve), `search_incomplete` (the search for loops stopped at its budget,

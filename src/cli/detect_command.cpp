@@ -62,8 +62,9 @@ Options:
   -h, --help          this help
 
 Tows are closed solids: a curve that runs into a tow's end continues across that tow's end cap
-(its points there have u beyond the tube's range), so it closes; it stays open only where both
-tows end inside each other (cap against cap) or the walk cannot go on.
+(its points there have u beyond the tube's range), across both caps where both tows end inside
+each other, so it closes; it stays open only where both tows end in one plane (caps face to
+face) or the walk cannot go on.
 
 Exit status: 0 every curve is closed and no tows overlap without one; 3 a tow pair is
 unresolved: a curve is open (unless --allow-open), or two tows overlap with no curve (one inside

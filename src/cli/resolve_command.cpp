@@ -71,8 +71,8 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
   pieces          connected pieces of the tow's mesh: more than 1 where tows ranked above it
                   pass through it and cut it
   unresolved      tow pairs that meet but were not resolved (their meshes still overlap), once
-                  per pair and reason: open_curve (a curve stops: both tows end there, cap
-                  against cap, or tangent surfaces), crosses_cap (a loop runs across a tow's
+                  per pair and reason: open_curve (a curve stops: both tows end in one
+                  plane, caps face to face, or tangent surfaces), crosses_cap (a loop runs across a tow's
                   end cap where it ends inside the other, with --no-caps), winds_around
                   (a loop goes around a tow, one passing through the other, with --no-caps;
                   or around both tows), nested (one tow

@@ -3,8 +3,9 @@
 // tow's cap (the cap's plane against the other tow's surface, by OCCT) and comes back onto the
 // tube; the other tow may also pierce a cap without touching the tube there. The pieces on the
 // caps get the cap's chart parameters (u beyond the tube's range, cap_chart.hpp), are joined
-// with the tubes' open curves, and so every curve of two closed tows closes, unless both tows
-// end inside each other there (cap against cap, not handled: the curve stays open).
+// with the tubes' open curves and, where both tows end inside each other, with the pieces on both
+// caps (cap_cap_segment.hpp); so every curve of two closed tows closes, unless both tows end in
+// one plane (caps face to face: a contact, the curve stays open).
 #pragma once
 
 #include <vector>

@@ -122,6 +122,7 @@ TriangleCrossings crossingTrianglePairs(const std::vector<Point3>& nodes,
             crosses = CGAL::do_intersect(oppS, tt) || CGAL::do_intersect(oppT, ts);
         }
         if (crosses) {
+            if (r.first.size() < 100) r.first.emplace_back(x.info(), y.info());
             ++r.crossing;
             if (shared > 0) ++r.crossingSharing;
         }

@@ -31,6 +31,7 @@ struct TriangleCrossings {
     std::size_t boxPairs = 0;         ///< pairs whose bounding boxes overlap (tested)
     std::size_t identical = 0;        ///< pairs with the same three nodes (a shared region): skipped
     std::size_t sharing = 0;          ///< box pairs that share one or two nodes
+    std::vector<std::pair<std::size_t, std::size_t>> first;  ///< the first 100 crossing pairs (a's, b's triangle)
 };
 
 /// Pairs of triangles, one from @p a and one from @p b (node indices into @p nodes), that cross:
