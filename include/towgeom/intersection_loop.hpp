@@ -40,7 +40,7 @@ struct LoopPoint {
 /// that runs into a tow's end continues across that tow's end cap (crossesCap()), across both
 /// caps where both tows end inside each other. An open one (closed() false) is a curve that
 /// cannot be closed: both tows end in one plane (caps face to face, a contact), or the
-/// surface-surface walk could not continue. Open curves are reported, never dropped or forced
+/// surface-surface walk (or the search for the point where it meets a rim) could not continue. Open curves are reported, never dropped or forced
 /// shut.
 ///
 /// points() are exact intersection points (refined by Newton's method onto both surfaces),

@@ -171,7 +171,7 @@ void runsOnCap(const CapSection& s, const SectionLine& line, double step, std::v
         const double u = s.side == LoopSide::A ? x.x.ub : x.x.ua;
         return u <= s.other.uMin + eps || u >= s.other.uMax - eps;
     };
-    if (std::all_of(samples.begin(), samples.end(), [&](const SectionSample& x) { return !x.in || atOtherEnd(x); })) return;
+    if (std::all_of(samples.begin(), samples.end(), atOtherEnd)) return;
     const double gap = line.curve->Value(line.first).Distance(line.curve->Value(line.last));
     const bool closedLine = gap <= 1e-5 * s.cap.radius + 10.0 * s.tolerance;
     if (closedLine) samples.pop_back();  // the first again
@@ -356,6 +356,9 @@ void closeAcrossCaps(const TowSurface& a, const TowSurface& b, std::vector<Trace
         const double ea = 1e-9 * (capsA.uMax - capsA.uMin), eb = 1e-9 * (capsB.uMax - capsB.uMin);
         return p.ua <= capsA.uMin + ea || p.ua >= capsA.uMax - ea || p.ub <= capsB.uMin + eb || p.ub >= capsB.uMax - eb;
     };
+    const auto onRimExactly = [&](const PointOn2& p) {
+        return p.ua == capsA.uMin || p.ua == capsA.uMax || p.ub == capsB.uMin || p.ub == capsB.uMax;
+    };
     bool joined = true;
     while (joined) {
         joined = false;
@@ -372,6 +375,8 @@ void closeAcrossCaps(const TowSurface& a, const TowSurface& b, std::vector<Trace
                 if (distance(c.points.back().point, d.points.front().point) > join || !onCapOrRim(d.points.front())) continue;
                 std::vector<PointOn2> tail = d.points;
                 alignPeriods(tail, c.points.back(), periodA, periodB);
+                // Of the two ends that meet, the one exactly on a rim (a corner) stays.
+                if (onRimExactly(tail.front()) && !onRimExactly(c.points.back())) c.points.back() = tail.front();
                 c.points.insert(c.points.end(), tail.begin() + 1, tail.end());
                 c.openReason = d.openReason;
                 curves.erase(curves.begin() + static_cast<std::ptrdiff_t>(j));

@@ -5,7 +5,9 @@
 // caps get the cap's chart parameters (u beyond the tube's range, cap_chart.hpp), are joined
 // with the tubes' open curves and, where both tows end inside each other, with the pieces on both
 // caps (cap_cap_segment.hpp); so every curve of two closed tows closes, unless both tows end in
-// one plane (caps face to face: a contact, the curve stays open).
+// one plane (caps face to face: a contact, the curve stays open) or a rim point is not found. A
+// cap is looked at only when a curve runs into it or the other tow's input points cross its
+// plane next to it: one crossed by the other tow's cap alone is not (not handled).
 #pragma once
 
 #include <vector>

@@ -106,7 +106,19 @@ double bridgeDistance(const std::vector<PointOn2>& pts, const TraceTolerances& t
 /// while the checks downstream (atTowEnd(), the caps) take the end's u as it is.
 void snapToTowEnd(const SurfacePair& s, const Domain& d, PointOn2& end, const TraceTolerances& tol)
 {
-    if (atTowEnd(d, end)) return;
+    // Within rounding of an end: exactly on it (a corner where the curve goes on across a cap,
+    // recognised downstream by u equal to the end).
+    const auto exact = [&] {
+        const double ea = 1e-9 * (d.uMaxA - d.uMinA), eb = 1e-9 * (d.uMaxB - d.uMinB);
+        if (std::abs(end.ua - d.uMinA) <= ea) end.ua = d.uMinA;
+        if (std::abs(end.ua - d.uMaxA) <= ea) end.ua = d.uMaxA;
+        if (std::abs(end.ub - d.uMinB) <= eb) end.ub = d.uMinB;
+        if (std::abs(end.ub - d.uMaxB) <= eb) end.ub = d.uMaxB;
+    };
+    if (atTowEnd(d, end)) {
+        exact();
+        return;
+    }
     const auto snapOn = [&](const Handle(Geom_BSplineSurface)& surf, double u, double v, double uMin, double uMax, PointCondition::Kind kind) {
         const double uEnd = u - uMin < uMax - u ? uMin : uMax;
         gp_Pnt p;
@@ -123,6 +135,7 @@ void snapToTowEnd(const SurfacePair& s, const Domain& d, PointOn2& end, const Tr
     };
     if (!snapOn(s.a, end.ua, end.va, d.uMinA, d.uMaxA, PointCondition::Kind::FixUA))
         snapOn(s.b, end.ub, end.vb, d.uMinB, d.uMaxB, PointCondition::Kind::FixUB);
+    exact();
 }
 
 /// The first index from @p from on where @p chain comes back to its first point (within a few
@@ -308,7 +321,7 @@ bool refineBetween(const SurfacePair& s, const PointOn2& a, const PointOn2& b, P
         c.kind = kind;
         c.value = kind == Kind::FixUA ? m.ua : kind == Kind::FixUB ? m.ub : kind == Kind::FixVA ? m.va : m.vb;
         x = m;
-        if (refineOnIntersection(s, x, c, tolerance) && onSharedFaces(s, a, b, x)) {
+        if (refineOnIntersection(s, x, c, tolerance) && onSharedFaces(s, a, b, x) && distance(x.point, m.point) <= distance(a.point, b.point)) {
             m = x;
             return true;
         }

@@ -228,27 +228,30 @@ struct ParametricMesher::Impl {
     /// A loop chord along the seam (its two nodes on one side of it, @p va and @p vb): the curve
     /// between them dips across the seam, and the new node lies off it, on the seam's one side or
     /// the other. It goes on that side, joined to the chord's ends there by two new constraints;
-    /// the chord stays as the seam's edge (a thin triangle of the domain between them). False when
-    /// the chord is not along the seam or the node lies on it (split as any chord).
-    bool splitAlongSeam(const ChordSplit& s, CDT::Vertex_handle va, CDT::Vertex_handle vb)
+    /// the chord stays as the seam's edge (a thin triangle of the domain between them).
+    /// NotAlongSeam when the chord is not along the seam or the node lies on it (split as any
+    /// chord); Failed when the chord's ends have no vertices on that side (the tow is meshed
+    /// again from the start).
+    enum class SeamSplit { NotAlongSeam, Done, Failed };
+    SeamSplit splitAlongSeam(const ChordSplit& s, CDT::Vertex_handle va, CDT::Vertex_handle vb)
     {
         Impl& m = *this;
         const double ly = m.scale.aroundV, period = m.range.vPeriod() * m.sv;
         const double ya = va->point().y(), yb = vb->point().y();
-        if (ya != yb || (ya != 0.0 && ya != ly)) return false;
+        if (ya != yb || (ya != 0.0 && ya != ly)) return SeamSplit::NotAlongSeam;
         const K::Point_2 at = m.toXY(s.at);
         double y = at.y() - period * std::floor(at.y() / period);  // in [0, period)
-        if (y < 1e-9 * period || y > period - 1e-9 * period) return false;
+        if (y < 1e-9 * period || y > period - 1e-9 * period) return SeamSplit::NotAlongSeam;  // on the seam: split along it
         const double side = y < 0.5 * period ? 0.0 : ly;
         const CDT::Vertex_handle a = vertexAt(m.cdt, K::Point_2(va->point().x(), side)), b = vertexAt(m.cdt, K::Point_2(vb->point().x(), side));
-        if (a == CDT::Vertex_handle() || b == CDT::Vertex_handle()) return false;
+        if (a == CDT::Vertex_handle() || b == CDT::Vertex_handle()) return SeamSplit::Failed;
         const CDT::Vertex_handle vm = m.insertLoopNode(K::Point_2(at.x(), y), s.node);
         m.loopChords.erase({static_cast<long>(std::min(s.a, s.b)), static_cast<long>(std::max(s.a, s.b))});
         m.addChord(s.a, s.node);
         m.addChord(s.node, s.b);
         m.cdt.insert_constraint(a, vm);
         m.cdt.insert_constraint(vm, b);
-        return true;
+        return SeamSplit::Done;
     }
 };
 
@@ -356,7 +359,9 @@ bool ParametricMesher::split(const std::vector<ChordSplit>& splits, const std::v
                     break;
                 }
         if (va == CDT::Vertex_handle()) return false;
-        if (m.splitAlongSeam(s, va, vb)) continue;
+        const Impl::SeamSplit along = m.splitAlongSeam(s, va, vb);
+        if (along == Impl::SeamSplit::Failed) return false;
+        if (along == Impl::SeamSplit::Done) continue;
         // The new node's v, by whole periods, next to the chord's (a chord may end on the seam).
         // A node a hair's breadth from the seam goes on it, on both sides (as constraintsOn()).
         K::Point_2 p = m.toXY(s.at);
@@ -373,6 +378,11 @@ bool ParametricMesher::split(const std::vector<ChordSplit>& splits, const std::v
         if (y == 0.0 || y == m.scale.aroundV) m.cdt.insert(K::Point_2(p.x(), y == 0.0 ? m.scale.aroundV : 0.0));
         m.cdt.insert_constraint(va, vm);
         m.cdt.insert_constraint(vm, vb);
+        // A chord along the seam split on it: its two halves are along the seam.
+        if (m.seamChords.erase(std::minmax(va->point().x(), vb->point().x())) > 0) {
+            m.seamChords.insert(std::minmax(va->point().x(), p.x()));
+            m.seamChords.insert(std::minmax(p.x(), vb->point().x()));
+        }
     }
     // New seam stations on both sides: a point on a constrained edge splits it.
     for (double u : seamU) {
