@@ -159,14 +159,22 @@ int main(int argc, char** argv)
             std::printf("seed %u: %s: %zu of %zu oracle curves found, %zu open curve(s)\n%s", seed, t.choices.describe().c_str(),
                         c.matched, c.considered, report.openCount(), c.missed.c_str());
     }
-    std::printf("textiles %u (fit refused %zu), tows %zu, overlapping pairs %zu, loops %zu\n", count, failedToFit, tows, pairs, loops);
-    std::printf("oracle curves longer than 1e-3 of the tow size: %zu, found by towgeom %zu, longest missed %.3g x tow size\n", considered,
-                matched, longestMissed);
-    std::printf("largest distance of a found oracle curve from its loop: %.3g x tow size\n", farthest);
+    std::printf("textiles %u (fit refused %zu), tows %zu, loops %zu\n", count, failedToFit, tows, loops);
+    if (oracle) {
+        std::printf("overlapping pairs %zu; oracle curves longer than 1e-3 of the tow size: %zu, found by towgeom %zu, longest missed "
+                    "%.3g x tow size\n",
+                    pairs, considered, matched, longestMissed);
+        std::printf("largest distance of a found oracle curve from its loop: %.3g x tow size\n", farthest);
+    }
     std::printf("open curves: %zu in %zu textiles, %zu at a tow's end, %zu where the walk stops\n", open, withOpen, atEnds, walkStops);
-    std::printf("              towgeom_s    oracle_s      ratio\n");
-    std::printf("detect      %10.3f  %10.3f  %9.1fx   (slowest textile: seed %u, %.3f s)\n", detectSeconds, oracleSeconds,
-                oracleSeconds / detectSeconds, slowestSeed, slowest);
+    if (oracle) {
+        std::printf("              towgeom_s    oracle_s      ratio\n");
+        std::printf("detect      %10.3f  %10.3f  %9.1fx   (slowest textile: seed %u, %.3f s)\n", detectSeconds, oracleSeconds,
+                    oracleSeconds / detectSeconds, slowestSeed, slowest);
+    } else {
+        std::printf("detect %.3f s (slowest textile: seed %u, %.3f s); the oracle not run (--no-oracle)\n", detectSeconds, slowestSeed,
+                    slowest);
+    }
     if (resolve) printResolveTally(tally);
     goals.require("every textile fits", failedToFit == 0);
     if (oracle) goals.require("every oracle curve longer than 1e-3 of the tow size is found", matched == considered);
