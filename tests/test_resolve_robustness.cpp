@@ -367,3 +367,31 @@ TEST_CASE("a mesh over the triangle limit is refused before meshing, with the es
                              Catch::Matchers::Predicate<Error>([](const Error& e) { return e.code() == ErrorCode::InvalidArgument; }));
     }
 }
+
+// A loop across a tow's end cap turns a corner at the rim; with the tow's seam just past that
+// corner the loop crosses the seam a hair from it. The corner must stay a node (a seam node once
+// replaced it: the tube's piece lost its rim node and a cap node fell beyond the rim polygon,
+// mesh_failed). The x-tube (R = 0.5) ends at x = 2 inside the y-tube (axis x = 2, z = 0.7,
+// r = 0.5): its cap is cut along z = 0.2, the corners at the angles asin(0.4) and pi - asin(0.4).
+TEST_CASE("a seam crossing next to a loop's corner on a tow's rim keeps the corner", "[resolve][robustness][seam][caps]")
+{
+    // Offsets of the seam from the first corner; the second corner is pi - 2 asin(0.4) on. Known
+    // to fail still (not tested here): the seam 0.018 rad past the first corner puts a seam node
+    // of the cap's chord beyond the tube's rim polygon (mesh_failed).
+    const double corner = std::asin(0.4), second = 3.14159265358979323846 - 2.0 * corner;
+    for (const double offset : {-3e-3, 1e-3, 1e-2, second - 0.02, second - 0.015, second - 0.01, second - 0.006, second + 0.004}) {
+        testing::Sampling sx, sy;
+        sx.sections = sy.sections = 21;
+        sx.points = sy.points = 48;
+        sx.startAngle = corner + offset;
+        const std::vector<TowSurface> tows{TowSurface::fit(testing::tubeAlongX(0.5, 2.0, 0.0, 0.0, 0.0, sx, "short")),
+                                           TowSurface::fit(testing::tubeAlongY(0.5, 0.7, sy, "across"))};
+        const ResolveResult r = resolveTextile(tows);
+        INFO("seam " << offset << " rad from the corner");
+        INFO((r.unresolved.empty() ? std::string() : r.unresolved.front().message));
+        CHECK(r.unresolved.empty());
+        CHECK(r.mesh.regions.size() == 1);
+        checkClosed(r);
+        CHECK(crossingPairs(r) == 0);
+    }
+}
