@@ -25,6 +25,7 @@ double& ownU(PointOn2& p, LoopSide s) { return s == LoopSide::A ? p.ua : p.ub; }
 double ownU(const PointOn2& p, LoopSide s) { return s == LoopSide::A ? p.ua : p.ub; }
 double& ownV(PointOn2& p, LoopSide s) { return s == LoopSide::A ? p.va : p.vb; }
 double& otherU(PointOn2& p, LoopSide s) { return s == LoopSide::A ? p.ub : p.ua; }
+double otherU(const PointOn2& p, LoopSide s) { return s == LoopSide::A ? p.ub : p.ua; }
 double& otherV(PointOn2& p, LoopSide s) { return s == LoopSide::A ? p.vb : p.va; }
 
 /// The rim's largest distance from the cap's centre.
@@ -168,7 +169,7 @@ void runsOnCap(const CapSection& s, const SectionLine& line, double step, std::v
     // face): a contact of the caps, not a curve across them.
     const double eps = 1e-6 * (s.other.uMax - s.other.uMin);
     const auto atOtherEnd = [&](const SectionSample& x) {
-        const double u = s.side == LoopSide::A ? x.x.ub : x.x.ua;
+        const double u = otherU(x.x, s.side);
         return u <= s.other.uMin + eps || u >= s.other.uMax - eps;
     };
     if (std::all_of(samples.begin(), samples.end(), atOtherEnd)) return;
@@ -356,9 +357,6 @@ void closeAcrossCaps(const TowSurface& a, const TowSurface& b, std::vector<Trace
         const double ea = 1e-9 * (capsA.uMax - capsA.uMin), eb = 1e-9 * (capsB.uMax - capsB.uMin);
         return p.ua <= capsA.uMin + ea || p.ua >= capsA.uMax - ea || p.ub <= capsB.uMin + eb || p.ub >= capsB.uMax - eb;
     };
-    const auto onRimExactly = [&](const PointOn2& p) {
-        return p.ua == capsA.uMin || p.ua == capsA.uMax || p.ub == capsB.uMin || p.ub == capsB.uMax;
-    };
     bool joined = true;
     while (joined) {
         joined = false;
@@ -376,7 +374,7 @@ void closeAcrossCaps(const TowSurface& a, const TowSurface& b, std::vector<Trace
                 std::vector<PointOn2> tail = d.points;
                 alignPeriods(tail, c.points.back(), periodA, periodB);
                 // Of the two ends that meet, the one exactly on a rim (a corner) stays.
-                if (onRimExactly(tail.front()) && !onRimExactly(c.points.back())) c.points.back() = tail.front();
+                if (isCorner(closed, tail.front()) && !isCorner(closed, c.points.back())) c.points.back() = tail.front();
                 c.points.insert(c.points.end(), tail.begin() + 1, tail.end());
                 c.openReason = d.openReason;
                 curves.erase(curves.begin() + static_cast<std::ptrdiff_t>(j));

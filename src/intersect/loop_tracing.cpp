@@ -279,13 +279,15 @@ unsigned facesAt(const TowCaps* caps, double u)
     return kTube | (u == caps->uMin ? kStartCap : 0u) | (u == caps->uMax ? kEndCap : 0u);
 }
 
-/// A corner of a curve of two closed tows: where it passes from one face of a tow to another
-/// (exactly on a rim, as cap_crossing puts it).
+}  // namespace
+
 bool isCorner(const SurfacePair& s, const PointOn2& p)
 {
     const auto two = [](unsigned f) { return (f & (f - 1)) != 0; };
     return two(facesAt(s.capsA, p.ua)) || two(facesAt(s.capsB, p.ub));
 }
+
+namespace {
 
 /// Is @p m on a face that @p a and @p b share, on both tows (where they share one)? A point
 /// refined between two points of one face must not slip onto another branch of the curve

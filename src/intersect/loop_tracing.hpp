@@ -46,6 +46,11 @@ struct TracedCurve {
 TracedCurve traceCurve(const SurfacePair& surfaces, const SurfaceWalker& walker, const PointOn2& seed,
                        const TraceTolerances& tolerances);
 
+/// A corner of a curve of two closed tows (@p s with its caps): a point exactly on a tow's rim
+/// (u equal to the tube's end), where the curve passes from the tube onto the cap. Consolidation
+/// keeps such points as they are; false without caps.
+bool isCorner(const SurfacePair& s, const PointOn2& p);
+
 /// Refines every point of a traced curve onto both surfaces (to rounding level), drops
 /// duplicates, thins the walk's points and densifies to the chordal tolerance.
 void consolidateCurve(const SurfacePair& surfaces, TracedCurve& curve, const TraceTolerances& tolerances);

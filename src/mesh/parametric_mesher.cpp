@@ -51,8 +51,7 @@ using SeamChords = std::set<std::pair<double, double>>;
 /// along x are not wanted (beyond a cell's cut): neither counted nor split for. Returns the
 /// number of bad faces.
 std::size_t requestSplits(const CDT& cdt, const Criteria& criteria, double ly, double uMin, double su, double keepFrom,
-                          double keepTo, const std::set<std::pair<long, long>>& loopChords, const SeamChords& seamChords,
-                          MeshRequests& requests)
+                          double keepTo, const SeamChords& seamChords, MeshRequests& requests)
 {
     const Criteria::Is_bad isBad = criteria.is_bad_object();
     std::set<std::pair<long, long>> chords;
@@ -66,13 +65,11 @@ std::size_t requestSplits(const CDT& cdt, const Criteria& criteria, double ly, d
         const CDT::Vertex_handle a = e.first->vertex(CDT::cw(e.second)), b = e.first->vertex(CDT::ccw(e.second));
         const K::Point_2 &pa = a->point(), &pb = b->point();
         const long lo = std::min(a->info().node, b->info().node), hi = std::max(a->info().node, b->info().node);
-        // A loop chord along the seam is split as a loop chord (a node of both tows), not as a
-        // seam edge (a station of this tow only, which the other tow's chord would not have).
         const bool onSeam = (pa.y() == 0.0 && pb.y() == 0.0) || (pa.y() == ly && pb.y() == ly);
-        // A loop chord along the seam (on the seam's other side its vertices are plain: found by
-        // its place) is not split: the curve between its nodes dips across the seam, a node there
-        // would lie off it, and a seam station would be this tow's only. The faces stay bad.
-        if (onSeam && ((lo >= 0 && loopChords.count({lo, hi})) || seamChords.count(std::minmax(pa.x(), pb.x())))) return;
+        // A loop chord along the seam (found by its place, on either side of the seam) is not
+        // split: the curve between its nodes dips across the seam, a node there would lie off
+        // it, and a seam station would be this tow's only. The faces stay bad.
+        if (onSeam && seamChords.count(std::minmax(pa.x(), pb.x()))) return;
         if (onSeam) {
             const double x = 0.5 * (pa.x() + pb.x());
             if (seam.insert(x).second) requests.seamU.push_back(uMin + x / su);
@@ -160,13 +157,7 @@ struct ParametricMesher::Impl {
     Criteria criteria;
     CDT cdt;
     std::multimap<std::size_t, CDT::Vertex_handle> loopVertex;  // a seam node has two
-    std::set<std::pair<long, long>> loopChords;  // consecutive nodes of a loop piece (lower first)
-    SeamChords seamChords;  // the x of those along the seam (lower first)
-    /// Records the chord between loop nodes @p a and @p b.
-    void addChord(std::size_t a, std::size_t b)
-    {
-        loopChords.emplace(static_cast<long>(std::min(a, b)), static_cast<long>(std::max(a, b)));
-    }
+    SeamChords seamChords;  // the x of the loop chords along the seam (lower first)
     std::size_t badFaces = 0;
 
     Impl(const TowSurface& s, const MeshSizes& z)
@@ -223,7 +214,7 @@ struct ParametricMesher::Impl {
     void refine(MeshRequests& requests)
     {
         refineKeepingConstraints(cdt, criteria);
-        badFaces = requestSplits(cdt, criteria, scale.aroundV, range.uMin, su, keep0, keep1, loopChords, seamChords, requests);
+        badFaces = requestSplits(cdt, criteria, scale.aroundV, range.uMin, su, keep0, keep1, seamChords, requests);
     }
     /// A loop chord along the seam (its two nodes on one side of it, @p va and @p vb): the curve
     /// between them dips across the seam, and the new node lies off it, on the seam's one side or
@@ -235,22 +226,18 @@ struct ParametricMesher::Impl {
     enum class SeamSplit { NotAlongSeam, Done, Failed };
     SeamSplit splitAlongSeam(const ChordSplit& s, CDT::Vertex_handle va, CDT::Vertex_handle vb)
     {
-        Impl& m = *this;
-        const double ly = m.scale.aroundV, period = m.range.vPeriod() * m.sv;
+        const double ly = scale.aroundV, period = range.vPeriod() * sv;
         const double ya = va->point().y(), yb = vb->point().y();
         if (ya != yb || (ya != 0.0 && ya != ly)) return SeamSplit::NotAlongSeam;
-        const K::Point_2 at = m.toXY(s.at);
+        const K::Point_2 at = toXY(s.at);
         double y = at.y() - period * std::floor(at.y() / period);  // in [0, period)
         if (y < 1e-9 * period || y > period - 1e-9 * period) return SeamSplit::NotAlongSeam;  // on the seam: split along it
         const double side = y < 0.5 * period ? 0.0 : ly;
-        const CDT::Vertex_handle a = vertexAt(m.cdt, K::Point_2(va->point().x(), side)), b = vertexAt(m.cdt, K::Point_2(vb->point().x(), side));
+        const CDT::Vertex_handle a = vertexAt(cdt, K::Point_2(va->point().x(), side)), b = vertexAt(cdt, K::Point_2(vb->point().x(), side));
         if (a == CDT::Vertex_handle() || b == CDT::Vertex_handle()) return SeamSplit::Failed;
-        const CDT::Vertex_handle vm = m.insertLoopNode(K::Point_2(at.x(), y), s.node);
-        m.loopChords.erase({static_cast<long>(std::min(s.a, s.b)), static_cast<long>(std::max(s.a, s.b))});
-        m.addChord(s.a, s.node);
-        m.addChord(s.node, s.b);
-        m.cdt.insert_constraint(a, vm);
-        m.cdt.insert_constraint(vm, b);
+        const CDT::Vertex_handle vm = insertLoopNode(K::Point_2(at.x(), y), s.node);
+        cdt.insert_constraint(a, vm);
+        cdt.insert_constraint(vm, b);
         return SeamSplit::Done;
     }
 };
@@ -269,7 +256,6 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
     const double ly = m.scale.aroundV, h = m.sizes.edgeLength;
     m.cdt.clear();
     m.loopVertex.clear();
-    m.loopChords.clear();
     m.seamChords.clear();
 
     // Seam stations: uniform along u plus every loop node on the seam, the same on both sides.
@@ -326,13 +312,9 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
             piece.push_back(m.toXY(c.uv[k]));
             vs.push_back(m.insertLoopNode(piece.back(), c.nodes[k]));
         }
-        for (std::size_t k = 0; k + 1 < vs.size(); ++k) {
-            m.cdt.insert_constraint(vs[k], vs[k + 1]);
-            m.addChord(c.nodes[k], c.nodes[k + 1]);
-        }
+        for (std::size_t k = 0; k + 1 < vs.size(); ++k) m.cdt.insert_constraint(vs[k], vs[k + 1]);
         if (c.closed && vs.size() > 2) {
             m.cdt.insert_constraint(vs.back(), vs.front());
-            m.addChord(c.nodes.back(), c.nodes.front());
             piece.push_back(piece.front());
         }
     }
@@ -372,9 +354,6 @@ bool ParametricMesher::split(const std::vector<ChordSplit>& splits, const std::v
         p = K::Point_2(p.x(), y);
         m.cdt.remove_constrained_edge(f, i);
         const CDT::Vertex_handle vm = m.insertLoopNode(p, s.node);
-        m.loopChords.erase({static_cast<long>(std::min(s.a, s.b)), static_cast<long>(std::max(s.a, s.b))});
-        m.addChord(s.a, s.node);
-        m.addChord(s.node, s.b);
         if (y == 0.0 || y == m.scale.aroundV) m.cdt.insert(K::Point_2(p.x(), y == 0.0 ? m.scale.aroundV : 0.0));
         m.cdt.insert_constraint(va, vm);
         m.cdt.insert_constraint(vm, vb);
