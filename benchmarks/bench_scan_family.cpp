@@ -9,14 +9,27 @@
 // no pair left unresolved, no two tows' triangles crossing (CGAL box intersection + exact
 // triangle tests), every tow's mesh closed; the smallest angle is printed. --no-oracle skips
 // the oracle (and its check).
+// With --large a single scan-like textile of a real scan's size instead (largeScanLikeTextile:
+// a 3D orthogonal weave of 9 x 9 yarns in 2 warp layers, ~57 tows of 30 sections x 32 points,
+// seed --first) is detected and resolved in process on --threads threads (default 2), and CGAL's
+// surface_intersection runs on the same fitted surfaces tessellated at 120 stations x 64 points
+// per tow, every pair whose boxes overlap, in the same run. Goals (issue 38): resolve <= 30 s
+// and peak memory <= 1.5 GiB; detect >= 4x faster than CGAL; no pair unresolved, no crossing
+// triangle pairs, every tow closed.
 //   bench_scan_family [--count N] [--first SEED] [--resolve] [--no-oracle] [--smoke]
+// --dump DIR writes its tows there as .stw files (one per tow, in the order resolved);
+// --detect-only stops after detect and prints its counts (for profiling).
+//   bench_scan_family --large [--first SEED] [--threads T] [--dump DIR] [--detect-only] [--smoke]
 #include <towgeom/towgeom.hpp>
+
+#include <sys/resource.h>
 
 #include <chrono>
 #include <map>
 #include <set>
 #include <cstdio>
 #include <cstdlib>
+#include <vector>
 #include <string>
 
 #include "bench_goal.hpp"
@@ -93,24 +106,114 @@ void printResolveTally(const ResolveTally& t)
                 t.smallestAngleSeed, t.seconds, t.slowest, t.slowestSeed);
 }
 
+double since(std::chrono::steady_clock::time_point t0)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// The peak resident memory of this process so far, in MiB.
+double peakMiB()
+{
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+/// The 57-tow goals of issue 38 on largeScanLikeTextile(seed): detect and resolve timed in
+/// process, peak memory after resolving (before CGAL runs), then CGAL's surface_intersection on
+/// every overlapping pair tessellated at 120 x 64.
+int runLarge(unsigned seed, std::size_t threads, bool smoke, bool detectOnly, const std::string& dump)
+{
+    towgeom::bench::Goals goals(smoke);
+    const towgeom::testing::ScanLikeTextile t = towgeom::testing::largeScanLikeTextile(seed);
+    if (!dump.empty()) std::printf("tows written, in the order resolved:%s\n", towgeom::testing::writeStacks(dump, t.stacks).c_str());
+    auto t0 = std::chrono::steady_clock::now();
+    const std::vector<towgeom::TowSurface> tows = towgeom::testing::fitAll(t.stacks);
+    const double fitSeconds = since(t0);
+    std::printf("towgeom bench_scan_family --large: seed %u, %s, %zu tows, %zu threads; fit %.2f s\n", seed,
+                t.choices.describe().c_str(), tows.size(), threads, fitSeconds);
+    towgeom::IntersectionOptions detectOptions;
+    detectOptions.threads = threads;
+    t0 = std::chrono::steady_clock::now();
+    const towgeom::IntersectionReport report = towgeom::intersectTows(tows, detectOptions);
+    const double detectSeconds = since(t0);
+    if (detectOnly) {
+        std::printf("detect %.3f s: broad %.0f ms exact %.0f ms, %zu pairs tested, %zu windows, %zu seeds, %zu walks\n", detectSeconds,
+                    report.timings.broadPhase, report.timings.exact, report.pairsTested, report.windowPairs, report.seeds, report.walks);
+        return 0;
+    }
+    towgeom::ResolveOptions resolveOptions;
+    resolveOptions.threads = threads;
+    t0 = std::chrono::steady_clock::now();
+    const towgeom::ResolveResult r = towgeom::resolveTextile(tows, report, resolveOptions);
+    const double resolveSeconds = since(t0);
+    const double peak = peakMiB();
+    std::set<std::pair<std::size_t, std::size_t>> unresolved;
+    std::string codes;
+    for (const towgeom::UnresolvedPairEntry& u : towgeom::unresolvedPairs(r))
+        if (unresolved.insert({u.towA, u.towB}).second) codes += " " + tows[u.towA].name() + "/" + tows[u.towB].name() + ":" + u.code;
+    std::size_t notClosed = 0, triangles = 0;
+    for (const towgeom::TowResolution& tr : r.tows) notClosed += tr.boundaryLoops > 0;
+    for (const towgeom::TowMesh& m : r.mesh.tows) triangles += m.triangles.size();
+    const std::size_t crossing = towgeom::testing::crossingPairsBetweenTows(r.mesh);
+    std::printf("detect: %zu loops (%zu open); resolve: %zu unresolved pair(s)%s, %zu crossing triangle pairs, %zu tow(s) not "
+                "closed, smallest angle %.3g deg, %zu triangles; peak memory %.0f MiB\n",
+                report.loops.size(), report.openCount(), unresolved.size(), codes.c_str(), crossing, notClosed, r.quality.minAngle,
+                triangles, peak);
+
+    t0 = std::chrono::steady_clock::now();
+    std::vector<towgeom::TriangleMesh> faceted;
+    for (const towgeom::TowSurface& tow : tows) faceted.push_back(tow.tessellate(120, 64));
+    std::size_t pairs = 0, curves = 0;
+    for (std::size_t i = 0; i < tows.size(); ++i)
+        for (std::size_t j = i + 1; j < tows.size(); ++j) {
+            if (!tows[i].boundingBox().overlaps(tows[j].boundingBox())) continue;
+            ++pairs;
+            const towgeom::testing::IntersectionPolylines p = towgeom::testing::surfaceIntersection(faceted[i], faceted[j]);
+            curves += p.closed + p.open;
+        }
+    const double cgalSeconds = since(t0);
+    std::printf("CGAL surface_intersection at 120 x 64 per tow, %zu pairs whose boxes overlap: %zu polylines\n", pairs, curves);
+    std::printf("%-10s %12s %12s %10s\n", "", "towgeom_s", "cgal_s", "ratio");
+    std::printf("%-10s %12.2f %12.2f %9.2fx  (goal >= 4x)\n", "detect", detectSeconds, cgalSeconds, cgalSeconds / detectSeconds);
+    std::printf("%-10s %12.2f %12s %10s  (goal <= 30 s, <= 1536 MiB: %.0f MiB)\n", "resolve", resolveSeconds, "", "", peak);
+    goals.require("the textile has a real scan's size (>= 50 tows)", tows.size() >= 50);
+    goals.require("every curve closes", report.openCount() == 0);
+    goals.require("no tow pair left unresolved", unresolved.empty());
+    goals.require("no two tows' output triangles cross", crossing == 0);
+    goals.require("every tow's output mesh is closed", notClosed == 0);
+    goals.secondsAtMost("resolve", resolveSeconds, 30.0);
+    goals.require("peak memory <= 1536 MiB", peak <= 1536.0);
+    goals.ratioAtLeast("detect vs CGAL at 120 x 64", cgalSeconds / detectSeconds, 4.0);
+    return goals.exitStatus();
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
 {
     unsigned count = 500, first = 1;
-    bool smoke = false, resolve = false, oracle = true;
+    bool smoke = false, resolve = false, oracle = true, large = false, detectOnly = false;
+    std::size_t threads = 2;
+    std::string dump;
     for (int k = 1; k < argc; ++k) {
         const std::string a = argv[k];
         if (a == "--smoke") smoke = true;
         else if (a == "--resolve") resolve = true;
         else if (a == "--no-oracle") oracle = false;
+        else if (a == "--large") large = true;
+        else if (a == "--detect-only") detectOnly = true;
+        else if (a == "--threads" && k + 1 < argc) threads = std::stoul(argv[++k]);
+        else if (a == "--dump" && k + 1 < argc) dump = argv[++k];
         else if (a == "--count" && k + 1 < argc) count = static_cast<unsigned>(std::stoul(argv[++k]));
         else if (a == "--first" && k + 1 < argc) first = static_cast<unsigned>(std::stoul(argv[++k]));
         else {
-            std::fprintf(stderr, "usage: bench_scan_family [--count N] [--first SEED] [--resolve] [--no-oracle] [--smoke]\n");
+            std::fprintf(stderr, "usage: bench_scan_family [--count N] [--first SEED] [--resolve] [--no-oracle] [--smoke]\n"
+                                 "       bench_scan_family --large [--first SEED] [--threads T] [--dump DIR] [--detect-only] [--smoke]\n");
             return 2;
         }
     }
+    if (large) return runLarge(first, threads, smoke, detectOnly, dump);
     ResolveTally tally;
     towgeom::bench::Goals goals(smoke);
     std::printf("towgeom bench_scan_family: %u scan-like textiles from seed %u\n", count, first);

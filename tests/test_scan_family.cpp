@@ -98,3 +98,34 @@ TEST_CASE("scan-like family, seeds 11-20: detect finds every curve of the dense 
 TEST_CASE("scan-like family, seeds 21-30: detect finds every curve of the dense oracle", "[intersection][scan][family]") { checkFamily(21, 10); }
 TEST_CASE("scan-like family, seeds 31-40: detect finds every curve of the dense oracle", "[intersection][scan][family]") { checkFamily(31, 10); }
 TEST_CASE("scan-like family, seeds 41-50: detect finds every curve of the dense oracle", "[intersection][scan][family]") { checkFamily(41, 10); }
+
+TEST_CASE("a loop nearly tangent to a tow's seam, crossing it four times close together, is meshed", "[mesh][scan][seam]")
+{
+    // From the large scan-like textile of seed 2 (bench_scan_family --large): the loop of this
+    // pair runs along the weft's seam for a while, crossing it four times within 0.02 in u.
+    // Newton on v = seam from one loop chord's guess found the crossing of another chord: two
+    // loop nodes on one point, mesh_failed.
+    const testing::ScanLikeTextile t = testing::largeScanLikeTextile(2);
+    std::vector<TowStack> pair;
+    for (const char* name : {"warp_L1_8", "weft_L2_7"})
+        for (const TowStack& s : t.stacks)
+            if (s.name == name) pair.push_back(s);
+    REQUIRE(pair.size() == 2);
+    const std::vector<TowSurface> tows = testing::fitAll(pair);
+    const ResolveResult r = resolveTextile(tows);
+    REQUIRE(r.intersections.loops.size() == 1);
+    CHECK(r.intersections.loops[0].closed());
+    for (const UnresolvedPairEntry& u : unresolvedPairs(r)) FAIL_CHECK(u.code << ": " << u.message);
+    CHECK(r.mesh.regions.size() == 1);
+    for (const TowResolution& tr : r.tows) CHECK(tr.boundaryLoops == 0);
+    CHECK(testing::crossingPairsBetweenTows(r.mesh) == 0);
+    // The weft's v crosses its seam four times along the loop (the loop's uv curve, unwrapped).
+    const std::vector<UV> onWeft = r.intersections.loops[0].uvCurve(LoopSide::B);
+    const ParameterRange range = tows[1].parameterRange();
+    std::size_t crossings = 0;
+    for (std::size_t k = 0; k < onWeft.size(); ++k) {
+        const double a = (onWeft[k].v - range.vMin) / range.vPeriod(), b = (onWeft[(k + 1) % onWeft.size()].v - range.vMin) / range.vPeriod();
+        crossings += std::floor(a) != std::floor(b);
+    }
+    CHECK(crossings == 4);
+}

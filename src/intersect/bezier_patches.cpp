@@ -85,28 +85,23 @@ std::pair<BezierPatch, BezierPatch> halve(const BezierPatch& p, bool alongU)
 namespace {
 
 /// The smallest cone about the normalised mean of @p w that holds every vector of @p w; invalid
-/// when one of them is (nearly) zero or at 90 degrees or more from that axis.
-NormalCone coneOf(const std::vector<Vector3>& w)
+/// when one of them is (nearly) zero or at 90 degrees or more from that axis. @p lengths holds
+/// the vectors' lengths.
+NormalCone coneOf(const std::vector<Vector3>& w, const std::vector<double>& lengths)
 {
     NormalCone cone;
-    Vector3 sum;
-    double longest = 0.0;
-    for (const Vector3& x : w) longest = std::max(longest, norm(x));
+    const double longest = lengths.empty() ? 0.0 : *std::max_element(lengths.begin(), lengths.end());
     if (!(longest > 0.0)) return cone;
-    for (const Vector3& x : w) {
-        const double n = norm(x);
-        if (n > 1e-12 * longest) sum = sum + (1.0 / n) * x;
-    }
+    // A vector near zero: the hull may hold the origin, a normal may vanish.
+    for (double n : lengths)
+        if (!(n > 1e-12 * longest)) return cone;
+    Vector3 sum;
+    for (std::size_t k = 0; k < w.size(); ++k) sum = sum + (1.0 / lengths[k]) * w[k];
     const double s = norm(sum);
     if (!(s > 0.0)) return cone;
     cone.axis = (1.0 / s) * sum;
     double cosMin = 1.0;
-    for (const Vector3& x : w) {
-        const double n = norm(x);
-        // A vector near zero: the hull may hold the origin, a normal may vanish.
-        if (!(n > 1e-12 * longest)) return cone;
-        cosMin = std::min(cosMin, dot(cone.axis, x) / n);
-    }
+    for (std::size_t k = 0; k < w.size(); ++k) cosMin = std::min(cosMin, dot(cone.axis, w[k]) / lengths[k]);
     if (!(cosMin > 1e-9)) return cone;
     cone.halfAngle = std::acos(std::min(1.0, cosMin));
     cone.valid = true;
@@ -117,22 +112,37 @@ NormalCone coneOf(const std::vector<Vector3>& w)
 
 NormalCone normalCone(const BezierPatch& p)
 {
-    std::vector<Vector3> du, dv, normals;
+    // Reused buffers: the subdivision asks for many cones, each of (degree + 1)^2 degree^2 vectors.
+    thread_local std::vector<Vector3> du, dv, normals;
+    thread_local std::vector<double> lengths;
+    du.clear();
+    dv.clear();
+    normals.clear();
+    lengths.clear();
     for (int i = 0; i <= p.degreeU; ++i)
         for (int j = 0; j <= p.degreeV; ++j) {
             if (i < p.degreeU) du.push_back(p.pole(i + 1, j) - p.pole(i, j));
             if (j < p.degreeV) dv.push_back(p.pole(i, j + 1) - p.pole(i, j));
         }
-    normals.reserve(du.size() * dv.size());
     for (const Vector3& x : du)
-        for (const Vector3& y : dv) normals.push_back(cross(x, y));
-    return coneOf(normals);
+        for (const Vector3& y : dv) {
+            normals.push_back(cross(x, y));
+            lengths.push_back(norm(normals.back()));
+        }
+    return coneOf(normals, lengths);
 }
 
 PatchBounds boundsOf(const BezierPatch& p)
 {
     PatchBounds b;
-    for (const Point3& q : p.poles) b.box.add(q);
+    // std::min and max, not BoundingBox::add's fmin and fmax: poles are finite, and this is hot.
+    Point3 lo = p.poles.front(), hi = lo;
+    for (const Point3& q : p.poles) {
+        lo = {std::min(lo.x, q.x), std::min(lo.y, q.y), std::min(lo.z, q.z)};
+        hi = {std::max(hi.x, q.x), std::max(hi.y, q.y), std::max(hi.z, q.z)};
+    }
+    b.box.add(lo);
+    b.box.add(hi);
     b.diameter = b.box.diagonal();
     // Any direction gives a valid slab; the net's normal gives a thin one when the patch is small.
     const Vector3 n = cross(p.pole(p.degreeU, p.degreeV) - p.pole(0, 0), p.pole(0, p.degreeV) - p.pole(p.degreeU, 0));
@@ -166,7 +176,8 @@ bool outsideSlab(const PatchBounds& own, const BezierPatch& other, double overla
 
 BoundedPatch bounded(BezierPatch p)
 {
-    BoundedPatch b{std::move(p), {}};
+    BoundedPatch b;
+    b.patch = std::move(p);
     b.bounds = boundsOf(b.patch);
     return b;
 }

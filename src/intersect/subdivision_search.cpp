@@ -5,6 +5,8 @@
 #include "intersect/subdivision_search.hpp"
 
 #include <algorithm>
+#include <memory>
+#include <utility>
 
 #include "towgeom/export.hpp"
 
@@ -15,13 +17,33 @@ namespace {
 
 using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 3, std::size_t, CGAL::Box_intersection_d::ID_EXPLICIT>;
 
-using Node = BoundedPatch;
+bool longerAlongU(const BezierPatch& p);
+
+/// A patch of the subdivision. Its halves are made once, on first use, and shared by every
+/// patch of the other tow it meets: a patch is halved the same way whichever it meets.
+struct Node {
+    BoundedPatch bounded;
+    mutable std::unique_ptr<std::pair<Node, Node>> halves;
+
+    const BezierPatch& patch() const { return bounded.patch; }
+    const PatchBounds& bounds() const { return bounded.bounds; }
+    const NormalCone& normals() const { return bounded.normals(); }
+    const std::pair<Node, Node>& halved() const
+    {
+        if (!halves) {
+            auto [first, second] = halve(patch(), longerAlongU(patch()));
+            halves = std::make_unique<std::pair<Node, Node>>(Node{detail::bounded(std::move(first)), nullptr},
+                                                             Node{detail::bounded(std::move(second)), nullptr});
+        }
+        return *halves;
+    }
+};
 
 /// The leaf of @p a and @p b; its guess is the closest pair of control points (near the surface
 /// when the patches are small), at their Greville parameters.
 Leaf leafOf(const Node& a, const Node& b)
 {
-    const BezierPatch &pa = a.patch, &pb = b.patch;
+    const BezierPatch &pa = a.patch(), &pb = b.patch();
     std::size_t bestA = 0, bestB = 0;
     double best = 1e300;
     for (std::size_t i = 0; i < pa.poles.size(); ++i)
@@ -44,7 +66,7 @@ Leaf leafOf(const Node& a, const Node& b)
     param(pa, bestA, s.guess.ua, s.guess.va);
     param(pb, bestB, s.guess.ub, s.guess.vb);
     s.guess.point = 0.5 * (pa.poles[bestA] + pb.poles[bestB]);
-    s.facetSize = std::min(a.bounds.diameter, b.bounds.diameter);
+    s.facetSize = std::min(a.bounds().diameter, b.bounds().diameter);
     return {s, pa.u0, pa.u1, pa.v0, pa.v1, pb.u0, pb.u1, pb.v0, pb.v1};
 }
 
@@ -72,8 +94,8 @@ public:
             stats_.exhausted = true;
             return;
         }
-        if (separated(a.patch, a.bounds, b.patch, b.bounds, limits_.overlap)) return;
-        const double size = std::max(a.bounds.diameter, b.bounds.diameter);
+        if (separated(a.patch(), a.bounds(), b.patch(), b.bounds(), limits_.overlap)) return;
+        const double size = std::max(a.bounds().diameter, b.bounds().diameter);
         const bool smallest = size <= limits_.smallest;
         if (smallest || (size <= limits_.seedSize && conesApart(a.normals(), b.normals()))) {
             ++stats_.offered;
@@ -84,14 +106,12 @@ public:
             }
         }
         // Halve the larger patch.
-        const bool first = a.bounds.diameter >= b.bounds.diameter;
-        const Node& big = first ? a : b;
-        auto halves = halve(big.patch, longerAlongU(big.patch));
-        const Node h1 = bounded(std::move(halves.first)), h2 = bounded(std::move(halves.second));
-        if (first) {
+        if (a.bounds().diameter >= b.bounds().diameter) {
+            const auto& [h1, h2] = a.halved();
             pair(h1, b);
             pair(h2, b);
         } else {
+            const auto& [h1, h2] = b.halved();
             pair(a, h1);
             pair(a, h2);
         }
@@ -116,9 +136,12 @@ std::vector<Node> patchesIn(const Handle(Geom_BSplineSurface)& s, std::vector<UW
         else
             merged.push_back(w);
     }
-    std::vector<Node> nodes;
+    std::vector<BoundedPatch> patches;
     for (const UWindow& w : merged)
-        if (w.uMax > w.uMin) addBoundedPatches(s, w.uMin, w.uMax, nodes);
+        if (w.uMax > w.uMin) addBoundedPatches(s, w.uMin, w.uMax, patches);
+    std::vector<Node> nodes;
+    nodes.reserve(patches.size());
+    for (BoundedPatch& p : patches) nodes.push_back(Node{std::move(p), nullptr});
     return nodes;
 }
 
@@ -127,7 +150,7 @@ std::vector<std::size_t> reaching(const std::vector<Node>& nodes, const Bounding
 {
     std::vector<std::size_t> picked;
     for (std::size_t k = 0; k < nodes.size(); ++k)
-        if (nodes[k].bounds.box.overlaps(reach)) picked.push_back(k);
+        if (nodes[k].bounds().box.overlaps(reach)) picked.push_back(k);
     return picked;
 }
 
@@ -136,7 +159,7 @@ std::vector<Box> boxesOf(const std::vector<Node>& nodes, const std::vector<std::
     std::vector<Box> boxes;
     boxes.reserve(picked.size());
     for (std::size_t k : picked) {
-        const BoundingBox& b = nodes[k].bounds.box;
+        const BoundingBox& b = nodes[k].bounds().box;
         boxes.emplace_back(CGAL::Bbox_3(b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z), k);
     }
     return boxes;
@@ -147,8 +170,8 @@ BoundingBox boxOf(const std::vector<Node>& nodes)
 {
     BoundingBox box;
     for (const Node& n : nodes) {
-        box.add(n.bounds.box.min);
-        box.add(n.bounds.box.max);
+        box.add(n.bounds().box.min);
+        box.add(n.bounds().box.max);
     }
     return box;
 }
@@ -173,7 +196,12 @@ SubdivisionStats searchPatchPairs(const Handle(Geom_BSplineSurface)& sa, const H
                              [&](const Box& x, const Box& y) { pairs.emplace_back(x.handle(), y.handle()); });
     std::sort(pairs.begin(), pairs.end());  // the order of the input, not of CGAL's sweep
     Search search(limits, settle);
-    for (const auto& [i, j] : pairs) search.pair(a[i], b[j]);
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+        const auto [i, j] = pairs[k];
+        search.pair(a[i], b[j]);
+        // The pairs come by a's patch: its halves are not needed again.
+        if (k + 1 == pairs.size() || pairs[k + 1].first != i) a[i].halves.reset();
+    }
     return search.stats();
 }
 

@@ -35,6 +35,15 @@ double msSince(Clock::time_point t0)
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
+/// The length of the vector area (1/2) sum p_k x p_k+1 of the closed polyline through @p pts.
+double vectorArea(const std::vector<LoopPoint>& pts)
+{
+    if (pts.empty()) return 0.0;
+    const Point3 o = pts.front().point;
+    Vector3 sum;
+    for (std::size_t k = 1; k + 1 < pts.size(); ++k) sum = sum + cross(pts[k].point - o, pts[k + 1].point - o);
+    return 0.5 * norm(sum);
+}
 
 struct PairResult {
     std::vector<IntersectionLoop> loops;
@@ -141,6 +150,9 @@ PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::ve
     const auto isSliver = [&](const IntersectionLoop& loop) {
         if (!loop.closed() || loop.windsAround(LoopSide::A) || loop.windsAround(LoopSide::B)) return false;
         const double thin = 0.5 * loop.length() * kContactWidth * size;
+        // Cheap first: no surface the curve bounds has less area than the curve's vector area
+        // (|integral of n dA| <= area), which is the polyline's within 2 x chordal x length.
+        if (vectorArea(loop.points()) > thin + 2.0 * tol.chordal * loop.length()) return false;
         return !(loop.enclosedArea(LoopSide::A) > thin) || !(loop.enclosedArea(LoopSide::B) > thin);
     };
     const ParameterRange ra = a.parameterRange(), rb = b.parameterRange();

@@ -52,8 +52,46 @@ PointOn2 onChord(const LoopPoint& p, const LoopPoint& q, double t)
             {lerp(p.point.x, q.point.x), lerp(p.point.y, q.point.y), lerp(p.point.z, q.point.z)}, 0.0};
 }
 
-/// The exact loop point between @p p and @p q where tow @p side's v equals @p seam.
-LoopPoint seamPoint(const SurfacePair& sp, const LoopPoint& p, const LoopPoint& q, LoopSide side, double seam,
+/// Whether @p x lies along the chord from @p p to @p q as the curve between them does: its
+/// foot on the chord's line within the chord, and it no farther from the line than a quarter of
+/// the chord's length (loop chords bend far less, kMaxChordBend).
+bool alongChord(const LoopPoint& p, const LoopPoint& q, const Point3& x)
+{
+    const Vector3 d = q.point - p.point;
+    const double length2 = dot(d, d);
+    if (!(length2 > 0.0)) return distance(x, p.point) == 0.0;
+    const double t = dot(x - p.point, d) / length2;
+    return t >= -0.05 && t <= 1.05 && distance(x, p.point + t * d) <= 0.25 * std::sqrt(length2);
+}
+
+/// The curve's point between @p p and @p q where tow @p side's v crosses @p seam, by bisection
+/// on the chord: the curve's point in the plane normal to the chord at a fraction of it (Newton
+/// from the chord's point), its v against the seam's. For a curve nearly tangent to the seam,
+/// where Newton on v = seam may find another crossing. False when a point is not found.
+bool bisectSeam(const SurfacePair& sp, const LoopPoint& p, const LoopPoint& q, LoopSide side, double seam, double period,
+                double tolerance, PointOn2& x)
+{
+    const double v0 = sideOf(p, side).v;
+    double lo = 0.0, hi = 1.0;
+    for (int step = 0; step < 60 && hi - lo > 1e-15; ++step) {
+        const double t = 0.5 * (lo + hi);
+        PointOn2 y = onChord(p, q, t);
+        const double vGuess = side == LoopSide::A ? y.va : y.vb;
+        PointCondition c;
+        c.origin = y.point;
+        c.normal = q.point - p.point;
+        if (!refineOnIntersection(sp, y, c, tolerance)) return false;
+        double& v = side == LoopSide::A ? y.va : y.vb;
+        if (period > 0.0) v += period * std::round((vGuess - v) / period);
+        x = y;
+        ((v < seam) == (v0 < seam) ? lo : hi) = t;
+    }
+    return true;
+}
+
+/// The exact loop point between @p p and @p q where tow @p side's v equals @p seam (@p period:
+/// the tow's v period).
+LoopPoint seamPoint(const SurfacePair& sp, const LoopPoint& p, const LoopPoint& q, LoopSide side, double seam, double period,
                     double tolerance)
 {
     const double v0 = sideOf(p, side).v, v1 = sideOf(q, side).v;
@@ -62,7 +100,18 @@ LoopPoint seamPoint(const SurfacePair& sp, const LoopPoint& p, const LoopPoint& 
     PointCondition c;
     c.kind = side == LoopSide::A ? PointCondition::Kind::FixVA : PointCondition::Kind::FixVB;
     c.value = seam;
-    refineOnIntersection(sp, x, c, tolerance);  // on failure the interpolated point stays
+    const PointOn2 guess = x;
+    // On failure the interpolated point stays. Newton may also land on another crossing of the
+    // seam (a curve nearly tangent to it crosses it several times close together): then the
+    // crossing is bracketed on this chord first.
+    if (refineOnIntersection(sp, x, c, tolerance) && !alongChord(p, q, x.point)) {
+        x = guess;
+        PointOn2 near = guess;
+        if (bisectSeam(sp, p, q, side, seam, period, tolerance, near)) {
+            x = near;
+            if (!refineOnIntersection(sp, x, c, tolerance) || !alongChord(p, q, x.point)) x = near;
+        }
+    }
     LoopPoint r{x.point, {x.ua, x.va}, {x.ub, x.vb}};
     (side == LoopSide::A ? r.onA : r.onB).v = seam;  // exactly, so the mesher sees it on the seam
     return r;
@@ -221,7 +270,7 @@ SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, d
             const double lo = std::min(v0, v1), hi = std::max(v0, v1);
             for (double seam = vMin + period * std::ceil((lo - vMin) / period); seam < hi; seam += period) {
                 if (seam <= lo) continue;
-                found.push_back({(seam - v0) / (v1 - v0), seamPoint(sp, p, q, side, seam, loop.tolerance()), side});
+                found.push_back({(seam - v0) / (v1 - v0), seamPoint(sp, p, q, side, seam, period, loop.tolerance()), side});
             }
         }
         // Where the chord crosses a tow's rim (one end on its cap, the other on its tube): the

@@ -247,33 +247,13 @@ std::vector<TowStack> cutByBox(const TowStack& stack, const Point3& lo, const Po
     return pieces;
 }
 
-}  // namespace
-
-ScanLikeTextile scanLikeTextile(unsigned seed)
+/// The weave of @p o (its choices in @p c) as a scan gives it back: every section rescanned,
+/// starts drifting, the tows cut by a random box (the rest of @p rng's choices).
+ScanLikeTextile scanned(const WeaveOptions& o, const ScanLikeChoices& c, std::mt19937& rng)
 {
-    std::mt19937 rng(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    const auto pick = [&](std::size_t n) { return static_cast<std::size_t>(unit(rng) * static_cast<double>(n)) % n; };
     ScanLikeTextile t;
-    ScanLikeChoices& c = t.choices;
-    WeaveOptions o;
-    const std::size_t kind = pick(3);
-    o.kind = kind == 0 ? WeaveKind::Plain : kind == 1 ? WeaveKind::Twill : WeaveKind::Orthogonal;
-    c.weave = kind == 0 ? "plain" : kind == 1 ? "twill" : "orthogonal";
-    const std::size_t shape = pick(3);
-    o.shape = shape == 0 ? SectionShape::Racetrack : shape == 1 ? SectionShape::Lenticular : SectionShape::Ellipse;
-    c.section = shape == 0 ? "racetrack" : shape == 1 ? "lenticular" : "ellipse";
-    c.yarns = o.kind == WeaveKind::Twill ? 4 : 2 + pick(2);
-    o.warps = o.wefts = c.yarns;
-    o.layers = 2;
-    c.height = o.height = 0.15 + 0.15 * unit(rng);
-    c.width = o.width = 0.6 + 0.3 * unit(rng);
-    c.overlap = o.overlap = 0.05 + 0.25 * unit(rng);
-    c.sections = o.sectionsPerYarn = 12 + pick(13);
-    c.points = 24 + 2 * pick(5);
-    o.pointsPerSection = 48;  // the "true" tows, finer than what the scan gives back
-    c.pixel = 1.0 / (6.0 + 6.0 * unit(rng));
-    c.noise = 0.1 * unit(rng);
+    t.choices = c;
     const std::vector<TowStack> yarns = generateWeave(o).stacks();
 
     // The scan box: faces at random inside the yarns' ends (x, y), and for a 3D weave a top face
@@ -294,19 +274,72 @@ ScanLikeTextile scanLikeTextile(unsigned seed)
     lo.z -= 1.0;
 
     for (const TowStack& yarn : yarns) {
-        TowStack scanned = yarn;
-        scanned.sections.clear();
+        TowStack rescanned = yarn;
+        rescanned.sections.clear();
         const std::size_t n = yarn.sections.size();
         double shift = 0.0;
         std::normal_distribution<double> drift(0.0, 0.4);
         for (std::size_t i = 0; i < n; ++i) {
             shift += drift(rng);
-            scanned.sections.push_back(rescannedSection(yarn.sections[i], c.pixel * o.height, c.noise, c.points, shift,
-                                                        static_cast<unsigned>(rng())));
+            rescanned.sections.push_back(rescannedSection(yarn.sections[i], c.pixel * o.height, c.noise, c.points, shift,
+                                                          static_cast<unsigned>(rng())));
         }
-        for (TowStack& piece : cutByBox(scanned, lo, hi)) t.stacks.push_back(std::move(piece));
+        for (TowStack& piece : cutByBox(rescanned, lo, hi)) t.stacks.push_back(std::move(piece));
     }
     return t;
+}
+
+/// The random choices every scan-like textile makes the same way: section shape and size,
+/// overlap, pixel and noise (drawn from @p rng in this order, after the weave's kind).
+void chooseSectionAndScan(std::mt19937& rng, WeaveOptions& o, ScanLikeChoices& c)
+{
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const auto pick = [&](std::size_t n) { return static_cast<std::size_t>(unit(rng) * static_cast<double>(n)) % n; };
+    const std::size_t shape = pick(3);
+    o.shape = shape == 0 ? SectionShape::Racetrack : shape == 1 ? SectionShape::Lenticular : SectionShape::Ellipse;
+    c.section = shape == 0 ? "racetrack" : shape == 1 ? "lenticular" : "ellipse";
+    c.yarns = o.kind == WeaveKind::Twill ? 4 : 2 + pick(2);
+    o.warps = o.wefts = c.yarns;
+    o.layers = 2;
+    c.height = o.height = 0.15 + 0.15 * unit(rng);
+    c.width = o.width = 0.6 + 0.3 * unit(rng);
+    c.overlap = o.overlap = 0.05 + 0.25 * unit(rng);
+    c.sections = o.sectionsPerYarn = 12 + pick(13);
+    c.points = 24 + 2 * pick(5);
+    o.pointsPerSection = 48;  // the "true" tows, finer than what the scan gives back
+    c.pixel = 1.0 / (6.0 + 6.0 * unit(rng));
+    c.noise = 0.1 * unit(rng);
+}
+
+}  // namespace
+
+ScanLikeTextile scanLikeTextile(unsigned seed)
+{
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    WeaveOptions o;
+    ScanLikeChoices c;
+    const std::size_t kind = static_cast<std::size_t>(unit(rng) * 3.0) % 3;
+    o.kind = kind == 0 ? WeaveKind::Plain : kind == 1 ? WeaveKind::Twill : WeaveKind::Orthogonal;
+    c.weave = kind == 0 ? "plain" : kind == 1 ? "twill" : "orthogonal";
+    chooseSectionAndScan(rng, o, c);
+    return scanned(o, c, rng);
+}
+
+ScanLikeTextile largeScanLikeTextile(unsigned seed, const ScanLikeSize& size)
+{
+    std::mt19937 rng(seed);
+    WeaveOptions o;
+    ScanLikeChoices c;
+    o.kind = WeaveKind::Orthogonal;
+    c.weave = "orthogonal";
+    chooseSectionAndScan(rng, o, c);
+    c.yarns = o.warps = o.wefts = size.yarns;
+    o.layers = size.layers;
+    c.sections = o.sectionsPerYarn = size.sections;
+    c.points = size.points;
+    c.width = o.width = size.width;
+    return scanned(o, c, rng);
 }
 
 }  // namespace towgeom::testing

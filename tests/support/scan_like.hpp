@@ -44,6 +44,23 @@ struct ScanLikeTextile {
 /// inside others and a binder leaving the box and coming back becomes two tows.
 ScanLikeTextile scanLikeTextile(unsigned seed);
 
+/// The size of a large scan-like textile: a real scan's (57 tows of ~30 sections x 32 points).
+struct ScanLikeSize {
+    std::size_t yarns = 9;      ///< warps per layer (= wefts per layer)
+    std::size_t layers = 2;     ///< warp layers (one more weft layer)
+    std::size_t sections = 30;  ///< sections per yarn before the cut
+    std::size_t points = 32;    ///< points per contoured section
+    /// Yarn width (spacing 1). The binders get half the gap between warps: at the family's
+    /// widest (0.9) they would be 18 x thinner than the warps, and meshed at a size relative to
+    /// their own, ~8 M triangles (a real scan's binders are a fraction of the warps' size).
+    double width = 0.7;
+};
+
+/// A 3D orthogonal scan-like textile of @p size, made as scanLikeTextile() makes one (section
+/// shape and size, overlap, pixel, noise and box drawn from @p seed): with the defaults 53 yarns,
+/// binders split by the box into more tows.
+ScanLikeTextile largeScanLikeTextile(unsigned seed, const ScanLikeSize& size = {});
+
 /// @p polygon (a closed planar section, not repeated at its end) as a scan gives it back: its
 /// plane rasterised with pixel @p pixel (at most a sixth of its smaller extent; grey = covered fraction, ramp of one pixel, plus normal
 /// noise of @p noise), contoured at 1/2 by marching squares, resampled to @p points points uniform
