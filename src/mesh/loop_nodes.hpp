@@ -24,6 +24,9 @@ struct LoopConstraint {
     std::vector<UV> uv;               ///< v within [vMin, vMax]; seam points exactly on vMin or vMax
     std::vector<std::size_t> nodes;   ///< global node of each point
     bool closed = false;              ///< the piece returns to its first point (not repeated)
+    /// The intersection loop it is a piece of (-1: none, as a cell's cut). The mesher puts a node
+    /// of the tow's own on every edge that joins two nodes of one loop without being its chord.
+    long loop = -1;
 };
 
 /// Resamples @p loop at @p spacing, adds its exact seam crossings on both tows and appends the

@@ -41,6 +41,10 @@ std::vector<double> stations(double from, double to, double h, const std::vector
     return s;
 }
 
+/// Rounds of splitting edges between two loop nodes that are no loop chord (Impl::refine()):
+/// one usually does; a new node may be joined to loop nodes again only across a neck.
+constexpr int kBridgeRounds = 4;
+
 /// Loop chords lying along the seam: their ends' x (lower first).
 using SeamChords = std::set<std::pair<double, double>>;
 
@@ -157,6 +161,21 @@ struct ParametricMesher::Impl {
     Criteria criteria;
     CDT cdt;
     std::multimap<std::size_t, CDT::Vertex_handle> loopVertex;  // a seam node has two
+    std::multimap<long, long> loopsOfNode;  // loop node -> the loops it is on (LoopConstraint::loop)
+    /// Whether loop node @p node lies on loop @p loop.
+    bool onLoop(long node, long loop) const
+    {
+        for (auto [it, end] = loopsOfNode.equal_range(node); it != end; ++it)
+            if (it->second == loop) return true;
+        return false;
+    }
+    /// Whether loop nodes @p a and @p b lie on one loop.
+    bool oneLoop(long a, long b) const
+    {
+        for (auto [it, end] = loopsOfNode.equal_range(a); it != end; ++it)
+            if (onLoop(b, it->second)) return true;
+        return false;
+    }
     SeamChords seamChords;  // the x of the loop chords along the seam (lower first)
     std::size_t badFaces = 0;
 
@@ -210,10 +229,36 @@ struct ParametricMesher::Impl {
         loopVertex.emplace(node, v);
         return v;
     }
-    /// Refines, then asks for the splits that the faces still bad need.
+    /// Puts a node of this tow's own at the middle of every edge that joins two nodes of one
+    /// loop without being its chord (across a narrow neck of the loop, where its two sides come
+    /// close): the other tow may join the same two nodes on the other side of the loop, and
+    /// after the swap one tow's mesh would hold that edge four times. Returns whether it did.
+    bool splitLoopBridges()
+    {
+        // The third side of a corner (a loop's turn, or where it meets the seam or a tow's end),
+        // or an edge from a node where two loops meet (a figure-8's touching point, a triple
+        // point): the triangle is the corner's, splitting would not end.
+        const auto corner = [&](CDT::Face_handle h) {
+            return !cdt.is_infinite(h) && int(h->is_constrained(0)) + int(h->is_constrained(1)) + int(h->is_constrained(2)) >= 2;
+        };
+        const auto meeting = [&](CDT::Vertex_handle v) { return loopsOfNode.count(v->info().node) > 1; };
+        std::vector<K::Point_2> middles;
+        for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
+            const CDT::Face_handle f = e->first, g = f->neighbor(e->second);
+            if (f->is_constrained(e->second) || !(f->is_in_domain() || (!cdt.is_infinite(g) && g->is_in_domain()))) continue;
+            const CDT::Vertex_handle a = f->vertex(CDT::cw(e->second)), b = f->vertex(CDT::ccw(e->second));
+            if (a->info().node < 0 || b->info().node < 0 || !oneLoop(a->info().node, b->info().node)) continue;
+            if (corner(f) || corner(g) || meeting(a) || meeting(b)) continue;
+            middles.push_back(CGAL::midpoint(a->point(), b->point()));
+        }
+        for (const K::Point_2& p : middles) cdt.insert(p);
+        return !middles.empty();
+    }
+    /// Refines (with splitLoopBridges()), then asks for the splits that the faces still bad need.
     void refine(MeshRequests& requests)
     {
         refineKeepingConstraints(cdt, criteria);
+        for (int round = 0; round < kBridgeRounds && splitLoopBridges(); ++round) refineKeepingConstraints(cdt, criteria);
         badFaces = requestSplits(cdt, criteria, scale.aroundV, range.uMin, su, keep0, keep1, seamChords, requests);
     }
     /// A loop chord along the seam (its two nodes on one side of it, @p va and @p vb): the curve
@@ -256,6 +301,11 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
     const double ly = m.scale.aroundV, h = m.sizes.edgeLength;
     m.cdt.clear();
     m.loopVertex.clear();
+    m.loopsOfNode.clear();
+    for (const LoopConstraint& c : constraints)
+        if (c.loop >= 0)
+            for (std::size_t n : c.nodes)
+                if (!m.onLoop(static_cast<long>(n), c.loop)) m.loopsOfNode.emplace(static_cast<long>(n), c.loop);
     m.seamChords.clear();
 
     // Seam stations: uniform along u plus every loop node on the seam, the same on both sides.
@@ -341,6 +391,11 @@ bool ParametricMesher::split(const std::vector<ChordSplit>& splits, const std::v
                     break;
                 }
         if (va == CDT::Vertex_handle()) return false;
+        // The new node is on the chord's loop(s).
+        std::vector<long> loops;
+        for (auto [it, end] = m.loopsOfNode.equal_range(static_cast<long>(s.a)); it != end; ++it)
+            if (m.onLoop(static_cast<long>(s.b), it->second)) loops.push_back(it->second);
+        for (long l : loops) m.loopsOfNode.emplace(static_cast<long>(s.node), l);
         const Impl::SeamSplit along = m.splitAlongSeam(s, va, vb);
         if (along == Impl::SeamSplit::Failed) return false;
         if (along == Impl::SeamSplit::Done) continue;
