@@ -294,9 +294,11 @@ std::vector<LoopConstraint> clipLoopPieces(const std::vector<LoopConstraint>& pi
             while (in[first]) ++first;
         const std::size_t count = piece.closed ? n + 1 : n;
         LoopConstraint run;
+        run.loop = piece.loop;
         const auto flush = [&] {
             if (run.nodes.size() >= 2) out.push_back(run);
             run = {};
+            run.loop = piece.loop;
         };
         for (std::size_t i = 0; i < count; ++i) {
             const std::size_t k = (first + i) % n;

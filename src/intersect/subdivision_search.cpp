@@ -196,11 +196,14 @@ SubdivisionStats searchPatchPairs(const Handle(Geom_BSplineSurface)& sa, const H
                              [&](const Box& x, const Box& y) { pairs.emplace_back(x.handle(), y.handle()); });
     std::sort(pairs.begin(), pairs.end());  // the order of the input, not of CGAL's sweep
     Search search(limits, settle);
+    // A patch's halves are dropped after its last pair (memory: at most the patches still to meet).
+    std::vector<std::size_t> lastOfB(b.size(), 0);
+    for (std::size_t k = 0; k < pairs.size(); ++k) lastOfB[pairs[k].second] = k;
     for (std::size_t k = 0; k < pairs.size(); ++k) {
         const auto [i, j] = pairs[k];
         search.pair(a[i], b[j]);
-        // The pairs come by a's patch: its halves are not needed again.
-        if (k + 1 == pairs.size() || pairs[k + 1].first != i) a[i].halves.reset();
+        if (k + 1 == pairs.size() || pairs[k + 1].first != i) a[i].halves.reset();  // the pairs come by a's patch
+        if (lastOfB[j] == k) b[j].halves.reset();
     }
     return search.stats();
 }

@@ -152,6 +152,8 @@ PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::ve
         const double thin = 0.5 * loop.length() * kContactWidth * size;
         // Cheap first: no surface the curve bounds has less area than the curve's vector area
         // (|integral of n dA| <= area), which is the polyline's within 2 x chordal x length.
+        // (A loop crossing itself in (u, v) has signed areas that may cancel below it: such a
+        // loop is taken as no sliver here.)
         if (vectorArea(loop.points()) > thin + 2.0 * tol.chordal * loop.length()) return false;
         return !(loop.enclosedArea(LoopSide::A) > thin) || !(loop.enclosedArea(LoopSide::B) > thin);
     };

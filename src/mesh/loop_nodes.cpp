@@ -53,15 +53,16 @@ PointOn2 onChord(const LoopPoint& p, const LoopPoint& q, double t)
 }
 
 /// Whether @p x lies along the chord from @p p to @p q as the curve between them does: its
-/// foot on the chord's line within the chord, and it no farther from the line than a quarter of
-/// the chord's length (loop chords bend far less, kMaxChordBend).
+/// foot on the chord's line within the chord (not beyond an end, where the next chord's crossing
+/// may lie), and it no farther from the line than a quarter of the chord's length (loop chords
+/// bend far less, kMaxChordBend).
 bool alongChord(const LoopPoint& p, const LoopPoint& q, const Point3& x)
 {
     const Vector3 d = q.point - p.point;
     const double length2 = dot(d, d);
     if (!(length2 > 0.0)) return distance(x, p.point) == 0.0;
     const double t = dot(x - p.point, d) / length2;
-    return t >= -0.05 && t <= 1.05 && distance(x, p.point + t * d) <= 0.25 * std::sqrt(length2);
+    return t >= 0.0 && t <= 1.0 && distance(x, p.point + t * d) <= 0.25 * std::sqrt(length2);
 }
 
 /// The curve's point between @p p and @p q where tow @p side's v crosses @p seam, by bisection
@@ -76,6 +77,7 @@ bool bisectSeam(const SurfacePair& sp, const LoopPoint& p, const LoopPoint& q, L
     for (int step = 0; step < 60 && hi - lo > 1e-15; ++step) {
         const double t = 0.5 * (lo + hi);
         PointOn2 y = onChord(p, q, t);
+        capGuess(sp, onChord(p, q, 0.0), onChord(p, q, 1.0), y);
         const double vGuess = side == LoopSide::A ? y.va : y.vb;
         PointCondition c;
         c.origin = y.point;

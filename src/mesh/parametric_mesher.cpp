@@ -251,8 +251,18 @@ struct ParametricMesher::Impl {
             if (corner(f) || corner(g) || meeting(a) || meeting(b)) continue;
             middles.push_back(CGAL::midpoint(a->point(), b->point()));
         }
-        for (const K::Point_2& p : middles) cdt.insert(p);
-        return !middles.empty();
+        std::size_t inserted = 0;
+        for (const K::Point_2& p : middles) {
+            // A rounded middle that falls on a vertex or a constraint (a loop chord: it would
+            // get a node of this tow only) is left out.
+            CDT::Locate_type lt;
+            int li = 0;
+            const CDT::Face_handle at = cdt.locate(p, lt, li);
+            if (lt == CDT::VERTEX || (lt == CDT::EDGE && at->is_constrained(li))) continue;
+            cdt.insert(p, at);
+            ++inserted;
+        }
+        return inserted > 0;
     }
     /// Refines (with splitLoopBridges()), then asks for the splits that the faces still bad need.
     void refine(MeshRequests& requests)

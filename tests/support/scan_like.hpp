@@ -57,8 +57,8 @@ struct ScanLikeSize {
 };
 
 /// A 3D orthogonal scan-like textile of @p size, made as scanLikeTextile() makes one (section
-/// shape and size, overlap, pixel, noise and box drawn from @p seed): with the defaults 53 yarns,
-/// binders split by the box into more tows.
+/// shape, thickness, overlap, pixel, noise and box drawn from @p seed; the width is size.width):
+/// with the defaults 53 yarns, binders split by the box into more tows.
 ScanLikeTextile largeScanLikeTextile(unsigned seed, const ScanLikeSize& size = {});
 
 /// @p polygon (a closed planar section, not repeated at its end) as a scan gives it back: its
