@@ -8,9 +8,11 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <vector>
 
 #include "core/parallel.hpp"
 #include "core/progress_report.hpp"
+#include "core/section_geometry.hpp"
 #include "intersect/broad_phase.hpp"
 #include "intersect/cap_crossing.hpp"
 #include "intersect/containment.hpp"
@@ -33,16 +35,6 @@ using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t0)
 {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-/// The length of the vector area (1/2) sum p_k x p_k+1 of the closed polyline through @p pts.
-double vectorArea(const std::vector<LoopPoint>& pts)
-{
-    if (pts.empty()) return 0.0;
-    const Point3 o = pts.front().point;
-    Vector3 sum;
-    for (std::size_t k = 1; k + 1 < pts.size(); ++k) sum = sum + cross(pts[k].point - o, pts[k + 1].point - o);
-    return 0.5 * norm(sum);
 }
 
 struct PairResult {
@@ -154,7 +146,9 @@ PairResult intersectCandidate(const std::vector<TowSurface>& tows, const std::ve
         // (|integral of n dA| <= area), which is the polyline's within 2 x chordal x length.
         // (A loop crossing itself in (u, v) has signed areas that may cancel below it: such a
         // loop is taken as no sliver here.)
-        if (vectorArea(loop.points()) > thin + 2.0 * tol.chordal * loop.length()) return false;
+        std::vector<Point3> polyline;
+        for (const LoopPoint& p : loop.points()) polyline.push_back(p.point);
+        if (norm(detail::vectorArea(polyline)) > thin + 2.0 * tol.chordal * loop.length()) return false;
         return !(loop.enclosedArea(LoopSide::A) > thin) || !(loop.enclosedArea(LoopSide::B) > thin);
     };
     const ParameterRange ra = a.parameterRange(), rb = b.parameterRange();

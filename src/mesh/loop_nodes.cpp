@@ -521,6 +521,10 @@ std::vector<LoopConstraint> cutAt(const std::vector<UV>& uv, const std::vector<s
 std::vector<LoopConstraint> constraintsOn(const SharedLoop& shared, const IntersectionLoop& loop, LoopSide side)
 {
     const double period = periodOf(loop, side), vMin = vMinOf(loop, side);
+    const auto ofThisLoop = [&](std::vector<LoopConstraint> pieces) {
+        for (LoopConstraint& piece : pieces) piece.loop = static_cast<long>(shared.loop);
+        return pieces;
+    };
     std::vector<UV> uv = loopPolygon(shared, side);
     const std::size_t n = uv.size();
     // A node a hair's breadth from the seam (a loop touching it) is put on it: it would otherwise
@@ -549,7 +553,7 @@ std::vector<LoopConstraint> constraintsOn(const SharedLoop& shared, const Inters
                                     }),
                      pieces.end());
         shiftIntoRectangle(pieces, vMin, period);
-        return pieces;
+        return ofThisLoop(std::move(pieces));
     }
     // Start at a seam node if there is one, so every piece runs from seam to seam.
     std::size_t start = n;
@@ -563,12 +567,12 @@ std::vector<LoopConstraint> constraintsOn(const SharedLoop& shared, const Inters
             c.uv.push_back({uv[k].u, uv[k].v - shift});
             c.nodes.push_back(shared.nodes[k]);
         }
-        return {c};
+        return ofThisLoop({c});
     }
     // The loop walked once from that seam node back to it, cut at every seam node.
     std::vector<LoopConstraint> pieces = cutAt(uv, shared.nodes, start, period, [&](const UV& p) { return onSeam(p.v); });
     shiftIntoRectangle(pieces, vMin, period);
-    return pieces;
+    return ofThisLoop(std::move(pieces));
 }
 
 std::vector<CapConstraint> capConstraintsOn(const SharedLoop& shared, const IntersectionLoop& loop, LoopSide side)

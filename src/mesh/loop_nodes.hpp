@@ -62,7 +62,7 @@ bool joinTouchingLoops(SharedLoop& a, const IntersectionLoop& la, SharedLoop& b,
 
 /// The pieces of @p shared on tow @p side, cut at that tow's seam and shifted into its rectangle.
 /// For a loop across the tow's end caps only its pieces on the tube, from rim to rim (rim nodes
-/// lie exactly on u = uMin or uMax).
+/// lie exactly on u = uMin or uMax). Each piece's LoopConstraint::loop is shared.loop.
 std::vector<LoopConstraint> constraintsOn(const SharedLoop& shared, const IntersectionLoop& loop, LoopSide side);
 
 /// A piece of a loop on one of a tow's end caps: its global nodes in order, from rim node to rim

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <set>
@@ -161,18 +162,19 @@ struct ParametricMesher::Impl {
     Criteria criteria;
     CDT cdt;
     std::multimap<std::size_t, CDT::Vertex_handle> loopVertex;  // a seam node has two
-    std::multimap<long, long> loopsOfNode;  // loop node -> the loops it is on (LoopConstraint::loop)
+    std::set<std::pair<long, long>> loopsOfNode;  // (loop node, a loop it is on: LoopConstraint::loop)
     /// Whether loop node @p node lies on loop @p loop.
-    bool onLoop(long node, long loop) const
+    bool onLoop(long node, long loop) const { return loopsOfNode.count({node, loop}) > 0; }
+    /// The loops loop node @p node lies on, as a range of loopsOfNode.
+    auto loopsOf(long node) const
     {
-        for (auto [it, end] = loopsOfNode.equal_range(node); it != end; ++it)
-            if (it->second == loop) return true;
-        return false;
+        return std::make_pair(loopsOfNode.lower_bound({node, std::numeric_limits<long>::min()}),
+                              loopsOfNode.upper_bound({node, std::numeric_limits<long>::max()}));
     }
     /// Whether loop nodes @p a and @p b lie on one loop.
     bool oneLoop(long a, long b) const
     {
-        for (auto [it, end] = loopsOfNode.equal_range(a); it != end; ++it)
+        for (auto [it, end] = loopsOf(a); it != end; ++it)
             if (onLoop(b, it->second)) return true;
         return false;
     }
@@ -241,7 +243,10 @@ struct ParametricMesher::Impl {
         const auto corner = [&](CDT::Face_handle h) {
             return !cdt.is_infinite(h) && int(h->is_constrained(0)) + int(h->is_constrained(1)) + int(h->is_constrained(2)) >= 2;
         };
-        const auto meeting = [&](CDT::Vertex_handle v) { return loopsOfNode.count(v->info().node) > 1; };
+        const auto meeting = [&](CDT::Vertex_handle v) {
+            const auto [first, end] = loopsOf(v->info().node);
+            return std::distance(first, end) > 1;
+        };
         std::vector<K::Point_2> middles;
         for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
             const CDT::Face_handle f = e->first, g = f->neighbor(e->second);
@@ -314,8 +319,7 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
     m.loopsOfNode.clear();
     for (const LoopConstraint& c : constraints)
         if (c.loop >= 0)
-            for (std::size_t n : c.nodes)
-                if (!m.onLoop(static_cast<long>(n), c.loop)) m.loopsOfNode.emplace(static_cast<long>(n), c.loop);
+            for (std::size_t n : c.nodes) m.loopsOfNode.emplace(static_cast<long>(n), c.loop);
     m.seamChords.clear();
 
     // Seam stations: uniform along u plus every loop node on the seam, the same on both sides.
@@ -403,7 +407,7 @@ bool ParametricMesher::split(const std::vector<ChordSplit>& splits, const std::v
         if (va == CDT::Vertex_handle()) return false;
         // The new node is on the chord's loop(s).
         std::vector<long> loops;
-        for (auto [it, end] = m.loopsOfNode.equal_range(static_cast<long>(s.a)); it != end; ++it)
+        for (auto [it, end] = m.loopsOf(static_cast<long>(s.a)); it != end; ++it)
             if (m.onLoop(static_cast<long>(s.b), it->second)) loops.push_back(it->second);
         for (long l : loops) m.loopsOfNode.emplace(static_cast<long>(s.node), l);
         const Impl::SeamSplit along = m.splitAlongSeam(s, va, vb);

@@ -342,7 +342,6 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
                 if ((side == LoopSide::A ? l.towA() : l.towB()) == t) {
                     auto pieces = constraintsOn(s, l, side);
                     if (acrossLoops.count(s.loop)) pieces = clipLoopPieces(pieces, *options.cell, nodes);  // its pieces inside
-                    for (LoopConstraint& piece : pieces) piece.loop = static_cast<long>(s.loop);
                     c.insert(c.end(), pieces.begin(), pieces.end());
                 }
         }
