@@ -16,8 +16,10 @@
 // per tow, every pair whose boxes overlap, in the same run. Goals (issue 38): resolve <= 30 s
 // and peak memory <= 1.5 GiB; detect >= 4x faster than CGAL; no pair unresolved, no crossing
 // triangle pairs, every tow closed.
-//   bench_scan_family [--count N] [--first SEED] [--resolve] [--no-oracle] [--smoke]
-// --dump DIR writes its tows there as .stw files (one per tow, in the order resolved);
+//   bench_scan_family [--count N] [--first SEED] [--resolve [--verbose]] [--no-oracle] [--dump DIR] [--smoke]
+// --verbose prints each tow pair whose output triangles cross (with the loops detected between
+// them and where). --dump DIR writes the tows there as .stw files (one per tow, in the order
+// resolved; a subfolder per seed when --count is above 1);
 // --detect-only stops after detect and prints its counts (for profiling).
 //   bench_scan_family --large [--first SEED] [--threads T] [--dump DIR] [--detect-only] [--smoke]
 #include <towgeom/towgeom.hpp>
@@ -29,6 +31,7 @@
 #include <set>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <vector>
 #include <string>
 
@@ -49,10 +52,25 @@ struct ResolveTally {
     unsigned slowestSeed = 0, smallestAngleSeed = 0;
 };
 
+/// One line per tow pair whose output triangles cross: how many, how many of those share a node,
+/// the loops detect found between the two tows, and where the first crossing lies.
+void printCrossingPairs(const std::vector<towgeom::TowSurface>& tows, const towgeom::IntersectionReport& report,
+                        const towgeom::TextileMesh& mesh)
+{
+    for (const towgeom::testing::TowPairCrossings& c : towgeom::testing::crossingsByTowPair(mesh)) {
+        std::size_t loops = 0;
+        for (const towgeom::IntersectionLoop& l : report.loops)
+            loops += (l.towA() == c.towA && l.towB() == c.towB) || (l.towA() == c.towB && l.towB() == c.towA);
+        std::printf("    %s/%s: %zu crossing (%zu sharing a node), %zu loop(s) detected, first at (%.4g, %.4g, %.4g)\n",
+                    tows[c.towA].name().c_str(), tows[c.towB].name().c_str(), c.crossings.crossing, c.crossings.crossingSharing,
+                    loops, c.firstAt.x, c.firstAt.y, c.firstAt.z);
+    }
+}
+
 /// Resolves one textile with its detected loops and adds what it gives to @p tally; prints the
-/// textile's line when something is wrong.
+/// textile's line when something is wrong (and with @p verbose its crossing tow pairs).
 void resolveOne(unsigned seed, const std::string& what, const std::vector<towgeom::TowSurface>& tows,
-                const towgeom::IntersectionReport& report, ResolveTally& tally)
+                const towgeom::IntersectionReport& report, ResolveTally& tally, bool verbose)
 {
     ++tally.textiles;
     const auto t0 = std::chrono::steady_clock::now();
@@ -93,6 +111,7 @@ void resolveOne(unsigned seed, const std::string& what, const std::vector<towgeo
     if (!pairs.empty() || crossing > 0 || open > 0)
         std::printf("seed %u: %s: resolve: %zu unresolved pair(s)%s; %zu crossing triangle pairs; %zu tow(s) not closed\n", seed,
                     what.c_str(), pairs.size(), codes.c_str(), crossing, open);
+    if (verbose && crossing > 0) printCrossingPairs(tows, report, r.mesh);
 }
 
 void printResolveTally(const ResolveTally& t)
@@ -193,7 +212,7 @@ int runLarge(unsigned seed, std::size_t threads, bool smoke, bool detectOnly, co
 int main(int argc, char** argv)
 {
     unsigned count = 500, first = 1;
-    bool smoke = false, resolve = false, oracle = true, large = false, detectOnly = false;
+    bool smoke = false, resolve = false, oracle = true, large = false, detectOnly = false, verbose = false;
     std::size_t threads = 2;
     std::string dump;
     for (int k = 1; k < argc; ++k) {
@@ -203,12 +222,13 @@ int main(int argc, char** argv)
         else if (a == "--no-oracle") oracle = false;
         else if (a == "--large") large = true;
         else if (a == "--detect-only") detectOnly = true;
+        else if (a == "--verbose") verbose = true;
         else if (a == "--threads" && k + 1 < argc) threads = std::stoul(argv[++k]);
         else if (a == "--dump" && k + 1 < argc) dump = argv[++k];
         else if (a == "--count" && k + 1 < argc) count = static_cast<unsigned>(std::stoul(argv[++k]));
         else if (a == "--first" && k + 1 < argc) first = static_cast<unsigned>(std::stoul(argv[++k]));
         else {
-            std::fprintf(stderr, "usage: bench_scan_family [--count N] [--first SEED] [--resolve] [--no-oracle] [--smoke]\n"
+            std::fprintf(stderr, "usage: bench_scan_family [--count N] [--first SEED] [--resolve [--verbose]] [--no-oracle] [--dump DIR] [--smoke]\n"
                                  "       bench_scan_family --large [--first SEED] [--threads T] [--dump DIR] [--detect-only] [--smoke]\n");
             return 2;
         }
@@ -223,6 +243,12 @@ int main(int argc, char** argv)
     unsigned slowestSeed = 0;
     for (unsigned seed = first; seed < first + count; ++seed) {
         const towgeom::testing::ScanLikeTextile t = towgeom::testing::scanLikeTextile(seed);
+        if (!dump.empty()) {
+            const std::filesystem::path dir = count == 1 ? std::filesystem::path(dump) : std::filesystem::path(dump) / std::to_string(seed);
+            std::filesystem::create_directories(dir);
+            std::printf("seed %u: tows written to %s, in the order resolved:%s\n", seed, dir.c_str(),
+                        towgeom::testing::writeStacks(dir, t.stacks).c_str());
+        }
         std::vector<towgeom::TowSurface> fitted;
         try {
             fitted = towgeom::testing::fitAll(t.stacks);
@@ -236,7 +262,7 @@ int main(int argc, char** argv)
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         const towgeom::testing::TextileOracleComparison c =
             oracle ? towgeom::testing::compareTextileWithOracle(fitted, report) : towgeom::testing::TextileOracleComparison{};
-        if (resolve) resolveOne(seed, t.choices.describe(), fitted, report, tally);
+        if (resolve) resolveOne(seed, t.choices.describe(), fitted, report, tally, verbose);
         tows += fitted.size();
         loops += report.loops.size();
         open += report.openCount();

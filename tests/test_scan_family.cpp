@@ -166,3 +166,64 @@ TEST_CASE("a loop with a narrow neck: no edge across it is shared by the two tow
     checkResolved(47, {"weft_L0_2", "binder_0"});
     checkResolved(96, {"warp_0", "warp_1", "warp_2", "warp_3", "weft_3"}, true);
 }
+
+TEST_CASE("a loop that dips across a tow's seam and back between two loop nodes gets nodes on the seam", "[mesh][scan][seam]")
+{
+    // Plain weave of seed 32: the loop runs along the warp's seam within 1e-4 of its period and
+    // dips across it and back between two loop nodes 0.04 apart (the curve's middle lies at
+    // v = -0.0004, its ends at +0.0001). Without nodes at those two seam crossings the chord
+    // could not be split (its middle falls outside the tow's rectangle), the warp's seam
+    // stations lay a hair off the loop, and the meshes crossed in 11 triangle pairs.
+    checkResolved(32, {"warp_1", "weft_1"});
+    // Directly: every crossing of the warp's seam by the curve is a loop node on the seam.
+    const testing::ScanLikeTextile t = testing::scanLikeTextile(32);
+    std::vector<TowStack> pair;
+    for (const char* name : {"warp_1", "weft_1"})
+        for (const TowStack& s : t.stacks)
+            if (s.name == name) pair.push_back(s);
+    REQUIRE(pair.size() == 2);
+    const std::vector<TowSurface> tows = testing::fitAll(pair);
+    const ResolveResult r = meshTows(tows, intersectTows(tows));
+    const ParameterRange range = tows[0].parameterRange();
+    std::size_t curveCrossings = 0, seamNodes = 0;
+    for (const MeshedLoop& m : r.mesh.loops) {
+        const IntersectionLoop& l = r.intersections.loops[m.loop];
+        const std::vector<UV> onWarp = l.uvCurve(l.towA() == 0 ? LoopSide::A : LoopSide::B);
+        for (std::size_t k = 0; k < onWarp.size(); ++k) {
+            const double a = (onWarp[k].v - range.vMin) / range.vPeriod(), b = (onWarp[(k + 1) % onWarp.size()].v - range.vMin) / range.vPeriod();
+            curveCrossings += std::floor(a) != std::floor(b);
+        }
+        for (const std::size_t n : m.nodes)
+            for (const auto& [node, uv] : r.mesh.tows[0].parameters)
+                if (node == n && uv.v == range.vMin) ++seamNodes;
+    }
+    CHECK(curveCrossings >= 4);
+    CHECK(seamNodes >= curveCrossings);
+}
+
+TEST_CASE("where two tows meet at a shallow angle, both meshes are refined until they do not cross", "[mesh][scan][contact]")
+{
+    // Plain weaves of seeds 45 and 77: a loop runs close along the warp's seam, so the warp's
+    // seam stations lie within the weft's chord sag of the weft's surface (the surfaces meet at
+    // a shallow angle there): 4 and 5 crossing triangle pairs at the default size. The mesh
+    // stage finds the crossings (exact triangle tests) and refines both tows around them.
+    checkResolved(45, {"warp_1", "weft_0"});
+    checkResolved(77, {"warp_0", "weft_1"});
+}
+
+TEST_CASE("crossings the mesh stage cannot remove are counted, not refined without end", "[mesh][scan][contact]")
+{
+    // Plain weave of seed 7: weft_1 passes through warp_1 where one loop of the pair bounds only
+    // part of the overlap (the pair ends region_failed): 681 crossing triangle pairs before any
+    // region. They are many, so they are not taken for sag: the meshes are not refined there, and
+    // ResolveResult::crossingTrianglePairs says how many cross, as the independent count does.
+    const testing::ScanLikeTextile t = testing::scanLikeTextile(7);
+    const std::vector<TowSurface> tows = testing::fitAll(t.stacks);
+    const ResolveResult meshed = meshTows(tows, intersectTows(tows));
+    const std::size_t crossing = testing::crossingPairsBetweenTows(meshed.mesh);
+    CHECK(crossing > 100);
+    CHECK(meshed.crossingTrianglePairs == crossing);
+    std::size_t triangles = 0;
+    for (const TowMesh& m : meshed.mesh.tows) triangles += m.triangles.size();
+    CHECK(triangles < 75000);  // 73,598 with the caps: not refined around the crossings (a pass adds ~30,000)
+}

@@ -62,7 +62,7 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                    "skipped":[{"tow_a","tow_b","code","reason"}], "node_count",
                    "mesh_quality":{"min_angle_deg","angle_histogram","fraction_at_least_20",
                    "triangles","faces_over_bounds"},
-                   "mesh_rounds", "method", "timings_ms":{"read","fit","intersect","mesh",
+                   "mesh_rounds", "crossing_triangle_pairs", "method", "timings_ms":{"read","fit","intersect","mesh",
                    "regions","volume" (--volume),"brep" (step, brep),"write","total"}}
 
   role            primary (keeps its surface; with --method symmetric it gives way too, to
@@ -104,6 +104,12 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                   would split a loop or seam edge once more (after the last of 6 rounds)
   mesh_rounds     meshing rounds: splits a triangle needs on a loop or seam edge become exact
                   nodes of both sides, and those tows are meshed again
+  crossing_triangle_pairs  pairs of triangles of two tows' tubes that still cross (exact tests):
+                  where triangles cross, both tows are refined around them (up to 4 passes,
+                  each halving the size there) while the pair's crossings are few and fall;
+                  left are surfaces closer than the mesh follows, or tows passing through
+                  each other where no loop bounds the overlap (not refined); pairs listed in
+                  unresolved are not tested
 
 Options:
   --out DIR          output directory (created if needed)
@@ -480,6 +486,11 @@ int runResolve(int argc, char** argv, int first)
                       << result.quality.minAngle << " deg, " << 100.0 * result.quality.fractionAtLeast(20.0)
                       << " % of triangles at least 20 deg): the mesh size may be too coarse for the tows' curvature; "
                          "try a smaller --mesh-size\n";
+        if (result.crossingTrianglePairs > 0)
+            std::cerr << "towgeom resolve: warning: " << result.crossingTrianglePairs
+                      << " pairs of triangles of two tows' tubes still cross (report.json crossing_triangle_pairs): the "
+                         "surfaces are closer there than the mesh follows after refining both around them (try a smaller "
+                         "--mesh-size), or the tows pass through each other where no intersection loop bounds the overlap\n";
         if (!quiet)
             for (const ConnectedRegion& g : mesh.regions)
                 if (!g.note.empty()) std::cerr << "towgeom resolve: note: " << g.note << "\n";

@@ -194,6 +194,7 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
                          {"triangles", q.triangles},
                          {"faces_over_bounds", q.facesOverBounds}};
     j["mesh_rounds"] = result.meshRounds;
+    j["crossing_triangle_pairs"] = result.crossingTrianglePairs;
     j["method"] = result.method == ResolutionMethod::Symmetric ? "symmetric" : result.method == ResolutionMethod::Shrink ? "shrink" : "connect";
     if (mesh.cell) {
         const Cell& c = mesh.cell->box;

@@ -141,10 +141,42 @@ std::vector<LoopPoint> nodesAlong(const IntersectionLoop& loop, double spacing)
         p.onB.v += last.onB.v - first.onB.v;
         return p;
     };
+    const IntersectionLoop::Data& d = loop.data();
+    const double total = d.cumulative.empty() ? 0.0 : d.cumulative.back();
+    // Whether the curve between arc-length fractions s0 and s1 (nodes p and q) leaves the period
+    // cell of a tow's v that both ends lie in: it dips across the seam and back between two
+    // nodes (a loop nearly tangent to the seam), where no chord end shows the two crossings.
+    const auto dipsAcrossSeam = [&](const LoopPoint& p, const LoopPoint& q, double s0, double s1) {
+        if (!(total > 0.0)) return false;
+        for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+            const double period = periodOf(loop, side), vMin = vMinOf(loop, side);
+            const auto cell = [&](double v) { return std::floor((v - vMin) / period); };
+            const double c = cell(sideOf(p, side).v);
+            if (cell(sideOf(q, side).v) != c) continue;  // it crosses: a node there (shareLoopNodes)
+            // Beyond the cell by more than rounding (a curve along the seam within rounding of it,
+            // or an end on it, stays).
+            const auto outside = [&](double v) {
+                const double r = (v - vMin) / period - c;
+                return r < -kSeamSnap || r > 1.0 + kSeamSnap;
+            };
+            // A turn of the loop, in whole periods (its last point is not its first again).
+            const double turn = period * std::round((sideOf(d.points.back(), side).v - sideOf(d.points.front(), side).v) / period);
+            // The curve's points strictly between the two fractions (s past 1: one turn on).
+            for (int wrap = 0; wrap < 2; ++wrap) {
+                const auto from = std::upper_bound(d.cumulative.begin(), d.cumulative.end(), (s0 - wrap) * total);
+                for (auto it = from; it != d.cumulative.end() && *it < (s1 - wrap) * total; ++it) {
+                    const std::size_t k = static_cast<std::size_t>(it - d.cumulative.begin());
+                    if (k < d.points.size() && outside(sideOf(d.points[k], side).v + wrap * turn)) return true;
+                }
+            }
+        }
+        return false;
+    };
     const auto refine = [&](auto&& self, const LoopPoint& p, const LoopPoint& q, double s0, double s1, int depth) -> void {
         const LoopPoint mid = pointAt(0.5 * (s0 + s1));
         const Point3 chordMid = 0.5 * (p.point + q.point);
-        if (depth < kMaxDepth && distance(mid.point, chordMid) > kMaxChordBend * distance(p.point, q.point)) {
+        if (depth < kMaxDepth &&
+            (distance(mid.point, chordMid) > kMaxChordBend * distance(p.point, q.point) || dipsAcrossSeam(p, q, s0, s1))) {
             self(self, p, mid, s0, 0.5 * (s0 + s1), depth + 1);
             out.push_back(mid);
             self(self, mid, q, 0.5 * (s0 + s1), s1, depth + 1);
@@ -153,7 +185,6 @@ std::vector<LoopPoint> nodesAlong(const IntersectionLoop& loop, double spacing)
     // Where the loop crosses a tow's rim it turns a corner (from the tube onto the cap): those
     // points are nodes, and the loop is resampled between them, so no chord spans a corner.
     std::vector<double> corners;
-    const IntersectionLoop::Data& d = loop.data();
     if (loop.closed() && (loop.crossesCap(LoopSide::A) || loop.crossesCap(LoopSide::B)) && d.cumulative.back() > 0.0)
         for (std::size_t k = 0; k < d.points.size(); ++k)
             for (const LoopSide side : {LoopSide::A, LoopSide::B}) {

@@ -158,6 +158,13 @@ struct ParametricMesher::Impl {
     double su, sv;  // scaled length per unit u, v
     double keep0, keep1;  // the wanted part of the scaled rectangle along u: everything, or sizes.uSpan
     double x0, x1;        // the meshed part: [0, alongU], or sizes.uSpan widened by h (within it)
+    /// refineAround()'s spots in the scaled space, by x; the largest radius. (Before criteria:
+    /// localSize() reads them when criteria is made.)
+    struct ScaledSpot {
+        double x, y, radius, size;
+    };
+    std::vector<ScaledSpot> spots;
+    double spotReach = 0.0;
     SurfaceMetric metric;
     Criteria criteria;
     CDT cdt;
@@ -191,18 +198,33 @@ struct ParametricMesher::Impl {
           criteria(shapeBound(z.minAngle), z.edgeLength, metric, localSize())
     {
     }
-    /// sizes.sizeAt in the scaled space, or none.
+    /// The smallest size of the spots around (x, y) (across the seam too), or +infinity.
+    double spotSize(double x, double y) const
+    {
+        const double period = range.vPeriod() * sv;
+        double h = std::numeric_limits<double>::infinity();
+        auto it = std::lower_bound(spots.begin(), spots.end(), x - spotReach, [](const ScaledSpot& s, double v) { return s.x < v; });
+        for (; it != spots.end() && it->x <= x + spotReach; ++it) {
+            double dy = std::abs(y - it->y);
+            dy = std::min(dy, period - dy);
+            if ((x - it->x) * (x - it->x) + dy * dy <= it->radius * it->radius) h = std::min(h, it->size);
+        }
+        return h;
+    }
+    /// sizes.sizeAt and the spots in the scaled space, or none.
     Criteria::LocalSize localSize() const
     {
-        if (!sizes.sizeAt) return {};
+        if (!sizes.sizeAt && spots.empty()) return {};
         return [this](double x, double y) {
+            const double near = spotSize(x, y);
+            if (!sizes.sizeAt) return near;
             const UV at = toUV({x, y});
             const double h = sizes.sizeAt(at);
             if (!(h > 0.0) || !std::isfinite(h))
                 throw Error(ErrorCode::InvalidArgument, "the mesh size function gives " + std::to_string(h) + " at (u, v) = (" +
                                                             std::to_string(at.u) + ", " + std::to_string(at.v) + ")",
                             "tow '" + surface.name() + "'");
-            return h;
+            return std::min(h, near);
         };
     }
     static double shapeBound(double minAngle)
@@ -440,6 +462,19 @@ bool ParametricMesher::split(const std::vector<ChordSplit>& splits, const std::v
     }
     m.refine(requests);
     return true;
+}
+
+void ParametricMesher::refineAround(const std::vector<SizeSpot>& spots, MeshRequests& requests)
+{
+    Impl& m = *impl_;
+    for (const SizeSpot& s : spots) {
+        const K::Point_2 p = m.toXY(s.at);
+        m.spots.push_back({p.x(), p.y(), s.radius, s.size});
+        m.spotReach = std::max(m.spotReach, s.radius);
+    }
+    std::sort(m.spots.begin(), m.spots.end(), [](const Impl::ScaledSpot& a, const Impl::ScaledSpot& b) { return a.x < b.x; });
+    m.criteria = Criteria(Impl::shapeBound(m.sizes.minAngle), m.sizes.edgeLength, m.metric, m.localSize());
+    m.refine(requests);
 }
 
 std::size_t ParametricMesher::badFaces() const { return impl_->badFaces; }

@@ -56,6 +56,15 @@ struct ChordSplit {
     UV at;
 };
 
+/// A smaller mesh size wanted around a point of the surface (where the tow's mesh crosses
+/// another's): within @p radius of @p at (3D lengths, measured in the scaled parameter space),
+/// edges at most @p size.
+struct SizeSpot {
+    UV at;
+    double radius = 0.0;
+    double size = 0.0;
+};
+
 /// Meshes one tow's surface and keeps the triangulation, so that nodes added on its loops or
 /// seam later are put in and refined around, not meshed again from scratch. The parameter
 /// space's scale and the surface metric are computed once, at construction.
@@ -79,6 +88,10 @@ public:
     /// Adds nodes on loop chords and seam stations (at u), then refines again. False if a chord
     /// is not in the mesh (then mesh() again with the new constraints).
     bool split(const std::vector<ChordSplit>& splits, const std::vector<double>& seamU, MeshRequests& requests);
+
+    /// Refines again with edges at most SizeSpot::size around each of @p spots (kept for every
+    /// later mesh() and split()), then asks for the splits the faces still bad need.
+    void refineAround(const std::vector<SizeSpot>& spots, MeshRequests& requests);
 
     /// Faces over the size or shape bound after the last mesh() or split().
     std::size_t badFaces() const;

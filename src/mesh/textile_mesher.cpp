@@ -19,6 +19,7 @@
 #include "core/parallel.hpp"
 #include "intersect/intersection_loop_data.hpp"
 #include "core/progress_report.hpp"
+#include "mesh/crossing_spots.hpp"
 #include "mesh/end_caps.hpp"
 #include "mesh/loop_nodes.hpp"
 #include "mesh/mesh_measures.hpp"
@@ -328,6 +329,10 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
     // concerned and refines around it. The last round's requests are not taken: its meshes are
     // consistent, a few triangles stay over the bounds (reported).
     constexpr int kMaxRounds = 6;
+    // Refinements around crossings of two tows' meshes: each halves the size there (so the sag
+    // falls to a quarter); a crossing left after the last is counted.
+    constexpr std::size_t kFewCrossings = 16;  // plus 1 % of the smaller mesh's triangles
+    constexpr int kContactPasses = 4;
     // loop node -> its shared loop(s): a figure-8's touching node belongs to both lobes
     std::multimap<std::size_t, std::size_t> sharedOf;
     for (std::size_t k = 0; k < shared.size(); ++k)
@@ -371,69 +376,140 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
         options.monitor->update("meshing tows", ++meshed, tows.size());
     });
     failures.throwAll();
-    int round = 1;
-    for (; round < kMaxRounds; ++round) {
-        // Every split asked for (by either tow) becomes an exact loop node; seam stations are
-        // copied to both sides by the tow itself.
-        std::vector<std::vector<ChordSplit>> splits(tows.size());
-        std::vector<std::vector<double>> newSeamU(tows.size());
-        std::set<std::pair<std::size_t, std::size_t>> chords;
-        for (std::size_t t = 0; t < tows.size(); ++t) {
-            newSeamU[t] = requests[t].seamU;
-            seamU[t].insert(seamU[t].end(), requests[t].seamU.begin(), requests[t].seamU.end());
-            for (const MeshRequests::OnLoop& q : requests[t].onLoop)
-                chords.emplace(std::min(q.a, q.b), std::max(q.a, q.b));
+    // The rounds: every split asked for is put into the tows concerned until none is asked for
+    // (or kMaxRounds). Returns the tows changed.
+    const auto runRounds = [&] {
+        std::set<std::size_t> changed;
+        int round = 1;
+        for (; round < kMaxRounds; ++round) {
+            // Every split asked for (by either tow) becomes an exact loop node; seam stations are
+            // copied to both sides by the tow itself.
+            std::vector<std::vector<ChordSplit>> splits(tows.size());
+            std::vector<std::vector<double>> newSeamU(tows.size());
+            std::set<std::pair<std::size_t, std::size_t>> chords;
+            for (std::size_t t = 0; t < tows.size(); ++t) {
+                newSeamU[t] = requests[t].seamU;
+                seamU[t].insert(seamU[t].end(), requests[t].seamU.begin(), requests[t].seamU.end());
+                for (const MeshRequests::OnLoop& q : requests[t].onLoop)
+                    chords.emplace(std::min(q.a, q.b), std::max(q.a, q.b));
+            }
+            for (const auto& [a, b] : chords) {
+                // The loop this chord belongs to: of the loops through node a, the one where b follows.
+                std::size_t k = shared.size();
+                const auto range = sharedOf.equal_range(a);
+                for (auto it = range.first; it != range.second && k == shared.size(); ++it)
+                    if (splitChord(loops[shared[it->second].loop], shared[it->second], a, b, 0.5, nodes)) k = it->second;
+                if (k == shared.size()) continue;
+                SharedLoop& s = shared[k];
+                const std::size_t node = nodes.size() - 1;
+                sharedOf.emplace(node, k);
+                const LoopPoint& p = s.points[static_cast<std::size_t>(std::find(s.nodes.begin(), s.nodes.end(), node) - s.nodes.begin())];
+                const IntersectionLoop& l = loops[s.loop];
+                // A node on a tow's cap is not in its tube's mesh: the cap takes it when meshed.
+                const auto onTube = [](const TowSurface& t, const UV& uv) {
+                    const ParameterRange r = t.parameterRange();
+                    return uv.u >= r.uMin && uv.u <= r.uMax;
+                };
+                if (onTube(tows[l.towA()], p.onA)) splits[l.towA()].push_back({a, b, node, p.onA});
+                if (onTube(tows[l.towB()], p.onB)) splits[l.towB()].push_back({a, b, node, p.onB});
+            }
+            std::vector<std::size_t> busy;
+            for (std::size_t t = 0; t < tows.size(); ++t)
+                if (meshers[t] && (!splits[t].empty() || !newSeamU[t].empty())) busy.push_back(t);
+            if (busy.empty()) break;
+            changed.insert(busy.begin(), busy.end());
+            for (std::size_t t : busy) requests[t] = {};
+            parallelFor(busy.size(), threads, [&](std::size_t k) {
+                throwIfCancelled(options.monitor);
+                const std::size_t t = busy[k];
+                failures.run(t, [&] {
+                    if (!meshers[t]->split(splits[t], newSeamU[t], requests[t])) {
+                        requests[t] = {};
+                        meshers[t]->mesh(constraintsOf(t), seamU[t], requests[t]);
+                    }
+                });
+            });
+            failures.throwAll();
         }
-        for (const auto& [a, b] : chords) {
-            // The loop this chord belongs to: of the loops through node a, the one where b follows.
-            std::size_t k = shared.size();
-            const auto range = sharedOf.equal_range(a);
-            for (auto it = range.first; it != range.second && k == shared.size(); ++it)
-                if (splitChord(loops[shared[it->second].loop], shared[it->second], a, b, 0.5, nodes)) k = it->second;
-            if (k == shared.size()) continue;
-            SharedLoop& s = shared[k];
-            const std::size_t node = nodes.size() - 1;
-            sharedOf.emplace(node, k);
-            const LoopPoint& p = s.points[static_cast<std::size_t>(std::find(s.nodes.begin(), s.nodes.end(), node) - s.nodes.begin())];
-            const IntersectionLoop& l = loops[s.loop];
-            // A node on a tow's cap is not in its tube's mesh: the cap takes it when meshed.
-            const auto onTube = [](const TowSurface& t, const UV& uv) {
-                const ParameterRange r = t.parameterRange();
-                return uv.u >= r.uMin && uv.u <= r.uMax;
-            };
-            if (onTube(tows[l.towA()], p.onA)) splits[l.towA()].push_back({a, b, node, p.onA});
-            if (onTube(tows[l.towB()], p.onB)) splits[l.towB()].push_back({a, b, node, p.onB});
-        }
-        std::vector<std::size_t> busy;
-        for (std::size_t t = 0; t < tows.size(); ++t)
-            if (meshers[t] && (!splits[t].empty() || !newSeamU[t].empty())) busy.push_back(t);
-        if (busy.empty()) break;
-        for (std::size_t t : busy) requests[t] = {};
-        parallelFor(busy.size(), threads, [&](std::size_t k) {
+        result.meshRounds = std::max(result.meshRounds, static_cast<std::size_t>(round));
+        return changed;
+    };
+    runRounds();
+    // The final meshes, and the tows' own nodes evaluated on their surfaces. Where two tows'
+    // meshes cross (a chord's sag deeper than the gap between the surfaces: next to a loop where
+    // they meet at a shallow angle, or where they nearly touch), both are refined around the
+    // crossing and the rounds run again, up to kContactPasses times.
+    std::vector<ParametricMesh> meshes(tows.size());
+    std::vector<std::vector<Point3>> ownNodes(tows.size());
+    // Pairs left unresolved pass through each other: their crossings are not the chords' sag.
+    std::set<TowPair> ignored(excluded);
+    for (const UnresolvedPair& u : result.unresolved) ignored.insert(std::minmax(u.towA, u.towB));
+    for (const SkippedLoop& k : result.skippedLoops)
+        if (k.reason != SkippedLoop::Reason::OutsideCell) ignored.insert(std::minmax(loops[k.loop].towA(), loops[k.loop].towB()));
+    // So do tows that coincide, lie one inside the other, or whose search for loops stopped (a
+    // contact along a line stays: its meshes must not cross either).
+    for (const PairFinding& f : result.intersections.findings)
+        if (f.kind != PairFinding::Kind::Contact) ignored.insert(std::minmax(f.towA, f.towB));
+    std::map<TowPair, std::size_t> lastCrossings;  // each pair's crossing triangle pairs in the last pass
+    std::set<std::size_t> stale;  // tows whose mesh changed since it was taken
+    for (std::size_t t = 0; t < tows.size(); ++t)
+        if (meshers[t]) stale.insert(t);  // (none outside the cell)
+    for (int pass = 0;; ++pass) {
+        const std::vector<std::size_t> todo(stale.begin(), stale.end());
+        parallelFor(todo.size(), threads, [&](std::size_t k) {
             throwIfCancelled(options.monitor);
-            const std::size_t t = busy[k];
+            const std::size_t t = todo[k];
+            meshes[t] = meshers[t]->result(kLocal);
+            if (cuts) keepInCell(meshes[t], *cuts, t);
+            ownNodes[t].clear();
+            ownNodes[t].reserve(meshes[t].newNodes.size());
+            for (const UV& p : meshes[t].newNodes) ownNodes[t].push_back(tows[t].point(p.u, p.v));
+        });
+        // A pair is refined while its crossings are few (the chords' sag along a loop or a near
+        // contact) and fall from pass to pass; many, or not falling, the tows pass through each
+        // other there (a loop missing): counted, left as they are.
+        const auto refinePair = [&](const TowPair& p, std::size_t count) {
+            const std::size_t fewer = std::min(meshes[p.first].triangles.size(), meshes[p.second].triangles.size());
+            const auto last = lastCrossings.find(p);
+            return count <= kFewCrossings + fewer / 100 && (last == lastCrossings.end() || count < last->second);
+        };
+        // After the first pass only pairs with a tow changed are tested again; the others keep
+        // their count (they were not refined).
+        std::set<TowPair> untested(ignored);
+        std::map<TowPair, std::size_t> kept;
+        if (pass > 0)
+            for (std::size_t a = 0; a < tows.size(); ++a)
+                for (std::size_t b = a + 1; b < tows.size(); ++b)
+                    if (!stale.count(a) && !stale.count(b)) {
+                        untested.insert({a, b});
+                        if (const auto it = lastCrossings.find({a, b}); it != lastCrossings.end()) kept.insert(*it);
+                    }
+        const CrossingSpots crossing = crossingSpots(nodes, meshes, ownNodes, kLocal, untested, refinePair, threads);
+        lastCrossings = crossing.crossingPairs;
+        lastCrossings.insert(kept.begin(), kept.end());
+        result.crossingTrianglePairs = 0;
+        for (const auto& [pair, count] : lastCrossings) result.crossingTrianglePairs += count;
+        if (pass == kContactPasses || std::all_of(crossing.spots.begin(), crossing.spots.end(), [](const auto& v) { return v.empty(); })) break;
+        stale.clear();
+        for (std::size_t t = 0; t < tows.size(); ++t)
+            if (!crossing.spots[t].empty()) stale.insert(t);
+        const std::vector<std::size_t> refined(stale.begin(), stale.end());
+        parallelFor(refined.size(), threads, [&](std::size_t k) {
+            throwIfCancelled(options.monitor);
+            const std::size_t t = refined[k];
             failures.run(t, [&] {
-                if (!meshers[t]->split(splits[t], newSeamU[t], requests[t])) {
-                    requests[t] = {};
-                    meshers[t]->mesh(constraintsOf(t), seamU[t], requests[t]);
-                }
+                requests[t] = {};
+                meshers[t]->refineAround(crossing.spots[t], requests[t]);
             });
         });
         failures.throwAll();
+        const std::set<std::size_t> changed = runRounds();
+        stale.insert(changed.begin(), changed.end());
     }
-    result.meshRounds = static_cast<std::size_t>(round);
-    // The final meshes, and the tows' own nodes evaluated on their surfaces.
-    std::vector<ParametricMesh> meshes(tows.size());
-    std::vector<std::vector<Point3>> ownNodes(tows.size());
     std::vector<std::vector<Vector3>> fibre(tows.size());  // per mesher triangle (then caps)
     parallelFor(tows.size(), threads, [&](std::size_t t) {
-        throwIfCancelled(options.monitor);
-        if (!meshers[t]) return;  // outside the cell: no mesh
-        meshes[t] = meshers[t]->result(kLocal);
+        if (!meshers[t]) return;
         meshers[t].reset();
-        if (cuts) keepInCell(meshes[t], *cuts, t);
-        ownNodes[t].reserve(meshes[t].newNodes.size());
-        for (const UV& p : meshes[t].newNodes) ownNodes[t].push_back(tows[t].point(p.u, p.v));
         fibre[t] = fibreDirections(tows[t], meshes[t].centroids);
     });
     // Per tow, the (u,v) of every node on its own surface: its own nodes and its loops' nodes.

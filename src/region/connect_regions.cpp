@@ -834,6 +834,7 @@ ResolveResult connectRegions(const std::vector<TowSurface>& tows, ResolveResult 
             out.skipped = std::move(meshed.skipped);
 #pragma GCC diagnostic pop
             out.meshRounds = meshed.meshRounds;
+            out.crossingTrianglePairs = meshed.crossingTrianglePairs;
             out.method = options.method;
             out.ranks = detail::towRanks(tows, options.primaryPatterns);
             out.timings = meshed.timings;

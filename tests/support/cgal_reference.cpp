@@ -215,10 +215,26 @@ double differenceVolume(const TriangleMesh& a, const std::vector<TriangleMesh>& 
 std::size_t crossingPairsBetweenTows(const TextileMesh& mesh)
 {
     std::size_t crossing = 0;
-    for (std::size_t i = 0; i < mesh.tows.size(); ++i)
-        for (std::size_t j = i + 1; j < mesh.tows.size(); ++j)
-            crossing += crossingTrianglePairs(mesh.nodes, mesh.tows[i].triangles, mesh.tows[j].triangles).crossing;
+    for (const TowPairCrossings& c : crossingsByTowPair(mesh)) crossing += c.crossings.crossing;
     return crossing;
+}
+
+std::vector<TowPairCrossings> crossingsByTowPair(const TextileMesh& mesh)
+{
+    std::vector<TowPairCrossings> out;
+    for (std::size_t i = 0; i < mesh.tows.size(); ++i)
+        for (std::size_t j = i + 1; j < mesh.tows.size(); ++j) {
+            TowPairCrossings c;
+            c.towA = i;
+            c.towB = j;
+            c.crossings = crossingTrianglePairs(mesh.nodes, mesh.tows[i].triangles, mesh.tows[j].triangles);
+            if (c.crossings.crossing == 0) continue;
+            const std::array<std::size_t, 3>& t = mesh.tows[i].triangles[c.crossings.first.front().first];
+            const Point3 &p = mesh.nodes[t[0]], &q = mesh.nodes[t[1]], &r = mesh.nodes[t[2]];
+            c.firstAt = Point3{(p.x + q.x + r.x) / 3.0, (p.y + q.y + r.y) / 3.0, (p.z + q.z + r.z) / 3.0};
+            out.push_back(c);
+        }
+    return out;
 }
 
 }  // namespace towgeom::testing

@@ -51,6 +51,16 @@ TriangleCrossings crossingTrianglePairs(const std::vector<Point3>& nodes,
 /// crossingTrianglePairs() summed over every two tows of @p mesh: the crossing pairs.
 std::size_t crossingPairsBetweenTows(const TextileMesh& mesh);
 
+/// The crossing triangle pairs of two tows of a mesh, with where the first of them lies.
+struct TowPairCrossings {
+    std::size_t towA = 0, towB = 0;  ///< indices into TextileMesh::tows, towA < towB
+    TriangleCrossings crossings;
+    Point3 firstAt;                  ///< the centroid of a's triangle in the first crossing pair
+};
+
+/// crossingTrianglePairs() for every two tows of @p mesh, only the pairs that cross.
+std::vector<TowPairCrossings> crossingsByTowPair(const TextileMesh& mesh);
+
 /// The least distance between the triangles of @p a and those of @p b that come within
 /// @p within of each other (boxes grown by it, CGAL::box_intersection_d), +infinity when none
 /// do: for each such pair the least of the six vertex-triangle and nine edge-edge distances

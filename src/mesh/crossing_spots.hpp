@@ -1,0 +1,41 @@
+// Where the tows' meshes cross, the spots to refine them around: both triangles of each crossing
+// pair get a smaller size over a disc around them, so that the chords' sag falls below the gap
+// between the two surfaces there (next to a loop where they meet at a shallow angle, or where
+// they nearly touch).
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "mesh/parametric_mesher.hpp"
+#include "towgeom/point.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
+
+/// The spots of each tow (empty where its mesh crosses no other) and the crossing triangle pairs
+/// of each tow pair (a < b) that has any.
+struct CrossingSpots {
+    std::vector<std::vector<SizeSpot>> spots;  ///< per tow
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> crossingPairs;
+};
+
+/// @p meshes[t] is tow t's mesh from ParametricMesher::result(@p ownFrom): node numbers below
+/// @p ownFrom index @p nodes (shared loop nodes), the others its own nodes, @p ownNodes[t][n -
+/// ownFrom] in 3D. Tow pairs in @p ignored are not tested (nor in crossingPairs). For each crossing triangle pair of
+/// a tow pair that @p refined(pair, its crossing count) accepts, both triangles get a spot at
+/// their (u,v) centroid: size half the shorter of the two triangles' longest edges, radius twice
+/// the longer.
+CrossingSpots crossingSpots(const std::vector<Point3>& nodes, const std::vector<ParametricMesh>& meshes,
+                            const std::vector<std::vector<Point3>>& ownNodes, std::size_t ownFrom,
+                            const std::set<std::pair<std::size_t, std::size_t>>& ignored,
+                            const std::function<bool(const std::pair<std::size_t, std::size_t>&, std::size_t)>& refined,
+                            std::size_t threads);
+
+}  // namespace detail
+TOWGEOM_END_NAMESPACE
