@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cstdlib>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "cgal_reference.hpp"
 #include "dense_oracle.hpp"
@@ -99,6 +101,20 @@ TEST_CASE("scan-like family, seeds 21-30: detect finds every curve of the dense 
 TEST_CASE("scan-like family, seeds 31-40: detect finds every curve of the dense oracle", "[intersection][scan][family]") { checkFamily(31, 10); }
 TEST_CASE("scan-like family, seeds 41-50: detect finds every curve of the dense oracle", "[intersection][scan][family]") { checkFamily(41, 10); }
 
+namespace {
+
+/// The stacks of @p t named @p names, in that order (those found).
+std::vector<TowStack> stacksNamed(const testing::ScanLikeTextile& t, const std::vector<std::string>& names)
+{
+    std::vector<TowStack> picked;
+    for (const std::string& name : names)
+        for (const TowStack& s : t.stacks)
+            if (s.name == name) picked.push_back(s);
+    return picked;
+}
+
+}  // namespace
+
 TEST_CASE("a loop nearly tangent to a tow's seam, crossing it four times close together, is meshed", "[mesh][scan][seam]")
 {
     // From the large scan-like textile of seed 2 (bench_scan_family --large): the loop of this
@@ -106,10 +122,7 @@ TEST_CASE("a loop nearly tangent to a tow's seam, crossing it four times close t
     // Newton on v = seam from one loop chord's guess found the crossing of another chord: two
     // loop nodes on one point, mesh_failed.
     const testing::ScanLikeTextile t = testing::largeScanLikeTextile(2);
-    std::vector<TowStack> pair;
-    for (const char* name : {"warp_L1_8", "weft_L2_7"})
-        for (const TowStack& s : t.stacks)
-            if (s.name == name) pair.push_back(s);
+    const std::vector<TowStack> pair = stacksNamed(t, {"warp_L1_8", "weft_L2_7"});
     REQUIRE(pair.size() == 2);
     const std::vector<TowSurface> tows = testing::fitAll(pair);
     const ResolveResult r = resolveTextile(tows);
@@ -138,10 +151,7 @@ void checkResolved(unsigned seed, const std::vector<std::string>& names, bool cr
 {
     const testing::ScanLikeTextile t = testing::scanLikeTextile(seed);
     INFO("seed " << seed << ": " << t.choices.describe());
-    std::vector<TowStack> picked;
-    for (const std::string& name : names)
-        for (const TowStack& s : t.stacks)
-            if (s.name == name) picked.push_back(s);
+    const std::vector<TowStack> picked = stacksNamed(t, names);
     REQUIRE(picked.size() == names.size());
     const std::vector<TowSurface> tows = testing::fitAll(picked);
     const ResolveResult r = resolveTextile(tows);
@@ -177,10 +187,7 @@ TEST_CASE("a loop that dips across a tow's seam and back between two loop nodes 
     checkResolved(32, {"warp_1", "weft_1"});
     // Directly: every crossing of the warp's seam by the curve is a loop node on the seam.
     const testing::ScanLikeTextile t = testing::scanLikeTextile(32);
-    std::vector<TowStack> pair;
-    for (const char* name : {"warp_1", "weft_1"})
-        for (const TowStack& s : t.stacks)
-            if (s.name == name) pair.push_back(s);
+    const std::vector<TowStack> pair = stacksNamed(t, {"warp_1", "weft_1"});
     REQUIRE(pair.size() == 2);
     const std::vector<TowSurface> tows = testing::fitAll(pair);
     const ResolveResult r = meshTows(tows, intersectTows(tows));
