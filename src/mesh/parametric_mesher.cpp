@@ -9,6 +9,7 @@
 
 #include "mesh/constraint_keeping_mesher.hpp"
 #include "mesh/mesh_cdt.hpp"
+#include "mesh/scaled_space.hpp"
 #include "mesh/starting_points.hpp"
 #include "mesh/surface_metric.hpp"
 #include "towgeom/error.hpp"
@@ -55,7 +56,7 @@ using SeamChords = std::set<std::pair<double, double>>;
 /// of the tow's two ends are fixed. Faces whose centroid lies beyond [@p keepFrom, @p keepTo]
 /// along x are not wanted (beyond a cell's cut): neither counted nor split for. Returns the
 /// number of bad faces.
-std::size_t requestSplits(const CDT& cdt, const Criteria& criteria, double ly, double uMin, double su, double keepFrom,
+std::size_t requestSplits(const CDT& cdt, const Criteria& criteria, double ly, const ScaledSpace& space, double keepFrom,
                           double keepTo, const SeamChords& seamChords, MeshRequests& requests)
 {
     const Criteria::Is_bad isBad = criteria.is_bad_object();
@@ -77,7 +78,7 @@ std::size_t requestSplits(const CDT& cdt, const Criteria& criteria, double ly, d
         if (onSeam && seamChords.count(std::minmax(pa.x(), pb.x()))) return;
         if (onSeam) {
             const double x = 0.5 * (pa.x() + pb.x());
-            if (seam.insert(x).second) requests.seamU.push_back(uMin + x / su);
+            if (seam.insert(x).second) requests.seamU.push_back(space.toUV(x, 0.0).u);
         } else if (lo >= 0) {
             if (chords.emplace(lo, hi).second)
                 requests.onLoop.push_back({static_cast<std::size_t>(lo), static_cast<std::size_t>(hi)});
@@ -158,6 +159,9 @@ struct ParametricMesher::Impl {
     double su, sv;  // scaled length per unit u, v
     double keep0, keep1;  // the wanted part of the scaled rectangle along u: everything, or sizes.uSpan
     double x0, x1;        // the meshed part: [0, alongU], or sizes.uSpan widened by h (within it)
+    /// The plane meshed in: squared where the sections are oblique, except in a cell (its cuts
+    /// and kept span are along u).
+    ScaledSpace space;
     /// refineAround()'s spots in the scaled space, by x; the largest radius. (Before criteria:
     /// localSize() reads them when criteria is made.)
     struct ScaledSpot {
@@ -194,7 +198,7 @@ struct ParametricMesher::Impl {
           keep0(z.uSpan ? ((*z.uSpan)[0] - range.uMin) * su : -std::numeric_limits<double>::infinity()),
           keep1(z.uSpan ? ((*z.uSpan)[1] - range.uMin) * su : std::numeric_limits<double>::infinity()),
           x0(z.uSpan ? std::max(0.0, keep0 - z.edgeLength) : 0.0), x1(z.uSpan ? std::min(scale.alongU, keep1 + z.edgeLength) : scale.alongU),
-          metric(s, su, sv, scale.alongU, scale.aroundV, z.edgeLength),
+          space(s, su, sv, !z.uSpan), metric(s, space, scale.alongU, scale.aroundV, z.edgeLength),
           criteria(shapeBound(z.minAngle), z.edgeLength, metric, localSize())
     {
     }
@@ -232,8 +236,13 @@ struct ParametricMesher::Impl {
         const double a = std::clamp(minAngle, 1.0, 30.0) * 3.14159265358979323846 / 180.0;
         return std::sin(a) * std::sin(a);  // CGAL's bound: the squared sine of the smallest angle
     }
-    K::Point_2 toXY(const UV& p) const { return {(p.u - range.uMin) * su, (p.v - range.vMin) * sv}; }
-    UV toUV(const K::Point_2& p) const { return {range.uMin + p.x() / su, range.vMin + p.y() / sv}; }
+    K::Point_2 toXY(const UV& p) const
+    {
+        double x = 0.0, y = 0.0;
+        space.toXY(p.u, p.v, x, y);
+        return {x, y};
+    }
+    UV toUV(const K::Point_2& p) const { return space.toUV(p.x(), p.y()); }
     CDT::Vertex_handle insertLoopNode(const K::Point_2& p, std::size_t node)
     {
         // A node of two loops (a triple point, a figure-8's touching point) is one vertex, though
@@ -296,7 +305,7 @@ struct ParametricMesher::Impl {
     {
         refineKeepingConstraints(cdt, criteria);
         for (int round = 0; round < kBridgeRounds && splitLoopBridges(); ++round) refineKeepingConstraints(cdt, criteria);
-        badFaces = requestSplits(cdt, criteria, scale.aroundV, range.uMin, su, keep0, keep1, seamChords, requests);
+        badFaces = requestSplits(cdt, criteria, scale.aroundV, space, keep0, keep1, seamChords, requests);
     }
     /// A loop chord along the seam (its two nodes on one side of it, @p va and @p vb): the curve
     /// between them dips across the seam, and the new node lies off it, on the seam's one side or
@@ -348,7 +357,7 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
     // All four sides get stations h/2 apart: edges that short are seldom encroached, nor too
     // long in 3D where the surface is longer than its mean.
     std::vector<double> seamX;
-    for (double u : seamU) seamX.push_back((u - m.range.uMin) * m.su);
+    for (double u : seamU) seamX.push_back(m.toXY({u, m.range.vMin}).x());
     for (const LoopConstraint& c : constraints)
         for (std::size_t k = 0; k < c.uv.size(); ++k)
             if (c.uv[k].v == m.range.vMin || c.uv[k].v == m.range.vMax) seamX.push_back(m.toXY(c.uv[k]).x());
@@ -456,7 +465,7 @@ bool ParametricMesher::split(const std::vector<ChordSplit>& splits, const std::v
     }
     // New seam stations on both sides: a point on a constrained edge splits it.
     for (double u : seamU) {
-        const double x = (u - m.range.uMin) * m.su;
+        const double x = m.toXY({u, m.range.vMin}).x();
         m.cdt.insert(K::Point_2(x, 0.0));
         m.cdt.insert(K::Point_2(x, m.scale.aroundV));
     }

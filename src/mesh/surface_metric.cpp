@@ -8,7 +8,7 @@
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
 
-SurfaceMetric::SurfaceMetric(const TowSurface& surface, double su, double sv, double lx, double ly, double spacing)
+SurfaceMetric::SurfaceMetric(const TowSurface& surface, const ScaledSpace& space, double lx, double ly, double spacing)
 {
     constexpr std::size_t kMaxSide = 1024;
     const auto count = [&](double length) {
@@ -23,10 +23,13 @@ SurfaceMetric::SurfaceMetric(const TowSurface& surface, double su, double sv, do
     for (std::size_t i = 0; i < nx_; ++i)
         for (std::size_t j = 0; j < ny_; ++j) {
             // The ends exactly: u beyond uMax is outside the surface.
-            const double u = i + 1 == nx_ ? r.uMax : r.uMin + static_cast<double>(i) * cellX_ / su;
-            const double v = j + 1 == ny_ ? r.vMax : r.vMin + static_cast<double>(j) * cellY_ / sv;
+            const UV p = space.toUV(static_cast<double>(i) * cellX_, static_cast<double>(j) * cellY_);
+            const double u = i + 1 == nx_ ? r.uMax : std::clamp(p.u, r.uMin, r.uMax);
+            const double v = j + 1 == ny_ ? r.vMax : p.v;
             const SurfaceDerivatives d = surface.derivatives(u, v);
-            const Vector3 sx = (1.0 / su) * d.du, sy = (1.0 / sv) * d.dv;
+            // S_x = S_u du/dx, S_y = S_u du/dy + S_v dv/dy, from x(u, v) and y = (v - vMin) sv.
+            const ScaledSpace::Slopes s = space.slopes(u, v);
+            const Vector3 sx = (1.0 / s.xu) * d.du, sy = (-s.xv / (s.xu * space.sv())) * d.du + (1.0 / space.sv()) * d.dv;
             forms_[i * ny_ + j] = {dot(sx, sx), dot(sx, sy), dot(sy, sy)};
         }
 }

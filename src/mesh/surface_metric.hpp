@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "mesh/scaled_space.hpp"
 #include "towgeom/tow_surface.hpp"
 #include "towgeom/export.hpp"
 
@@ -15,9 +16,9 @@ namespace detail {
 
 class SurfaceMetric {
 public:
-    /// Samples @p surface on a grid of about @p spacing over the scaled rectangle
-    /// [0, lx] x [0, ly], where x = (u - uMin) * su and y = (v - vMin) * sv.
-    SurfaceMetric(const TowSurface& surface, double su, double sv, double lx, double ly, double spacing);
+    /// Samples @p surface on a grid of about @p spacing over the rectangle [0, lx] x [0, ly] of
+    /// @p space.
+    SurfaceMetric(const TowSurface& surface, const ScaledSpace& space, double lx, double ly, double spacing);
 
     /// The metric at (x, y): the squared 3D length of (dx, dy) is e dx^2 + 2 f dx dy + g dy^2
     /// (interpolated bilinearly; points outside the rectangle use its nearest side).
