@@ -60,14 +60,15 @@ ScaledSpace::ScaledSpace(const TowSurface& surface, double su, double sv, bool u
     if (!(largest > 1e-9 * lx)) return;  // square already
     // The blend: the full correction from 2 x its largest value off each end, where it cannot
     // make x fall along u (its slope there is at most half of su).
-    // None within 2 tow sizes of an end either: a loop across a cap meets the rim at any angle,
-    // and the thin triangles between it and the rim are classified by their (u,v) (the region
-    // stage), which only a linear map keeps on the side of a chord they lie on in the plane.
-    const double blend = 2.0 * largest, margin = blend + 2.0 * surface.towSize();
+    // None in the grid's last cell at each end: there x is (u - uMin) su to the last bit, as
+    // without the correction (a loop across a cap, with nodes on the rim and thin triangles next
+    // to it, failed in the region stage with the correction blended down to the rim itself).
+    const double blend = 2.0 * largest, margin = lx / static_cast<double>(nu_ - 1);
     std::vector<double> base(nu_), weight(nu_);
     for (std::size_t i = 0; i < nu_; ++i) {
         base[i] = i + 1 == nu_ ? lx : (u_[i] - range_.uMin) * su;
-        weight[i] = i == 0 || i + 1 == nu_ ? 0.0 : std::clamp((std::min(base[i], lx - base[i]) - margin) / blend, 0.0, 1.0);
+        // (Rows 1 and nu - 2 lie at the margin: none there, whatever the rounding.)
+        weight[i] = i <= 1 || i + 2 >= nu_ ? 0.0 : std::clamp((std::min(base[i], lx - base[i]) - margin) / blend, 0.0, 1.0);
     }
     // Where sections turn fast the correction's own slope along u may make x fall: a smaller
     // share of it, or none.

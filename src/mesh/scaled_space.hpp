@@ -19,8 +19,9 @@ public:
     /// @p su, @p sv: the plane's length per unit u and v. With @p unshear, x is corrected so that
     /// dS/dx and dS/dy are about square: dx/dv = su (S_u . S_v) / |S_u|^2, integrated around each
     /// section (a drift over the whole turn, as a tow's twist gives, is left), blended to nothing
-    /// over the last stretch at each end so that the ends stay at x = 0 and x = (uMax - uMin) su,
-    /// and scaled down where it would let x fall along u. Without it, x = (u - uMin) su.
+    /// towards each end (none in the grid's last cell there) so that the ends stay at x = 0 and
+    /// x = (uMax - uMin) su, and scaled down where it would let x fall along u. Without it,
+    /// x = (u - uMin) su.
     ScaledSpace(const TowSurface& surface, double su, double sv, bool unshear);
 
     double su() const { return su_; }

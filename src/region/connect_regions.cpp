@@ -19,6 +19,7 @@
 #include "mesh/mesh_measures.hpp"
 #include "mesh/textile_mesh_finish.hpp"
 #include "region/connected_region.hpp"
+#include "region/mesh_pieces.hpp"
 #include "region/mid_surface.hpp"
 #include "region/tow_ranks.hpp"
 #include "region/winding_loops.hpp"
@@ -461,7 +462,29 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
                 for (std::size_t tri : detail::trianglesInside(uv.centroid[t], polygonOf(k, side), period(t)))
                     hits[t].emplace_back(tri, k);
             }
-        std::sort(hits[t].begin(), hits[t].end());
+        // Each loop's inside by the pieces its chords cut the mesh into (MeshPieces): a triangle
+        // thin along a chord may fail its own test. Again with the cap triangles below.
+        // Only triangles with a test vote: side triangles, then also the cap triangles probed
+        // for a loop across that cap.
+        const detail::MeshPieces pieces(in.tows[t].triangles);
+        std::vector<bool> onSide(in.tows[t].triangles.size()), probed;
+        for (std::size_t i = 0; i < onSide.size(); ++i) onSide[i] = !std::isnan(uv.centroid[t][i].u);
+        probed = onSide;
+        for (std::size_t i = 0; i < uv.probe[t].size(); ++i)
+            if (uv.probe[t][i].end != 0 && uv.probe[t][i].rimTriangle != SIZE_MAX) probed[i] = true;
+        const auto byPieces = [&](std::vector<std::pair<std::size_t, std::size_t>>& h, bool withCaps) {
+            std::map<std::size_t, std::vector<std::size_t>> byLoop;
+            for (const auto& [tri, k] : h) byLoop[k].push_back(tri);
+            h.clear();
+            for (auto& [k, tris] : byLoop) {
+                std::sort(tris.begin(), tris.end());
+                const IntersectionLoop& l = loopOf(k);
+                const bool caps = withCaps && l.crossesCap(l.towA() == t ? LoopSide::A : LoopSide::B);
+                for (std::size_t tri : pieces.inside(in.loops[shared[k]].nodes, tris, caps ? probed : onSide)) h.emplace_back(tri, k);
+            }
+            std::sort(h.begin(), h.end());
+        };
+        byPieces(hits[t], false);
         // Cap triangles (CapProbe): inside a loop where the side triangle at the rim beyond them
         // is, unless an odd number of the loop's chords on the cap lie between.
         if (uv.probe[t].empty()) return;
@@ -478,7 +501,7 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
                 }
             }
         hits[t].insert(hits[t].end(), capHits.begin(), capHits.end());
-        std::sort(hits[t].begin(), hits[t].end());
+        byPieces(hits[t], true);
     });
     // On a cell's face, a cap triangle of two tows' caps lies inside both (a loop of theirs
     // crosses the face): the lower-ranked tow gives way there, inside the pair's loop with the
