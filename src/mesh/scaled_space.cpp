@@ -58,9 +58,9 @@ ScaledSpace::ScaledSpace(const TowSurface& surface, double su, double sv, bool u
     double largest = 0.0;
     for (double e : c) largest = std::max(largest, std::abs(e));
     if (!(largest > 1e-9 * lx)) return;  // square already
-    // The blend: the full correction from 2 x its largest value off each end, where it cannot
-    // make x fall along u (its slope there is at most half of su).
-    // None in the grid's last cell at each end: there x is (u - uMin) su to the last bit, as
+    // The blend: none in the grid's last cell at each end, then a ramp to the full correction
+    // over 2 x its largest value, where it cannot make x fall along u (the ramp's slope adds at
+    // most half of su). None in the last cell: there x is (u - uMin) su to the last bit, as
     // without the correction (a loop across a cap, with nodes on the rim and thin triangles next
     // to it, failed in the region stage with the correction blended down to the rim itself).
     const double blend = 2.0 * largest, margin = lx / static_cast<double>(nu_ - 1);
