@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <string>
 
 #include "intersect/intersection_loop_data.hpp"
 #include "intersect/intersection_point.hpp"
@@ -63,6 +64,14 @@ bool alongChord(const LoopPoint& p, const LoopPoint& q, const Point3& x)
     if (!(length2 > 0.0)) return distance(x, p.point) == 0.0;
     const double t = dot(x - p.point, d) / length2;
     return t >= 0.0 && t <= 1.0 && distance(x, p.point + t * d) <= 0.25 * std::sqrt(length2);
+}
+
+/// How far along the chord from @p p to @p q the foot of @p x lies, 0 to 1.
+double fractionAlong(const LoopPoint& p, const LoopPoint& q, const Point3& x)
+{
+    const Vector3 d = q.point - p.point;
+    const double length2 = dot(d, d);
+    return length2 > 0.0 ? std::clamp(dot(x - p.point, d) / length2, 0.0, 1.0) : 0.0;
 }
 
 /// The curve's point between @p p and @p q where tow @p side's v crosses @p seam, by bisection
@@ -325,6 +334,10 @@ SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, d
             sideRef(at, side).u = rim;
             found.push_back({t, at, side});
         }
+        // In their order along the curve, by where each exact point lies along the chord (not by
+        // the linear guess of each tow's v or u, which is far off where the curve is nearly
+        // tangent to a seam: two crossings close together would swap).
+        for (Crossing& c : found) c.t = fractionAlong(p, q, c.point.point);
         std::sort(found.begin(), found.end(), [](const Crossing& a, const Crossing& b) { return a.t < b.t; });
         // Both tows' seams crossed at one point (a loop through where the seams meet): one node,
         // exactly on both seams.
@@ -353,15 +366,18 @@ SharedLoop shareLoopNodes(const IntersectionLoop& loop, std::size_t loopIndex, d
             }
             return true;
         };
-        for (const auto& [t, c] : crossings) {
+        for (std::size_t i = 0; i < crossings.size(); ++i) {
+            const auto& [t, c] = crossings[i];
             // A crossing at a rim node (a corner on the seam): that node, put on the seam.
             for (const std::size_t end : {k, (k + 1) % n})
                 if (atRimOfEither(base[end]) && distance(c.point, base[end].point) <= same) snapped[end] = 1;
             if (onBoth(c, k, false) || onBoth(c, (k + 1) % n, k + 1 == n)) continue;
-            if (t < kSnap && !snapped[k] && !atRimOfEither(base[k])) {
+            // Only the chord's first crossing may replace its first node, and only its last the
+            // next node: the others are inserted between them, in order.
+            if (t < kSnap && i == 0 && !snapped[k] && !atRimOfEither(base[k])) {
                 points[k] = c;
                 snapped[k] = 1;
-            } else if (t > 1.0 - kSnap && !snapped[(k + 1) % n] && !atRimOfEither(base[(k + 1) % n])) {
+            } else if (t > 1.0 - kSnap && i + 1 == crossings.size() && !snapped[(k + 1) % n] && !atRimOfEither(base[(k + 1) % n])) {
                 LoopPoint r = c;  // back to the first point's own turn on the closing chord
                 if (k + 1 == n) {
                     r.onA.v -= q.onA.v - base[0].onA.v;
@@ -510,13 +526,22 @@ std::vector<UV> loopPolygon(const SharedLoop& shared, LoopSide side)
 namespace {
 
 /// Shifts each piece into the tow's rectangle by the period cell of its first chord's midpoint.
-void shiftIntoRectangle(std::vector<LoopConstraint>& pieces, double vMin, double period)
+void shiftIntoRectangle(std::vector<LoopConstraint>& pieces, double vMin, double period, const std::string& towName)
 {
     for (LoopConstraint& c : pieces) {
         if (c.uv.size() < 2) continue;
         const double mid = 0.5 * (c.uv[0].v + c.uv[1].v);
         const double shift = period * std::floor((mid - vMin) / period);
-        for (UV& q : c.uv) q.v = std::clamp(q.v - shift, vMin, vMin + period);
+        for (UV& q : c.uv) {
+            q.v -= shift;
+            // Beyond the rectangle by more than rounding: a chord crossing the seam with no node
+            // there (shareLoopNodes() missed a crossing), which no mesh can follow. Clamping it
+            // would fold the tow's mesh inside the loop.
+            if (q.v < vMin - kSeamSnap * period || q.v > vMin + (1.0 + kSeamSnap) * period)
+                throw Error(ErrorCode::Internal, "an intersection loop crosses the seam of the tow's surface where no node of it lies",
+                            "tow '" + towName + "'");
+            q.v = std::clamp(q.v, vMin, vMin + period);
+        }
     }
     pieces.erase(std::remove_if(pieces.begin(), pieces.end(), [](const LoopConstraint& c) { return c.uv.size() < 2; }),
                  pieces.end());
@@ -583,7 +608,7 @@ std::vector<LoopConstraint> constraintsOn(const SharedLoop& shared, const Inters
                                         return std::any_of(c.uv.begin(), c.uv.end(), [&](const UV& p) { return capOf(loop, side, p.u) != 0; });
                                     }),
                      pieces.end());
-        shiftIntoRectangle(pieces, vMin, period);
+        shiftIntoRectangle(pieces, vMin, period, (side == LoopSide::A ? loop.surfaceA() : loop.surfaceB()).name());
         return ofThisLoop(std::move(pieces));
     }
     // Start at a seam node if there is one, so every piece runs from seam to seam.
@@ -602,7 +627,7 @@ std::vector<LoopConstraint> constraintsOn(const SharedLoop& shared, const Inters
     }
     // The loop walked once from that seam node back to it, cut at every seam node.
     std::vector<LoopConstraint> pieces = cutAt(uv, shared.nodes, start, period, [&](const UV& p) { return onSeam(p.v); });
-    shiftIntoRectangle(pieces, vMin, period);
+    shiftIntoRectangle(pieces, vMin, period, (side == LoopSide::A ? loop.surfaceA() : loop.surfaceB()).name());
     return ofThisLoop(std::move(pieces));
 }
 
