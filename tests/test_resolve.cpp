@@ -556,7 +556,12 @@ TEST_CASE("a tow grazing another's end: resolved, or named, never overlapping si
         try {
             const ResolveResult r = resolveTextile(tows, o);
             for (const TowResolution& t : r.tows) CHECK(t.boundaryLoops == 0);
-            if (testing::crossingPairsBetweenTows(r.mesh) > 0) CHECK_FALSE((r.unresolved.empty() && r.skippedLoops.empty()));
+            // Crossings are excused by a pair left unresolved or a loop skipped, not by a contact
+            // (its meshes are refined until they do not cross).
+            const bool excused = !r.unresolved.empty() || std::any_of(r.skippedLoops.begin(), r.skippedLoops.end(), [](const SkippedLoop& k) {
+                                     return k.reason != SkippedLoop::Reason::Contact;
+                                 });
+            if (testing::crossingPairsBetweenTows(r.mesh) > 0) CHECK(excused);
         } catch (const Error& e) {
             FAIL_CHECK("resolveTextile threw: " << e.what());
         }

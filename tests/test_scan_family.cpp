@@ -283,3 +283,42 @@ TEST_CASE("crossings the mesh stage cannot remove are counted, not refined witho
     for (const TowMesh& m : meshed.mesh.tows) triangles += m.triangles.size();
     CHECK(triangles < 75000);  // 72,546 (416 crossing pairs): not refined around the crossings (a pass adds ~30,000)
 }
+
+TEST_CASE("a loop thinner than its nodes can follow, where pressed tows nearly touch, is a contact", "[mesh][scan][contact]")
+{
+    // From the large scan-like textile of seed 8: besides their large loop, the weft and the
+    // binder meet in a loop 0.015 long around 6.6e-6 of area, where the surfaces meet at 0.4-1.4
+    // degrees. Its two sides run within 1e-6 of each other for a stretch, closer than its nodes
+    // can follow: its node polygon crossed itself, the mesher's constraints cut each other, the
+    // binder was not closed after the swap and all nine of its pairs in the textile ended
+    // region_failed, their meshes crossing in 73 triangle pairs.
+    const testing::ScanLikeTextile t = testing::largeScanLikeTextile(8);
+    const std::vector<TowStack> pair = stacksNamed(t, {"weft_L0_3", "binder_5"});
+    REQUIRE(pair.size() == 2);
+    const std::vector<TowSurface> tows = testing::fitAll(pair);
+    const ResolveResult r = resolveTextile(tows);
+    REQUIRE(r.intersections.loops.size() == 2);
+    for (const UnresolvedPairEntry& u : unresolvedPairs(r)) FAIL_CHECK(u.code << ": " << u.message);
+    // The large loop is a region; the small one a contact, named in the result.
+    CHECK(r.mesh.regions.size() == 1);
+    REQUIRE(r.skippedLoops.size() == 1);
+    const SkippedLoop& contact = r.skippedLoops[0];
+    CHECK(contact.reason == SkippedLoop::Reason::Contact);
+    CHECK(r.intersections.loops[contact.loop].length() < 0.02);
+    CHECK(contact.message.find("'weft_L0_3' and 'binder_5'") != std::string::npos);
+    for (const TowResolution& tr : r.tows) CHECK(tr.boundaryLoops == 0);
+    // The meshes do not cross there (the mesh stage refines both tows where they would).
+    CHECK(testing::crossingPairsBetweenTows(r.mesh) == 0);
+    CHECK(r.crossingTrianglePairs == 0);
+}
+
+TEST_CASE("a loop grazing a tow's rim gets no node on the cap between two nodes on the tube", "[mesh][scan][caps]")
+{
+    // Twills of seeds 182 and 234: a loop across the warp's (or weft's) end cap runs back along
+    // the tube within 2e-4 of the rim, dipping onto the cap and back between two loop nodes. A
+    // split of such a chord (asked for by a mesher) put a node on the cap into the loop's piece on
+    // the tube; the tube's mesh lost a rim node, and meshing the cap failed (mesh_failed, 281 and
+    // 401 crossing triangle pairs). Such a chord now stays whole.
+    checkResolved(182, {"warp_3", "weft_1"});
+    checkResolved(234, {"warp_1", "weft_3"});
+}

@@ -223,7 +223,16 @@ struct SkippedLoop {
         /// resolved only when the tows are closed by their caps (MeshOptions::caps).
         CrossesCap,
         /// The loop lies outside ResolveOptions::cell: the tows are clipped there.
-        OutsideCell
+        OutsideCell,
+        /// The loop is thinner than its nodes can follow, where the surfaces nearly touch
+        /// (pressed tows): its node polygon crosses itself in a tow's (u,v), and the overlap it
+        /// bounds is at most 1/64 of the mesh size deep (half its extent times the tangent of the
+        /// largest angle at which the surfaces meet along it), less than the meshes' chord
+        /// deviation. A contact, not an unresolved pair: its overlap stays, and the mesh stage
+        /// refines both tows there until their meshes do not cross
+        /// (ResolveResult::crossingTrianglePairs counts any left). The exact solids of the
+        /// general fuse (trimmedBrep()) are refused with it, as with any loop not resolved.
+        Contact
     };
     std::size_t loop = 0;              ///< index in ResolveResult::intersections.loops
     Reason reason = Reason::OpenCurve;  ///< why
@@ -239,8 +248,9 @@ struct ResolveResult {
     IntersectionReport intersections;  ///< every loop found (open ones included)
     TextileMesh mesh;                  ///< the compatible meshes
     std::vector<TowResolution> tows;   ///< per input tow
-    /// Loops that were not resolved (open; winding around a tow without caps, around both tows,
-    /// or cutting it into bands that do not alternate), in loop order, with the reason.
+    /// Loops that were not resolved (open; across a cap or winding around a tow without caps,
+    /// around both tows, or cutting it into bands that do not alternate; outside the cell; a
+    /// contact), in loop order, with the reason.
     std::vector<SkippedLoop> skippedLoops;
     /// skippedLoops as (loop index, message).
     /// @deprecated Use skippedLoops (typed reasons); removed in 0.3.
@@ -276,8 +286,9 @@ struct ResolveResult {
     /// (at most 16 plus 1 % of the smaller mesh's triangles) and fall from pass to pass. What is
     /// left: surfaces closer than the mesh follows after 4 passes, or two tows passing through each
     /// other where no loop bounds the overlap (many crossings, not refined). Pairs left unresolved
-    /// (unresolved, skippedLoops, IntersectionReport::findings other than a contact) are not
-    /// tested; 0 when no other two tows' tubes cross.
+    /// (unresolved, skippedLoops other than outside the cell or a contact,
+    /// IntersectionReport::findings other than a contact) are not tested; 0 when no other two
+    /// tows' tubes cross.
     std::size_t crossingTrianglePairs = 0;
     ResolveTimings timings;            ///< where the time went
 };

@@ -147,7 +147,7 @@ int runExport(int argc, char** argv, int first)
                       << " s; written to " << written << "\n";
         }
         const bool noMatrix = warnAboutBrep("export", brep, written);
-        reportContacts("export", result.intersections, tows);
+        reportContacts("export", result, tows);
         const std::vector<UnresolvedPairEntry> unresolved = unresolvedPairs(result);
         reportUnresolved("export", unresolved, tows);
         return exitsUnresolved(unresolved, args.has("allow-open")) || noMatrix ? kExitUnresolved : kExitOk;

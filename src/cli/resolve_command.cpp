@@ -91,7 +91,10 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                   inside the other: not shrunk, the rank rule resolves it)
   skipped         every loop not resolved, with its code (open_curve, crosses_cap,
                   around_both_tows, around_tow_without_caps, bands_do_not_alternate,
-                  outside_cell: clipped away by --cell) and the reason as a sentence
+                  outside_cell: clipped away by --cell; contact: a loop thinner than its
+                  nodes can follow, where the tows nearly touch, not unresolved: its overlap
+                  stays, the meshes are refined there until they do not cross) and the reason
+                  as a sentence
   volume_removed  the volume of the two tows' overlap inside the region's loop: what the
                   secondary lost there when no third tow overlaps them there (with
                   --method symmetric, what both lost together there)
@@ -498,7 +501,7 @@ int runResolve(int argc, char** argv, int first)
         if (!volumeRefused.empty())  // a warning, whatever --quiet says
             std::cerr << "towgeom resolve: warning: no volume mesh written (--volume): " << volumeRefused << "; the surfaces are written"
                       << (overlapping.empty() ? "" : ", the pairs are named below") << "\n";
-        reportContacts("resolve", result.intersections, tows);
+        reportContacts("resolve", result, tows);
         reportUnresolved("resolve", unresolved, tows);
         // A refused volume mesh or a missing matrix solid exits 3 even with --allow-open: an
         // output asked for is missing.

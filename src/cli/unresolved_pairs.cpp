@@ -13,6 +13,13 @@ void reportContacts(const char* command, const IntersectionReport& report, const
                       << "': " << f.message << " [contact]\n";
 }
 
+void reportContacts(const char* command, const ResolveResult& result, const std::vector<TowSurface>& tows)
+{
+    reportContacts(command, result.intersections, tows);
+    for (const SkippedLoop& s : result.skippedLoops)
+        if (s.reason == SkippedLoop::Reason::Contact) std::cerr << "towgeom " << command << ": note: " << s.message << " [contact]\n";
+}
+
 void reportUnresolved(const char* command, const std::vector<UnresolvedPairEntry>& pairs, const std::vector<TowSurface>& tows)
 {
     for (const UnresolvedPairEntry& p : pairs)

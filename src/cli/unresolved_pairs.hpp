@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "towgeom/report.hpp"
+#include "towgeom/resolve.hpp"
 #include "towgeom/tow_intersection.hpp"
 
 namespace towgeom::cli {
@@ -16,6 +17,10 @@ namespace towgeom::cli {
 /// One stderr note per pair whose surfaces only touch along a line (PairFinding::Kind::Contact):
 /// not unresolved (nothing interpenetrates), but never silent.
 void reportContacts(const char* command, const IntersectionReport& report, const std::vector<TowSurface>& tows);
+
+/// The same for resolve's result, and one note per loop it took for a contact
+/// (SkippedLoop::Reason::Contact: the tows nearly touch along a loop too thin to bound a region).
+void reportContacts(const char* command, const ResolveResult& result, const std::vector<TowSurface>& tows);
 
 /// One stderr line per pair, `towgeom COMMAND: unresolved tow pair 'a' and 'b': message [reason]`.
 void reportUnresolved(const char* command, const std::vector<UnresolvedPairEntry>& pairs, const std::vector<TowSurface>& tows);

@@ -103,6 +103,7 @@ const char* skipCode(SkippedLoop::Reason r)
     case SkippedLoop::Reason::BandsDoNotAlternate: return "bands_do_not_alternate";
     case SkippedLoop::Reason::CrossesCap: return "crosses_cap";
     case SkippedLoop::Reason::OutsideCell: return "outside_cell";
+    case SkippedLoop::Reason::Contact: return "contact";
     }
     return "open_curve";
 }

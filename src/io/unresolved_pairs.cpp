@@ -73,6 +73,7 @@ std::vector<UnresolvedPairEntry> unresolvedPairs(const ResolveResult& result)
             throw Error(ErrorCode::InvalidArgument, "skipped loop " + std::to_string(s.loop) + " is not in the result's report");
         const IntersectionLoop& l = result.intersections.loops[s.loop];
         if (s.reason == SkippedLoop::Reason::OutsideCell) continue;  // clipped away, not unresolved
+        if (s.reason == SkippedLoop::Reason::Contact) continue;      // the tows touch there: not unresolved
         if (s.reason == SkippedLoop::Reason::OpenCurve)
             addOnce(pairs, {l.towA(), l.towB(), "open_curve", "open intersection curve: " + l.openReason()});
         else if (s.reason == SkippedLoop::Reason::CrossesCap)

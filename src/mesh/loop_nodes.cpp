@@ -66,12 +66,13 @@ bool alongChord(const LoopPoint& p, const LoopPoint& q, const Point3& x)
     return t >= 0.0 && t <= 1.0 && distance(x, p.point + t * d) <= 0.25 * std::sqrt(length2);
 }
 
-/// How far along the chord from @p p to @p q the foot of @p x lies, 0 to 1.
+/// How far along the chord from @p p to @p q the foot of @p x lies: 0 at p, 1 at q (beyond
+/// them outside [0, 1]).
 double fractionAlong(const LoopPoint& p, const LoopPoint& q, const Point3& x)
 {
     const Vector3 d = q.point - p.point;
     const double length2 = dot(d, d);
-    return length2 > 0.0 ? std::clamp(dot(x - p.point, d) / length2, 0.0, 1.0) : 0.0;
+    return length2 > 0.0 ? dot(x - p.point, d) / length2 : 0.0;
 }
 
 /// The curve's point between @p p and @p q where tow @p side's v crosses @p seam, by bisection
@@ -461,6 +462,14 @@ bool splitChord(const IntersectionLoop& loop, SharedLoop& shared, std::size_t a,
         const double v0 = sideOf(p, side).v, v1 = sideOf(q, side).v, vm = side == LoopSide::A ? x.va : x.vb;
         const double cell = vMin + period * std::floor((0.5 * (v0 + v1) - vMin) / period);
         if (vm < cell || vm > cell + period) return false;
+        // Nor may it lie across a tow's rim from the chord (a loop grazing the rim dips onto the
+        // cap and back between two nodes on the tube): a piece of the loop on the tube would get
+        // a node on the cap. The part of the tow the chord is on is that of an end not on the rim.
+        const ParameterRange r = rangeOf(loop, side);
+        const auto onRim = [&](double u) { return u == r.uMin || u == r.uMax; };
+        const double u0 = sideOf(p, side).u, u1 = sideOf(q, side).u, um = side == LoopSide::A ? x.ua : x.ub;
+        if (!onRim(u0) && capOf(loop, side, um) != capOf(loop, side, u0)) return false;
+        if (!onRim(u1) && capOf(loop, side, um) != capOf(loop, side, u1)) return false;
     }
     shared.points.insert(shared.points.begin() + static_cast<std::ptrdiff_t>(i) + 1, LoopPoint{x.point, {x.ua, x.va}, {x.ub, x.vb}});
     shared.nodes.insert(shared.nodes.begin() + static_cast<std::ptrdiff_t>(i) + 1, globalNodes.size());

@@ -48,7 +48,8 @@ bool onSeam(const IntersectionLoop& loop, const LoopPoint& p, double within);
 /// Adds a node on the chord between loop nodes @p a and @p b (consecutive in @p shared) at
 /// fraction @p t: the exact loop point where the curve crosses the plane normal to the chord
 /// there. Appends it to @p globalNodes. False if a and b are not consecutive, or if the point
-/// would leave the chord's period cell on either tow (the curve dips across a seam there).
+/// would leave the chord's period cell on either tow (the curve dips across a seam there) or lie
+/// across a tow's rim from the chord (the curve dips onto a cap or back onto the tube).
 bool splitChord(const IntersectionLoop& loop, SharedLoop& shared, std::size_t a, std::size_t b, double t,
                 std::vector<Point3>& globalNodes);
 

@@ -25,6 +25,7 @@
 #include "mesh/mesh_measures.hpp"
 #include "mesh/parametric_mesher.hpp"
 #include "mesh/textile_mesh_finish.hpp"
+#include "mesh/thin_loops.hpp"
 #include "region/meeting_loops.hpp"
 #include "region/tow_ranks.hpp"
 #include "region/triple_points.hpp"
@@ -257,7 +258,17 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
         else if (!excluded.count({l.towA(), l.towB()})) {
             if (inCell == CellSide::Across) acrossLoops.insert(i);
             try {
-                shared.push_back(shareLoopNodes(l, i, spacingOf(l), nodes));
+                SharedLoop placed = shareLoopNodes(l, i, spacingOf(l), nodes);
+                // Its pieces on both tows, checked here (they throw where a piece leaves a tow's
+                // rectangle), so that such a loop costs its own pair only.
+                constraintsOn(placed, l, LoopSide::A);
+                constraintsOn(placed, l, LoopSide::B);
+                // A loop whose sides come closer than its nodes follow, a sliver: a contact.
+                const std::string thin = thinLoopContact(l, placed, std::min(towH[l.towA()], towH[l.towB()]));
+                if (!thin.empty() && inCell == CellSide::Inside)
+                    result.skippedLoops.push_back({i, Why::Contact, thin});
+                else
+                    shared.push_back(std::move(placed));
             } catch (const Error& e) {
                 if (e.code() == ErrorCode::Cancelled) throw;
                 if (loopFailed.emplace(l.towA(), l.towB()).second)
@@ -445,7 +456,8 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
     std::set<TowPair> ignored(excluded);
     for (const UnresolvedPair& u : result.unresolved) ignored.insert(std::minmax(u.towA, u.towB));
     for (const SkippedLoop& k : result.skippedLoops)
-        if (k.reason != SkippedLoop::Reason::OutsideCell) ignored.insert(std::minmax(loops[k.loop].towA(), loops[k.loop].towB()));
+        if (k.reason != SkippedLoop::Reason::OutsideCell && k.reason != SkippedLoop::Reason::Contact)
+            ignored.insert(std::minmax(loops[k.loop].towA(), loops[k.loop].towB()));
     // So do tows that coincide, lie one inside the other, or whose search for loops stopped (a
     // contact along a line stays: its meshes must not cross either).
     for (const PairFinding& f : result.intersections.findings)
