@@ -15,6 +15,7 @@
 
 #include "cgal_reference.hpp"
 #include "dense_oracle.hpp"
+#include "mesh_checks.hpp"
 #include "scan_like.hpp"
 #include "synthetic_tows.hpp"
 
@@ -94,6 +95,55 @@ void checkFamily(unsigned first, unsigned count)
     }
 }
 
+/// A tow's fitted surface tessellated finely (8 rows per section span, 4 columns per input
+/// point) and closed at its ends: the reference solid for volumes.
+TriangleMesh referenceSolid(const TowSurface& tow)
+{
+    const TriangleMesh m = tow.tessellate(8 * tow.sectionCount() + 1, 4 * tow.pointParameters().size());
+    return closedSurface(m.vertices, m.triangles);
+}
+
+/// Seeds [first, first + count) resolved with the default options: no pair left unresolved,
+/// every tow's mesh closed and 2-manifold (counted from its triangles' edges alone), no two tows'
+/// triangles crossing (CGAL box intersection and exact triangle tests), and every tow keeping its
+/// volume minus the tows ranked above it that it meets (CGAL corefinement of the reference
+/// solids) within 1 % (the issue asks 2 %; seeds 1-50 differ by at most 0.49 %). Prints the
+/// worst volume difference and the smallest angle (not asserted: issue 38's item 5 is open).
+void checkFamilyResolved(unsigned first, unsigned count)
+{
+    double worstVolume = 0.0, smallestAngle = 180.0;
+    for (unsigned seed = first; seed < first + count; ++seed) {
+        const testing::ScanLikeTextile t = testing::scanLikeTextile(seed);
+        INFO("seed " << seed << ": " << t.choices.describe());
+        const std::vector<TowSurface> tows = testing::fitAll(t.stacks);
+        const ResolveResult r = resolveTextile(tows);
+        for (const UnresolvedPairEntry& u : unresolvedPairs(r)) FAIL_CHECK(u.code << ": " << u.message);
+        for (std::size_t k = 0; k < tows.size(); ++k) {
+            INFO("tow " << tows[k].name());
+            const testing::Boundary b = testing::boundaryOf(r.mesh.tows[k].triangles);
+            CHECK(b.edges == 0);
+            CHECK(b.nonManifoldEdges == 0);
+            CHECK(b.misorientedEdges == 0);
+        }
+        CHECK(testing::crossingPairsBetweenTows(r.mesh) == 0);
+        REQUIRE(r.ranks.size() == tows.size());
+        std::vector<TriangleMesh> solids;
+        for (const TowSurface& tow : tows) solids.push_back(referenceSolid(tow));
+        for (std::size_t k = 0; k < tows.size(); ++k) {
+            std::vector<TriangleMesh> above;
+            for (std::size_t a = 0; a < tows.size(); ++a)
+                if (r.ranks[a] < r.ranks[k] && tows[a].boundingBox().overlaps(tows[k].boundingBox())) above.push_back(solids[a]);
+            const double kept = above.empty() ? testing::closedMeshVolume(solids[k]) : testing::differenceVolume(solids[k], above);
+            INFO("tow " << tows[k].name() << " keeps " << r.tows[k].volumeAfter << ", CGAL " << kept);
+            CHECK(std::abs(r.tows[k].volumeAfter - kept) <= 0.01 * kept);
+            worstVolume = std::max(worstVolume, std::abs(r.tows[k].volumeAfter - kept) / kept);
+        }
+        smallestAngle = std::min(smallestAngle, r.quality.minAngle);
+    }
+    WARN("seeds " << first << "-" << first + count - 1 << ": largest kept-volume difference from CGAL's " << 100.0 * worstVolume
+                  << " %, smallest angle " << smallestAngle << " deg");
+}
+
 }  // namespace
 
 // 50 textiles in five cases (CTest runs them side by side), about 1 s each.
@@ -102,6 +152,14 @@ TEST_CASE("scan-like family, seeds 11-20: detect finds every curve of the dense 
 TEST_CASE("scan-like family, seeds 21-30: detect finds every curve of the dense oracle", "[intersection][scan][family]") { checkFamily(21, 10); }
 TEST_CASE("scan-like family, seeds 31-40: detect finds every curve of the dense oracle", "[intersection][scan][family]") { checkFamily(31, 10); }
 TEST_CASE("scan-like family, seeds 41-50: detect finds every curve of the dense oracle", "[intersection][scan][family]") { checkFamily(41, 10); }
+
+// The same 50 resolved (issue 38: no pair unresolved, no crossing triangles, closed tows, kept
+// volumes), in five cases of about 25 s each.
+TEST_CASE("scan-like family, seeds 1-10: resolved, closed, no triangles crossing, volumes as CGAL's", "[resolve][scan][family]") { checkFamilyResolved(1, 10); }
+TEST_CASE("scan-like family, seeds 11-20: resolved, closed, no triangles crossing, volumes as CGAL's", "[resolve][scan][family]") { checkFamilyResolved(11, 10); }
+TEST_CASE("scan-like family, seeds 21-30: resolved, closed, no triangles crossing, volumes as CGAL's", "[resolve][scan][family]") { checkFamilyResolved(21, 10); }
+TEST_CASE("scan-like family, seeds 31-40: resolved, closed, no triangles crossing, volumes as CGAL's", "[resolve][scan][family]") { checkFamilyResolved(31, 10); }
+TEST_CASE("scan-like family, seeds 41-50: resolved, closed, no triangles crossing, volumes as CGAL's", "[resolve][scan][family]") { checkFamilyResolved(41, 10); }
 
 namespace {
 
