@@ -173,6 +173,22 @@ std::vector<TowStack> stacksNamed(const testing::ScanLikeTextile& t, const std::
     return picked;
 }
 
+/// Tows @p a and @p b of the large scan-like textile of @p seed, fitted, and resolved with the
+/// default options.
+struct ResolvedPair {
+    std::vector<TowSurface> tows;
+    ResolveResult result;
+};
+ResolvedPair resolvedLargePair(unsigned seed, const std::string& a, const std::string& b)
+{
+    const testing::ScanLikeTextile t = testing::largeScanLikeTextile(seed);
+    const std::vector<TowStack> pair = stacksNamed(t, {a, b});
+    REQUIRE(pair.size() == 2);
+    ResolvedPair out{testing::fitAll(pair), {}};
+    out.result = resolveTextile(out.tows);
+    return out;
+}
+
 }  // namespace
 
 TEST_CASE("a loop nearly tangent to a tow's seam, crossing it four times close together, is meshed", "[mesh][scan][seam]")
@@ -181,11 +197,7 @@ TEST_CASE("a loop nearly tangent to a tow's seam, crossing it four times close t
     // pair runs along the weft's seam for a while, crossing it four times within 0.02 in u.
     // Newton on v = seam from one loop chord's guess found the crossing of another chord: two
     // loop nodes on one point, mesh_failed.
-    const testing::ScanLikeTextile t = testing::largeScanLikeTextile(2);
-    const std::vector<TowStack> pair = stacksNamed(t, {"warp_L1_8", "weft_L2_7"});
-    REQUIRE(pair.size() == 2);
-    const std::vector<TowSurface> tows = testing::fitAll(pair);
-    const ResolveResult r = resolveTextile(tows);
+    const auto [tows, r] = resolvedLargePair(2, "warp_L1_8", "weft_L2_7");
     REQUIRE(r.intersections.loops.size() == 1);
     CHECK(r.intersections.loops[0].closed());
     for (const UnresolvedPairEntry& u : unresolvedPairs(r)) FAIL_CHECK(u.code << ": " << u.message);
@@ -350,11 +362,7 @@ TEST_CASE("a loop thinner than its nodes can follow, where pressed tows nearly t
     // can follow: its node polygon crossed itself, the mesher's constraints cut each other, the
     // binder was not closed after the swap and all nine of its pairs in the textile ended
     // region_failed, their meshes crossing in 73 triangle pairs.
-    const testing::ScanLikeTextile t = testing::largeScanLikeTextile(8);
-    const std::vector<TowStack> pair = stacksNamed(t, {"weft_L0_3", "binder_5"});
-    REQUIRE(pair.size() == 2);
-    const std::vector<TowSurface> tows = testing::fitAll(pair);
-    const ResolveResult r = resolveTextile(tows);
+    const auto [tows, r] = resolvedLargePair(8, "weft_L0_3", "binder_5");
     REQUIRE(r.intersections.loops.size() == 2);
     for (const UnresolvedPairEntry& u : unresolvedPairs(r)) FAIL_CHECK(u.code << ": " << u.message);
     // The large loop is a region; the small one a contact, named in the result.

@@ -30,13 +30,9 @@ bool simpleOn(const SharedLoop& shared, LoopSide side)
 /// The diagonal of the box of @p loop's points.
 double extentOf(const IntersectionLoop& loop)
 {
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    Point3 lo{inf, inf, inf}, hi{-inf, -inf, -inf};
-    for (const LoopPoint& p : loop.points()) {
-        lo = {std::min(lo.x, p.point.x), std::min(lo.y, p.point.y), std::min(lo.z, p.point.z)};
-        hi = {std::max(hi.x, p.point.x), std::max(hi.y, p.point.y), std::max(hi.z, p.point.z)};
-    }
-    return loop.points().empty() ? 0.0 : distance(lo, hi);
+    BoundingBox box;
+    for (const LoopPoint& p : loop.points()) box.add(p.point);
+    return box.diagonal();
 }
 
 /// The largest angle (radians, up to pi/2) at which the two surfaces meet at @p loop's points;
