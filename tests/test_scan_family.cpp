@@ -388,3 +388,30 @@ TEST_CASE("a loop grazing a tow's rim gets no node on the cap between two nodes 
     checkResolved(182, {"warp_3", "weft_1"});
     checkResolved(234, {"warp_1", "weft_3"});
 }
+
+TEST_CASE("a loop running along a tow's rim: the rim is refined until the meshes do not cross", "[mesh][scan][caps]")
+{
+    // Orthogonal weave of seed 53: the loop of warp_L1_0 and weft_L2_0 runs along the warp's
+    // rim, within 1e-4 of it in u, crossing onto the cap and back. The warp's end stations are
+    // h/2 apart (0.39 here) and the rim's chord there sags 0.001 off the curve, more than the
+    // loop's distance from it: the weft's mesh, following the loop's exact nodes, crossed the
+    // warp's cap and the sliver of its tube along the rim (3 crossing triangle pairs). The caps
+    // are now checked with the tubes in the mesh stage, and an end's edges are split where faces
+    // next to them need it.
+    checkResolved(53, {"warp_L1_0", "weft_L2_0"});
+}
+
+TEST_CASE("a loop chord whose curve dips across a seam next to a node on it gets a node where it crosses", "[mesh][scan][seam]")
+{
+    // Orthogonal weaves of seeds 314 and 418: the loop hugs the weft's seam from below, touching
+    // it at a node; the curve between that node and the previous one (0.97 apart) crosses the
+    // seam and comes back. The chord's middle lies across the seam, so it was never split: one
+    // long chord, both meshes coarse along it, 11 and 6 crossing triangle pairs. The chord's new
+    // node is now the curve's first crossing of the seam, a node on it.
+    checkResolved(314, {"warp_L0_2", "weft_L1_1"});
+    checkResolved(418, {"warp_L1_0", "weft_L2_2"});
+    // Seed 99: the weft's seam had stations between the two nodes of such a chord (made before
+    // it was split onto the seam); its loop chord along the seam was not one edge, and the weft
+    // was not closed after the swap (four pairs region_failed). Its stations there are dropped.
+    checkResolved(99, {"warp_L0_0", "warp_L0_1", "warp_L0_2", "binder_1", "weft_L0_0"});
+}

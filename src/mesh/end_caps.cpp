@@ -21,15 +21,15 @@ using mesh2::CDT;
 using mesh2::K;
 
 
-CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>& loop, double h, double minAngle,
+CapMesh meshCap(const NodeAt& nodes, const std::vector<std::size_t>& loop, double h, double minAngle,
                 std::size_t firstNewNode, const std::string& where, const std::vector<CapConstraint>& paths)
 {
     // The plane: Newell's normal (along the loop's right-hand turn) through the centroid.
     Point3 c;
     Vector3 n;
     for (std::size_t k = 0; k < loop.size(); ++k) {
-        const Point3& p = nodes[loop[k]];
-        const Point3& q = nodes[loop[(k + 1) % loop.size()]];
+        const Point3& p = nodes(loop[k]);
+        const Point3& q = nodes(loop[(k + 1) % loop.size()]);
         c = c + p;
         n = n + Vector3{(p.y - q.y) * (p.z + q.z), (p.z - q.z) * (p.x + q.x), (p.x - q.x) * (p.y + q.y)};
     }
@@ -39,7 +39,7 @@ CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>
     const Vector3 e1 = (1.0 / norm(cross(helper, n))) * cross(helper, n);
     const Vector3 e2 = cross(n, e1);
     std::vector<K::Point_2> polygon;
-    for (std::size_t node : loop) polygon.emplace_back(dot(nodes[node] - c, e1), dot(nodes[node] - c, e2));
+    for (std::size_t node : loop) polygon.emplace_back(dot(nodes(node) - c, e1), dot(nodes(node) - c, e2));
     if (loop.size() < 3 || !CGAL::is_simple_2(polygon.begin(), polygon.end(), K()))
         throw Error(ErrorCode::SelfIntersectingSection, "the end of the tow's mesh is not a simple polygon in its plane", where);
 
@@ -60,7 +60,7 @@ CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>
         for (std::size_t node : path.nodes) {
             auto it = vertexOf.find(node);
             if (it == vertexOf.end()) {
-                const K::Point_2 at(dot(nodes[node] - c, e1), dot(nodes[node] - c, e2));
+                const K::Point_2 at(dot(nodes(node) - c, e1), dot(nodes(node) - c, e2));
                 // A loop node on the cap must lie inside the tube's end polygon: one on or
                 // beyond it (a loop grazing the rim, between two rim nodes with no end node
                 // between them) would make triangles outside the cap.
@@ -94,52 +94,83 @@ CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>
     return out;
 }
 
-/// Closes every tow's tube mesh (@p meshes, open at their two ends) by its two end caps
-/// (meshCap(), at the tow's mesh size); @p face gets each triangle's part (TowFace::Start or End
-/// by the nearer of the tow's first and last sections). The caps' nodes are appended to @p nodes.
+std::vector<TubeEnd> tubeEnds(const TowSurface& tow, const std::vector<std::array<std::size_t, 3>>& tube, const NodeAt& nodes,
+                              const std::vector<char>* cutNode, const std::array<bool, 2>* cutEnds)
+{
+    const auto centroid = [](const std::vector<Point3>& points) {
+        Point3 c;
+        for (const Point3& p : points) c = c + p;
+        return (1.0 / static_cast<double>(points.size())) * c;
+    };
+    const Point3 first = centroid(tow.sections().front()), last = centroid(tow.sections().back());
+    std::vector<std::vector<std::size_t>> ends = boundaryLoops(tube);
+    if (ends.size() != 2) return {};  // not a tube (or wholly outside a cell): reported by the check of the final mesh
+    // An end cut by a cell's face is closed with that face's mesh, not here.
+    if (cutNode)
+        ends.erase(std::remove_if(ends.begin(), ends.end(),
+                                  [&](const std::vector<std::size_t>& loop) {
+                                      return std::all_of(loop.begin(), loop.end(),
+                                                         [&](std::size_t n) { return n < cutNode->size() && (*cutNode)[n]; });
+                                  }),
+                   ends.end());
+    std::vector<Point3> c;
+    for (const std::vector<std::size_t>& end : ends) {
+        std::vector<Point3> points;
+        for (std::size_t n : end) points.push_back(nodes(n));
+        c.push_back(centroid(points));
+    }
+    // The two ends together: the pairing with the first and last sections that is nearer; one
+    // end alone: the nearer section.
+    bool firstIsStart = c.size() == 2 && distance(c[0], first) + distance(c[1], last) <= distance(c[0], last) + distance(c[1], first);
+    if (c.size() == 1)  // the other end was cut: this one is the end that was not
+        firstIsStart = cutEnds ? !(*cutEnds)[0] : distance(c[0], first) <= distance(c[0], last);
+    std::vector<TubeEnd> out;
+    for (std::size_t e = 0; e < ends.size(); ++e)
+        out.push_back({std::move(ends[e]), (e == 0) == firstIsStart ? TowFace::Start : TowFace::End});
+    return out;
+}
+
+std::vector<CapConstraint> pathsOnCap(const std::vector<CapConstraint>& paths, TowFace face)
+{
+    std::vector<CapConstraint> out;
+    for (const CapConstraint& p : paths)
+        if ((p.end < 0) == (face == TowFace::Start)) out.push_back(p);
+    return out;
+}
+
+CapMesh provisionalCaps(const TowSurface& tow, double h, double minAngle, const std::vector<std::array<std::size_t, 3>>& tube,
+                        const NodeAt& nodes, const std::vector<CapConstraint>& paths, std::size_t firstNewNode,
+                        const std::vector<char>* cutNode, const std::array<bool, 2>* cutEnds)
+{
+    CapMesh out;
+    for (const TubeEnd& end : tubeEnds(tow, tube, nodes, cutNode, cutEnds)) {
+        try {
+            CapMesh cap = meshCap(nodes, end.loop, h, minAngle, firstNewNode + out.newNodes.size(), "tow '" + tow.name() + "'",
+                                  pathsOnCap(paths, end.face));
+            out.triangles.insert(out.triangles.end(), cap.triangles.begin(), cap.triangles.end());
+            out.newNodes.insert(out.newNodes.end(), cap.newNodes.begin(), cap.newNodes.end());
+        } catch (const Error&) {
+            // left out: closeEnds() reports it
+        }
+    }
+    return out;
+}
+
 void closeEnds(const std::vector<TowSurface>& tows, const std::vector<double>& towH, double minAngle, std::size_t threads,
                std::vector<ParametricMesh>& meshes, std::vector<std::vector<TowFace>>& face, std::vector<Point3>& nodes,
                const std::vector<std::vector<CapConstraint>>& capPaths, std::vector<std::string>* failed,
                const std::vector<char>* cutNode, const std::vector<std::array<bool, 2>>* cutEnds)
 {
     constexpr std::size_t kLocal = std::size_t(1) << 60;  // marks a cap's own new nodes
+    const NodeAt at = [&](std::size_t n) -> const Point3& { return nodes[n]; };
     std::vector<std::vector<std::pair<CapMesh, TowFace>>> caps(tows.size());
     parallelFor(tows.size(), threads, [&](std::size_t t) {
-        const auto centroid = [](const std::vector<Point3>& points) {
-            Point3 c;
-            for (const Point3& p : points) c = c + p;
-            return (1.0 / static_cast<double>(points.size())) * c;
-        };
-        const Point3 first = centroid(tows[t].sections().front()), last = centroid(tows[t].sections().back());
-        std::vector<std::vector<std::size_t>> ends = boundaryLoops(meshes[t].triangles);
-        if (ends.size() != 2) return;  // not a tube (or wholly outside a cell): reported by the check of the final mesh
-        // An end cut by a cell's face is closed with that face's mesh, not here.
-        if (cutNode)
-            ends.erase(std::remove_if(ends.begin(), ends.end(),
-                                      [&](const std::vector<std::size_t>& loop) {
-                                          return std::all_of(loop.begin(), loop.end(),
-                                                             [&](std::size_t n) { return n < cutNode->size() && (*cutNode)[n]; });
-                                      }),
-                       ends.end());
-        std::vector<Point3> c;
-        for (const std::vector<std::size_t>& end : ends) {
-            std::vector<Point3> points;
-            for (std::size_t n : end) points.push_back(nodes[n]);
-            c.push_back(centroid(points));
-        }
-        // The two ends together: the pairing with the first and last sections that is nearer; one
-        // end alone: the nearer section.
-        bool firstIsStart = c.size() == 2 && distance(c[0], first) + distance(c[1], last) <= distance(c[0], last) + distance(c[1], first);
-        if (c.size() == 1)  // the other end was cut: this one is the end that was not
-            firstIsStart = cutEnds && t < cutEnds->size() ? !(*cutEnds)[t][0] : distance(c[0], first) <= distance(c[0], last);
-        for (std::size_t e = 0; e < ends.size(); ++e) {
-            const TowFace f = (e == 0) == firstIsStart ? TowFace::Start : TowFace::End;
-            std::vector<CapConstraint> paths;
-            if (t < capPaths.size())
-                for (const CapConstraint& p : capPaths[t])
-                    if ((p.end < 0) == (f == TowFace::Start)) paths.push_back(p);
+        const std::array<bool, 2>* cut = cutEnds && t < cutEnds->size() ? &(*cutEnds)[t] : nullptr;
+        for (const TubeEnd& end : tubeEnds(tows[t], meshes[t].triangles, at, cutNode, cut)) {
+            const TowFace f = end.face;
+            const std::vector<CapConstraint> paths = t < capPaths.size() ? pathsOnCap(capPaths[t], f) : std::vector<CapConstraint>{};
             try {
-                caps[t].emplace_back(meshCap(nodes, ends[e], towH[t], minAngle, kLocal, "tow '" + tows[t].name() + "'", paths), f);
+                caps[t].emplace_back(meshCap(at, end.loop, towH[t], minAngle, kLocal, "tow '" + tows[t].name() + "'", paths), f);
             } catch (const Error& x) {
                 if (failed && !paths.empty()) {  // with loop pieces on it: the caller leaves those loops out
                     (*failed)[t] = std::string(f == TowFace::Start ? "start" : "end") + " cap: " + x.message();

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,10 @@
 
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
+
+/// A node's position by its number: the global nodes, or during meshing the shared nodes and a
+/// tow's own ones.
+using NodeAt = std::function<const Point3&(std::size_t)>;
 
 /// One cap's triangles and its own new nodes.
 struct CapMesh {
@@ -35,8 +40,32 @@ struct CapMesh {
 /// the section).
 /// @p paths are loop pieces on the cap (global nodes, projected into its plane): constraints of
 /// the mesh, their ends nodes of @p loop or closed.
-CapMesh meshCap(const std::vector<Point3>& nodes, const std::vector<std::size_t>& loop, double h, double minAngle,
+CapMesh meshCap(const NodeAt& nodes, const std::vector<std::size_t>& loop, double h, double minAngle,
                 std::size_t firstNewNode, const std::string& where, const std::vector<CapConstraint>& paths = {});
+
+/// One open end of a tow's tube mesh that a cap closes: its boundary loop and which end it is.
+struct TubeEnd {
+    std::vector<std::size_t> loop;
+    TowFace face = TowFace::Start;
+};
+
+/// The ends of @p tow's tube mesh @p tube (nodes at @p nodes) that caps close: its two boundary
+/// loops, each named by the nearer of the tow's first and last sections (none when the tube has
+/// not exactly two). An end whose nodes are all marked in @p cutNode (by node, if given: a cell's
+/// cut) is left out; @p cutEnds (its start cut, its end cut) then says which end the other is.
+std::vector<TubeEnd> tubeEnds(const TowSurface& tow, const std::vector<std::array<std::size_t, 3>>& tube, const NodeAt& nodes,
+                              const std::vector<char>* cutNode = nullptr, const std::array<bool, 2>* cutEnds = nullptr);
+
+/// The pieces of @p paths (CapConstraint::end -1 the first end's, +1 the last's) on the cap of @p face.
+std::vector<CapConstraint> pathsOnCap(const std::vector<CapConstraint>& paths, TowFace face);
+
+/// The caps of @p tow's tube mesh @p tube while it is still being meshed, to check it against
+/// other tows (its nodes at @p nodes, @p paths the loop pieces on its caps): both caps in one
+/// mesh, their own nodes numbered from @p firstNewNode on. A cap that cannot be meshed is left
+/// out (closeEnds() reports it).
+CapMesh provisionalCaps(const TowSurface& tow, double h, double minAngle, const std::vector<std::array<std::size_t, 3>>& tube,
+                        const NodeAt& nodes, const std::vector<CapConstraint>& paths, std::size_t firstNewNode,
+                        const std::vector<char>* cutNode = nullptr, const std::array<bool, 2>* cutEnds = nullptr);
 
 /// Closes every tow's tube mesh (@p meshes, open at their two ends) by its two end caps
 /// (meshCap(), at the tow's mesh size @p towH); @p face gets each triangle's part

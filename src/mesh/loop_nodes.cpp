@@ -445,35 +445,70 @@ bool splitChord(const IntersectionLoop& loop, SharedLoop& shared, std::size_t a,
         }
     }
     if (i == n) return false;
-    const auto [p, q] = chordEnds(loop, shared, i);
+    const auto ends = chordEnds(loop, shared, i);
+    const LoopPoint &p = ends.first, &q = ends.second;  // (named: lambdas below use them)
     const SurfacePair sp = closedPairOf(loop.surfaceA(), loop.surfaceB());
-    PointOn2 x = onChord(p, q, t);
-    capGuess(sp, onChord(p, q, 0.0), onChord(p, q, 1.0), x);
-    PointCondition c;
-    c.kind = PointCondition::Kind::Plane;
-    c.origin = x.point;
-    c.normal = q.point - p.point;
-    refineOnIntersection(sp, x, c, loop.tolerance());
+    // The exact loop point where the curve crosses the plane normal to the chord at fraction f.
+    const auto pointAt = [&](double f) {
+        PointOn2 x = onChord(p, q, f);
+        capGuess(sp, onChord(p, q, 0.0), onChord(p, q, 1.0), x);
+        PointCondition c;
+        c.kind = PointCondition::Kind::Plane;
+        c.origin = x.point;
+        c.normal = q.point - p.point;
+        refineOnIntersection(sp, x, c, loop.tolerance());
+        return LoopPoint{x.point, {x.ua, x.va}, {x.ub, x.vb}};
+    };
     // The new node must lie in the chord's period cell on both tows: the chord does not cross a
     // seam (seam crossings are nodes), but the curve may dip across one between two nodes (a loop
-    // touching a seam); such a node would fall outside the tow's rectangle. Such a chord stays.
-    for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+    // nearly tangent to a seam); such a node would fall outside the tow's rectangle.
+    const auto cellOf = [&](LoopSide side) {
         const double period = periodOf(loop, side), vMin = vMinOf(loop, side);
-        const double v0 = sideOf(p, side).v, v1 = sideOf(q, side).v, vm = side == LoopSide::A ? x.va : x.vb;
-        const double cell = vMin + period * std::floor((0.5 * (v0 + v1) - vMin) / period);
-        if (vm < cell || vm > cell + period) return false;
-        // Nor may it lie across a tow's rim from the chord (a loop grazing the rim dips onto the
-        // cap and back between two nodes on the tube): a piece of the loop on the tube would get
-        // a node on the cap. The part of the tow the chord is on is that of an end not on the rim.
+        return vMin + period * std::floor((0.5 * (sideOf(p, side).v + sideOf(q, side).v) - vMin) / period);
+    };
+    const auto onSeamOf = [&](const LoopPoint& e, LoopSide side) {  // (within rounding, as constraintsOn())
+        const double period = periodOf(loop, side), r = (sideOf(e, side).v - cellOf(side)) / period;
+        return std::abs(r) <= kSeamSnap || std::abs(r - 1.0) <= kSeamSnap;
+    };
+    const auto inCells = [&](const LoopPoint& at) {
+        for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+            const double cell = cellOf(side), v = sideOf(at, side).v;
+            if (v < cell || v > cell + periodOf(loop, side)) return false;
+        }
+        return true;
+    };
+    LoopPoint m = pointAt(t);
+    // The curve may dip across a seam between the two nodes (nearly tangent to it, crossing it
+    // twice where the nodes saw no crossing): the new node is then where it crosses between the
+    // middle and an end off the seam (p's side first), on the seam, as the nodes' own crossings
+    // are. A chord with both ends on the seam stays, and so does one whose crossing lies a hair
+    // from an end (it would be that end's point in the mesher's plane).
+    for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
+        const double cell = cellOf(side), period = periodOf(loop, side), v = sideOf(m, side).v;
+        if (v >= cell && v <= cell + period) continue;
+        const double seam = v < cell ? cell : cell + period;
+        if (!onSeamOf(p, side))
+            m = seamPoint(sp, p, m, side, seam, period, loop.tolerance());
+        else if (!onSeamOf(q, side))
+            m = seamPoint(sp, m, q, side, seam, period, loop.tolerance());
+        const double hair = 1e-6 * distance(p.point, q.point);
+        if (distance(m.point, p.point) <= hair || distance(m.point, q.point) <= hair) return false;
+        break;
+    }
+    if (!inCells(m)) return false;
+    // Nor may it lie across a tow's rim from the chord (a loop grazing the rim dips onto the cap
+    // and back between two nodes on the tube): a piece of the loop on the tube would get a node
+    // on the cap. The part of the tow the chord is on is that of an end not on the rim.
+    for (const LoopSide side : {LoopSide::A, LoopSide::B}) {
         const ParameterRange r = rangeOf(loop, side);
         const auto onRim = [&](double u) { return u == r.uMin || u == r.uMax; };
-        const double u0 = sideOf(p, side).u, u1 = sideOf(q, side).u, um = side == LoopSide::A ? x.ua : x.ub;
+        const double u0 = sideOf(p, side).u, u1 = sideOf(q, side).u, um = sideOf(m, side).u;
         if (!onRim(u0) && capOf(loop, side, um) != capOf(loop, side, u0)) return false;
         if (!onRim(u1) && capOf(loop, side, um) != capOf(loop, side, u1)) return false;
     }
-    shared.points.insert(shared.points.begin() + static_cast<std::ptrdiff_t>(i) + 1, LoopPoint{x.point, {x.ua, x.va}, {x.ub, x.vb}});
+    shared.points.insert(shared.points.begin() + static_cast<std::ptrdiff_t>(i) + 1, m);
     shared.nodes.insert(shared.nodes.begin() + static_cast<std::ptrdiff_t>(i) + 1, globalNodes.size());
-    globalNodes.push_back(x.point);
+    globalNodes.push_back(m.point);
     return true;
 }
 
@@ -657,6 +692,18 @@ std::vector<CapConstraint> capConstraintsOn(const SharedLoop& shared, const Inte
         for (const UV& p : c.uv)
             if (capOf(loop, side, p.u) != 0) end = capOf(loop, side, p.u);
         if (end != 0) out.push_back({end, c.nodes, false});
+    }
+    return out;
+}
+
+std::vector<std::vector<CapConstraint>> capConstraintsOfTows(const std::vector<SharedLoop>& shared, const std::vector<IntersectionLoop>& loops,
+                                                             std::size_t towCount)
+{
+    std::vector<std::vector<CapConstraint>> out(towCount);
+    for (const SharedLoop& s : shared) {
+        const IntersectionLoop& l = loops[s.loop];
+        for (const LoopSide side : {LoopSide::A, LoopSide::B})
+            for (CapConstraint& c : capConstraintsOn(s, l, side)) out[side == LoopSide::A ? l.towA() : l.towB()].push_back(std::move(c));
     }
     return out;
 }

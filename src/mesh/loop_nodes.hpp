@@ -74,8 +74,16 @@ struct CapConstraint {
     bool closed = false;
 };
 
+/// Whether two cap pieces are the same (end, nodes, closed).
+inline bool operator==(const CapConstraint& a, const CapConstraint& b) { return a.end == b.end && a.closed == b.closed && a.nodes == b.nodes; }
+
 /// The pieces of @p shared on tow @p side's end caps (none unless the loop crosses a cap there).
 std::vector<CapConstraint> capConstraintsOn(const SharedLoop& shared, const IntersectionLoop& loop, LoopSide side);
+
+/// Per tow (of @p towCount), the pieces of every loop in @p shared on its end caps
+/// (capConstraintsOn(); @p loops: the intersection report's loops that @p shared index).
+std::vector<std::vector<CapConstraint>> capConstraintsOfTows(const std::vector<SharedLoop>& shared, const std::vector<IntersectionLoop>& loops,
+                                                             std::size_t towCount);
 
 /// The loop's polygon on tow @p side in unwrapped (u,v), for point-in-polygon tests.
 std::vector<UV> loopPolygon(const SharedLoop& shared, LoopSide side);

@@ -1,6 +1,7 @@
 #include "mesh/parametric_mesher.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -47,17 +48,24 @@ std::vector<double> stations(double from, double to, double h, const std::vector
 /// one usually does; a new node may be joined to loop nodes again only across a neck.
 constexpr int kBridgeRounds = 4;
 
+/// Rounds of splitting the tow's ends' edges where faces next to them are still bad
+/// (Impl::refine()), and the shortest end edge split, of the mesh size.
+constexpr int kEndRounds = 6;
+constexpr double kMinEndEdge = 1.0 / 256.0;
+
 /// Loop chords lying along the seam: their ends' x (lower first).
 using SeamChords = std::set<std::pair<double, double>>;
 
 /// After refinement, the faces still bad are those whose circumcentre would encroach on a
 /// constraint (the mesher would have split it). Asks for those splits in @p requests: the middle
-/// of a loop chord (a node of both tows) or of a seam edge (a node of both sides); the stations
-/// of the tow's two ends are fixed. Faces whose centroid lies beyond [@p keepFrom, @p keepTo]
-/// along x are not wanted (beyond a cell's cut): neither counted nor split for. Returns the
-/// number of bad faces.
+/// of a loop chord (a node of both tows) or of a seam edge (a node of both sides). An edge of the
+/// tow's two ends (x = @p x0 or @p x1) is this tow's alone: its middle goes into @p endSplits,
+/// for the mesher to insert itself, unless it is shorter than @p minEndEdge. Faces whose centroid lies beyond
+/// [@p keepFrom, @p keepTo] along x are not wanted (beyond a cell's cut): neither counted nor
+/// split for. Returns the number of bad faces.
 std::size_t requestSplits(const CDT& cdt, const Criteria& criteria, double ly, const ScaledSpace& space, double keepFrom,
-                          double keepTo, const SeamChords& seamChords, MeshRequests& requests)
+                          double keepTo, double x0, double x1, double minEndEdge, const SeamChords& seamChords,
+                          MeshRequests& requests, std::vector<K::Point_2>& endSplits)
 {
     const Criteria::Is_bad isBad = criteria.is_bad_object();
     std::set<std::pair<long, long>> chords;
@@ -76,7 +84,13 @@ std::size_t requestSplits(const CDT& cdt, const Criteria& criteria, double ly, c
         // split: the curve between its nodes dips across the seam, a node there would lie off
         // it, and a seam station would be this tow's only. The faces stay bad.
         if (onSeam && seamChords.count(std::minmax(pa.x(), pb.x()))) return;
-        if (onSeam) {
+        // (No loop chord runs along an end: two rim nodes in a row get a node between them.)
+        const bool onEnd = pa.x() == pb.x() && (pa.x() == x0 || pa.x() == x1);
+        if (onEnd && std::abs(pb.y() - pa.y()) < minEndEdge) return;  // short enough: the faces stay bad
+        if (onEnd) {
+            const K::Point_2 middle = CGAL::midpoint(pa, pb);
+            if (std::find(endSplits.begin(), endSplits.end(), middle) == endSplits.end()) endSplits.push_back(middle);
+        } else if (onSeam) {
             const double x = 0.5 * (pa.x() + pb.x());
             if (seam.insert(x).second) requests.seamU.push_back(space.toUV(x, 0.0).u);
         } else if (lo >= 0) {
@@ -107,8 +121,14 @@ std::size_t requestSplits(const CDT& cdt, const Criteria& criteria, double ly, c
             for (const CDT::Edge& e : boundary)
                 if (e.first->is_constrained(e.second) && encroached(c, e)) request(e);
         } else {  // outside the domain: the face's own constraints in the way
+            // (A face along an end, its circumcentre beyond it, needs that edge split whether or
+            // not the circumcentre encroaches on it: a sliver between the end and a loop node.)
+            const auto beyondEnd = [&](int k) {
+                const K::Point_2 &a = f->vertex(CDT::cw(k))->point(), &b = f->vertex(CDT::ccw(k))->point();
+                return a.x() == b.x() && ((a.x() == x0 && c.x() < x0) || (a.x() == x1 && c.x() > x1));
+            };
             for (int k = 0; k < 3; ++k)
-                if (f->is_constrained(k) && encroached(c, {f, k})) request({f, k});
+                if (f->is_constrained(k) && (encroached(c, {f, k}) || beyondEnd(k))) request({f, k});
         }
     }
     return bad;
@@ -190,6 +210,8 @@ struct ParametricMesher::Impl {
         return false;
     }
     SeamChords seamChords;  // the x of the loop chords along the seam (lower first)
+    /// Stations the ends' edges were split at (y, at x0 and at x1), kept when meshed again.
+    std::array<std::vector<double>, 2> endStations;
     std::size_t badFaces = 0;
 
     Impl(const TowSurface& s, const MeshSizes& z)
@@ -300,12 +322,39 @@ struct ParametricMesher::Impl {
         }
         return inserted > 0;
     }
+    /// Whether a vertex lies on the seam (either side) strictly between x = @p a and @p b.
+    bool seamVertexBetween(double a, double b) const
+    {
+        const auto [lo, hi] = std::minmax(a, b);
+        for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+            const K::Point_2& q = v->point();
+            if ((q.y() == 0.0 || q.y() == scale.aroundV) && q.x() > lo && q.x() < hi) return true;
+        }
+        return false;
+    }
     /// Refines (with splitLoopBridges()), then asks for the splits that the faces still bad need.
+    /// Once refineAround() has given spots (the tow's mesh crossed another's), the ends' edges
+    /// are split here too where faces next to them need it (they are this tow's alone), and kept
+    /// for a new mesh. (Not before: each split means refining the whole tow again.)
     void refine(MeshRequests& requests)
     {
-        refineKeepingConstraints(cdt, criteria);
-        for (int round = 0; round < kBridgeRounds && splitLoopBridges(); ++round) refineKeepingConstraints(cdt, criteria);
-        badFaces = requestSplits(cdt, criteria, scale.aroundV, space, keep0, keep1, seamChords, requests);
+        for (int round = 0;; ++round) {
+            refineKeepingConstraints(cdt, criteria);
+            for (int bridge = 0; bridge < kBridgeRounds && splitLoopBridges(); ++bridge) refineKeepingConstraints(cdt, criteria);
+            MeshRequests asked;
+            std::vector<K::Point_2> endSplits;
+            badFaces = requestSplits(cdt, criteria, scale.aroundV, space, keep0, keep1, x0, x1, kMinEndEdge * sizes.edgeLength,
+                                     seamChords, asked, endSplits);
+            if (endSplits.empty() || spots.empty() || round == kEndRounds) {
+                requests.seamU.insert(requests.seamU.end(), asked.seamU.begin(), asked.seamU.end());
+                requests.onLoop.insert(requests.onLoop.end(), asked.onLoop.begin(), asked.onLoop.end());
+                return;
+            }
+            for (const K::Point_2& p : endSplits) {
+                cdt.insert(p);  // a point on a constrained edge splits it
+                (p.x() == x0 ? endStations[0] : endStations[1]).push_back(p.y());
+            }
+        }
     }
     /// A loop chord along the seam (its two nodes on one side of it, @p va and @p vb): the curve
     /// between them dips across the seam, and the new node lies off it, on the seam's one side or
@@ -356,13 +405,15 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
     // Seam stations: uniform along u plus every loop node on the seam, the same on both sides.
     // All four sides get stations h/2 apart: edges that short are seldom encroached, nor too
     // long in 3D where the surface is longer than its mean.
-    std::vector<double> seamX;
+    std::vector<double> seamX, loopSeamX;  // all stations asked for; the loop nodes among them
     for (double u : seamU) seamX.push_back(m.toXY({u, m.range.vMin}).x());
     for (const LoopConstraint& c : constraints)
         for (std::size_t k = 0; k < c.uv.size(); ++k)
-            if (c.uv[k].v == m.range.vMin || c.uv[k].v == m.range.vMax) seamX.push_back(m.toXY(c.uv[k]).x());
+            if (c.uv[k].v == m.range.vMin || c.uv[k].v == m.range.vMax) loopSeamX.push_back(m.toXY(c.uv[k]).x());
+    seamX.insert(seamX.end(), loopSeamX.begin(), loopSeamX.end());
     // A loop chord along the seam (both its nodes on it) is one edge of the seam: no station
-    // between its nodes, which the other tow's mesh would not have on that chord.
+    // between its nodes, which the other tow's mesh would not have on that chord (not one asked
+    // for before the chord was split onto the seam either).
     for (const LoopConstraint& c : constraints)
         for (std::size_t k = 0; k + 1 < c.uv.size(); ++k)
             for (const double side : {m.range.vMin, m.range.vMax})
@@ -371,7 +422,7 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
     std::vector<double> xs = stations(m.x0, m.x1, 0.5 * h, seamX);
     xs.erase(std::remove_if(xs.begin(), xs.end(),
                             [&](double x) {
-                                return std::find(seamX.begin(), seamX.end(), x) == seamX.end() &&
+                                return std::find(loopSeamX.begin(), loopSeamX.end(), x) == loopSeamX.end() &&
                                        std::any_of(m.seamChords.begin(), m.seamChords.end(),
                                                    [&](const std::pair<double, double>& c) { return x > c.first && x < c.second; });
                             }),
@@ -384,7 +435,13 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
             if (p.u == m.range.uMin) startY.push_back(m.toXY(p).y());
             if (p.u == m.range.uMax) endY.push_back(m.toXY(p).y());
         }
-    const std::vector<double> ys = stations(0.0, ly, 0.5 * h, startY), ysEnd = stations(0.0, ly, 0.5 * h, endY);
+    std::vector<double> ys = stations(0.0, ly, 0.5 * h, startY), ysEnd = stations(0.0, ly, 0.5 * h, endY);
+    for (int end = 0; end < 2; ++end) {  // and where refinement split them before
+        std::vector<double>& y = end == 0 ? ys : ysEnd;
+        y.insert(y.end(), m.endStations[end].begin(), m.endStations[end].end());
+        std::sort(y.begin(), y.end());
+        y.erase(std::unique(y.begin(), y.end()), y.end());
+    }
     const auto polyline = [&](const std::vector<K::Point_2>& pts) {
         for (std::size_t k = 0; k + 1 < pts.size(); ++k) m.cdt.insert_constraint(pts[k], pts[k + 1]);
     };
@@ -452,20 +509,32 @@ bool ParametricMesher::split(const std::vector<ChordSplit>& splits, const std::v
         if (std::abs(y) < 1e-9 * period) y = 0.0;
         if (std::abs(y - m.scale.aroundV) < 1e-9 * period) y = m.scale.aroundV;
         p = K::Point_2(p.x(), y);
+        // A node on the seam next to one there makes that half a chord along the seam, one edge:
+        // seam vertices between them (stations made before) are dropped by meshing again.
+        if (y == 0.0 || y == m.scale.aroundV)
+            for (const CDT::Vertex_handle e : {va, vb})
+                if (e->point().y() == y && m.seamVertexBetween(e->point().x(), p.x())) return false;
         m.cdt.remove_constrained_edge(f, i);
         const CDT::Vertex_handle vm = m.insertLoopNode(p, s.node);
         if (y == 0.0 || y == m.scale.aroundV) m.cdt.insert(K::Point_2(p.x(), y == 0.0 ? m.scale.aroundV : 0.0));
         m.cdt.insert_constraint(va, vm);
         m.cdt.insert_constraint(vm, vb);
+        // A node on the seam next to one there: that half runs along the seam.
+        if (y == 0.0 || y == m.scale.aroundV)
+            for (const CDT::Vertex_handle e : {va, vb})
+                if (e->point().y() == y) m.seamChords.insert(std::minmax(e->point().x(), p.x()));
         // A chord along the seam split on it: its two halves are along the seam.
         if (m.seamChords.erase(std::minmax(va->point().x(), vb->point().x())) > 0) {
             m.seamChords.insert(std::minmax(va->point().x(), p.x()));
             m.seamChords.insert(std::minmax(p.x(), vb->point().x()));
         }
     }
-    // New seam stations on both sides: a point on a constrained edge splits it.
+    // New seam stations on both sides: a point on a constrained edge splits it. None inside a
+    // loop chord along the seam (asked for before a split above made it one).
     for (double u : seamU) {
         const double x = m.toXY({u, m.range.vMin}).x();
+        if (std::any_of(m.seamChords.begin(), m.seamChords.end(), [&](const std::pair<double, double>& c) { return x > c.first && x < c.second; }))
+            continue;
         m.cdt.insert(K::Point_2(x, 0.0));
         m.cdt.insert(K::Point_2(x, m.scale.aroundV));
     }

@@ -466,7 +466,21 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
     std::set<std::size_t> stale;  // tows whose mesh changed since it was taken
     for (std::size_t t = 0; t < tows.size(); ++t)
         if (meshers[t]) stale.insert(t);  // (none outside the cell)
+    // The caps as they would be made now, checked with the tubes: a loop that dips onto a cap
+    // meets the other tow's tube there at a shallow angle too.
+    std::vector<CapMesh> caps(options.mesh.caps ? tows.size() : 0);
+    std::vector<std::vector<CapConstraint>> capPaths(tows.size());
+    std::vector<std::array<bool, 2>> cutEnds(tows.size(), {false, false});
+    if (cuts)
+        for (std::size_t t = 0; t < tows.size(); ++t) cutEnds[t] = {cuts->cuts[t][0].has_value(), cuts->cuts[t][1].has_value()};
     for (int pass = 0;; ++pass) {
+        if (!caps.empty()) {
+            // (They change as loop chords are split: a changed cap is tested again.)
+            std::vector<std::vector<CapConstraint>> paths = capConstraintsOfTows(shared, loops, tows.size());
+            for (std::size_t t = 0; t < tows.size(); ++t)
+                if (meshers[t] && paths[t] != capPaths[t]) stale.insert(t);
+            capPaths = std::move(paths);
+        }
         const std::vector<std::size_t> todo(stale.begin(), stale.end());
         parallelFor(todo.size(), threads, [&](std::size_t k) {
             throwIfCancelled(options.monitor);
@@ -476,6 +490,10 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
             ownNodes[t].clear();
             ownNodes[t].reserve(meshes[t].newNodes.size());
             for (const UV& p : meshes[t].newNodes) ownNodes[t].push_back(tows[t].point(p.u, p.v));
+            if (caps.empty()) return;
+            const NodeAt at = [&](std::size_t n) -> const Point3& { return n < kLocal ? nodes[n] : ownNodes[t][n - kLocal]; };
+            caps[t] = provisionalCaps(tows[t], towH[t], options.mesh.minAngle, meshes[t].triangles, at, capPaths[t],
+                                      kLocal + ownNodes[t].size(), cuts ? &cuts->cutNode : nullptr, &cutEnds[t]);
         });
         // A pair is refined while its crossings are few (the chords' sag along a loop or a near
         // contact) and fall from pass to pass; many, or not falling, the tows pass through each
@@ -496,7 +514,7 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
                         untested.insert({a, b});
                         if (const auto it = lastCrossings.find({a, b}); it != lastCrossings.end()) kept.insert(*it);
                     }
-        const CrossingSpots crossing = crossingSpots(nodes, meshes, ownNodes, kLocal, untested, refinePair, threads);
+        const CrossingSpots crossing = crossingSpots(nodes, meshes, ownNodes, kLocal, caps, untested, refinePair, threads);
         lastCrossings = crossing.crossingPairs;
         lastCrossings.insert(kept.begin(), kept.end());
         result.crossingTrianglePairs = 0;
@@ -554,16 +572,8 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
     std::vector<std::vector<TowFace>> faceOf(tows.size());
     for (std::size_t t = 0; t < tows.size(); ++t) faceOf[t].assign(meshes[t].triangles.size(), TowFace::Side);
     if (options.mesh.caps) {
-        std::vector<std::vector<CapConstraint>> capPaths(tows.size());  // loop pieces on each tow's caps
-        for (const SharedLoop& s : shared) {
-            const IntersectionLoop& l = loops[s.loop];
-            for (const LoopSide side : {LoopSide::A, LoopSide::B})
-                for (CapConstraint& c : capConstraintsOn(s, l, side)) capPaths[side == LoopSide::A ? l.towA() : l.towB()].push_back(std::move(c));
-        }
+        capPaths = capConstraintsOfTows(shared, loops, tows.size());  // loop pieces on each tow's caps
         std::vector<std::string> capFailed(tows.size());
-        std::vector<std::array<bool, 2>> cutEnds(tows.size(), {false, false});
-        if (cuts)
-            for (std::size_t t = 0; t < tows.size(); ++t) cutEnds[t] = {cuts->cuts[t][0].has_value(), cuts->cuts[t][1].has_value()};
         closeEnds(tows, towH, options.mesh.minAngle, threads, meshes, faceOf, nodes, capPaths, &capFailed,
                   cuts ? &cuts->cutNode : nullptr, &cutEnds);
         // A cap that could not be meshed with loop pieces on it costs the pairs of those loops.
