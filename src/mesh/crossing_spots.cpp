@@ -68,6 +68,9 @@ CrossingSpots crossingSpots(const std::vector<Point3>& nodes, const std::vector<
             if (onTube(tube, k)) out.spots[tube].push_back({meshes[tube].centroids[k], 2.0 * length, 0.5 * length});
             if (!onTube(tube, k) || ownNodes[cap].empty()) continue;
             const auto [n, d] = nearestOnTube(cap, centroid(tube, k));
+            // (Not for a crossing inside the cap, farther from its tube than the cap triangle is
+            // long: refining the tube would not change the cap there.)
+            if (d > longestEdge(cap, cap == c.towA ? c.triangleA : c.triangleB)) continue;
             out.spots[cap].push_back({meshes[cap].newNodes[n], d + 2.0 * length, 0.5 * length});
         }
     }

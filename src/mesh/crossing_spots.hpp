@@ -36,7 +36,7 @@ struct CrossingSpots {
 /// longest edges, radius twice the longer. A cap is flat, as exact as it is: of a tube triangle
 /// crossing a cap's, the tube's gets a spot by its own longest edge, and the cap's tow one of
 /// that size around its own tube node nearest to that triangle, reaching the triangle (refining
-/// its end there).
+/// its end there), unless that node is farther from it than the cap's triangle is long.
 CrossingSpots crossingSpots(const std::vector<Point3>& nodes, const std::vector<ParametricMesh>& meshes,
                             const std::vector<std::vector<Point3>>& ownNodes, std::size_t ownFrom, const std::vector<CapMesh>& caps,
                             const std::set<std::pair<std::size_t, std::size_t>>& ignored,
