@@ -7,8 +7,9 @@
 // of each statistic, the open curves by reason, and towgeom's time against the oracle's.
 // With --resolve each textile is also resolved (its detected loops, default options) and checked:
 // no pair left unresolved, no two tows' triangles crossing (CGAL box intersection + exact
-// triangle tests), every tow's mesh closed; the smallest angle is printed. --no-oracle skips
-// the oracle (and its check).
+// triangle tests), every tow's mesh closed; the smallest angle is printed, and the triangles
+// under 5 and 15 degrees with where those under 15 lie (caps, regions, at a loop node, next to
+// one, on a rim or seam, near an end, under h/8). --no-oracle skips the oracle (and its check).
 // With --large a single scan-like textile of a real scan's size instead (largeScanLikeTextile:
 // a 3D orthogonal weave of 9 x 9 yarns in 2 warp layers, ~57 tows of 30 sections x 32 points,
 // seed --first) is detected and resolved in process on --threads threads (default 2), and CGAL's
@@ -27,6 +28,7 @@
 #include <sys/resource.h>
 
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <set>
 #include <cstdio>
@@ -48,6 +50,14 @@ struct ResolveTally {
     std::size_t textiles = 0, failed = 0, unresolvedPairs = 0, textilesUnresolved = 0, crossing = 0, textilesCrossing = 0;
     std::size_t notClosed = 0;  ///< tows whose final mesh has a boundary
     std::map<std::string, std::size_t> byCode;  ///< unresolved pairs by the reports' code
+    std::size_t triangles = 0, under5 = 0, under15 = 0;  ///< counted by MeshQuality, and those under 5 and 15 degrees
+    std::size_t mostTriangles = 0;
+    /// Triangles under 15 degrees by place: on a cap, in a region, their small angle at a node
+    /// two tows share (a loop node: a constraint's corner or chord), another corner on a loop
+    /// node, none.
+    std::size_t capUnder15 = 0, regionUnder15 = 0, atLoopNode = 0, besideLoopNode = 0, ownOnly = 0;
+    std::size_t ownOnRim = 0, ownOnSeam = 0, ownSmall = 0, ownNearEnd = 0;  ///< of ownOnly: a node on an end, on the seam; shorter than h/8
+    unsigned mostTrianglesSeed = 0;
     double seconds = 0.0, slowest = 0.0, smallestAngle = 180.0;
     unsigned slowestSeed = 0, smallestAngleSeed = 0;
 };
@@ -64,6 +74,69 @@ void printCrossingPairs(const std::vector<towgeom::TowSurface>& tows, const towg
         std::printf("    %s/%s: %zu crossing (%zu sharing a node), %zu loop(s) detected, first at (%.4g, %.4g, %.4g)\n",
                     tows[c.towA].name().c_str(), tows[c.towB].name().c_str(), c.crossings.crossing, c.crossings.crossingSharing,
                     loops, c.firstAt.x, c.firstAt.y, c.firstAt.z);
+    }
+}
+
+/// Adds the places of @p mesh's triangles under 15 degrees to @p tally (as MeshQuality counts
+/// them: a region's triangles once).
+void placeSmallAngles(const std::vector<towgeom::TowSurface>& tows, const towgeom::ResolveResult& r, ResolveTally& tally)
+{
+    const towgeom::TextileMesh& mesh = r.mesh;
+    std::vector<std::set<std::size_t>> towsAt(mesh.nodes.size());
+    for (std::size_t t = 0; t < mesh.tows.size(); ++t)
+        for (const auto& tri : mesh.tows[t].triangles)
+            for (std::size_t n : tri) towsAt[n].insert(t);
+    for (std::size_t t = 0; t < mesh.tows.size(); ++t) {
+        const towgeom::TowMesh& m = mesh.tows[t];
+        for (std::size_t k = 0; k < m.triangles.size(); ++k) {
+            const long region = k < m.region.size() ? m.region[k] : -1;
+            if (region >= 0 && mesh.regions[static_cast<std::size_t>(region)].secondary == t) continue;
+            const auto& tri = m.triangles[k];
+            double smallest = 180.0;
+            std::size_t at = 0;
+            for (std::size_t c = 0; c < 3; ++c) {
+                const towgeom::Point3 &p = mesh.nodes[tri[c]], &a = mesh.nodes[tri[(c + 1) % 3]], &b = mesh.nodes[tri[(c + 2) % 3]];
+                const towgeom::Vector3 u = a - p, w = b - p;
+                const double angle = std::atan2(towgeom::norm(towgeom::cross(u, w)), towgeom::dot(u, w)) * 180.0 / 3.14159265358979323846;
+                if (angle < smallest) {
+                    smallest = angle;
+                    at = c;
+                }
+            }
+            if (smallest >= 15.0) continue;
+            if (m.face[k] != towgeom::TowFace::Side) ++tally.capUnder15;
+            else if (region >= 0) ++tally.regionUnder15;
+            else if (towsAt[tri[at]].size() > 1) ++tally.atLoopNode;
+            else if (towsAt[tri[0]].size() > 1 || towsAt[tri[1]].size() > 1 || towsAt[tri[2]].size() > 1) ++tally.besideLoopNode;
+            else {
+                ++tally.ownOnly;
+                std::size_t rim = 0, seam = 0;
+                for (std::size_t n : tri) {
+                    const auto it = std::lower_bound(m.parameters.begin(), m.parameters.end(), std::make_pair(n, towgeom::UV{-1e300, -1e300}),
+                                                     [](const auto& a, const auto& b) { return a.first < b.first; });
+                    if (it == m.parameters.end() || it->first != n) continue;
+                    const towgeom::ParameterRange pr = tows[t].parameterRange();
+                    rim += it->second.u == pr.uMin || it->second.u == pr.uMax;
+                    seam += it->second.v == pr.vMin;
+                }
+                double longest = 0.0;
+                for (std::size_t c = 0; c < 3; ++c) longest = std::max(longest, towgeom::distance(mesh.nodes[tri[c]], mesh.nodes[tri[(c + 1) % 3]]));
+                const towgeom::Point3 c = (1.0 / 3.0) * (mesh.nodes[tri[0]] + mesh.nodes[tri[1]] + mesh.nodes[tri[2]]);
+                const towgeom::ParameterRange pr = tows[t].parameterRange();
+                const double size = tows[t].towSize();
+                for (const double u : {pr.uMin, pr.uMax}) {
+                    towgeom::Point3 end{0, 0, 0};
+                    for (int k = 0; k < 8; ++k) end = end + 0.125 * tows[t].point(u, pr.vMin + pr.vPeriod() * k / 8.0);
+                    if (towgeom::distance(end, c) < 2.0 * size) {
+                        ++tally.ownNearEnd;
+                        break;
+                    }
+                }
+                if (rim > 0) ++tally.ownOnRim;
+                else if (seam > 0) ++tally.ownOnSeam;
+                else if (8.0 * longest < r.tows[t].meshSize) ++tally.ownSmall;
+            }
+        }
     }
 }
 
@@ -91,6 +164,14 @@ void resolveOne(unsigned seed, const std::string& what, const std::vector<towgeo
     if (r.quality.minAngle < tally.smallestAngle) {
         tally.smallestAngle = r.quality.minAngle;
         tally.smallestAngleSeed = seed;
+    }
+    tally.triangles += r.quality.triangles;
+    placeSmallAngles(tows, r, tally);
+    for (std::size_t b = 0; b < r.quality.histogram.size() && b < 3; ++b) (b == 0 ? tally.under5 : tally.under15) += r.quality.histogram[b];
+    if (!r.quality.histogram.empty()) tally.under15 += r.quality.histogram[0];
+    if (r.quality.triangles > tally.mostTriangles) {
+        tally.mostTriangles = r.quality.triangles;
+        tally.mostTrianglesSeed = seed;
     }
     const std::vector<towgeom::UnresolvedPairEntry> unresolved = towgeom::unresolvedPairs(r);
     std::set<std::pair<std::size_t, std::size_t>> pairs;
@@ -123,6 +204,13 @@ void printResolveTally(const ResolveTally& t)
                 t.notClosed);
     std::printf("  smallest angle %.3g deg (seed %u); resolve %.1f s in all, slowest %.2f s (seed %u)\n", t.smallestAngle,
                 t.smallestAngleSeed, t.seconds, t.slowest, t.slowestSeed);
+    const double all = static_cast<double>(std::max<std::size_t>(1, t.triangles));
+    std::printf("  triangles %zu (most %zu, seed %u); smallest angle under 5 deg: %zu (%.3g %%), under 15 deg: %zu (%.3g %%)\n",
+                t.triangles, t.mostTriangles, t.mostTrianglesSeed, t.under5, 100.0 * static_cast<double>(t.under5) / all, t.under15,
+                100.0 * static_cast<double>(t.under15) / all);
+    std::printf("  under 15 deg: on caps %zu, in regions %zu, small angle at a loop node %zu, another corner on one %zu, "
+                "no loop node %zu (a node on an end %zu, on the seam %zu, else shorter than h/8 %zu; within 2 tow sizes of an end %zu)\n",
+                t.capUnder15, t.regionUnder15, t.atLoopNode, t.besideLoopNode, t.ownOnly, t.ownOnRim, t.ownOnSeam, t.ownSmall, t.ownNearEnd);
 }
 
 double since(std::chrono::steady_clock::time_point t0)

@@ -429,8 +429,11 @@ TEST_CASE("the minimum angle asked for is the one the mesher refines to", "[reso
 {
     // A larger bound refines further (a bound that never reached the mesher would give the same
     // mesh both times: CGAL's criteria derive virtually from the shape criterion, whose bound
-    // the most derived class must pass on). The bound is met in the mesher's measures; in 3D
-    // the 30 degree mesh keeps 99 % of its triangles above 25 degrees.
+    // the most derived class must pass on). The bound is met in the plane each tow is meshed
+    // in, 3/4 of it on the surface; in 3D the 30 degree mesh keeps 99 % of its triangles above
+    // 25 degrees. Observed: 154,854 and 163,736 triangles, 98.60 % and 98.97 % of them at
+    // least 30 degrees (before the surface's bound was 3/4 of the plane's, the 30 degree mesh
+    // had 1.5 times the triangles: the surface's bound at the plane's refined on and on).
     const std::vector<TowSurface> tows = fit(generateWeave(twill22()).stacks());
     const auto quality = [&](double degrees) {
         ResolveOptions o;
@@ -439,9 +442,11 @@ TEST_CASE("the minimum angle asked for is the one the mesher refines to", "[reso
         return resolveTextile(tows, o).quality;
     };
     const MeshQuality q20 = quality(20.0), q30 = quality(30.0);
-    WARN("min angle 20: " << q20.triangles << " triangles, >= 30 deg " << q20.fractionAtLeast(30) << "; min angle 30: "
-                          << q30.triangles << " triangles, >= 30 deg " << q30.fractionAtLeast(30));
-    CHECK(q30.triangles > 3 * q20.triangles / 2);
+    WARN("min angle 20: " << q20.triangles << " triangles, >= 25 deg " << q20.fractionAtLeast(25) << ", >= 30 deg "
+                          << q20.fractionAtLeast(30) << "; min angle 30: " << q30.triangles << " triangles, >= 25 deg "
+                          << q30.fractionAtLeast(25) << ", >= 30 deg " << q30.fractionAtLeast(30));
+    CHECK(q30.triangles > 103 * q20.triangles / 100);
+    CHECK(q30.fractionAtLeast(30) > q20.fractionAtLeast(30) + 0.002);
     CHECK(q20.fractionAtLeast(20) >= 0.99);
     CHECK(q30.fractionAtLeast(25) >= 0.99);
 }

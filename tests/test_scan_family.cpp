@@ -249,6 +249,21 @@ TEST_CASE("a loop with a narrow neck: no edge across it is shared by the two tow
     checkResolved(96, {"warp_0", "warp_1", "warp_2", "warp_3", "weft_3"}, true);
 }
 
+TEST_CASE("a loop chord along a tow's seam, split off the seam: the seam's edge under it gets a station", "[mesh][scan][seam]")
+{
+    // Plain weave of seed 145: a loop chord of the weft lies along its seam, 0.158 long (2.5 x
+    // the mesh size). Split, its new node lies just off the seam; the seam's edge between the
+    // chord's ends stayed one edge, exempt from the size bound (both ends loop nodes), and the
+    // faces across the seam from it sagged through the warp's faces around the new node: 4
+    // crossing triangle pairs, 13 after the contact refinement (and 119 after one more). The
+    // whole textile (the pair alone meshes differently and does not cross); fails with the
+    // seam's edge kept as a loop chord (13).
+    const testing::ScanLikeTextile t = testing::scanLikeTextile(145);
+    const ResolveResult r = resolveTextile(testing::fitAll(t.stacks));
+    CHECK(unresolvedPairs(r).empty());
+    CHECK(testing::crossingPairsBetweenTows(r.mesh) == 0);
+}
+
 TEST_CASE("a loop that dips across a tow's seam and back between two loop nodes gets nodes on the seam", "[mesh][scan][seam]")
 {
     // Plain weave of seed 32: the loop runs along the warp's seam within 1e-4 of its period and

@@ -19,7 +19,11 @@ struct MeshOptions {
     double edgeLength = 0.0;
     /// edgeLength relative to the tow size when edgeLength is 0. Default 0.1.
     double relativeEdgeLength = 0.1;
-    /// The smallest angle the mesher aims for, in degrees (at most 30). Default 20.
+    /// The smallest angle the mesher aims for, in degrees (at most 30). Default 20. It is asked in
+    /// the plane each tow is meshed in, and 3/4 of it (15 degrees by default) on the surface for
+    /// faces longer than an eighth of the local mesh size (below, the plane's refinement would
+    /// not converge on the surface's shape). Faces whose refinement would split a loop chord or
+    /// seam edge in the last round may stay under it (MeshQuality::facesOverBounds).
     double minAngle = 20.0;
     /// Spacing of the nodes along intersection loops. 0 (default): the smaller mesh size of the
     /// loop's two tows. A smaller spacing refines the mesh along loops ("high" refinement), a

@@ -38,7 +38,7 @@ struct SurfaceMeshOptions {
     /// size (TowSurface::towSize()). At most a quarter of the tow's circumference.
     double edgeLength = 0.0;
     double relativeEdgeLength = 0.1;  ///< h relative to the tow size when edgeLength is 0
-    double minAngle = 20.0;           ///< smallest triangle angle aimed for, degrees in (0, 30]
+    double minAngle = 20.0;           ///< smallest triangle angle aimed for, degrees in (0, 30] (as MeshOptions::minAngle)
     /// Optional: the target edge length at a (u,v) of the tow, in the user's units, for a mesh
     /// graded where the host needs it (finer near a contact, a crack, a sensor). Taken within
     /// [h / 100, h] with h the edge length above, which stays the size of the seam and end
@@ -72,8 +72,9 @@ struct SurfaceMesh {
 };
 
 /// Meshes one TowSurface in its (u,v) rectangle with CGAL's constrained Delaunay mesher, in a
-/// parameter space scaled by the surface's lengths along and around the tow so that triangles
-/// are well shaped in 3D; the nodes on v = vMin and v = vMax are the same, so the mesh is a
+/// parameter space scaled by the surface's lengths along and around the tow (conformally: as
+/// long across the tow as along it, wherever its girth changes) so that triangles are well
+/// shaped in 3D; the nodes on v = vMin and v = vMax are the same, so the mesh is a
 /// tube closed across the seam, closed at its ends by its caps (SurfaceMeshOptions::caps). This
 /// is the mesher resolveTextile() runs on every tow with the intersection loops as constraints;
 /// here the constraints are the host's (cut lines, sensor paths, its own loops).

@@ -143,15 +143,21 @@ CDT::Vertex_handle vertexAt(const CDT& cdt, const K::Point_2& p)
     return lt == CDT::VERTEX ? f->vertex(li) : CDT::Vertex_handle();
 }
 
-/// The surface's mean lengths along u and around v (the scale of the parameter space).
+/// The plane's lengths along u and around v (the scale of the parameter space): around, the
+/// tow's girth (pi x its size); along, the conformal length, or in a cell the mean length.
 struct ParameterScale {
     double alongU = 1.0;
     double aroundV = 1.0;
 };
 
-ParameterScale parameterScale(const TowSurface& surface)
+/// With @p conformal, the length along u is that of the conformal plane (ScaledSpace).
+ParameterScale parameterScale(const TowSurface& surface, bool conformal)
 {
     const ParameterRange r = surface.parameterRange();
+    if (conformal) {
+        const double around = 3.14159265358979323846 * surface.towSize();
+        return {ScaledSpace::conformalLength(surface, around), around};
+    }
     constexpr int kSamples = 8;
     const std::size_t along = 4 * surface.sectionCount();
     ParameterScale scale{0.0, 0.0};
@@ -215,7 +221,7 @@ struct ParametricMesher::Impl {
     std::size_t badFaces = 0;
 
     Impl(const TowSurface& s, const MeshSizes& z)
-        : surface(s), sizes(z), range(s.parameterRange()), scale(parameterScale(s)),
+        : surface(s), sizes(z), range(s.parameterRange()), scale(parameterScale(s, !z.uSpan)),
           su(scale.alongU / (range.uMax - range.uMin)), sv(scale.aroundV / range.vPeriod()),
           keep0(z.uSpan ? ((*z.uSpan)[0] - range.uMin) * su : -std::numeric_limits<double>::infinity()),
           keep1(z.uSpan ? ((*z.uSpan)[1] - range.uMin) * su : std::numeric_limits<double>::infinity()),
@@ -359,7 +365,8 @@ struct ParametricMesher::Impl {
     /// A loop chord along the seam (its two nodes on one side of it, @p va and @p vb): the curve
     /// between them dips across the seam, and the new node lies off it, on the seam's one side or
     /// the other. It goes on that side, joined to the chord's ends there by two new constraints;
-    /// the chord stays as the seam's edge (a thin triangle of the domain between them).
+    /// the chord stays as the seam's edge (a thin triangle of the domain between them), split by
+    /// a seam station at the node's x.
     /// NotAlongSeam when the chord is not along the seam or the node lies on it (split as any
     /// chord); Failed when the chord's ends have no vertices on that side (the tow is meshed
     /// again from the start).
@@ -378,6 +385,17 @@ struct ParametricMesher::Impl {
         const CDT::Vertex_handle vm = insertLoopNode(K::Point_2(at.x(), y), s.node);
         cdt.insert_constraint(a, vm);
         cdt.insert_constraint(vm, b);
+        // The seam's edge between the chord's ends is no loop chord now (the loop runs through
+        // the new node): refinement may split it (kept as a loop chord, its faces across the
+        // seam sagged through the other tow's faces: seed 145, 13 crossing triangle pairs that
+        // refinement made worse), and it gets a station of this tow's own at the new node's x,
+        // on both sides, so that those faces follow the surface next to the loop.
+        const auto [lo, hi] = std::minmax(va->point().x(), vb->point().x());
+        seamChords.erase({lo, hi});
+        if (at.x() > lo && at.x() < hi) {
+            cdt.insert(K::Point_2(at.x(), 0.0));
+            cdt.insert(K::Point_2(at.x(), ly));
+        }
         return SeamSplit::Done;
     }
 };
@@ -403,8 +421,9 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
     m.seamChords.clear();
 
     // Seam stations: uniform along u plus every loop node on the seam, the same on both sides.
-    // All four sides get stations h/2 apart: edges that short are seldom encroached, nor too
-    // long in 3D where the surface is longer than its mean.
+    // All four sides get stations h/2 apart in the plane: edges that short are seldom
+    // encroached, nor too long in 3D where the surface is longer than its mean (along the seam,
+    // h/2 times the tow's girth there over its mean; longer seam edges are split in rounds).
     std::vector<double> seamX, loopSeamX;  // all stations asked for; the loop nodes among them
     for (double u : seamU) seamX.push_back(m.toXY({u, m.range.vMin}).x());
     for (const LoopConstraint& c : constraints)

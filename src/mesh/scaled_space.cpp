@@ -14,9 +14,56 @@ namespace {
 constexpr std::size_t kRowsPerSection = 4;
 constexpr std::size_t kColumnsPerPoint = 2;
 
-/// dx/dv that squares the plane at every grid point, integrated around each row (trapezoids),
-/// without the drift over the whole turn and centred on zero: the correction c(row, column).
-std::vector<double> squaringOffsets(const TowSurface& surface, double su, const std::vector<double>& us, std::size_t nv)
+/// The grid's rows (u, both ends included) and columns around v.
+std::vector<double> gridRows(const ParameterRange& r, std::size_t nu)
+{
+    std::vector<double> u(nu);
+    for (std::size_t i = 0; i < nu; ++i)
+        u[i] = i + 1 == nu ? r.uMax : r.uMin + (r.uMax - r.uMin) * static_cast<double>(i) / static_cast<double>(nu - 1);
+    return u;
+}
+std::size_t rowCount(const TowSurface& s) { return std::clamp<std::size_t>(kRowsPerSection * s.sectionCount() + 1, 9, 1025); }
+std::size_t columnCount(const TowSurface& s) { return std::clamp<std::size_t>(kColumnsPerPoint * s.pointsPerSection(), 16, 512); }
+
+/// Per row: how fast a conformal x runs along u for a plane 1 around, |S_u| / C (|S_u| the mean
+/// speed along u over the row, C the girth across the tow: the integral of |S_u x S_v| / |S_u|
+/// over v, the circumference of the section square to the tow, which the shear correction makes
+/// a line of constant x). Kept within 1/8 .. 8 of its mean (a section next to nothing around
+/// would have no bound); all 1 when the tow has no girth or speed anywhere (a linear plane).
+std::vector<double> conformalDensity(const TowSurface& surface, const std::vector<double>& us, std::size_t nv)
+{
+    const ParameterRange r = surface.parameterRange();
+    const double dv = r.vPeriod() / static_cast<double>(nv);
+    std::vector<double> density(us.size(), 0.0);
+    for (std::size_t i = 0; i < us.size(); ++i) {
+        double around = 0.0, speed = 0.0;
+        for (std::size_t j = 0; j < nv; ++j) {
+            const SurfaceDerivatives d = surface.derivatives(us[i], r.vMin + static_cast<double>(j) * dv);
+            const double su = norm(d.du);
+            speed += su / static_cast<double>(nv);
+            if (su > 0.0) around += norm(cross(d.du, d.dv)) / su * dv;
+        }
+        density[i] = around > 0.0 ? speed / around : 0.0;
+    }
+    double mean = 0.0;
+    for (double d : density) mean += d / static_cast<double>(density.size());
+    if (!(mean > 0.0) || !std::isfinite(mean)) return std::vector<double>(us.size(), 1.0);
+    for (double& d : density) d = std::isfinite(d) ? std::clamp(d, mean / 8.0, 8.0 * mean) : mean;
+    return density;
+}
+
+/// The integral of @p density over the rows @p us from the first (trapezoids).
+std::vector<double> integral(const std::vector<double>& us, const std::vector<double>& density)
+{
+    std::vector<double> f(us.size(), 0.0);
+    for (std::size_t i = 1; i < us.size(); ++i) f[i] = f[i - 1] + 0.5 * (density[i - 1] + density[i]) * (us[i] - us[i - 1]);
+    return f;
+}
+
+/// dx/dv that squares the plane at every grid point (x running @p dxdu[i] per unit u at row i),
+/// integrated around each row (trapezoids), without the drift over the whole turn and centred on
+/// zero: the correction c(row, column).
+std::vector<double> squaringOffsets(const TowSurface& surface, const std::vector<double>& dxdu, const std::vector<double>& us, std::size_t nv)
 {
     const ParameterRange r = surface.parameterRange();
     const double dv = r.vPeriod() / static_cast<double>(nv);
@@ -25,7 +72,7 @@ std::vector<double> squaringOffsets(const TowSurface& surface, double su, const 
         for (std::size_t j = 0; j < nv; ++j) {
             const SurfaceDerivatives d = surface.derivatives(us[i], r.vMin + static_cast<double>(j) * dv);
             const double uu = dot(d.du, d.du);
-            slope[j] = uu > 0.0 ? su * dot(d.du, d.dv) / uu : 0.0;
+            slope[j] = uu > 0.0 ? dxdu[i] * dot(d.du, d.dv) / uu : 0.0;
         }
         slope[nv] = slope[0];
         double* row = &c[i * nv];
@@ -43,44 +90,70 @@ std::vector<double> squaringOffsets(const TowSurface& surface, double su, const 
 
 }  // namespace
 
+double ScaledSpace::conformalLength(const TowSurface& surface, double ly)
+{
+    // Conformal between the grid's first and last cells, which take their share of the length
+    // at the mean rate (x is linear in u there): lx = ly (F(u[nu-2]) - F(u[1])) + 2 lx / (nu - 1).
+    const std::size_t nu = rowCount(surface);
+    const std::vector<double> us = gridRows(surface.parameterRange(), nu);
+    const std::vector<double> f = integral(us, conformalDensity(surface, us, columnCount(surface)));
+    return ly * (f[nu - 2] - f[1]) * static_cast<double>(nu - 1) / static_cast<double>(nu - 3);
+}
+
 ScaledSpace::ScaledSpace(const TowSurface& surface, double su, double sv, bool unshear)
     : range_(surface.parameterRange()), su_(su), sv_(sv)
 {
     if (!unshear) return;
-    nu_ = std::clamp<std::size_t>(kRowsPerSection * surface.sectionCount() + 1, 9, 1025);
-    nv_ = std::clamp<std::size_t>(kColumnsPerPoint * surface.pointsPerSection(), 16, 512);
-    u_.resize(nu_);
-    for (std::size_t i = 0; i < nu_; ++i)
-        u_[i] = i + 1 == nu_ ? range_.uMax
-                             : range_.uMin + (range_.uMax - range_.uMin) * static_cast<double>(i) / static_cast<double>(nu_ - 1);
-    const std::vector<double> c = squaringOffsets(surface, su, u_, nv_);
+    nu_ = rowCount(surface);
+    nv_ = columnCount(surface);
+    u_ = gridRows(range_, nu_);
     const double lx = (range_.uMax - range_.uMin) * su;
-    double largest = 0.0;
-    for (double e : c) largest = std::max(largest, std::abs(e));
-    if (!(largest > 1e-9 * lx)) return;  // square already
-    // The blend: none in the grid's last cell at each end, then a ramp to the full correction
-    // over 2 x its largest value, where it cannot make x fall along u (the ramp's slope adds at
-    // most half of su). None in the last cell: there x is (u - uMin) su to the last bit, as
+    // The base: x conformal along u between the grid's first and last cells (x runs as fast as
+    // the tow is long there, for its girth there), linear in u, (u - uMin) su, in those two
+    // cells. None in the last cell at each end: there x is (u - uMin) su to the last bit, as
     // without the correction (a loop across a cap, with nodes on the rim and thin triangles next
     // to it, failed in the region stage with the correction blended down to the rim itself).
-    const double blend = 2.0 * largest, margin = lx / static_cast<double>(nu_ - 1);
-    std::vector<double> base(nu_), weight(nu_);
+    const std::vector<double> density = conformalDensity(surface, u_, nv_), f = integral(u_, density);
+    std::vector<double> base(nu_), dxdu(nu_, su);
+    const double from = (u_[1] - range_.uMin) * su, to = (u_[nu_ - 2] - range_.uMin) * su;
+    const double stretch = (to - from) / (f[nu_ - 2] - f[1]);
+    double bent = 0.0;  // how far the base is from linear
     for (std::size_t i = 0; i < nu_; ++i) {
-        base[i] = i + 1 == nu_ ? lx : (u_[i] - range_.uMin) * su;
-        // (Rows 1 and nu - 2 lie at the margin: none there, whatever the rounding.)
-        weight[i] = i <= 1 || i + 2 >= nu_ ? 0.0 : std::clamp((std::min(base[i], lx - base[i]) - margin) / blend, 0.0, 1.0);
+        base[i] = i == 0 ? 0.0 : i + 1 == nu_ ? lx : i == 1 ? from : i + 2 == nu_ ? to : from + (f[i] - f[1]) * stretch;
+        if (i > 0 && i + 1 < nu_) dxdu[i] = density[i] * stretch;
+        bent = std::max(bent, std::abs(base[i] - (u_[i] - range_.uMin) * su));
     }
+    const std::vector<double> c = squaringOffsets(surface, dxdu, u_, nv_);
+    double largest = 0.0;
+    for (double e : c) largest = std::max(largest, std::abs(e));
+    if (!(largest > 1e-9 * lx) && !(bent > 1e-9 * lx)) return;  // square and conformal already
+    // The correction's blend: none in the last cell at each end, then a ramp to the full
+    // correction as steep as lets it take at most half of the base's rise along u, by the
+    // correction's largest value in the rows (where the shear is small next to an end, the
+    // ramp is short).
+    std::vector<double> rowLargest(nu_, 0.0);
+    for (std::size_t i = 0; i < nu_; ++i)
+        for (std::size_t j = 0; j < nv_; ++j) rowLargest[i] = std::max(rowLargest[i], std::abs(c[i * nv_ + j]));
+    std::vector<double> weight(nu_, 0.0), back(nu_, 0.0);
+    const auto ramp = [&](std::size_t from, std::size_t to) {  // weight at row to, from that at row from
+        const double largest = std::max({rowLargest[from], rowLargest[to], 1e-300});
+        return std::min(1.0, 0.5 * std::abs(base[to] - base[from]) / largest);
+    };
+    for (std::size_t i = 2; i + 2 < nu_; ++i) weight[i] = std::min(1.0, weight[i - 1] + ramp(i - 1, i));
+    for (std::size_t i = nu_ - 3; i >= 2; --i) back[i] = std::min(1.0, back[i + 1] + ramp(i + 1, i));
+    for (std::size_t i = 0; i < nu_; ++i) weight[i] = std::min(weight[i], back[i]);
     // Where sections turn fast the correction's own slope along u may make x fall: a smaller
-    // share of it, or none.
-    for (const double share : {1.0, 0.5, 0.25}) {
+    // share of it, or none (the base alone rises).
+    for (const double share : {1.0, 0.5, 0.25, 0.0}) {
         x_.assign(nu_ * nv_, 0.0);
         for (std::size_t i = 0; i < nu_; ++i)
             for (std::size_t j = 0; j < nv_; ++j) x_[i * nv_ + j] = base[i] + share * weight[i] * c[i * nv_ + j];
         bool rising = true;
         for (std::size_t i = 0; i + 1 < nu_ && rising; ++i)
             for (std::size_t j = 0; j < nv_ && rising; ++j) rising = at(i + 1, j) - at(i, j) >= 0.25 * (base[i + 1] - base[i]);
+        // Every row but those of the end cells is off (u - uMin) su.
         shifted_.assign(nu_, false);
-        for (std::size_t i = 0; i < nu_; ++i) shifted_[i] = weight[i] > 0.0;
+        for (std::size_t i = 2; i + 2 < nu_; ++i) shifted_[i] = true;
         if (rising) return;
     }
     x_.clear();

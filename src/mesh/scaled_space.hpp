@@ -2,7 +2,10 @@
 // su plus a correction that makes the lines of constant x cross the tow square. Where a tow's
 // sections are cut obliquely (a binder sliced by the scan's planes at 40-60 degrees), the lines
 // of constant u do not: dS/du and dS/dv meet at 40 degrees, and triangles that are good in the
-// plane are poor on the surface. The correction removes that shear.
+// plane are poor on the surface. The correction removes that shear. And where a tow's girth
+// changes along it (a stub of a few sections swelling between them), x runs conformally: as
+// fast as the tow is long for its girth there, so that the plane's good triangles are good on
+// the surface (else a plane three times too short across the tow refines to slivers' size).
 #pragma once
 
 #include <cstddef>
@@ -16,13 +19,20 @@ namespace detail {
 
 class ScaledSpace {
 public:
-    /// @p su, @p sv: the plane's length per unit u and v. With @p unshear, x is corrected so that
-    /// dS/dx and dS/dy are about square: dx/dv = su (S_u . S_v) / |S_u|^2, integrated around each
+    /// @p su, @p sv: the plane's length per unit u and v. With @p unshear, x runs conformally
+    /// along u (between the grid's first and last cells, linear in u within them; su is best
+    /// conformalLength() / (uMax - uMin)), and is corrected so that
+    /// dS/dx and dS/dy are about square: dx/dv = x_u (S_u . S_v) / |S_u|^2 (x_u the base's rate
+    /// along u at that row), integrated around each
     /// section (a drift over the whole turn, as a tow's twist gives, is left), blended to nothing
     /// towards each end (none in the grid's last cell there) so that the ends stay at x = 0 and
     /// x = (uMax - uMin) su, and scaled down where it would let x fall along u. Without it,
     /// x = (u - uMin) su.
     ScaledSpace(const TowSurface& surface, double su, double sv, bool unshear);
+
+    /// The length along u of a conformal plane @p ly around: ly times the integral over u of
+    /// the tow's speed along u over its girth.
+    static double conformalLength(const TowSurface& surface, double ly);
 
     double su() const { return su_; }
     double sv() const { return sv_; }
