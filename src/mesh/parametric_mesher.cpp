@@ -365,8 +365,8 @@ struct ParametricMesher::Impl {
     /// A loop chord along the seam (its two nodes on one side of it, @p va and @p vb): the curve
     /// between them dips across the seam, and the new node lies off it, on the seam's one side or
     /// the other. It goes on that side, joined to the chord's ends there by two new constraints;
-    /// the chord stays as the seam's edge (a thin triangle of the domain between them), split by
-    /// a seam station at the node's x.
+    /// the chord stays as the seam's edge (a thin triangle of the domain between them), no loop
+    /// chord now, with a seam station at the node's x when it lies between the chord's ends.
     /// NotAlongSeam when the chord is not along the seam or the node lies on it (split as any
     /// chord); Failed when the chord's ends have no vertices on that side (the tow is meshed
     /// again from the start).
@@ -386,10 +386,11 @@ struct ParametricMesher::Impl {
         cdt.insert_constraint(a, vm);
         cdt.insert_constraint(vm, b);
         // The seam's edge between the chord's ends is no loop chord now (the loop runs through
-        // the new node): refinement may split it (kept as a loop chord, its faces across the
-        // seam sagged through the other tow's faces: seed 145, 13 crossing triangle pairs that
-        // refinement made worse), and it gets a station of this tow's own at the new node's x,
-        // on both sides, so that those faces follow the surface next to the loop.
+        // the new node): requestSplits() may ask for seam stations in it (kept as a loop chord,
+        // its faces across the seam sagged through the other tow's faces: seed 145, 13 crossing
+        // triangle pairs that refinement made worse), and it gets a station of this tow's own at
+        // the new node's x, on both sides, so that those faces follow the surface next to the
+        // loop. (The station is not kept for a full re-mesh, which puts uniform stations there.)
         const auto [lo, hi] = std::minmax(va->point().x(), vb->point().x());
         seamChords.erase({lo, hi});
         if (at.x() > lo && at.x() < hi) {
