@@ -25,20 +25,33 @@ std::vector<double> gridRows(const ParameterRange& r, std::size_t nu)
 std::size_t rowCount(const TowSurface& s) { return std::clamp<std::size_t>(kRowsPerSection * s.sectionCount() + 1, 9, 1025); }
 std::size_t columnCount(const TowSurface& s) { return std::clamp<std::size_t>(kColumnsPerPoint * s.pointsPerSection(), 16, 512); }
 
+/// The surface's derivatives at the grid's rows @p us and @p nv columns around (row-major),
+/// evaluated once for the density and the correction.
+std::vector<SurfaceDerivatives> derivativeGrid(const TowSurface& surface, const std::vector<double>& us, std::size_t nv)
+{
+    const ParameterRange r = surface.parameterRange();
+    const double dv = r.vPeriod() / static_cast<double>(nv);
+    std::vector<SurfaceDerivatives> grid;
+    grid.reserve(us.size() * nv);
+    for (double u : us)
+        for (std::size_t j = 0; j < nv; ++j) grid.push_back(surface.derivatives(u, r.vMin + static_cast<double>(j) * dv));
+    return grid;
+}
+
 /// Per row: how fast a conformal x runs along u for a plane 1 around, |S_u| / C (|S_u| the mean
 /// speed along u over the row, C the girth across the tow: the integral of |S_u x S_v| / |S_u|
 /// over v, the circumference of the section square to the tow, which the shear correction makes
 /// a line of constant x). Kept within 1/8 .. 8 of its mean (a section next to nothing around
 /// would have no bound); all 1 when the tow has no girth or speed anywhere (a linear plane).
-std::vector<double> conformalDensity(const TowSurface& surface, const std::vector<double>& us, std::size_t nv)
+/// @p grid: derivativeGrid() of @p rows rows.
+std::vector<double> conformalDensity(const std::vector<SurfaceDerivatives>& grid, std::size_t rows, std::size_t nv, double vPeriod)
 {
-    const ParameterRange r = surface.parameterRange();
-    const double dv = r.vPeriod() / static_cast<double>(nv);
-    std::vector<double> density(us.size(), 0.0);
-    for (std::size_t i = 0; i < us.size(); ++i) {
+    const double dv = vPeriod / static_cast<double>(nv);
+    std::vector<double> density(rows, 0.0);
+    for (std::size_t i = 0; i < rows; ++i) {
         double around = 0.0, speed = 0.0;
         for (std::size_t j = 0; j < nv; ++j) {
-            const SurfaceDerivatives d = surface.derivatives(us[i], r.vMin + static_cast<double>(j) * dv);
+            const SurfaceDerivatives& d = grid[i * nv + j];
             const double su = norm(d.du);
             speed += su / static_cast<double>(nv);
             if (su > 0.0) around += norm(cross(d.du, d.dv)) / su * dv;
@@ -47,7 +60,7 @@ std::vector<double> conformalDensity(const TowSurface& surface, const std::vecto
     }
     double mean = 0.0;
     for (double d : density) mean += d / static_cast<double>(density.size());
-    if (!(mean > 0.0) || !std::isfinite(mean)) return std::vector<double>(us.size(), 1.0);
+    if (!(mean > 0.0) || !std::isfinite(mean)) return std::vector<double>(rows, 1.0);
     for (double& d : density) d = std::isfinite(d) ? std::clamp(d, mean / 8.0, 8.0 * mean) : mean;
     return density;
 }
@@ -62,15 +75,14 @@ std::vector<double> integral(const std::vector<double>& us, const std::vector<do
 
 /// dx/dv that squares the plane at every grid point (x running @p dxdu[i] per unit u at row i),
 /// integrated around each row (trapezoids), without the drift over the whole turn and centred on
-/// zero: the correction c(row, column).
-std::vector<double> squaringOffsets(const TowSurface& surface, const std::vector<double>& dxdu, const std::vector<double>& us, std::size_t nv)
+/// zero: the correction c(row, column). @p grid: derivativeGrid() of dxdu.size() rows.
+std::vector<double> squaringOffsets(const std::vector<SurfaceDerivatives>& grid, const std::vector<double>& dxdu, std::size_t nv, double vPeriod)
 {
-    const ParameterRange r = surface.parameterRange();
-    const double dv = r.vPeriod() / static_cast<double>(nv);
-    std::vector<double> c(us.size() * nv, 0.0), slope(nv + 1);
-    for (std::size_t i = 0; i < us.size(); ++i) {
+    const double dv = vPeriod / static_cast<double>(nv);
+    std::vector<double> c(dxdu.size() * nv, 0.0), slope(nv + 1);
+    for (std::size_t i = 0; i < dxdu.size(); ++i) {
         for (std::size_t j = 0; j < nv; ++j) {
-            const SurfaceDerivatives d = surface.derivatives(us[i], r.vMin + static_cast<double>(j) * dv);
+            const SurfaceDerivatives& d = grid[i * nv + j];
             const double uu = dot(d.du, d.du);
             slope[j] = uu > 0.0 ? dxdu[i] * dot(d.du, d.dv) / uu : 0.0;
         }
@@ -96,7 +108,8 @@ double ScaledSpace::conformalLength(const TowSurface& surface, double ly)
     // at the mean rate (x is linear in u there): lx = ly (F(u[nu-2]) - F(u[1])) + 2 lx / (nu - 1).
     const std::size_t nu = rowCount(surface);
     const std::vector<double> us = gridRows(surface.parameterRange(), nu);
-    const std::vector<double> f = integral(us, conformalDensity(surface, us, columnCount(surface)));
+    const std::size_t nv = columnCount(surface);
+    const std::vector<double> f = integral(us, conformalDensity(derivativeGrid(surface, us, nv), nu, nv, surface.parameterRange().vPeriod()));
     return ly * (f[nu - 2] - f[1]) * static_cast<double>(nu - 1) / static_cast<double>(nu - 3);
 }
 
@@ -113,7 +126,8 @@ ScaledSpace::ScaledSpace(const TowSurface& surface, double su, double sv, bool u
     // cells. None in the last cell at each end: there x is (u - uMin) su to the last bit, as
     // without the correction (a loop across a cap, with nodes on the rim and thin triangles next
     // to it, failed in the region stage with the correction blended down to the rim itself).
-    const std::vector<double> density = conformalDensity(surface, u_, nv_), f = integral(u_, density);
+    const std::vector<SurfaceDerivatives> grid = derivativeGrid(surface, u_, nv_);
+    const std::vector<double> density = conformalDensity(grid, nu_, nv_, range_.vPeriod()), f = integral(u_, density);
     std::vector<double> base(nu_), dxdu(nu_, su);
     const double from = (u_[1] - range_.uMin) * su, to = (u_[nu_ - 2] - range_.uMin) * su;
     const double stretch = (to - from) / (f[nu_ - 2] - f[1]);
@@ -123,7 +137,7 @@ ScaledSpace::ScaledSpace(const TowSurface& surface, double su, double sv, bool u
         if (i > 0 && i + 1 < nu_) dxdu[i] = density[i] * stretch;
         bent = std::max(bent, std::abs(base[i] - (u_[i] - range_.uMin) * su));
     }
-    const std::vector<double> c = squaringOffsets(surface, dxdu, u_, nv_);
+    const std::vector<double> c = squaringOffsets(grid, dxdu, nv_, range_.vPeriod());
     double largest = 0.0;
     for (double e : c) largest = std::max(largest, std::abs(e));
     if (!(largest > 1e-9 * lx) && !(bent > 1e-9 * lx)) return;  // square and conformal already
