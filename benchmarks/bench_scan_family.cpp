@@ -60,6 +60,11 @@ struct ResolveTally {
     unsigned mostTrianglesSeed = 0;
     double seconds = 0.0, slowest = 0.0, smallestAngle = 180.0;
     unsigned slowestSeed = 0, smallestAngleSeed = 0;
+    /// Against MeshQuality::angleBound: sharp constraint corners, triangles excused at them, the
+    /// rest under the bound, the smallest angle away from corners.
+    std::size_t sharpCorners = 0, atSharpCorners = 0, underBound = 0;
+    double smallestAway = 180.0;
+    unsigned smallestAwaySeed = 0;
 };
 
 /// One line per tow pair whose output triangles cross: how many, how many of those share a node,
@@ -161,6 +166,13 @@ void resolveOne(unsigned seed, const std::string& what, const std::vector<towgeo
         tally.slowest = seconds;
         tally.slowestSeed = seed;
     }
+    tally.sharpCorners += r.mesh.sharpCorners.size();
+    tally.atSharpCorners += r.quality.atSharpCorners;
+    tally.underBound += r.quality.underBound;
+    if (r.quality.minAngleAwayFromCorners < tally.smallestAway) {
+        tally.smallestAway = r.quality.minAngleAwayFromCorners;
+        tally.smallestAwaySeed = seed;
+    }
     if (r.quality.minAngle < tally.smallestAngle) {
         tally.smallestAngle = r.quality.minAngle;
         tally.smallestAngleSeed = seed;
@@ -208,6 +220,10 @@ void printResolveTally(const ResolveTally& t)
     std::printf("  triangles %zu (most %zu, seed %u); smallest angle under 5 deg: %zu (%.3g %%), under 15 deg: %zu (%.3g %%)\n",
                 t.triangles, t.mostTriangles, t.mostTrianglesSeed, t.under5, 100.0 * static_cast<double>(t.under5) / all, t.under15,
                 100.0 * static_cast<double>(t.under15) / all);
+    std::printf("  against the surface's angle bound: %zu sharp constraint corners, %zu triangles at them (at least a third of the "
+                "corner's angle), %zu under the bound elsewhere (%.3g %%); smallest angle away from corners %.3g deg (seed %u)\n",
+                t.sharpCorners, t.atSharpCorners, t.underBound, 100.0 * static_cast<double>(t.underBound) / all, t.smallestAway,
+                t.smallestAwaySeed);
     std::printf("  under 15 deg: on caps %zu, in regions %zu, small angle at a loop node %zu, another corner on one %zu, "
                 "no loop node %zu (a node on an end %zu, on the seam %zu, else shorter than h/8 %zu; within 2 tow sizes of an end %zu)\n",
                 t.capUnder15, t.regionUnder15, t.atLoopNode, t.besideLoopNode, t.ownOnly, t.ownOnRim, t.ownOnSeam, t.ownSmall, t.ownNearEnd);
@@ -267,6 +283,10 @@ int runLarge(unsigned seed, std::size_t threads, bool smoke, bool detectOnly, co
                 "closed, smallest angle %.3g deg, %zu triangles; peak memory %.0f MiB\n",
                 report.loops.size(), report.openCount(), unresolved.size(), codes.c_str(), crossing, notClosed, r.quality.minAngle,
                 triangles, peak);
+    std::printf("  %zu sharp constraint corners, %zu triangles at them, %zu under the %.3g deg bound elsewhere; smallest angle away "
+                "from corners %.3g deg\n",
+                r.mesh.sharpCorners.size(), r.quality.atSharpCorners, r.quality.underBound, r.quality.angleBound,
+                r.quality.minAngleAwayFromCorners);
 
     t0 = std::chrono::steady_clock::now();
     std::vector<towgeom::TriangleMesh> faceted;

@@ -7,6 +7,7 @@
 
 #include <towgeom/error.hpp>
 #include <towgeom/intersection_loop.hpp>
+#include <towgeom/report.hpp>
 #include <towgeom/resolve.hpp>
 #include <towgeom/tow_stack.hpp>
 #include <towgeom/tow_surface.hpp>
@@ -18,6 +19,9 @@
 #include <map>
 #include <numeric>
 #include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include "analytic_reference.hpp"
 #include "cgal_reference.hpp"
@@ -571,4 +575,75 @@ TEST_CASE("a tow grazing another's end: resolved, or named, never overlapping si
             FAIL_CHECK("resolveTextile threw: " << e.what());
         }
     }
+}
+
+TEST_CASE("a loop meeting a cap's rim at a small angle is a sharp corner: listed with its angle, its triangles judged by it",
+          "[resolve][caps][quality]")
+{
+    // The y-tube (radius 0.5, axis x = 2, z = d) meets the plane of the stub's end cap (x = 2,
+    // radius 0.5) in the band |z - d| <= 0.5: the loop crosses the cap along the chord z = d - 0.5,
+    // which meets the rim at arccos((d - 0.5) / 0.5) to its tangent (closed form); on the tubes
+    // the loop meets the rim square. With the stub ranked first: two corners of its cap, none
+    // elsewhere, each listed at its place (x = 2, |z| = d - 0.5, on the rim) with its angle less
+    // half the turn of the rim chord next to it (at most h / 0.5); every triangle under the
+    // bound is in one of them and keeps a third of its angle. With the y-tube first the stub
+    // gives up the cap's piece inside it, the corners' wedges with it: none is listed.
+    const double h = 0.02;
+    const double halfTurn = 0.5 * h / 0.5 * 180.0 / kPi;  // degrees
+    for (const double corner : {10.0, 5.0})
+        for (const bool stubFirst : {true, false}) {
+            DYNAMIC_SECTION("corner " << corner << " deg, " << (stubFirst ? "the stub" : "the y-tube") << " ranked first")
+            {
+                const double z0 = 0.5 * std::cos(corner * kPi / 180.0), d = 0.5 + z0;
+                const std::vector<TowSurface> tows = fit({testing::tubeAlongX(0.5, 2.0, 0.0, 0.0, 0.0, sampling(0.0, 41, 48), "stub"),
+                                                         testing::tubeAlongY(0.5, d, sampling(0.0, 41, 48), "y")});
+                ResolveOptions o;
+                o.mesh.edgeLength = h;
+                o.primaryPatterns = {stubFirst ? "stub" : "y"};
+                const ResolveResult r = resolveTextile(tows, o);
+                REQUIRE(r.unresolved.empty());
+                CHECK(testing::crossingPairsBetweenTows(r.mesh) == 0);
+                const MeshQuality& q = r.quality;
+                CHECK(q.angleBound == Approx(15.0));
+                WARN("corner " << corner << " deg: " << r.mesh.sharpCorners.size() << " sharp corners, " << q.atSharpCorners
+                               << " triangles at them, " << q.underBound << " under the bound elsewhere, smallest angle " << q.minAngle
+                               << ", away from corners " << q.minAngleAwayFromCorners);
+                CHECK(q.underBound == 0);
+                std::ostringstream json;
+                writeResolveReport(r, tows, json);
+                const nlohmann::json report = nlohmann::json::parse(json.str());
+                CHECK(report["mesh_quality"]["under_bound"] == 0);
+                CHECK(report["mesh_quality"]["angle_bound_deg"].get<double>() == Approx(15.0));
+                if (!stubFirst) {
+                    CHECK(r.mesh.sharpCorners.empty());
+                    CHECK(report["sharp_corners"].empty());
+                    CHECK(q.atSharpCorners == 0);
+                    CHECK(q.minAngle >= 15.0);
+                    continue;
+                }
+                REQUIRE(r.mesh.sharpCorners.size() == 2);
+                for (const SharpCorner& c : r.mesh.sharpCorners) {
+                    const Point3& p = r.mesh.nodes[c.node];
+                    CHECK(tows[c.tow].name() == "stub");
+                    CHECK(c.face == TowFace::End);
+                    CHECK(p.x == Approx(2.0).margin(1e-9));
+                    CHECK(std::abs(p.z) == Approx(z0).margin(1e-6));
+                    CHECK(std::hypot(p.y, p.z) == Approx(0.5).margin(1e-6));
+                    CHECK(c.angle <= corner + 1e-6);
+                    CHECK(c.angle >= corner - halfTurn - 1e-6);
+                    CHECK_FALSE(c.triangles.empty());
+                }
+                CHECK(q.atSharpCorners >= 2);
+                CHECK(q.minAngle >= corner / 3.0);  // observed 9.3 and 4.4 degrees
+                // The report lists them with their place.
+                REQUIRE(report["sharp_corners"].size() == 2);
+                for (const auto& c : report["sharp_corners"]) {
+                    CHECK(c["tow"] == "stub");
+                    CHECK(c["face"] == "end");
+                    CHECK(c["point"][0].get<double>() == Approx(2.0).margin(1e-9));
+                    CHECK(std::abs(c["point"][2].get<double>()) == Approx(z0).margin(1e-6));
+                    CHECK(c["angle_deg"].get<double>() <= corner + 1e-6);
+                }
+            }
+        }
 }

@@ -331,6 +331,11 @@ TEST_CASE("towgeom resolve writes compatible meshes, a consistent report and mod
     CHECK(jsonNumber(report, "fraction_at_least_20") >= 0.9998);
     CHECK(jsonNumber(report, "min_angle_deg") >= 16.0);
     CHECK(jsonNumber(report, "faces_over_bounds") == 0);
+    // No loop meets a seam, rim or other loop at a small angle: no sharp corner, nothing under
+    // the surface's 15 degrees.
+    CHECK(report.find("\"sharp_corners\":[]") != std::string::npos);
+    CHECK(jsonNumber(report, "angle_bound_deg") == 15.0);
+    CHECK(jsonNumber(report, "under_bound") == 0);
     CHECK(jsonNumber(report, "mesh_rounds") >= 1);
     CHECK(jsonNumber(report, "mesh_rounds") <= 6);
     // Warps keep their volume; wefts lose what the regions took.

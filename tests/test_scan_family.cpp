@@ -6,6 +6,7 @@
 #include <towgeom/towgeom.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -103,15 +104,70 @@ TriangleMesh referenceSolid(const TowSurface& tow)
     return closedSurface(m.vertices, m.triangles);
 }
 
+/// Triangles of @p r under MeshQuality::angleBound, counted independently of MeshQuality: in a
+/// sharp corner's triangles (and at least a third of its angle) or not, and of those not, how
+/// many have no node in the first or last section span of their tow (u from the tow's (u,v)
+/// per node: TowMesh::parameters).
+struct UnderBound {
+    std::size_t atCorners = 0, elsewhere = 0, awayFromEnds = 0;
+};
+UnderBound underBound(const std::vector<TowSurface>& tows, const ResolveResult& r)
+{
+    UnderBound out;
+    const double bound = r.quality.angleBound;
+    std::map<std::pair<std::size_t, std::array<std::size_t, 3>>, double> corner;
+    const auto sorted = [](std::array<std::size_t, 3> t) {
+        std::sort(t.begin(), t.end());
+        return t;
+    };
+    for (const SharpCorner& c : r.mesh.sharpCorners)
+        for (const auto& t : c.triangles) {
+            auto [it, added] = corner.emplace(std::make_pair(c.tow, sorted(t)), c.angle);
+            if (!added) it->second = std::min(it->second, c.angle);
+        }
+    for (std::size_t t = 0; t < tows.size(); ++t) {
+        const TowMesh& m = r.mesh.tows[t];
+        const std::vector<double>& sections = tows[t].sectionParameters();
+        const double endSpan0 = sections[1], endSpan1 = sections[sections.size() - 2];
+        for (std::size_t k = 0; k < m.triangles.size(); ++k) {
+            if (m.region[k] >= 0 && r.mesh.regions[static_cast<std::size_t>(m.region[k])].secondary == t) continue;
+            const auto& tri = m.triangles[k];
+            double smallest = 180.0;
+            for (int c = 0; c < 3; ++c) {
+                const Vector3 a = r.mesh.nodes[tri[(c + 1) % 3]] - r.mesh.nodes[tri[c]], b = r.mesh.nodes[tri[(c + 2) % 3]] - r.mesh.nodes[tri[c]];
+                smallest = std::min(smallest, std::acos(std::clamp(dot(a, b) / (norm(a) * norm(b)), -1.0, 1.0)) * 180.0 / 3.14159265358979323846);
+            }
+            if (smallest >= bound) continue;
+            const auto it = corner.find({t, sorted(tri)});
+            if (it != corner.end() && smallest >= it->second / 3.0) {
+                ++out.atCorners;
+                continue;
+            }
+            ++out.elsewhere;
+            bool nearEnd = m.face[k] != TowFace::Side;
+            for (std::size_t n : tri) {
+                const auto p = std::lower_bound(m.parameters.begin(), m.parameters.end(), n,
+                                                [](const std::pair<std::size_t, UV>& e, std::size_t node) { return e.first < node; });
+                if (p != m.parameters.end() && p->first == n && (p->second.u <= endSpan0 || p->second.u >= endSpan1)) nearEnd = true;
+            }
+            out.awayFromEnds += !nearEnd;
+        }
+    }
+    return out;
+}
+
 /// Seeds [first, first + count) resolved with the default options: no pair left unresolved,
 /// every tow's mesh closed and 2-manifold (counted from its triangles' edges alone), no two tows'
 /// triangles crossing (CGAL box intersection and exact triangle tests), and every tow keeping its
 /// volume minus the tows ranked above it that it meets (CGAL corefinement of the reference
 /// solids) within 1 % (the issue asks 2 %; seeds 1-50 differ by at most 0.49 %). Prints the
-/// worst volume difference and the smallest angle (not asserted: issue 38's item 5 is open).
+/// worst volume difference and the smallest angle, and the triangles under the surface's angle
+/// bound: in sharp corners, elsewhere, and away from the tows' end spans (asserted rare).
 void checkFamilyResolved(unsigned first, unsigned count)
 {
     double worstVolume = 0.0, smallestAngle = 180.0;
+    UnderBound under;
+    std::size_t triangles = 0, corners = 0;
     for (unsigned seed = first; seed < first + count; ++seed) {
         const testing::ScanLikeTextile t = testing::scanLikeTextile(seed);
         INFO("seed " << seed << ": " << t.choices.describe());
@@ -139,9 +195,27 @@ void checkFamilyResolved(unsigned first, unsigned count)
             worstVolume = std::max(worstVolume, std::abs(r.tows[k].volumeAfter - kept) / kept);
         }
         smallestAngle = std::min(smallestAngle, r.quality.minAngle);
+        // MeshQuality's figures against the bound, counted here again.
+        const UnderBound u = underBound(tows, r);
+        CHECK(r.quality.atSharpCorners == u.atCorners);
+        CHECK(r.quality.underBound == u.elsewhere);
+        triangles += r.quality.triangles;
+        under.atCorners += u.atCorners;
+        under.elsewhere += u.elsewhere;
+        under.awayFromEnds += u.awayFromEnds;
+        corners += r.mesh.sharpCorners.size();
     }
     WARN("seeds " << first << "-" << first + count - 1 << ": largest kept-volume difference from CGAL's " << 100.0 * worstVolume
-                  << " %, smallest angle " << smallestAngle << " deg");
+                  << " %, smallest angle " << smallestAngle << " deg; " << triangles << " triangles, " << corners
+                  << " sharp corners, under the bound " << under.atCorners << " at them, " << under.elsewhere << " elsewhere ("
+                  << 100.0 * static_cast<double>(under.elsewhere) / static_cast<double>(triangles) << " %), " << under.awayFromEnds
+                  << " of those away from the tows' end spans");
+    // Observed in the five groups of ten: 31-68 away from the tows' end spans (at most 0.0052 %
+    // of the triangles), all but a handful next to a loop that runs along the seam within a
+    // small fraction of the mesh size. The rest lie where binders end at a grazing cut (their
+    // end sections meet the tow at 16-28 degrees): seeds 15 and 20, 3,060 and 1,226; issue 38's
+    // item 5 is open there.
+    CHECK(static_cast<double>(under.awayFromEnds) <= 1e-4 * static_cast<double>(triangles));
 }
 
 }  // namespace

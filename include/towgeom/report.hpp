@@ -101,8 +101,11 @@ struct ResolveReportOptions {
 /// "tows" (per tow name, role, volume_before, volume_after, area, triangles, boundary_loops,
 /// pieces, mesh_size), the detect report's "loops" and "findings", "unresolved" (unresolvedPairs()
 /// with tow_a, tow_b, reason, message), "regions" (primary, secondary, triangles, nodes, area,
-/// volume_removed), "triple_points" (tows, node, point), "skipped" (tow_a, tow_b, code, reason),
-/// node_count, "mesh_quality", mesh_rounds and "timings_ms".
+/// volume_removed), "triple_points" (tows, node, point), "sharp_corners" (TextileMesh::sharpCorners:
+/// tow, face "side", "start" or "end", node, point, angle_deg), "skipped" (tow_a, tow_b, code,
+/// reason), node_count, "mesh_quality" (min_angle_deg, angle_histogram, fraction_at_least_20,
+/// triangles, faces_over_bounds, angle_bound_deg, under_bound, at_sharp_corners,
+/// min_angle_away_from_corners_deg: MeshQuality), mesh_rounds and "timings_ms".
 ///
 /// @code
 /// const towgeom::ResolveResult r = towgeom::resolveTextile(tows);

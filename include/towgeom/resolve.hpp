@@ -162,6 +162,18 @@ struct TOWGEOM_EXPORT MeshQuality {
     /// meeting it would have split a loop or seam edge in the last meshing round (caps are not
     /// counted: they keep the tube's end nodes, and their angles are in minAngle and histogram).
     std::size_t facesOverBounds = 0;
+    /// The smallest angle a triangle should keep, in degrees: the share of MeshOptions::minAngle
+    /// the mesher asks of the surface (15 degrees for the default 20).
+    double angleBound = 0.0;
+    /// Triangles whose smallest angle is under angleBound, of a sharp constraint corner
+    /// (SharpCorner::triangles, TextileMesh::sharpCorners) and at least a third of the corner's
+    /// angle: what a corner that sharp allows.
+    std::size_t atSharpCorners = 0;
+    /// Triangles under angleBound otherwise: away from any sharp corner, or under a third of its
+    /// angle there. 0 is the goal.
+    std::size_t underBound = 0;
+    /// The smallest angle, in degrees, of the triangles not counted in atSharpCorners.
+    double minAngleAwayFromCorners = 0.0;
     /// The fraction of triangles whose smallest angle is at least @p degrees.
     double fractionAtLeast(double degrees) const;
 };

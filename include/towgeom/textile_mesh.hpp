@@ -96,6 +96,27 @@ struct TriplePoint {
     std::array<std::size_t, 3> tows{};  ///< the three tows, ascending
 };
 
+/// A corner of a tow mesh's constraints sharper than the mesh's angle bound
+/// (MeshQuality::angleBound): two intersection loops meeting, or a loop meeting the seam of the
+/// tow's parametrisation or the rim of its end at a small angle, on its side surface or on one
+/// of its end caps (not yet on the caps a cell's faces make). No triangle in the corner can
+/// keep the bound near its apex; MeshQuality judges the triangles there by the corner's own angle.
+struct SharpCorner {
+    std::size_t node = 0;        ///< the global node at the corner's apex
+    std::size_t tow = 0;         ///< the tow whose mesh has the corner
+    TowFace face = TowFace::Side;  ///< on the tow's side surface or on one of its end caps
+    /// Degrees: the corner's angle on the tow's surface between its two constraints (as meshed:
+    /// with ResolutionMethod::Symmetric a region's nodes move to the mid-surface afterwards).
+    double angle = 0.0;
+    /// The corner's triangles still in the tow's mesh: those at its apex in its wedge, and those
+    /// reachable from them without crossing a constraint whose corners all lie within
+    /// h / (2 sin(angle / 2)) of the apex (at most 20 h; h the tow's mesh size): where the wedge
+    /// is narrower than h. MeshQuality asks a third of the corner's angle of them. A corner none
+    /// of whose triangles is left (given up to a region of a tow ranked above, or beyond a
+    /// cell's cut) is not listed.
+    std::vector<std::array<std::size_t, 3>> triangles;
+};
+
 /// An intersection loop in the meshes: the global nodes both tows' meshes share along it.
 struct MeshedLoop {
     std::size_t loop = 0;            ///< index in the intersection report
@@ -116,6 +137,9 @@ struct TOWGEOM_EXPORT TextileMesh {
     /// surface lies wholly inside a third, higher-ranked tow has none).
     std::vector<ConnectedRegion> regions;
     std::vector<TriplePoint> triplePoints;  ///< where three tows' resolved loops cross
+    /// The constraint corners sharper than MeshQuality::angleBound, in tow order (a node may have
+    /// several: one per tow, and per wedge).
+    std::vector<SharpCorner> sharpCorners;
     /// The loops the tows were meshed with (meshTows(): every closed loop meshed; after
     /// connectRegions(): those of the tow pairs resolved), in report order.
     std::vector<MeshedLoop> loops;

@@ -59,9 +59,11 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                    "unresolved":[{"tow_a","tow_b","reason","message"}], "regions":[{"primary",
                    "secondary","triangles","nodes","area","volume_removed","surface","note"}],
                    "triple_points":[{"tows":[3 names],"node","point":[x,y,z]}],
+                   "sharp_corners":[{"tow","face","node","point":[x,y,z],"angle_deg"}],
                    "skipped":[{"tow_a","tow_b","code","reason"}], "node_count",
                    "mesh_quality":{"min_angle_deg","angle_histogram","fraction_at_least_20",
-                   "triangles","faces_over_bounds"},
+                   "triangles","faces_over_bounds","angle_bound_deg","under_bound",
+                   "at_sharp_corners","min_angle_away_from_corners_deg"},
                    "mesh_rounds", "crossing_triangle_pairs", "method", "timings_ms":{"read","fit","intersect","mesh",
                    "regions","volume" (--volume),"brep" (step, brep),"write","total"}}
 
@@ -70,6 +72,11 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
   largest_section_change  --method shrink: 1 - the smallest scale of the tow's sections
   pieces          connected pieces of the tow's mesh: more than 1 where tows ranked above it
                   pass through it and cut it
+  sharp_corners   where two constraints of a tow's mesh (loops, its seam, the rim of an end)
+                  meet at less than angle_bound_deg (3/4 of --min-angle on the surface): face
+                  side, start or end (cap); the triangles there keep a third of angle_deg
+  under_bound     triangles under angle_bound_deg away from sharp corners (the goal: 0);
+                  at_sharp_corners those under it in a corner, at least a third of its angle
   unresolved      tow pairs that meet but were not resolved (their meshes still overlap), once
                   per pair and reason: open_curve (a curve stops: both tows end in one
                   plane, caps face to face, or tangent surfaces), crosses_cap (a loop runs across a tow's

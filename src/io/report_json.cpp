@@ -180,6 +180,17 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
                           {"point", {x.x, x.y, x.z}}});
     }
     j["triple_points"] = std::move(triple);
+    Json corners = Json::array();
+    for (const SharpCorner& c : mesh.sharpCorners) {
+        if (c.node >= mesh.nodes.size()) throw Error(ErrorCode::InvalidArgument, "a sharp corner's node is out of range");
+        const Point3& x = mesh.nodes[c.node];
+        corners.push_back({{"tow", towName(tows, c.tow)},
+                           {"face", c.face == TowFace::Side ? "side" : c.face == TowFace::Start ? "start" : "end"},
+                           {"node", c.node},
+                           {"point", {x.x, x.y, x.z}},
+                           {"angle_deg", c.angle}});
+    }
+    j["sharp_corners"] = std::move(corners);
     Json skipped = Json::array();
     for (const SkippedLoop& s : result.skippedLoops) {
         if (s.loop >= result.intersections.loops.size()) throw Error(ErrorCode::InvalidArgument, "a skipped loop is not in the report");
@@ -193,7 +204,11 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
                          {"angle_histogram", q.histogram},
                          {"fraction_at_least_20", q.fractionAtLeast(20.0)},
                          {"triangles", q.triangles},
-                         {"faces_over_bounds", q.facesOverBounds}};
+                         {"faces_over_bounds", q.facesOverBounds},
+                         {"angle_bound_deg", q.angleBound},
+                         {"under_bound", q.underBound},
+                         {"at_sharp_corners", q.atSharpCorners},
+                         {"min_angle_away_from_corners_deg", q.minAngleAwayFromCorners}};
     j["mesh_rounds"] = result.meshRounds;
     j["crossing_triangle_pairs"] = result.crossingTrianglePairs;
     j["method"] = result.method == ResolutionMethod::Symmetric ? "symmetric" : result.method == ResolutionMethod::Shrink ? "shrink" : "connect";

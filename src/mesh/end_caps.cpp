@@ -11,6 +11,7 @@
 #include "core/parallel.hpp"
 #include "mesh/mesh_cdt.hpp"
 #include "mesh/mesh_measures.hpp"
+#include "mesh/sharp_corners.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
 
@@ -91,6 +92,17 @@ CapMesh meshCap(const NodeAt& nodes, const std::vector<std::size_t>& loop, doubl
     for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
         if (f->is_in_domain())  // counter-clockwise in the plane, the loop's turn: reversed
             out.triangles.push_back({nodeOf(f->vertex(0)), nodeOf(f->vertex(2)), nodeOf(f->vertex(1))});
+    const auto angleAt = [](CDT::Face_handle f, int i) {
+        const K::Point_2& p = f->vertex(i)->point();
+        const K::Vector_2 a = f->vertex(CDT::ccw(i))->point() - p, b = f->vertex(CDT::cw(i))->point() - p;
+        return std::atan2(std::abs(a.x() * b.y() - a.y() * b.x()), a * b) * 180.0 / 3.14159265358979323846;
+    };
+    const auto distanceFrom = [](CDT::Vertex_handle v, const K::Point_2& p) { return std::sqrt(CGAL::squared_distance(v->point(), p)); };
+    for (const CornerWedge& w : sharpWedges(cdt, angleAt, distanceFrom, surfaceAngleBound(minAngle), h)) {
+        SharpCorner corner{nodeOf(w.vertex), 0, TowFace::Side, w.angle, {}};
+        for (CDT::Face_handle f : w.faces) corner.triangles.push_back({nodeOf(f->vertex(0)), nodeOf(f->vertex(1)), nodeOf(f->vertex(2))});
+        out.sharpCorners.push_back(std::move(corner));
+    }
     return out;
 }
 
@@ -193,6 +205,14 @@ void closeEnds(const std::vector<TowSurface>& tows, const std::vector<double>& t
                     if (n >= kLocal) n = base + (n - kLocal);
                 meshes[t].triangles.push_back(tri);
                 face[t].push_back(f);
+            }
+            for (SharpCorner& c : cap.sharpCorners) {
+                if (c.node >= kLocal) c.node = base + (c.node - kLocal);
+                for (std::array<std::size_t, 3>& tri : c.triangles)
+                    for (std::size_t& n : tri)
+                        if (n >= kLocal) n = base + (n - kLocal);
+                c.face = f;
+                meshes[t].sharpCorners.push_back(std::move(c));
             }
         }
 }

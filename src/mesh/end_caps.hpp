@@ -27,6 +27,9 @@ struct CapMesh {
     /// Over global nodes; the cap's own nodes are numbered from the firstNewNode given on.
     std::vector<std::array<std::size_t, 3>> triangles;
     std::vector<Point3> newNodes;  ///< positions of the cap's own nodes, in the cap's plane
+    /// Wedges between its rim and loop pieces sharper than surfaceAngleBound() (nodes numbered as
+    /// in triangles; SharpCorner::tow left 0, SharpCorner::face Side: the caller knows which end).
+    std::vector<SharpCorner> sharpCorners;
 };
 
 /// Meshes the polygon of global nodes @p loop (a boundary loop of an outward-oriented tube, in

@@ -15,6 +15,7 @@
 #include <functional>
 #include <queue>
 
+#include "mesh/angle_bound.hpp"
 #include "mesh/surface_metric.hpp"
 #include "towgeom/export.hpp"
 
@@ -33,15 +34,6 @@ using Vb = CGAL::Delaunay_mesh_vertex_base_2<K, Vbi>;
 using Fb = CGAL::Delaunay_mesh_face_base_2<K>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
-
-/// The smallest angle a face must keep on the surface (by the metric), as a share of the
-/// plane's bound. At the plane's own bound, refinement in the plane (by circumcentres) does not
-/// converge on the metric's shape wherever the two differ a little: a face a hair over the
-/// bound in the plane may be a hair under on the surface, and so on at every scale (a tow
-/// stretched 1.5 times across refined to a fourteenth of the mesh size). With 3/4 of it, a
-/// plane good to 20 degrees keeps 15 on the surface wherever the metric stretches by less than
-/// 1.36, and the test refines only where it stretches more.
-constexpr double kMetricShare = 0.75;
 
 /// CGAL's size-and-shape criteria measured in 3D: an edge is too long when the surface metric
 /// makes it longer than h; a face is badly shaped when its smallest angle is below the bound in

@@ -10,6 +10,7 @@
 
 #include "mesh/constraint_keeping_mesher.hpp"
 #include "mesh/mesh_cdt.hpp"
+#include "mesh/sharp_corners.hpp"
 #include "mesh/scaled_space.hpp"
 #include "mesh/starting_points.hpp"
 #include "mesh/surface_metric.hpp"
@@ -628,6 +629,26 @@ ParametricMesh ParametricMesher::result(std::size_t firstNewNode)
     if (out.triangles.empty())
         throw Error(ErrorCode::Internal, "the parameter rectangle was not meshed", "tow '" + m.surface.name() + "'");
     out.badFaces = m.badFaces;
+    // The corners' angles on the surface: the metric's at the apex (the first fundamental form).
+    const auto angleAt = [&](CDT::Face_handle f, int i) {
+        const K::Point_2& p = f->vertex(i)->point();
+        const K::Vector_2 a = f->vertex(CDT::ccw(i))->point() - p, b = f->vertex(CDT::cw(i))->point() - p;
+        const SurfaceMetric::Form g = m.metric.at(p.x(), p.y());
+        const auto dot = [&](const K::Vector_2& x, const K::Vector_2& y) {
+            return g.e * x.x() * y.x() + g.f * (x.x() * y.y() + x.y() * y.x()) + g.g * x.y() * y.y();
+        };
+        const double ab = dot(a, b), cross = std::sqrt(std::max(0.0, dot(a, a) * dot(b, b) - ab * ab));
+        return std::atan2(cross, ab) * 180.0 / 3.14159265358979323846;
+    };
+    const auto distanceFrom = [&](CDT::Vertex_handle v, const K::Point_2& p) {
+        const K::Point_2& a = v->point();
+        return std::sqrt(m.metric.squaredLength(a.x(), a.y(), p.x() - a.x(), p.y() - a.y()));
+    };
+    for (const CornerWedge& w : sharpWedges(m.cdt, angleAt, distanceFrom, surfaceAngleBound(m.sizes.minAngle), m.sizes.edgeLength)) {
+        SharpCorner c{nodeOf(w.vertex), 0, TowFace::Side, w.angle, {}};
+        for (CDT::Face_handle f : w.faces) c.triangles.push_back({nodeOf(f->vertex(0)), nodeOf(f->vertex(1)), nodeOf(f->vertex(2))});
+        out.sharpCorners.push_back(std::move(c));
+    }
     return out;
 }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "mesh/loop_nodes.hpp"
+#include "towgeom/textile_mesh.hpp"
 #include "towgeom/tow_surface.hpp"
 #include "towgeom/export.hpp"
 
@@ -37,6 +38,9 @@ struct ParametricMesh {
     std::vector<UV> centroids;                          ///< (u,v) centroid of each triangle
     std::vector<UV> newNodes;   ///< (u,v) of the tow's own nodes, numbered from firstNewNode on
     std::size_t badFaces = 0;   ///< faces left beyond the size or shape bound (next to constraints)
+    /// Wedges between constraints sharper than surfaceAngleBound() on the surface (nodes numbered
+    /// as in triangles; SharpCorner::tow left 0).
+    std::vector<SharpCorner> sharpCorners;
 };
 
 /// Splits of constraints that would let the mesh meet its bounds everywhere: nodes that both

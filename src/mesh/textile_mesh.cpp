@@ -228,8 +228,7 @@ double smallestAngle(const std::vector<Point3>& nodes, const std::array<std::siz
     double best = 180.0;
     for (int k = 0; k < 3; ++k) {
         const Vector3 a = nodes[t[(k + 1) % 3]] - nodes[t[k]], b = nodes[t[(k + 2) % 3]] - nodes[t[k]];
-        const double c = dot(a, b) / (norm(a) * norm(b));
-        best = std::min(best, std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / 3.14159265358979323846);
+        best = std::min(best, std::atan2(norm(cross(a, b)), dot(a, b)) * 180.0 / 3.14159265358979323846);
     }
     return best;
 }

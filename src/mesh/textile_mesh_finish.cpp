@@ -1,6 +1,7 @@
 #include "mesh/textile_mesh_finish.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <set>
@@ -12,6 +13,41 @@
 
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
+
+namespace {
+
+/// Drops the triangles of @p mesh's sharp corners that are not (or no longer) their tow's own
+/// (given up to a region of a tow ranked above, beyond a cell's cut, or with a node no triangle
+/// uses: SIZE_MAX), then the corners with none left.
+void keepStandingCorners(TextileMesh& mesh)
+{
+    using Triple = std::array<std::size_t, 3>;
+    const auto sorted = [](Triple t) {
+        std::sort(t.begin(), t.end());
+        return t;
+    };
+    std::map<std::pair<std::size_t, Triple>, bool> standing;  // (tow, sorted triangle) -> still its own
+    for (const SharpCorner& c : mesh.sharpCorners)
+        for (const Triple& t : c.triangles) standing.emplace(std::make_pair(c.tow, sorted(t)), false);
+    if (standing.empty()) return;
+    for (std::size_t t = 0; t < mesh.tows.size(); ++t) {
+        const TowMesh& m = mesh.tows[t];
+        for (std::size_t k = 0; k < m.triangles.size(); ++k) {
+            if (k < m.region.size() && m.region[k] >= 0 && mesh.regions[static_cast<std::size_t>(m.region[k])].secondary == t) continue;
+            const auto it = standing.find({t, sorted(m.triangles[k])});
+            if (it != standing.end()) it->second = true;
+        }
+    }
+    for (SharpCorner& c : mesh.sharpCorners) {
+        auto& tris = c.triangles;
+        tris.erase(std::remove_if(tris.begin(), tris.end(), [&](const Triple& t) { return !standing.at({c.tow, sorted(t)}); }), tris.end());
+    }
+    auto& corners = mesh.sharpCorners;
+    corners.erase(std::remove_if(corners.begin(), corners.end(), [](const SharpCorner& c) { return c.triangles.empty() || c.node == SIZE_MAX; }),
+                  corners.end());
+}
+
+}  // namespace
 
 void keepUsedNodes(TextileMesh& mesh)
 {
@@ -47,6 +83,13 @@ void keepUsedNodes(TextileMesh& mesh)
         std::sort(p.begin(), p.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     }
     for (MeshedLoop& l : mesh.loops) renumbered(l.nodes);
+    auto& corners = mesh.sharpCorners;
+    for (SharpCorner& c : corners) {
+        c.node = used(c.node) ? renumber[c.node] : SIZE_MAX;
+        for (auto& t : c.triangles)
+            for (std::size_t& n : t) n = used(n) ? renumber[n] : SIZE_MAX;
+    }
+    keepStandingCorners(mesh);
     for (ConnectedRegion& g : mesh.regions) {
         renumbered(g.nodes);
         renumbered(g.loopNodes);
@@ -101,11 +144,23 @@ void keepResolvedTriplePoints(TextileMesh& mesh, const std::vector<IntersectionL
                  triple.end());
 }
 
-MeshQuality meshQuality(const TextileMesh& mesh)
+MeshQuality meshQuality(const TextileMesh& mesh, double angleBound)
 {
     MeshQuality q;
     q.histogram.assign(12, 0);
-    q.minAngle = 180.0;
+    q.minAngle = q.minAngleAwayFromCorners = 180.0;
+    q.angleBound = angleBound;
+    // (tow, the triangle's nodes sorted) -> the sharpest corner it is in.
+    std::map<std::pair<std::size_t, std::array<std::size_t, 3>>, double> corner;
+    const auto sorted = [](std::array<std::size_t, 3> t) {
+        std::sort(t.begin(), t.end());
+        return t;
+    };
+    for (const SharpCorner& c : mesh.sharpCorners)
+        for (const std::array<std::size_t, 3>& t : c.triangles) {
+            auto [it, added] = corner.emplace(std::make_pair(c.tow, sorted(t)), c.angle);
+            if (!added) it->second = std::min(it->second, c.angle);
+        }
     for (std::size_t t = 0; t < mesh.tows.size(); ++t) {
         const TowMesh& m = mesh.tows[t];
         for (std::size_t k = 0; k < m.triangles.size(); ++k) {
@@ -114,6 +169,15 @@ MeshQuality meshQuality(const TextileMesh& mesh)
             q.minAngle = std::min(q.minAngle, a);
             ++q.histogram[std::min<std::size_t>(11, static_cast<std::size_t>(a / 5.0))];
             ++q.triangles;
+            if (a < angleBound) {
+                const auto it = corner.find({t, sorted(m.triangles[k])});
+                if (it != corner.end() && a >= it->second / 3.0) {
+                    ++q.atSharpCorners;
+                    continue;
+                }
+                ++q.underBound;
+            }
+            q.minAngleAwayFromCorners = std::min(q.minAngleAwayFromCorners, a);
         }
     }
     return q;

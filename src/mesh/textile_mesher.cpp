@@ -565,6 +565,12 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
         for (Triangle& tri : meshes[t].triangles)
             for (std::size_t& n : tri)
                 if (n >= kLocal) n = base + (n - kLocal);
+        for (SharpCorner& c : meshes[t].sharpCorners) {
+            if (c.node >= kLocal) c.node = base + (c.node - kLocal);
+            for (Triangle& tri : c.triangles)
+                for (std::size_t& n : tri)
+                    if (n >= kLocal) n = base + (n - kLocal);
+        }
         result.quality.facesOverBounds += meshes[t].badFaces;
     }
     // Every tow's own mesh is a tube (the mesher's rectangle closed across the seam); closed by
@@ -628,6 +634,11 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
         m.parameters = std::move(on);
     });
     for (const SharedLoop& s : shared) out.loops.push_back({s.loop, s.nodes});
+    for (std::size_t t = 0; t < tows.size(); ++t)
+        for (SharpCorner& c : meshes[t].sharpCorners) {
+            c.tow = t;
+            out.sharpCorners.push_back(std::move(c));
+        }
     if (cellFaces) {
         out.cell = std::move(cellFaces->mesh);
         for (std::size_t t = 0; t < tows.size(); ++t)
@@ -658,7 +669,7 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
             failures.run(t, [&] { throw Error(ErrorCode::Internal, notClosedMessage(options.mesh.caps, badEdges[t], result.tows[t].boundaryLoops)); });
     failures.throwAll();
     const std::size_t overBounds = result.quality.facesOverBounds;
-    result.quality = meshQuality(out);
+    result.quality = meshQuality(out, surfaceAngleBound(options.mesh.minAngle));
     result.quality.facesOverBounds = overBounds;
     result.timings.mesh = msSince(t0);
 }

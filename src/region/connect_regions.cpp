@@ -822,6 +822,7 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
     // The loops resolved, and the triple points where three of them cross.
     for (std::size_t k : shared) out.mesh.loops.push_back(in.loops[k]);
     out.mesh.triplePoints = in.triplePoints;
+    out.mesh.sharpCorners = in.sharpCorners;
     out.mesh.cell = in.cell;
     detail::keepResolvedTriplePoints(out.mesh, loops);
     out.mesh.nodes = std::move(nodes);
@@ -846,7 +847,7 @@ ResolveResult connectRegions(const std::vector<TowSurface>& tows, ResolveResult 
         const std::vector<TowFailure> failures = connect(tows, meshed, uv, active, options, out);
         if (failures.empty()) {
             detail::keepUsedNodes(out.mesh);
-            out.quality = detail::meshQuality(out.mesh);
+            out.quality = detail::meshQuality(out.mesh, detail::surfaceAngleBound(options.mesh.minAngle));
             out.quality.facesOverBounds = meshed.quality.facesOverBounds;
             out.intersections = std::move(meshed.intersections);
             out.skippedLoops = std::move(meshed.skippedLoops);
