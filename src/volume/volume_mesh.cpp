@@ -21,6 +21,8 @@
 
 #include "towgeom/error.hpp"
 #include "core/parallel.hpp"
+#include "mesh/mesh_measures.hpp"
+#include "volume/volume_conformity.hpp"
 #include "volume/facet_folds.hpp"
 #include "volume/gmsh_library.hpp"
 #include "towgeom/export.hpp"
@@ -394,6 +396,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         if (given[i].first == given[i - 1].first)
             throw Error(ErrorCode::InvalidArgument, giver[std::max(given[i].second, given[i - 1].second)] +
                                                         ": a surface triangle belongs to two regions or to a region and a tow's own surface");
+    double matrixVolume = 0.0;  // enclosed by its boundary, for the check of the tetrahedra
     if (matrix) {
         // The matrix's boundary must be closed too: the box's faces and the tows' free surfaces.
         std::vector<std::array<std::size_t, 3>> boundary = surfaces.cell->triangles;
@@ -403,6 +406,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
                     boundary.push_back({s.triangles[k] - 1, s.triangles[k + 2] - 1, s.triangles[k + 1] - 1});
         std::size_t pieces = 0;
         shellsOf(boundary, "the matrix", pieces);
+        matrixVolume = detail::signedVolume(surfaces.nodes, boundary);
         bounds.back() = matrixBounds;
     }
     for (std::size_t v = 0; v < bounds.size(); ++v)
@@ -563,6 +567,20 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     } catch (const std::exception& e) {
         throw Error(ErrorCode::Internal, "Gmsh failed meshing " + where + ": " + e.what());
     }
+    // Checked here, not trusted to Gmsh: the tetrahedra conform to each other and to the
+    // surfaces, and fill each tow's surface (and the matrix's).
+    detail::ConformityTarget target;
+    for (std::size_t s = 0; s < patches.size(); ++s) {
+        auto& list = patchTows[s][1] == kNoTow ? target.outer : target.between;
+        const std::vector<std::size_t>& tags = patches[s].triangles;
+        for (std::size_t k = 0; k + 2 < tags.size(); k += 3) list.push_back({tags[k] - 1, tags[k + 1] - 1, tags[k + 2] - 1});
+    }
+    for (std::size_t t = 0; t <= towCount; ++t) {
+        if (t == towCount && !matrix) break;
+        target.volume.push_back(t < towCount ? detail::signedVolume(surfaces.nodes, surfaces.tows[t].triangles) : matrixVolume);
+        target.name.push_back(nameOf(t));
+    }
+    detail::checkConformity(out, target, detail::workerCount(options.threads));
     return out;
 }
 
