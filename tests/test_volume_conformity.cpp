@@ -29,7 +29,7 @@ VolumeMesh doublePyramid()
 detail::ConformityTarget outside(std::size_t c = 2)
 {
     detail::ConformityTarget t;
-    t.outer = {{0, 3, 1}, {1, 3, 2}, {2, 3, 0}, {0, 1, 4}, {1, c, 4}, {c, 0, 4}};
+    t.outer = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {c, 1, 4}, {0, 4, 1}, {0, c, 4}};
     t.volume = {1.0 / 3.0};
     t.name = {"tow 'a'"};
     return t;
@@ -83,14 +83,30 @@ TEST_CASE("a crack, a face of three tetrahedra, a missing side or volume: refuse
     {
         detail::ConformityTarget t = outside();
         t.outer.pop_back();
-        t.between = {{2, 0, 4}};
-        CHECK(refusal(doublePyramid(), t).find("a surface triangle between two volumes is a face of 1 tetrahedra, not 2") !=
+        t.between = {{0, 2, 4}};
+        CHECK(refusal(doublePyramid(), t).find("a surface triangle between two volumes has 1 and 0 tetrahedra on its two sides") !=
               std::string::npos);
+    }
+    SECTION("an outside triangle facing in: its tetrahedron lies outside it")
+    {
+        detail::ConformityTarget t = outside();
+        t.outer[0] = {1, 3, 2};
+        CHECK(refusal(doublePyramid(), t).find("a surface triangle on the outside has 0 tetrahedra inside it and 1 outside") !=
+              std::string::npos);
+    }
+    SECTION("two tetrahedra on the same side of their face: the mesh folds")
+    {
+        VolumeMesh m = doublePyramid();
+        m.nodes.push_back({0.3, 0.3, 0.5});
+        m.tetrahedra[1] = {0, 1, 2, 6};  // inside the upper one, not below
+        detail::ConformityTarget t = outside();
+        t.outer = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {1, 2, 6}, {0, 6, 2}, {0, 1, 6}};
+        CHECK(refusal(m, t).find("two tetrahedra lie on the same side of a face (the mesh folds)") != std::string::npos);
     }
     SECTION("tetrahedra that do not fill the tow's volume")
     {
         detail::ConformityTarget t = outside();
-        t.volume = {1.0 / 3.0 + 1e-6};
+        t.volume = {1.0 / 3.0 + 1e-7};
         CHECK(refusal(doublePyramid(), t).find("does not fill tow 'a'") != std::string::npos);
         t.volume = {1.0 / 3.0 + 1e-12};
         CHECK(refusal(doublePyramid(), t).empty());

@@ -203,7 +203,7 @@ TEST_CASE("meshVolumes: a tow cut in two by a tow ranked above it gets a volume 
     CHECK_THROWS_AS(addFibreDirections(v, one), Error);  // tetrahedra of tow 1, one tow given
 }
 
-TEST_CASE("meshVolumes refuses a triangle given twice or turned over before Gmsh sees it", "[volume]")
+TEST_CASE("meshVolumes refuses a triangle given twice or turned over, or a tow facing in, before Gmsh sees it", "[volume]")
 {
     ResolveOptions o;
     o.mesh.edgeLength = 0.2;
@@ -238,6 +238,17 @@ TEST_CASE("meshVolumes refuses a triangle given twice or turned over before Gmsh
     } catch (const Error& e) {
         CHECK(e.code() == ErrorCode::InvalidArgument);
         CHECK(e.message().find("tow 'warp_0'") != std::string::npos);
+    }
+    // Every triangle of a tow turned over: consistent, but facing in (a negative volume).
+    TextileMesh inward = res.mesh;
+    for (auto& t : inward.tows[0].triangles) std::swap(t[0], t[1]);
+    try {
+        meshVolumes(inward);
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::InvalidArgument);
+        CHECK(e.message().find("tow 'warp_0': its surface encloses a volume of -") != std::string::npos);
+        CHECK(e.message().find("must face out") != std::string::npos);
     }
     // One of region 1's triangles named twice by it: found once every surface is in, naming
     // the region that gave it the second time.

@@ -411,6 +411,15 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     }
     for (std::size_t v = 0; v < bounds.size(); ++v)
         if (bounds[v].empty()) throw Error(ErrorCode::Internal, nameOf(volumeTow[v]) + ": a piece of it has no surface");
+    // What the tetrahedra must fill (checked after meshing): each tow's surface faces out.
+    std::vector<double> enclosed;
+    for (std::size_t t = 0; t < towCount; ++t) {
+        enclosed.push_back(detail::signedVolume(surfaces.nodes, surfaces.tows[t].triangles));
+        if (!surfaces.tows[t].triangles.empty() && !(enclosed.back() > 0.0))  // none: wholly outside a cell
+            throw Error(ErrorCode::InvalidArgument, nameOf(t) + ": its surface encloses a volume of " + std::to_string(enclosed.back()) +
+                                                        ": its triangles must face out (counter-clockwise seen from outside)");
+    }
+    if (matrix) enclosed.push_back(matrixVolume);
 
     {
         // Surfaces meeting at an angle below HXT's tolerance (tows touching tangentially) stop it
@@ -444,7 +453,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     out.withMatrix = matrix;
     const Gmsh g;  // loads Gmsh's library (EngineUnavailable if it cannot)
     const detail::GmshApi& api = g.api();
-    std::lock_guard<std::mutex> lock(gmshMutex());
+    std::unique_lock<std::mutex> lock(gmshMutex());
     std::string where = "the tows' volumes";  // for messages
     try {
         GmshSession session(g);
@@ -567,6 +576,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     } catch (const std::exception& e) {
         throw Error(ErrorCode::Internal, "Gmsh failed meshing " + where + ": " + e.what());
     }
+    lock.unlock();  // Gmsh is done
     // Checked here, not trusted to Gmsh: the tetrahedra conform to each other and to the
     // surfaces, and fill each tow's surface (and the matrix's).
     detail::ConformityTarget target;
@@ -575,11 +585,8 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         const std::vector<std::size_t>& tags = patches[s].triangles;
         for (std::size_t k = 0; k + 2 < tags.size(); k += 3) list.push_back({tags[k] - 1, tags[k + 1] - 1, tags[k + 2] - 1});
     }
-    for (std::size_t t = 0; t <= towCount; ++t) {
-        if (t == towCount && !matrix) break;
-        target.volume.push_back(t < towCount ? detail::signedVolume(surfaces.nodes, surfaces.tows[t].triangles) : matrixVolume);
-        target.name.push_back(nameOf(t));
-    }
+    target.volume = std::move(enclosed);
+    for (std::size_t t = 0; t < target.volume.size(); ++t) target.name.push_back(nameOf(t));
     detail::checkConformity(out, target, detail::workerCount(options.threads));
     return out;
 }
