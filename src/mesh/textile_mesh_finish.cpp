@@ -1,7 +1,6 @@
 #include "mesh/textile_mesh_finish.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <map>
 #include <set>
@@ -16,16 +15,27 @@ namespace detail {
 
 namespace {
 
+using Triple = std::array<std::size_t, 3>;
+
+/// @p t's nodes ascending: a triangle's key whichever way round it runs.
+Triple sorted(Triple t)
+{
+    std::sort(t.begin(), t.end());
+    return t;
+}
+
+/// Whether triangle @p k of tow @p t is the tow's own (not a region's copy in its secondary).
+bool ownTriangle(const TextileMesh& mesh, std::size_t t, std::size_t k)
+{
+    const TowMesh& m = mesh.tows[t];
+    return !(k < m.region.size() && m.region[k] >= 0 && mesh.regions[static_cast<std::size_t>(m.region[k])].secondary == t);
+}
+
 /// Drops the triangles of @p mesh's sharp corners that are not (or no longer) their tow's own
 /// (given up to a region of a tow ranked above, beyond a cell's cut, or with a node no triangle
 /// uses: SIZE_MAX), then the corners with none left.
 void keepStandingCorners(TextileMesh& mesh)
 {
-    using Triple = std::array<std::size_t, 3>;
-    const auto sorted = [](Triple t) {
-        std::sort(t.begin(), t.end());
-        return t;
-    };
     std::map<std::pair<std::size_t, Triple>, bool> standing;  // (tow, sorted triangle) -> still its own
     for (const SharpCorner& c : mesh.sharpCorners)
         for (const Triple& t : c.triangles) standing.emplace(std::make_pair(c.tow, sorted(t)), false);
@@ -33,7 +43,7 @@ void keepStandingCorners(TextileMesh& mesh)
     for (std::size_t t = 0; t < mesh.tows.size(); ++t) {
         const TowMesh& m = mesh.tows[t];
         for (std::size_t k = 0; k < m.triangles.size(); ++k) {
-            if (k < m.region.size() && m.region[k] >= 0 && mesh.regions[static_cast<std::size_t>(m.region[k])].secondary == t) continue;
+            if (!ownTriangle(mesh, t, k)) continue;
             const auto it = standing.find({t, sorted(m.triangles[k])});
             if (it != standing.end()) it->second = true;
         }
@@ -151,20 +161,16 @@ MeshQuality meshQuality(const TextileMesh& mesh, double angleBound)
     q.minAngle = q.minAngleAwayFromCorners = 180.0;
     q.angleBound = angleBound;
     // (tow, the triangle's nodes sorted) -> the sharpest corner it is in.
-    std::map<std::pair<std::size_t, std::array<std::size_t, 3>>, double> corner;
-    const auto sorted = [](std::array<std::size_t, 3> t) {
-        std::sort(t.begin(), t.end());
-        return t;
-    };
+    std::map<std::pair<std::size_t, Triple>, double> corner;
     for (const SharpCorner& c : mesh.sharpCorners)
-        for (const std::array<std::size_t, 3>& t : c.triangles) {
+        for (const Triple& t : c.triangles) {
             auto [it, added] = corner.emplace(std::make_pair(c.tow, sorted(t)), c.angle);
             if (!added) it->second = std::min(it->second, c.angle);
         }
     for (std::size_t t = 0; t < mesh.tows.size(); ++t) {
         const TowMesh& m = mesh.tows[t];
         for (std::size_t k = 0; k < m.triangles.size(); ++k) {
-            if (k < m.region.size() && m.region[k] >= 0 && mesh.regions[static_cast<std::size_t>(m.region[k])].secondary == t) continue;
+            if (!ownTriangle(mesh, t, k)) continue;  // counted once, in its primary
             const double a = smallestAngle(mesh.nodes, m.triangles[k]);
             q.minAngle = std::min(q.minAngle, a);
             ++q.histogram[std::min<std::size_t>(11, static_cast<std::size_t>(a / 5.0))];
