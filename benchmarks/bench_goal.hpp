@@ -35,6 +35,12 @@ public:
         measured(what, seconds, "time", seconds <= maximum, " s, goal <= " + number(maximum) + " s");
     }
 
+    /// A count (or any positive figure) whose goal is at most @p maximum.
+    void atMost(const std::string& what, double value, double maximum, const std::string& unit = "")
+    {
+        measured(what, value, "value", value <= maximum, unit + ", goal <= " + number(maximum) + unit);
+    }
+
     /// A correctness check: must hold in every run. Returns @p ok.
     bool require(const std::string& what, bool ok)
     {

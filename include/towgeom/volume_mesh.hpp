@@ -29,6 +29,16 @@ struct VolumeMeshOptions {
     /// calls); one thread in a fresh process gives the same mesh every time. Volumes and
     /// conformity do not change.
     std::size_t threads = 0;
+    /// How fast the tetrahedra grow away from the surfaces: the size asked for at a point is
+    /// the surface mesh's edge length at the nearest node plus (growthRate - 1) times the
+    /// distance to it (neighbouring layers of tetrahedra differ in size by about this factor),
+    /// at most maxSize. 1: no growth, the surfaces' sizes interpolated inside (Gmsh's default;
+    /// several times more tetrahedra). At most 1.5: beyond, Gmsh 4.8's HXT recovers the
+    /// surfaces very slowly (minutes). The surface triangles are kept as they are either way.
+    double growthRate = 1.3;
+    /// The largest edge length asked for inside (with growthRate > 1); 0: 8 times the surface
+    /// mesh's median edge length.
+    double maxSize = 0.0;
 };
 
 /// Tetrahedra (linear, or quadratic: VolumeMeshOptions::order) filling each tow of a
@@ -57,6 +67,12 @@ struct TOWGEOM_EXPORT VolumeMesh {
     /// For each tetrahedron its fibre direction (a unit vector), once addFibreDirections() has
     /// set them; empty before.
     std::vector<Vector3> fibreDirection;
+    /// Wall time meshVolumes() spent in Gmsh's mesh generation (seconds): the rest of its time
+    /// is towgeom's own (checks before and after, the size field, reading the mesh back).
+    double gmshSeconds = 0.0;
+    /// The grading the tetrahedra were made with: VolumeMeshOptions::growthRate, and the largest
+    /// size asked for (VolumeMeshOptions::maxSize, or the automatic one; 0 without growth).
+    double growthRate = 1.0, maxSize = 0.0;
 
     /// The signed volume of tetrahedron @p k (meshVolumes() orders the nodes so that it is not
     /// negative).
@@ -91,7 +107,8 @@ TOWGEOM_EXPORT TetrahedronQuality tetrahedronQuality(const VolumeMesh& volumes);
 /// the process); each call works in a model of its own and restores the host's current model
 /// and the options it sets.
 /// Gmsh's library (Debian: libgmsh4.8) is loaded on the first call, not linked.
-/// @throws towgeom::Error (InvalidArgument) if VolumeMeshOptions::order is not 1 or 2;
+/// @throws towgeom::Error (InvalidArgument) if VolumeMeshOptions::order is not 1 or 2, its
+///         growthRate not in [1, 1.5] or its maxSize negative;
 ///         (EngineUnavailable) if Gmsh's library cannot be loaded;
 ///         (InvalidArgument) if a tow's surface is not a closed 2-manifold (every edge of its
 ///         triangles shared by exactly two of them, no triangle twice) or a triangle is in two

@@ -186,7 +186,9 @@ Options:
                      vtk also DIR/textile_volume.vtu for ParaView (tow_id, material,
                      fibre_direction per tetrahedron); report.json gains "volume_mesh":
                      {"tetrahedra","order","nodes","inner_nodes" (nodes Gmsh added: inner
-                     corners and, with --order 2, every middle node),"tows":[{"name","tetrahedra",
+                     corners and, with --order 2, every middle node),"growth_rate","max_size"
+                     (--volume-grading's, MAX as used),"gmsh_ms" (of the volume stage's time,
+                     Gmsh's mesh generation),"tows":[{"name","tetrahedra",
                      "volume"}],"quality":{"min_dihedral_deg","max_dihedral_deg",
                      "min_dihedral_histogram_bins_deg" (lower edges: 0 5 10 20 ... 60, the last
                      bin up to 70.53),"min_dihedral_histogram"}}, with --cell also "matrix":
@@ -203,6 +205,14 @@ Options:
   --order N          with --volume: 1 linear tetrahedra (default; C3D4), 2 quadratic (10 nodes,
                      straight edges: C3D10, Gmsh's 10-node tetrahedra and 6-node triangles, VTK's
                      quadratic tetrahedra; node sets hold the middle nodes on them too)
+  --volume-grading RATE,MAX
+                     with --volume: how the tetrahedra grow away from the surfaces (default
+                     1.3,0): the edge length asked for is the surface mesh's at the nearest
+                     surface node plus (RATE - 1) x the distance to it, at most MAX (0: 8 x the
+                     surface mesh's median edge length). 1,0 keeps the surfaces' sizes
+                     throughout (several times more tetrahedra); RATE at most 1.5 (beyond,
+                     Gmsh's HXT recovers the surfaces very slowly). The surface triangles, and
+                     so the tows' interfaces, are the same either way
   --cell X0,Y0,Z0,X1,Y1,Z1 | --cell DIR/textile.json
                      clip every tow by this box (a unit cell for finite elements): where a face
                      cuts a tow the tow is closed by a flat cap on the face; the faces are meshed
@@ -279,7 +289,7 @@ int runResolve(int argc, char** argv, int first)
                         {{"help"}, {"quiet"}, {"allow-open"}, {"out", true}, {"primary", true}, {"mesh-size", true},
                          {"min-angle", true}, {"loop-spacing", true}, {"formats", true}, {"tolerance", true},
                          {"threads", true}, {"max-triangles", true}, {"no-caps"}, {"report", true}, {"volume"},
-                         {"cell", true}, {"periodic"}, {"face-grading", true}, {"order", true}, {"method", true}, {"shrink-both"}, {"report-methods", true}, {"knot-spans"}});
+                         {"cell", true}, {"periodic"}, {"face-grading", true}, {"order", true}, {"volume-grading", true}, {"method", true}, {"shrink-both"}, {"report-methods", true}, {"knot-spans"}});
         if (args.has("help")) {
             std::cout << kResolveHelp;
             return kExitOk;
@@ -320,6 +330,17 @@ int runResolve(int argc, char** argv, int first)
             if (*given != "1" && *given != "2") throw UsageError("--order takes 1 (linear tetrahedra) or 2 (quadratic), not '" + *given + "'");
             if (!volume) throw UsageError("--order needs --volume");
             order = *given == "2" ? 2 : 1;
+        }
+        VolumeMeshOptions volumeOptions;
+        volumeOptions.order = order;
+        if (const auto grading = args.value("volume-grading")) {
+            if (!volume) throw UsageError("--volume-grading needs --volume");
+            const std::vector<double> g = numberList(*grading);
+            if (g.size() != 2 || !(g[0] >= 1.0 && g[0] <= 1.5) || !(g[1] >= 0.0))
+                throw UsageError("--volume-grading takes RATE,MAX: a growth rate in [1, 1.5] and a largest edge length >= 0 (0: 8 x the surface "
+                                 "mesh's median edge), not '" + *grading + "'");
+            volumeOptions.growthRate = g[0];
+            volumeOptions.maxSize = g[1];
         }
         if (volume && !options.mesh.caps) throw UsageError("--volume needs closed tows: drop --no-caps");
         const std::set<std::string> formats = parseFormats(args.value("formats"));
@@ -377,9 +398,8 @@ int runResolve(int argc, char** argv, int first)
         if (tetrahedra) {
             t0 = std::chrono::steady_clock::now();
             printer.update("meshing the tows' volumes (Gmsh HXT)", 0, 1);
-            VolumeMeshOptions vo;
+            VolumeMeshOptions vo = volumeOptions;
             vo.threads = options.threads;
-            vo.order = order;
             try {
                 volumes = meshVolumes(mesh, vo);
                 addFibreDirections(volumes, tows, options.threads);

@@ -244,6 +244,9 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
                             {"order", v->edgeNodes.empty() ? 1 : 2},
                             {"nodes", v->nodes.size()},
                             {"inner_nodes", v->nodes.size() - v->surfaceNodes},
+                            {"growth_rate", v->growthRate},
+                            {"max_size", v->maxSize},
+                            {"gmsh_ms", 1000.0 * v->gmshSeconds},
                             {"tows", std::move(perTow)}};
         const TetrahedronQuality q = tetrahedronQuality(*v);
         j["volume_mesh"]["quality"] = {{"min_dihedral_deg", q.minDihedral},

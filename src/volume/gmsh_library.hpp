@@ -35,6 +35,8 @@ namespace detail {
     X(gmshModelMeshSetOrder) \
     X(gmshModelMeshGetNodes) \
     X(gmshModelMeshGetElementsByType) \
+    X(gmshModelMeshSetSizeCallback) \
+    X(gmshModelMeshRemoveSizeCallback) \
     X(gmshLoggerGetLastError)
 
 /// The Gmsh functions towgeom calls, resolved from the shared library. Each call checks Gmsh's
