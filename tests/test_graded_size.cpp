@@ -109,3 +109,26 @@ TEST_CASE("The graded size agrees with its definition at random points: a fine p
     // Just above the fine patch the fine size, not the coarse sheet's.
     CHECK(size({0.5, 0.5, 0.31}) < 0.5 * (0.1 + 0.25 * 0.31));
 }
+
+TEST_CASE("The graded size of single triangles at any scale and place: within the surface's size and the cap", "[volume][grading]")
+{
+    // Grids of 4 x 4 x 3 nodes and the like, where the grid's node count and a node's cell can
+    // round differently at the top face (a triangle whose extent is a multiple of its size).
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int k = 0; k < 300; ++k) {
+        const double scale = std::pow(10.0, -3.0 + 6.0 * unit(random)), offset = (unit(random) - 0.5) * 1e3 * scale;
+        const double side = k % 2 ? 0.7 : 0.1 * (1 + k % 7);
+        Sheet s;
+        s.nodes = {{offset, offset, offset}, {offset + side * scale, offset, offset}, {offset + 0.5 * side * scale, offset + side * scale * std::sqrt(0.75), offset}};
+        s.triangles = {{0, 1, 2}};
+        const detail::GradedSize size(s.nodes, s.triangles, 0.3, -8.0);
+        const double h = side * scale;
+        for (const Point3& p : s.nodes) {
+            INFO("triangle " << k << ", side " << h);
+            CHECK(size(p) >= h * (1 - 1e-6));
+            CHECK(size(p) <= h * (1 + 0.3 * std::sqrt(3.0)) + 1e-9 * h);
+        }
+        CHECK(size(s.nodes[0] + Point3{0, 0, 100 * h}) == Approx(8 * h));
+    }
+}

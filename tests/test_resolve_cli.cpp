@@ -1409,7 +1409,9 @@ TEST_CASE("CalculiX solves a periodic twill cell under periodic boundary conditi
     // surfaces' size throughout (--volume-grading 1,0), on the same surfaces: the modulus within
     // 1 % (measured 0.18 % here; 0.47 % and 0.54 % at --mesh-size 0.1 and 0.07). This cell is
     // one mesh size thick: nothing to grow into, about as many tetrahedra (measured 36,449
-    // graded, 33,163 not); the 8x8 twill's cell at the default size: 1.96 M against 2.74 M.
+    // graded, 33,163 not: at the surfaces the field asks a node's mean edge length, finer than
+    // Gmsh's own interpolation; with the longest edge instead, 34,291); the 8x8 twill's cell at
+    // the default size: 1.96 M against 2.74 M.
     const fs::path fine = scratch("periodic_cell_ungraded");
     resolveCell(fine, "--volume-grading 1,0");
     const double fineModulus = totalForceX(solve(fine), "XMAX") / area / (pull / lx);

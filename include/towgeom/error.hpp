@@ -38,7 +38,8 @@ enum class ErrorCode {
     TooLarge,                 ///< The mesh or tessellation asked for would exceed its size limit
                               ///< (MeshOptions::maxTriangles); refused before it is made, the
                               ///< message gives the estimate and the limit.
-    MalformedReport,          ///< A JSON report read back is malformed, or is not one of the tows given.
+    MalformedReport,          ///< A report read back (JSON, or a solver's output: readEffectiveStiffness()) is
+                              ///< malformed, or is not one of the tows given.
     Cancelled,                ///< Progress::cancel() stopped the work; no result was made.
     EngineUnavailable,        ///< An engine loaded when first needed (Gmsh's library, for
                               ///< meshVolumes()) could not be loaded; the message names its package.

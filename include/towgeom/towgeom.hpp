@@ -19,6 +19,7 @@
 #include "towgeom/intersection_report_json.hpp"
 #include "towgeom/surface_mesher.hpp"
 #include "towgeom/progress.hpp"
+#include "towgeom/load_cases.hpp"
 #include "towgeom/mesh_export.hpp"
 #include "towgeom/mesh_options.hpp"
 #include "towgeom/point.hpp"

@@ -29,11 +29,12 @@ struct VolumeMeshOptions {
     /// calls); one thread in a fresh process gives the same mesh every time. Volumes and
     /// conformity do not change.
     std::size_t threads = 0;
-    /// How fast the tetrahedra grow away from the surfaces: the size asked for at a point is
-    /// the surface mesh's edge length at the nearest node plus (growthRate - 1) times the
-    /// distance to it (neighbouring layers of tetrahedra differ in size by about this factor),
-    /// at most maxSize. 1: no growth, the surfaces' sizes interpolated inside (Gmsh's default;
-    /// several times more tetrahedra). At most 1.5: beyond, Gmsh 4.8's HXT recovers the
+    /// How fast the tetrahedra grow away from the surfaces: the edge length asked for at a point
+    /// is the least, over the surface nodes, of the node's mean surface edge length plus
+    /// (growthRate - 1) times the distance to it (neighbouring layers of tetrahedra differ in
+    /// size by about this factor), at most maxSize (never below a node's own size). 1: no
+    /// growth, the surfaces' sizes interpolated inside (Gmsh's default; several times more
+    /// tetrahedra where there is room to grow). At most 1.5: beyond, Gmsh 4.8's HXT recovers the
     /// surfaces very slowly (minutes). The surface triangles are kept as they are either way.
     double growthRate = 1.3;
     /// The largest edge length asked for inside (with growthRate > 1); 0: 8 times the surface
@@ -67,8 +68,9 @@ struct TOWGEOM_EXPORT VolumeMesh {
     /// For each tetrahedron its fibre direction (a unit vector), once addFibreDirections() has
     /// set them; empty before.
     std::vector<Vector3> fibreDirection;
-    /// Wall time meshVolumes() spent in Gmsh's mesh generation (seconds): the rest of its time
-    /// is towgeom's own (checks before and after, the size field, reading the mesh back).
+    /// Wall time meshVolumes() spent in Gmsh's mesh generation (and, for order 2, its middle
+    /// nodes), in seconds: the rest of its time is towgeom's own (checks before and after, the
+    /// size field, reading the mesh back).
     double gmshSeconds = 0.0;
     /// The grading the tetrahedra were made with: VolumeMeshOptions::growthRate, and the largest
     /// size asked for (VolumeMeshOptions::maxSize, or the automatic one; 0 without growth).

@@ -32,6 +32,9 @@ int runPly(int argc, char** argv, int first);
 /// `towgeom courses SURFACE.step --reference REF --tow-width W --out DIR [options]`.
 int runCourses(int argc, char** argv, int first);
 
+/// `towgeom stiffness DIR`: the 6x6 effective stiffness from CalculiX's output of the load cases.
+int runStiffness(int argc, char** argv, int first);
+
 /// Prints one line "towgeom COMMAND: message" on stderr and returns the exit code for @p e.
 int reportError(const char* command, const std::exception& e);
 

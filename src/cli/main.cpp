@@ -30,6 +30,8 @@ Commands:
   courses   fibre placement: courses of tows on a tool surface offset from a reference
             curve (Schueler et al. or exact geodesics), laminate-family plies at an angle,
             gaps and overlaps between tows, tows as .stw ribbons for detect
+  stiffness the 6x6 effective stiffness of a periodic cell from CalculiX's output of the
+            load cases `resolve --load-cases` wrote (JSON)
 
 Run 'towgeom COMMAND --help' for a command's options, inputs and outputs.
 
@@ -97,6 +99,7 @@ int main(int argc, char** argv)
         if (!std::strcmp(command, "generate")) return runGenerate(argc, argv, 2);
         if (!std::strcmp(command, "ply")) return runPly(argc, argv, 2);
         if (!std::strcmp(command, "courses")) return runCourses(argc, argv, 2);
+        if (!std::strcmp(command, "stiffness")) return runStiffness(argc, argv, 2);
     } catch (...) {
         // Commands report their own errors; this is the last guard against an unknown one.
         std::cerr << "towgeom " << command << ": internal error (unexpected exception) [internal]\n";

@@ -207,8 +207,9 @@ Options:
                      quadratic tetrahedra; node sets hold the middle nodes on them too)
   --volume-grading RATE,MAX
                      with --volume: how the tetrahedra grow away from the surfaces (default
-                     1.3,0): the edge length asked for is the surface mesh's at the nearest
-                     surface node plus (RATE - 1) x the distance to it, at most MAX (0: 8 x the
+                     1.3,0): the edge length asked for is the least, over the surface nodes,
+                     of a node's mean surface edge plus (RATE - 1) x the distance to it, at
+                     most MAX (never below a node's own size; 0: 8 x the
                      surface mesh's median edge length). 1,0 keeps the surfaces' sizes
                      throughout (several times more tetrahedra); RATE at most 1.5 (beyond,
                      Gmsh's HXT recovers the surfaces very slowly). The surface triangles, and
@@ -235,6 +236,18 @@ Options:
                      max-face node to its min-face partner through reference nodes REF_X,
                      REF_Y, REF_Z (their displacements: the cell's stretch along each axis),
                      *NSET CORNER
+  --load-cases       with --volume --cell ... --periodic: also DIR/textile_load_cases.inp, the
+                     six unit-strain load cases (mean strains xx, yy, zz, yz, xz, xy of 1e-3,
+                     engineering shear) through REF_X/Y/Z, the min corner held, every element's
+                     stresses and volume printed; needs --tow-material and --matrix-material,
+                     and --formats ...,inp for the files it includes. Run `ccx -i
+                     textile_load_cases` in DIR, then `towgeom stiffness DIR` for the cell's
+                     6x6 effective stiffness
+  --tow-material E,NU | E1,E2,E3,NU12,NU13,NU23,G12,G13,G23
+                     the tows' elastic constants: isotropic, or engineering constants in the
+                     fibre axes (1 along the fibres: *ORIENTATION FIBRES)
+  --matrix-material E,NU
+                     the matrix's (isotropic; nine constants are taken too, in global axes)
   --face-grading GROWTH,MAX
                      with --cell: how the box's faces are meshed away from the tows: the edge
                      length grows from the finest tow's mesh size h (at the caps and wherever a
@@ -282,6 +295,40 @@ std::set<std::string> parseFormats(const std::optional<std::string>& text)
 
 }  // namespace
 
+namespace {
+
+/// An elastic material from the command line: E,NU (isotropic) or the nine engineering
+/// constants E1,E2,E3,NU12,NU13,NU23,G12,G13,G23 in the fibres' axes (1 along them).
+ElasticMaterial materialOption(const std::string& option, const std::string& text)
+{
+    const std::vector<double> c = numberList(text);
+    ElasticMaterial m;
+    if (c.size() == 2) m = ElasticMaterial::isotropic(c[0], c[1]);
+    else if (c.size() == 9) m = {c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8]};
+    else throw UsageError("--" + option + " takes E,NU or E1,E2,E3,NU12,NU13,NU23,G12,G13,G23, not '" + text + "'");
+    try {
+        m.validate("--" + option);
+    } catch (const Error& e) {
+        throw UsageError(e.message());
+    }
+    return m;
+}
+
+/// --load-cases with its materials, checked before any work.
+std::optional<LoadCaseMaterials> readLoadCaseMaterials(const Args& args, bool volume, const ResolveOptions& options)
+{
+    const bool tow = args.value("tow-material").has_value(), matrix = args.value("matrix-material").has_value();
+    if (!args.has("load-cases")) {
+        if (tow || matrix) throw UsageError("--tow-material and --matrix-material go with --load-cases");
+        return std::nullopt;
+    }
+    if (!volume || !options.cell || !options.cell->periodic) throw UsageError("--load-cases needs --volume and a --periodic --cell");
+    if (!tow || !matrix) throw UsageError("--load-cases needs --tow-material and --matrix-material");
+    return LoadCaseMaterials{materialOption("tow-material", *args.value("tow-material")), materialOption("matrix-material", *args.value("matrix-material"))};
+}
+
+}  // namespace
+
 int runResolve(int argc, char** argv, int first)
 {
     try {
@@ -289,7 +336,7 @@ int runResolve(int argc, char** argv, int first)
                         {{"help"}, {"quiet"}, {"allow-open"}, {"out", true}, {"primary", true}, {"mesh-size", true},
                          {"min-angle", true}, {"loop-spacing", true}, {"formats", true}, {"tolerance", true},
                          {"threads", true}, {"max-triangles", true}, {"no-caps"}, {"report", true}, {"volume"},
-                         {"cell", true}, {"periodic"}, {"face-grading", true}, {"order", true}, {"volume-grading", true}, {"method", true}, {"shrink-both"}, {"report-methods", true}, {"knot-spans"}});
+                         {"cell", true}, {"periodic"}, {"face-grading", true}, {"order", true}, {"volume-grading", true}, {"load-cases"}, {"tow-material", true}, {"matrix-material", true}, {"method", true}, {"shrink-both"}, {"report-methods", true}, {"knot-spans"}});
         if (args.has("help")) {
             std::cout << kResolveHelp;
             return kExitOk;
@@ -343,7 +390,10 @@ int runResolve(int argc, char** argv, int first)
             volumeOptions.maxSize = g[1];
         }
         if (volume && !options.mesh.caps) throw UsageError("--volume needs closed tows: drop --no-caps");
+        const std::optional<LoadCaseMaterials> loadCases = readLoadCaseMaterials(args, volume, options);
         const std::set<std::string> formats = parseFormats(args.value("formats"));
+        if (loadCases && !formats.count("inp"))
+            throw UsageError("--load-cases needs --formats ...,inp: its deck includes textile_volume.inp and textile_volume_periodic.inp");
         const bool exact = formats.count("step") || formats.count("brep");
         if (exact && options.method != ResolutionMethod::Connect)
             throw UsageError("--formats step and brep are built for --method connect only (the other methods' surfaces are not "
@@ -459,6 +509,7 @@ int runResolve(int argc, char** argv, int first)
         if (tetrahedra && formats.count("inp")) writeAbaqus(mesh, volumes, files.open(path("textile_volume.inp")));
         if (tetrahedra && formats.count("inp") && options.cell && options.cell->periodic)
             writeAbaqusPeriodic(mesh, volumes, files.open(path("textile_volume_periodic.inp")));
+        if (tetrahedra && loadCases) writeLoadCases(mesh, volumes, *loadCases, files.open(path("textile_load_cases.inp")));
         if (tetrahedra && formats.count("vtk")) writeVtu(mesh, volumes, files.open(path("textile_volume.vtu")));
         if (args.has("knot-spans")) {  // the elements of each tow's B-spline: valid, invalid, trimmed
             std::vector<KnotSpanClassification> spans(tows.size());

@@ -49,12 +49,18 @@ GradedSize::GradedSize(const std::vector<Point3>& nodes, const std::vector<std::
         lo = {std::min(lo.x, nodes[n].x), std::min(lo.y, nodes[n].y), std::min(lo.z, nodes[n].z)};
         hi = {std::max(hi.x, nodes[n].x), std::max(hi.y, nodes[n].y), std::max(hi.z, nodes[n].z)};
     }
-    if (used.empty()) return;
+    if (used.empty()) {
+        largest_ = std::abs(largest_);
+        return;
+    }
     std::vector<double> sizes;
     for (std::uint32_t n : used) sizes.push_back(h[n]);
     std::nth_element(sizes.begin(), sizes.begin() + static_cast<long>(sizes.size() / 2), sizes.end());
     median_ = sizes[sizes.size() / 2];
     if (largest_ < 0.0) largest_ *= -median_;
+    // Never below the surface's own size: a largest size under it caps each node's growth at
+    // the node's size instead.
+    cap_ = std::max(largest_, *std::max_element(sizes.begin(), sizes.end()));
 
     // The grid: the surface's median size apart, coarser if that needs more than gridNodes,
     // one spacing beyond the surface on every side.
@@ -73,7 +79,7 @@ GradedSize::GradedSize(const std::vector<Point3>& nodes, const std::vector<std::
     std::vector<double> value(n_[0] * n_[1] * n_[2], std::numeric_limits<double>::infinity());
     std::vector<std::uint32_t> source(value.size(), kNoSource);
     const auto offer = [&](std::size_t g, const Point3& x, std::uint32_t s) {
-        const double v = h[s] + slope_ * distance(x, nodes[s]);
+        const double v = std::min(h[s] + slope_ * distance(x, nodes[s]), std::max(largest_, h[s]));
         if (v < value[g]) {
             value[g] = v;
             source[g] = s;
@@ -81,7 +87,9 @@ GradedSize::GradedSize(const std::vector<Point3>& nodes, const std::vector<std::
     };
     for (std::uint32_t s : used) {
         const Vector3 r = (1.0 / spacing_) * (nodes[s] - origin_);
-        const std::size_t i = static_cast<std::size_t>(r.x), j = static_cast<std::size_t>(r.y), k = static_cast<std::size_t>(r.z);
+        // Clamped: the grid's count and this cell may round differently at the top face.
+        const auto cellOf = [&](double x, std::size_t a) { return std::min(static_cast<std::size_t>(std::max(x, 0.0)), n_[a] - 2); };
+        const std::size_t i = cellOf(r.x, 0), j = cellOf(r.y, 1), k = cellOf(r.z, 2);
         for (std::size_t c = 0; c < 8; ++c) {
             const std::size_t a = i + (c & 1), b = j + ((c >> 1) & 1), d = k + ((c >> 2) & 1);
             offer(at(a, b, d), gridPoint(a, b, d), s);
@@ -108,7 +116,7 @@ GradedSize::GradedSize(const std::vector<Point3>& nodes, const std::vector<std::
                 for (std::size_t i = n_[0]; i-- > 0;) visit(i, j, k, -1);
     }
     size_.resize(value.size());
-    for (std::size_t g = 0; g < value.size(); ++g) size_[g] = static_cast<float>(std::min(value[g], largest_));
+    for (std::size_t g = 0; g < value.size(); ++g) size_[g] = static_cast<float>(std::min(value[g], cap_));
 }
 
 Point3 GradedSize::gridPoint(std::size_t i, std::size_t j, std::size_t k) const
@@ -137,7 +145,7 @@ double GradedSize::operator()(const Point3& x) const
         const double w = (di ? f[0] : 1.0 - f[0]) * (dj ? f[1] : 1.0 - f[1]) * (dk ? f[2] : 1.0 - f[2]);
         out += w * size_[at(c[0] + di, c[1] + dj, c[2] + dk)];
     }
-    return std::min(out, largest_);
+    return std::min(out, cap_);
 }
 
 }  // namespace detail

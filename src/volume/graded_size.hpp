@@ -13,13 +13,15 @@
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
 
-/// h(x) = min(largest, min over surface nodes i of (h_i + slope * |x - p_i|)), where h_i is the
-/// mean length of the surface edges at node i: a size that equals the surface mesh's at the
-/// surface, changes by at most @p slope per unit length (neighbouring layers of tetrahedra
-/// differ in size by a factor of about 1 + slope) and never exceeds the largest size.
-/// Tabulated on a regular grid (the sources found by two raster sweeps of the grid, each node
-/// taking the best of its neighbours' nodes) and read by trilinear interpolation: within the
-/// grid's spacing of the exact value's source, and O(1) a point.
+/// h(x) = min over surface nodes i of min(h_i + slope * |x - p_i|, max(largest, h_i)), where h_i
+/// is the mean length of the surface edges at node i: a size that equals the surface mesh's at
+/// the surface, changes by at most @p slope per unit length (neighbouring layers of tetrahedra
+/// differ in size by a factor of about 1 + slope) and grows to the largest size but is never
+/// made smaller than the surface's own by it.
+/// Tabulated on a regular grid at the median surface edge length (coarsened in steps of 1.25
+/// while it would exceed the node budget), each grid node's source found by two raster sweeps
+/// (each node taking the best of its neighbours' sources: an upper bound of the exact value,
+/// found exact on the tests' sheets) and read by trilinear interpolation, O(1) a point.
 class GradedSize {
 public:
     /// @p nodes and @p triangles the surface mesh (triangles index nodes; nodes no triangle uses
@@ -41,6 +43,7 @@ private:
     Point3 gridPoint(std::size_t i, std::size_t j, std::size_t k) const;
 
     double slope_, largest_, median_ = 0.0, spacing_ = 1.0;
+    double cap_ = 0.0;  // max(largest, the largest node size): no size above it
     Point3 origin_{};
     std::array<std::size_t, 3> n_{0, 0, 0};
     std::vector<float> size_;  // per grid node

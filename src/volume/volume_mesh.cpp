@@ -160,8 +160,11 @@ private:
     const Gmsh& g_;
     bool hadCurrent_ = false, added_ = false;
     std::string hostModel_;
-    std::pair<const char*, double> saved_[10] = {{"General.Terminal", 0.0},
+    std::pair<const char*, double> saved_[13] = {{"General.Terminal", 0.0},
                                                 {"Mesh.MeshSizeExtendFromBoundary", 0.0},
+                                                {"Mesh.MeshSizeMin", 0.0},
+                                                {"Mesh.MeshSizeMax", 0.0},
+                                                {"Mesh.MeshSizeFactor", 0.0},
                                                 {"Mesh.ElementOrder", 0.0},
                                                 {"Mesh.SubdivisionAlgorithm", 0.0},
                                                 {"Mesh.HighOrderOptimize", 0.0},
@@ -523,13 +526,17 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         option("Mesh.ElementOrder", 1);
         option("Mesh.SubdivisionAlgorithm", 0);
         option("Mesh.HighOrderOptimize", 0);
-        if (grading) {  // sizes from towgeom's field alone, not interpolated from the surfaces
-            option("Mesh.MeshSizeExtendFromBoundary", 0);
+        // Sizes from towgeom's field alone, or (no grading) the surfaces' interpolated inside,
+        // whatever the host set.
+        option("Mesh.MeshSizeExtendFromBoundary", grading ? 0 : 1);
+        option("Mesh.MeshSizeMin", 0);  // Gmsh's defaults: no bound, no scaling
+        option("Mesh.MeshSizeMax", 1e22);
+        option("Mesh.MeshSizeFactor", 1);
+        if (grading) {
             g.call("gmshModelMeshSetSizeCallback", api.gmshModelMeshSetSizeCallback, &gradedSizeAt, static_cast<void*>(&*grading));
         }
         const auto generateStart = std::chrono::steady_clock::now();
         g.call("gmshModelMeshGenerate", api.gmshModelMeshGenerate, 3);
-        out.gmshSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - generateStart).count();
 
         const auto nodesOn = [&](int dim, std::vector<std::size_t>& tags, std::vector<double>& coords) {
             std::size_t* t = nullptr;
@@ -549,6 +556,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
             if (n > surfaces.nodes.size() || !classified[n - 1])
                 throw Error(ErrorCode::Internal, "Gmsh added a node on a tow's surface while meshing the volumes");
         if (quadratic) g.call("gmshModelMeshSetOrder", api.gmshModelMeshSetOrder, 2);
+        out.gmshSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - generateStart).count();
         // Every node: the surface's keep their indices, Gmsh's new ones are appended.
         nodesOn(-1, tags, coords);
         std::vector<std::size_t> index;  // by Gmsh tag
