@@ -141,7 +141,7 @@ TEST_CASE("load cases of one material everywhere return that material's stiffnes
         }
     WARN("one material: C11 " << c[0][0] << " (exact " << lambda + 2 * mu << "), C44 " << c[3][3] << " (" << mu << "), worst relative "
                               << worst);
-    CHECK(worst < 1e-4);  // the issue asks 1 %; the uniform strain is exact for linear tetrahedra
+    CHECK(worst < 1e-5);  // measured 1.1e-7 (the issue asks 1 %): the uniform strain is exact for linear tetrahedra
     fs::remove_all(out);
     fs::remove_all(weave);
 }
@@ -172,16 +172,38 @@ TEST_CASE("load cases of parallel straight tows: the rule of mixtures along them
     const double voigt = f * ef + (1 - f) * em, reuss = 1.0 / (f / ef + (1 - f) / em);
     WARN("straight tows, f = " << f << ": E_x " << ex << " (rule of mixtures " << voigt << "), E_y " << ey << " in (" << reuss << ", " << voigt
                                << "), asymmetry " << asymmetry);
-    CHECK(ex == Approx(voigt).epsilon(1e-3));  // exact for linear tetrahedra (the issue asks 1 %)
+    CHECK(ex == Approx(voigt).epsilon(1e-4));  // measured 1e-5 (the issue asks 1 %): exact for linear tetrahedra
     CHECK(ey > reuss);
     CHECK(ey < voigt);
     CHECK(asymmetry < 1e-3);
     CHECK(positiveDefinite(c));
+    // Transversely isotropic tows in their fibre axes (1 along x here), NU12 = NU13 = the
+    // matrix's nu: along x the strain is still uniform, E_x = f E1 + (1 - f) Em exactly; the
+    // shears with a fibre direction (xz, xy: G12 = G13 = 20000) stiffer than across (yz:
+    // G23 = 2000). This checks the axes, the Voigt order and the stresses' global axes.
+    const fs::path oriented = scratch("straight_oriented");
+    const Run o = cli("resolve '" + (tows / "a.stw").string() + "' '" + (tows / "b.stw").string() + "' --out '" + oriented.string() +
+                      "' --cell 0,0,-0.5,4,2,0.5 --periodic --volume --mesh-size 0.1 --formats inp --quiet --load-cases --tow-material "
+                      "100000,8000,8000,0.3,0.3,0.4,20000,20000,2000 --matrix-material 3000,0.3");
+    INFO(o.err);
+    REQUIRE(o.status == 0);
+    const Matrix6 co = solveLoadCases(oriented, &asymmetry);
+    REQUIRE(invert(co, s));
+    WARN("oriented straight tows: E_x " << 1.0 / s[0][0] << " (rule of mixtures " << voigt << "), C44 " << co[3][3] << ", C55 " << co[4][4]
+                                        << ", C66 " << co[5][5]);
+    CHECK(1.0 / s[0][0] == Approx(voigt).epsilon(1e-4));
+    // Measured 1.40 and 1.39 x (the matrix, 76 %, limits both); fibres along another axis would
+    // make C44 the stiff one.
+    CHECK(co[4][4] > 1.25 * co[3][3]);
+    CHECK(co[5][5] > 1.25 * co[3][3]);
+    CHECK(asymmetry < 1e-3);
+    CHECK(positiveDefinite(co));
+    fs::remove_all(oriented);
     fs::remove_all(out);
     fs::remove_all(tows);
 }
 
-TEST_CASE("load cases of a 2/2 twill's unit cell: a symmetric, positive definite stiffness; orthotropic tows", "[cli][resolve][volume][cell][ccx][load-cases]")
+TEST_CASE("load cases of a 2/2 twill's unit cell with orthotropic tows: a symmetric, positive definite stiffness", "[cli][resolve][volume][cell][ccx][load-cases]")
 {
     // The bundled twill (4 x 4 yarns) holds no whole periodic repeat: the generator's 6 x 6 of
     // the same weave (2/2, overlap 0.08) and its unit cell.

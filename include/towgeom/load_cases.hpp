@@ -17,9 +17,15 @@ TOWGEOM_BEGIN_NAMESPACE
 /// Linear elastic constants in a material's axes (for tows: 1 along the fibres, the axes of
 /// VolumeMesh::fibreDirection as writeAbaqus() writes them), in the user's units.
 struct TOWGEOM_EXPORT ElasticMaterial {
-    double e1 = 0.0, e2 = 0.0, e3 = 0.0;        ///< Young's moduli along the axes
-    double nu12 = 0.0, nu13 = 0.0, nu23 = 0.0;  ///< Poisson's ratios
-    double g12 = 0.0, g13 = 0.0, g23 = 0.0;     ///< shear moduli
+    double e1 = 0.0;    ///< Young's modulus along axis 1 (the fibres)
+    double e2 = 0.0;    ///< Young's modulus along axis 2
+    double e3 = 0.0;    ///< Young's modulus along axis 3
+    double nu12 = 0.0;  ///< Poisson's ratio: contraction along 2 under a stress along 1
+    double nu13 = 0.0;  ///< Poisson's ratio: contraction along 3 under a stress along 1
+    double nu23 = 0.0;  ///< Poisson's ratio: contraction along 3 under a stress along 2
+    double g12 = 0.0;   ///< shear modulus in the 1-2 plane
+    double g13 = 0.0;   ///< shear modulus in the 1-3 plane
+    double g23 = 0.0;   ///< shear modulus in the 2-3 plane
     /// An isotropic material: Young's modulus @p e, Poisson's ratio @p nu.
     static ElasticMaterial isotropic(double e, double nu);
     /// True if every axis has the same constants and G = E / (2 (1 + nu)).
@@ -32,7 +38,8 @@ struct TOWGEOM_EXPORT ElasticMaterial {
 /// The materials of writeLoadCases(): the tows' (with fibre directions: in their fibre axes) and
 /// the matrix's.
 struct LoadCaseMaterials {
-    ElasticMaterial tows, matrix;
+    ElasticMaterial tows;    ///< the tows' (in their fibre axes)
+    ElasticMaterial matrix;  ///< the matrix's (in global axes)
 };
 
 /// The strain of each load case (one component, the others zero): small, the solution is linear.
@@ -48,8 +55,8 @@ constexpr double kLoadCaseStrain = 1e-3;
 /// element's stresses (in global axes: GLOBAL=YES) and volume (*EL PRINT S, EVOL) for
 /// readEffectiveStiffness(). Run it with
 /// `ccx -i NAME` in the directory of the included files.
-/// @throws towgeom::Error (InvalidArgument) if @p mesh is not clipped to a periodic cell, a
-/// material is invalid, or the tows are not isotropic and @p volumes has no fibre directions.
+/// @throws towgeom::Error (InvalidArgument) if @p mesh is not clipped to a periodic cell, has no
+/// tow or no matrix tetrahedra in it, a material is invalid, or the tows are not isotropic and @p volumes has no fibre directions.
 TOWGEOM_EXPORT void writeLoadCases(const TextileMesh& mesh, const VolumeMesh& volumes, const LoadCaseMaterials& materials, std::ostream& out,
                                    const std::string& meshFile = "textile_volume.inp",
                                    const std::string& periodicFile = "textile_volume_periodic.inp");
@@ -67,7 +74,8 @@ struct TOWGEOM_EXPORT EffectiveStiffness {
 
 /// Reads CalculiX's .dat output of writeLoadCases()'s deck: per step, the volume-weighted mean
 /// of every element's stresses (each integration point's weighted equally within its element:
-/// exact for C3D4's one point and C3D10's four equal weights) divided by the step's strain. The
+/// exact for C3D4's one point and for straight-edged C3D10's four equal weights, as
+/// meshVolumes() makes them; biased for curved ones) divided by the step's strain. The
 /// mean stress of a periodic cell is this volume average, so no reaction force is needed.
 /// @p name names the input in messages.
 /// @throws towgeom::Error (MalformedReport) naming @p name and the line if a step, an element's stress or its

@@ -72,9 +72,11 @@ struct TOWGEOM_EXPORT VolumeMesh {
     /// nodes), in seconds: the rest of its time is towgeom's own (checks before and after, the
     /// size field, reading the mesh back).
     double gmshSeconds = 0.0;
-    /// The grading the tetrahedra were made with: VolumeMeshOptions::growthRate, and the largest
-    /// size asked for (VolumeMeshOptions::maxSize, or the automatic one; 0 without growth).
-    double growthRate = 1.0, maxSize = 0.0;
+    /// The growth rate the tetrahedra were made with (VolumeMeshOptions::growthRate).
+    double growthRate = 1.0;
+    /// The largest size asked for (VolumeMeshOptions::maxSize, or the automatic one; 0 without
+    /// growth).
+    double maxSize = 0.0;
 
     /// The signed volume of tetrahedron @p k (meshVolumes() orders the nodes so that it is not
     /// negative).

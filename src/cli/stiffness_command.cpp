@@ -51,9 +51,13 @@ int runStiffness(int argc, char** argv, int first)
             std::cout << kStiffnessHelp;
             return kExitOk;
         }
-        if (args.positional().size() != 1 && !args.value("dat")) throw UsageError("give one directory (or --dat FILE)");
+        if (args.positional().size() + (args.value("dat") ? 1 : 0) != 1) throw UsageError("give one directory or --dat FILE");
         const std::string path = args.value("dat") ? *args.value("dat")
                                                    : (std::filesystem::path(args.positional()[0]) / "textile_load_cases.dat").string();
+        const std::filesystem::path deck = std::filesystem::path(path).replace_extension(".inp");
+        std::error_code ec;
+        if (std::filesystem::exists(deck, ec) && std::filesystem::last_write_time(deck, ec) > std::filesystem::last_write_time(path, ec))
+            throw Error(ErrorCode::MalformedReport, "older than its deck " + deck.string() + ": run ccx on the new deck first", path);
         std::ifstream in(path);
         if (!in) throw Error(ErrorCode::FileNotFound, "cannot read CalculiX's output (run `ccx -i textile_load_cases` in the directory first)", path);
         const EffectiveStiffness s = readEffectiveStiffness(in, path);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include "export/number_writer.hpp"
@@ -57,8 +58,9 @@ void writeMaterial(detail::NumberWriter& w, const char* name, const ElasticMater
         return;
     }
     w.text("*ELASTIC, TYPE=ENGINEERING CONSTANTS").end();
+    // Eight numbers of at most 14 characters: the line stays under CalculiX's 132.
     const double first[8] = {m.e1, m.e2, m.e3, m.nu12, m.nu13, m.nu23, m.g12, m.g13};
-    for (int k = 0; k < 8; ++k) w.fitted(first[k], 20).text(k < 7 ? ", " : "");
+    for (int k = 0; k < 8; ++k) w.fitted(first[k], 14).text(k < 7 ? ", " : "");
     w.end().fitted(m.g23, 20).end();
 }
 
@@ -72,6 +74,9 @@ void writeLoadCases(const TextileMesh& mesh, const VolumeMesh& volumes, const Lo
     detail::checkVolumeMeshOf(mesh, volumes);
     materials.tows.validate("the tows' material");
     materials.matrix.validate("the matrix's material");
+    if (std::find(volumes.tow.begin(), volumes.tow.end(), mesh.tows.size()) == volumes.tow.end() ||
+        std::count(volumes.tow.begin(), volumes.tow.end(), mesh.tows.size()) == static_cast<long>(volumes.tow.size()))
+        throw Error(ErrorCode::InvalidArgument, "load cases need tows and matrix in the cell (an element set TEXTILE and MATRIX each)");
     const bool oriented = !materials.tows.isIsotropic();
     if (oriented && volumes.fibreDirection.empty())
         throw Error(ErrorCode::InvalidArgument, "orthotropic tows need the tetrahedra's fibre directions (addFibreDirections())");
@@ -133,10 +138,28 @@ EffectiveStiffness readEffectiveStiffness(std::istream& dat, const std::string& 
     Step* step = nullptr;
     std::string line;
     long lineNumber = 0;
-    const auto fail = [&](const std::string& what) { throw Error(ErrorCode::MalformedReport, what, name, static_cast<int>(lineNumber)); };
+    const auto failAt = [&](const std::string& what, long at) { throw Error(ErrorCode::MalformedReport, what, name, static_cast<std::size_t>(at)); };
+    const auto fail = [&](const std::string& what) { failAt(what, lineNumber); };
+    // Fortran drops the E of a three-digit exponent (1.234567-100): put it back.
+    const auto number = [](const std::string& token, double& x) {
+        std::string t = token;
+        for (std::size_t k = 1; k < t.size(); ++k)
+            if ((t[k] == '-' || t[k] == '+') && std::isdigit(static_cast<unsigned char>(t[k - 1]))) {
+                t.insert(k, 1, 'E');
+                break;
+            }
+        std::size_t used = 0;
+        try {
+            x = std::stod(t, &used);
+        } catch (const std::exception&) {
+            return false;
+        }
+        return used == t.size() && std::isfinite(x);
+    };
     while (std::getline(dat, line)) {
         ++lineNumber;
-        const auto first = line.find_first_not_of(' ');
+        while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) line.pop_back();
+        const auto first = line.find_first_not_of(" \t");
         if (first == std::string::npos) continue;
         const bool stress = line.compare(first, 9, "stresses ") == 0, volume = line.compare(first, 7, "volume ") == 0;
         if (stress || volume) {
@@ -155,42 +178,59 @@ EffectiveStiffness readEffectiveStiffness(std::istream& dat, const std::string& 
         }
         if (block == Block::None) continue;
         std::istringstream fields(line);
+        std::vector<std::string> tokens;
+        for (std::string t; fields >> t;) tokens.push_back(t);
         long element = 0;
+        const auto integer = [](const std::string& t, long& x) {
+            std::size_t used = 0;
+            try {
+                x = std::stol(t, &used);
+            } catch (const std::exception&) {
+                return false;
+            }
+            return used == t.size();
+        };
         if (block == Block::Volume) {
             double v = 0.0;
-            if (!(fields >> element >> v)) fail("an element's volume line does not read as a number and a volume");
+            if (tokens.size() != 2 || !integer(tokens[0], element) || !number(tokens[1], v))
+                fail("an element's volume line does not read as an element and a volume");
             step->volume[element] = v;
         } else {
             long point = 0;
             double s[6];
-            if (!(fields >> element >> point >> s[0] >> s[1] >> s[2] >> s[3] >> s[4] >> s[5]))
-                fail("an element's stress line does not read as element, point and six stresses");
+            bool ok = tokens.size() == 8 && integer(tokens[0], element) && integer(tokens[1], point);
+            for (std::size_t k = 0; ok && k < 6; ++k) ok = number(tokens[k + 2], s[k]);
+            if (!ok) fail("an element's stress line does not read as element, point and six stresses");
             auto& sum = step->stress[element];
             for (int k = 0; k < 6; ++k) sum[static_cast<std::size_t>(k)] += s[k];
             sum[6] += 1.0;
         }
     }
-    if (steps.size() != 6) fail("the output holds " + std::to_string(steps.size()) + " steps with element stresses, not the 6 load cases");
+    if (steps.size() != 6) failAt("the output holds " + std::to_string(steps.size()) + " steps with element stresses, not the 6 load cases", 0);
     EffectiveStiffness out;
     // CalculiX's stress order: sxx, syy, szz, sxy, sxz, syz; Voigt's here: xx, yy, zz, yz, xz, xy.
     constexpr int kFromCcx[6] = {0, 1, 2, 5, 4, 3};
     for (std::size_t k = 0; k < 6; ++k) {
         const Step& s = steps[k].second;
         if (s.stress.empty() || s.stress.size() != s.volume.size())
-            fail("load case " + std::to_string(k + 1) + " (time " + steps[k].first + ") has " + std::to_string(s.stress.size()) +
-                 " elements with stresses and " + std::to_string(s.volume.size()) + " with a volume");
-        if (k > 0 && s.volume.size() != out.elements) fail("load case " + std::to_string(k + 1) + " covers other elements than the first");
+            failAt("load case " + std::to_string(k + 1) + " (time " + steps[k].first + ") has " + std::to_string(s.stress.size()) +
+                 " elements with stresses and " + std::to_string(s.volume.size()) + " with a volume", 0);
+        const auto sameElements = [&](const Step& a) {
+            return std::equal(a.volume.begin(), a.volume.end(), steps[0].second.volume.begin(), steps[0].second.volume.end(),
+                              [](const auto& x, const auto& y) { return x.first == y.first; });
+        };
+        if (k > 0 && !sameElements(s)) failAt("load case " + std::to_string(k + 1) + " covers other elements than the first", 0);
         out.elements = s.volume.size();
         std::array<double, 6> mean{};
         double total = 0.0;
         auto v = s.volume.begin();
         for (const auto& [element, sum] : s.stress) {
-            if (v->first != element) fail("element " + std::to_string(element) + " has stresses but no volume");
+            if (v->first != element) failAt("element " + std::to_string(element) + " has stresses but no volume", 0);
             for (int c = 0; c < 6; ++c) mean[static_cast<std::size_t>(c)] += v->second * sum[static_cast<std::size_t>(kFromCcx[c])] / sum[6];
             total += v->second;
             ++v;
         }
-        if (!(total > 0.0)) fail("load case " + std::to_string(k + 1) + ": the elements' volume is not positive");
+        if (!(total > 0.0)) failAt("load case " + std::to_string(k + 1) + ": the elements' volume is not positive", 0);
         out.volume = total;
         for (std::size_t c = 0; c < 6; ++c) out.c[c][k] = mean[c] / total / kLoadCaseStrain;
     }

@@ -160,7 +160,9 @@ private:
     const Gmsh& g_;
     bool hadCurrent_ = false, added_ = false;
     std::string hostModel_;
-    std::pair<const char*, double> saved_[13] = {{"General.Terminal", 0.0},
+    std::pair<const char*, double> saved_[15] = {{"General.Terminal", 0.0},
+                                                {"Mesh.MeshSizeFromCurvature", 0.0},
+                                                {"Mesh.MeshSizeFromPoints", 0.0},
                                                 {"Mesh.MeshSizeExtendFromBoundary", 0.0},
                                                 {"Mesh.MeshSizeMin", 0.0},
                                                 {"Mesh.MeshSizeMax", 0.0},
@@ -532,6 +534,8 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         option("Mesh.MeshSizeMin", 0);  // Gmsh's defaults: no bound, no scaling
         option("Mesh.MeshSizeMax", 1e22);
         option("Mesh.MeshSizeFactor", 1);
+        option("Mesh.MeshSizeFromCurvature", 0);
+        option("Mesh.MeshSizeFromPoints", 1);
         if (grading) {
             g.call("gmshModelMeshSetSizeCallback", api.gmshModelMeshSetSizeCallback, &gradedSizeAt, static_cast<void*>(&*grading));
         }
