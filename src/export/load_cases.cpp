@@ -156,6 +156,15 @@ EffectiveStiffness readEffectiveStiffness(std::istream& dat, const std::string& 
         }
         return used == t.size() && std::isfinite(x);
     };
+    const auto integer = [](const std::string& t, long& x) {
+        std::size_t used = 0;
+        try {
+            x = std::stol(t, &used);
+        } catch (const std::exception&) {
+            return false;
+        }
+        return used == t.size();
+    };
     while (std::getline(dat, line)) {
         ++lineNumber;
         while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) line.pop_back();
@@ -181,15 +190,6 @@ EffectiveStiffness readEffectiveStiffness(std::istream& dat, const std::string& 
         std::vector<std::string> tokens;
         for (std::string t; fields >> t;) tokens.push_back(t);
         long element = 0;
-        const auto integer = [](const std::string& t, long& x) {
-            std::size_t used = 0;
-            try {
-                x = std::stol(t, &used);
-            } catch (const std::exception&) {
-                return false;
-            }
-            return used == t.size();
-        };
         if (block == Block::Volume) {
             double v = 0.0;
             if (tokens.size() != 2 || !integer(tokens[0], element) || !number(tokens[1], v))

@@ -322,6 +322,13 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         int tag = 0;
         std::vector<std::size_t> nodes;     // classified here: nodes no earlier surface used
         std::vector<std::size_t> triangles; // 3 node tags each
+        /// Its triangles as node indices (Gmsh's tags are the indices + 1).
+        std::vector<std::array<std::size_t, 3>> indexed() const
+        {
+            std::vector<std::array<std::size_t, 3>> out;
+            for (std::size_t k = 0; k + 2 < triangles.size(); k += 3) out.push_back({triangles[k] - 1, triangles[k + 1] - 1, triangles[k + 2] - 1});
+            return out;
+        }
     };
     std::vector<Surface> patches;
     constexpr std::size_t kNoTow = static_cast<std::size_t>(-1);
@@ -427,8 +434,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         std::vector<std::array<std::size_t, 3>> boundary = surfaces.cell->triangles;
         for (const Surface& s : patches)
             if (std::find(matrixBounds.begin(), matrixBounds.end(), -s.tag) != matrixBounds.end())
-                for (std::size_t k = 0; k + 2 < s.triangles.size(); k += 3)
-                    boundary.push_back({s.triangles[k] - 1, s.triangles[k + 2] - 1, s.triangles[k + 1] - 1});
+                for (const auto& t : s.indexed()) boundary.push_back({t[0], t[2], t[1]});
         std::size_t pieces = 0;
         shellsOf(boundary, "the matrix", pieces);
         matrixVolume = detail::signedVolume(surfaces.nodes, boundary);
@@ -476,8 +482,10 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     std::optional<detail::GradedSize> grading;
     if (options.growthRate > 1.0) {
         std::vector<std::array<std::size_t, 3>> all;
-        for (const Surface& s : patches)
-            for (std::size_t k = 0; k + 2 < s.triangles.size(); k += 3) all.push_back({s.triangles[k] - 1, s.triangles[k + 1] - 1, s.triangles[k + 2] - 1});
+        for (const Surface& s : patches) {
+            const std::vector<std::array<std::size_t, 3>> own = s.indexed();
+            all.insert(all.end(), own.begin(), own.end());
+        }
         grading.emplace(surfaces.nodes, all, options.growthRate - 1.0, options.maxSize > 0.0 ? options.maxSize : -kAutoMaxSize);
     }
 
@@ -631,8 +639,8 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     detail::ConformityTarget target;
     for (std::size_t s = 0; s < patches.size(); ++s) {
         auto& list = patchTows[s][1] == kNoTow ? target.outer : target.between;
-        const std::vector<std::size_t>& tags = patches[s].triangles;
-        for (std::size_t k = 0; k + 2 < tags.size(); k += 3) list.push_back({tags[k] - 1, tags[k + 1] - 1, tags[k + 2] - 1});
+        const std::vector<std::array<std::size_t, 3>> own = patches[s].indexed();
+        list.insert(list.end(), own.begin(), own.end());
     }
     target.volume = std::move(enclosed);
     for (std::size_t t = 0; t < target.volume.size(); ++t) target.name.push_back(nameOf(t));
