@@ -26,6 +26,28 @@ enum class CellFace : unsigned char {
 /// "xmin", "xmax", "ymin", "ymax", "zmin" or "zmax".
 TOWGEOM_EXPORT const char* cellFaceName(CellFace face) noexcept;
 
+/// How a Cell cuts the tows.
+enum class CellCut : unsigned char {
+    /// Parametric for a periodic cell, Mesh otherwise.
+    Auto,
+    /// In each tow's (u,v) before meshing: each cut an exact curve around the tube, a constraint
+    /// of the tow's mesh; the faces must cut each tow at most once at each end, all around, away
+    /// from the box's edges (what a periodic cell needs: its faces' nodes pair up).
+    Parametric,
+    /// In the resolved meshes: every triangle clipped by the faces' planes (each new node on the
+    /// plane and, on a tow's own surface, on that surface), nodes closer to a plane than a fifth
+    /// of their shortest edge first moved onto it along their surface (where that fails, only
+    /// those within a fiftieth, straight); nodes of a tow touching a face (not cut by it) are
+    /// nodes of the face's mesh; each face meshed around
+    /// the cuts. Any box: a face may cut a tow several times, along its length, through its
+    /// overlaps with other tows, or at an edge or corner of the box; every piece is closed by its
+    /// caps. Not periodic.
+    Mesh
+};
+
+/// "auto", "parametric" or "mesh".
+TOWGEOM_EXPORT const char* cellCutName(CellCut cut) noexcept;
+
 /// An axis-aligned box in the user's units. With ResolveOptions::cell set, every tow is clipped
 /// by it: where a face's plane cuts a tow, the cut (the plane's intersection with the tow's
 /// surface, exact points at the tow's mesh size) is a constraint of the tow's mesh, the part
@@ -33,11 +55,16 @@ TOWGEOM_EXPORT const char* cellFaceName(CellFace face) noexcept;
 /// the box keeps no triangle. The box's faces are meshed around the caps (nodes shared with
 /// them): with the tows' surfaces, the closed surface of the matrix (TextileMesh::cell).
 ///
-/// What is clipped: a tow that crosses a face's plane once along its length, all around (one cut
-/// around the tube), inside the face's rectangle. Refused (towgeom::Error, InvalidArgument,
-/// naming the tow (and the face) or the tow pair): a tow that crosses a plane more than once,
-/// runs along it or crosses an edge of the box. Choose the cell's faces between crossings (for
-/// a woven unit cell: halfway between neighbouring yarns).
+/// Two ways to cut (#cut, CellCut). CellCut::Mesh (the default for a box that is not periodic)
+/// clips the resolved meshes: any box, wherever its faces, edges and corners meet the tows (a
+/// binder leaving the box and coming back is two pieces, both in its element set;
+/// TowResolution::pieces counts them). CellCut::Parametric (periodic cells) cuts each tow in
+/// its (u,v): what is clipped is a tow that crosses a face's plane once along its length, all
+/// around (one cut around the tube), inside the face's rectangle. Refused there
+/// (towgeom::Error, InvalidArgument, naming the tow (and the face) or the tow pair): a tow that
+/// crosses a plane more than once, runs along it or crosses an edge of the box. Choose a
+/// periodic cell's faces between crossings (for a woven unit cell: halfway between neighbouring
+/// yarns). The rest of this comment is about the parametric cut.
 ///
 /// A face may cut through an overlap of two tows that both cross it (tows pressed together
 /// along their length): where their intersection loop crosses the face, the point on both
@@ -80,12 +107,17 @@ struct TOWGEOM_EXPORT Cell {
     /// The box's faces' largest edge length, relative to the finest tow's mesh size (>= 1); see
     /// faceSizeGrowth.
     double faceSizeMax = 4.0;
+    /// How the faces cut the tows (CellCut); Parametric and Auto for a periodic cell.
+    CellCut cut = CellCut::Auto;
 
     /// Throws towgeom::Error (InvalidArgument) unless min < max on every axis, all finite,
-    /// periodTolerance > 0, faceSizeGrowth >= 0 and faceSizeMax >= 1, all finite.
+    /// periodTolerance > 0, faceSizeGrowth >= 0 and faceSizeMax >= 1, all finite, and a
+    /// periodic cell's cut is not CellCut::Mesh.
     void validate() const;
     /// The coordinate of @p face's plane.
     double plane(CellFace face) const;
+    /// True when the tows are cut in their meshes (CellCut::Mesh, or Auto without #periodic).
+    bool cutsMeshes() const { return cut == CellCut::Mesh || (cut == CellCut::Auto && !periodic); }
     /// The box's volume.
     double volume() const { return (max.x - min.x) * (max.y - min.y) * (max.z - min.z); }
 };

@@ -21,7 +21,11 @@ TOWGEOM_BEGIN_NAMESPACE
 enum class TowFace : unsigned char {
     Side,   ///< the tube (the fitted surface, or a region taken from another tow)
     Start,  ///< the cap closing the tow's first section
-    End     ///< the cap closing its last section
+    End,    ///< the cap closing its last section
+    /// A cap on a face of a cell (ResolveOptions::cell) that cut the tow, with CellCut::Mesh (a
+    /// tow may have several, on several faces); the parametric cut's caps are Start or End
+    /// triangles with TowMesh::cutAt set.
+    Cell
 };
 
 /// One tow's surface mesh: triangles over the global nodes, counter-clockwise seen from outside

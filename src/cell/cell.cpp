@@ -20,6 +20,16 @@ const char* cellFaceName(CellFace face) noexcept
     return "xmin";
 }
 
+const char* cellCutName(CellCut cut) noexcept
+{
+    switch (cut) {
+    case CellCut::Auto: return "auto";
+    case CellCut::Parametric: return "parametric";
+    case CellCut::Mesh: return "mesh";
+    }
+    return "auto";
+}
+
 void Cell::validate() const
 {
     const double lo[3] = {min.x, min.y, min.z}, hi[3] = {max.x, max.y, max.z};
@@ -36,6 +46,8 @@ void Cell::validate() const
         throw Error(ErrorCode::InvalidArgument, "the growth of the cell's face size must be >= 0 and finite");
     if (!(faceSizeMax >= 1.0 && std::isfinite(faceSizeMax)))
         throw Error(ErrorCode::InvalidArgument, "the cell's largest face size (relative to the tows' size) must be >= 1 and finite");
+    if (periodic && cut == CellCut::Mesh)
+        throw Error(ErrorCode::InvalidArgument, "a periodic cell is cut parametrically: its faces' nodes must pair up (CellCut::Mesh is not periodic)");
 }
 
 double Cell::plane(CellFace face) const

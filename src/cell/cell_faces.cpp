@@ -1,7 +1,5 @@
 #include "cell/cell_faces.hpp"
 
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
 #include <CGAL/Polygon_2_algorithms.h>
 
 #include <algorithm>
@@ -14,6 +12,8 @@
 #include <utility>
 
 #include "cell/axis.hpp"
+#include "cell/box_edges.hpp"
+#include "cell/face_size.hpp"
 #include "mesh/constraint_keeping_mesher.hpp"
 #include "mesh/graded_size_criteria.hpp"
 #include "mesh/mesh_cdt.hpp"
@@ -29,62 +29,6 @@ using Triangle = std::array<std::size_t, 3>;
 
 namespace {
 
-/// The face's two in-plane axes, in increasing order.
-std::array<int, 2> inPlane(int a) { return a == 0 ? std::array<int, 2>{1, 2} : a == 1 ? std::array<int, 2>{0, 2} : std::array<int, 2>{0, 1}; }
-
-/// The nodes of the box's corners and edges, made once and shared by the faces that meet there.
-class BoxEdges {
-public:
-    BoxEdges(const Cell& cell, double h, std::vector<Point3>& nodes) : cell_(cell), h_(h), nodes_(nodes) {}
-    /// The nodes along the edge parallel to axis @p e at the sides @p side of the other two axes
-    /// (side[e] ignored), in increasing coordinate e, both corners included.
-    const std::vector<std::size_t>& edge(int e, std::array<int, 3> side)
-    {
-        side[static_cast<std::size_t>(e)] = -1;
-        const std::array<int, 4> key{e, side[0], side[1], side[2]};
-        auto it = edges_.find(key);
-        if (it != edges_.end()) return it->second;
-        const double lo = coord(cell_.min, e), hi = coord(cell_.max, e);
-        const std::size_t n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil((hi - lo) / h_)));
-        std::vector<std::size_t> list;
-        for (std::size_t i = 0; i <= n; ++i) {
-            std::array<int, 3> at = side;
-            if (i == 0 || i == n) {
-                at[static_cast<std::size_t>(e)] = i == 0 ? 0 : 1;
-                list.push_back(corner(at));
-                continue;
-            }
-            Point3 p = pointAt(at);
-            coord(p, e) = lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(n);
-            list.push_back(nodes_.size());
-            nodes_.push_back(p);
-        }
-        return edges_.emplace(key, std::move(list)).first->second;
-    }
-
-private:
-    std::size_t corner(const std::array<int, 3>& side)
-    {
-        const int key = side[0] + 2 * side[1] + 4 * side[2];
-        auto it = corners_.find(key);
-        if (it != corners_.end()) return it->second;
-        nodes_.push_back(pointAt(side));
-        return corners_.emplace(key, nodes_.size() - 1).first->second;
-    }
-    Point3 pointAt(const std::array<int, 3>& side) const
-    {
-        Point3 p;
-        for (int a = 0; a < 3; ++a) coord(p, a) = side[static_cast<std::size_t>(a)] == 1 ? coord(cell_.max, a) : coord(cell_.min, a);
-        return p;
-    }
-
-    const Cell& cell_;
-    double h_;
-    std::vector<Point3>& nodes_;
-    std::map<std::array<int, 4>, std::vector<std::size_t>> edges_;
-    std::map<int, std::size_t> corners_;
-};
-
 /// A cut on a face: the tow, the end it closes, its nodes around.
 struct FaceCut {
     std::size_t tow = 0;
@@ -99,78 +43,6 @@ struct FaceMesh {
     std::vector<long> cut;
     std::vector<std::vector<long>> alsoIn;  ///< per triangle: the other cuts it lies in (lower-ranked tows')
     std::vector<std::size_t> boundary;  ///< the rectangle's nodes, counter-clockwise from (min, min)
-};
-
-/// The rectangle of face (@p a, @p s) counter-clockwise in its (b, c) plane.
-std::vector<std::size_t> rectangle(BoxEdges& edges, int a, int s)
-{
-    const auto [b, c] = inPlane(a);
-    std::array<int, 3> side{};
-    side[static_cast<std::size_t>(a)] = s;
-    std::vector<std::size_t> out;
-    const auto append = [&](std::vector<std::size_t> part, bool backwards) {
-        if (backwards) std::reverse(part.begin(), part.end());
-        out.insert(out.end(), part.begin(), part.end() - 1);  // the last is the next part's first
-    };
-    side[static_cast<std::size_t>(c)] = 0;
-    append(edges.edge(b, side), false);
-    side[static_cast<std::size_t>(b)] = 1;
-    append(edges.edge(c, side), false);
-    side[static_cast<std::size_t>(c)] = 1;
-    append(edges.edge(b, side), true);
-    side[static_cast<std::size_t>(b)] = 0;
-    append(edges.edge(c, side), true);
-    return out;
-}
-
-/// The tows' surface nodes, for the distance from a point of a face to the nearest tow.
-using NodeTraits = CGAL::Search_traits_3<K>;
-using NearestNode = CGAL::Orthogonal_k_neighbor_search<NodeTraits>;
-
-/// How a face's edge length grows away from the tows (Cell::faceSizeGrowth, faceSizeMax).
-struct FaceGrading {
-    double growth = 0.0;                        ///< per unit of distance from the nearest tow
-    double maxFactor = 1.0;                     ///< at most this times the tows' size
-    const NearestNode::Tree* towNodes = nullptr;  ///< every tow's surface nodes (built)
-};
-
-/// The edge length wanted at a point of a face: the tows' size within each cut's bounding box
-/// (where its cap is), elsewhere growing with the distance to the nearest tow node (in 3D, so a
-/// face is finer where a tow passes close to it without crossing it). A periodic cell's min face
-/// is also the max face: its point there counts too (@p planes: both coordinates).
-class FaceSize {
-public:
-    FaceSize(const std::vector<std::vector<K::Point_2>>& cuts, int axis, std::vector<double> planes, double h, const FaceGrading& grading)
-        : axis_(axis), planes_(std::move(planes)), h_(h), grading_(grading)
-    {
-        for (const auto& cut : cuts) boxes_.push_back(CGAL::bbox_2(cut.begin(), cut.end()));
-    }
-    double operator()(const K::Point_2& p) const
-    {
-        const double hMax = h_ * grading_.maxFactor;
-        if (grading_.growth == 0.0 || hMax <= h_) return h_;
-        for (const CGAL::Bbox_2& b : boxes_)
-            if (p.x() >= b.xmin() && p.x() <= b.xmax() && p.y() >= b.ymin() && p.y() <= b.ymax()) return h_;
-        if (!grading_.towNodes || grading_.towNodes->empty()) return hMax;
-        const auto [b, c] = inPlane(axis_);
-        double nearest2 = std::numeric_limits<double>::infinity();
-        for (const double at : planes_) {
-            Point3 q;
-            coord(q, axis_) = at;
-            coord(q, b) = p.x();
-            coord(q, c) = p.y();
-            const NearestNode search(*grading_.towNodes, K::Point_3(q.x, q.y, q.z), 1);
-            nearest2 = std::min(nearest2, search.begin()->second);
-        }
-        return std::min(hMax, h_ + grading_.growth * std::sqrt(nearest2));
-    }
-
-private:
-    int axis_;
-    std::vector<double> planes_;
-    double h_;
-    FaceGrading grading_;
-    std::vector<CGAL::Bbox_2> boxes_;
 };
 
 /// Meshes the face of axis @p a at coordinate @p at: the rectangle @p boundary with @p cuts inside.
@@ -348,17 +220,17 @@ CellFaces meshCellFaces(const std::vector<TowSurface>& tows, const Cell& cell, c
         const bool ccwAlongA = a != 1;
         const CellFace lo = static_cast<CellFace>(2 * a), hi = static_cast<CellFace>(2 * a + 1);
         const std::vector<FaceCut> onLo = cutsOn(lo), onHi = cutsOn(hi);
-        const FaceMesh mLo = meshFace(tows, lo, a, coord(cell.min, a), rectangle(edges, a, 0), onLo, h, grading, minAngle, nodes, rank,
+        const FaceMesh mLo = meshFace(tows, lo, a, coord(cell.min, a), edges.rectangle(a, 0), onLo, h, grading, minAngle, nodes, rank,
                                       cell.periodic ? std::optional<double>(coord(cell.max, a)) : std::nullopt);
         add(lo, mLo, onLo, !ccwAlongA);
         if (!cell.periodic) {
-            add(hi, meshFace(tows, hi, a, coord(cell.max, a), rectangle(edges, a, 1), onHi, h, grading, minAngle, nodes, rank), onHi, ccwAlongA);
+            add(hi, meshFace(tows, hi, a, coord(cell.max, a), edges.rectangle(a, 1), onHi, h, grading, minAngle, nodes, rank), onHi, ccwAlongA);
             continue;
         }
         // The min face moved onto the max face: its rectangle, its cuts (the same tow's, same
         // stations) and its own nodes moved.
         FaceMesh mHi;
-        mHi.boundary = rectangle(edges, a, 1);
+        mHi.boundary = edges.rectangle(a, 1);
         std::map<std::size_t, std::size_t> partner;
         for (std::size_t k = 0; k < mLo.boundary.size(); ++k) partner[mLo.boundary[k]] = mHi.boundary[k];
         std::vector<long> cutOf(onLo.size(), -1);

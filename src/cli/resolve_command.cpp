@@ -218,15 +218,26 @@ Options:
                      clip every tow by this box (a unit cell for finite elements): where a face
                      cuts a tow the tow is closed by a flat cap on the face; the faces are meshed
                      around the caps (shared nodes) and, with --volume, the matrix is filled
-                     too. The faces must cut tows across, away from crossings and from the box's
-                     edges (else exit 2 naming the tow): for a woven cell, halfway between yarns.
-                     A face may cut through an overlap of two tows that both cross it (tows
-                     pressed together): the lower-ranked tow's cap there gives way.
+                     too. Any box (--cell-cut mesh, the default without --periodic): a face may
+                     cut a tow several times (a binder leaving and coming back: its pieces all
+                     in its element set, counted in report.json's "pieces"), along its length,
+                     through overlaps, at the box's edges and corners.
                      A tow wholly outside the box gets no NAME.stl / NAME.vtk. report.json gains
                      "cell". DIR/textile.json: the unit cell `towgeom generate` wrote there (one
                      repeat of a 2D weave, faces halfway between yarns, periodic; it writes one
                      when there are at least a repeat + 2 wefts and warps, e.g. 6 x 6 for a 2/2
                      twill)
+  --cell-cut auto|parametric|mesh
+                     how --cell cuts the tows. mesh: the resolved meshes clipped by the faces'
+                     planes (new nodes on the planes and on the tows' exact surfaces; nodes
+                     within a fifth of an edge of a plane moved onto it along their surface),
+                     any box, not periodic.
+                     parametric: each cut an exact curve in the tow's (u,v), a constraint of its
+                     mesh; the faces must then cut tows across once, away from the box's edges
+                     (else exit 2 naming the tow): for a woven cell, halfway between yarns; a
+                     face may cut through an overlap of two tows that both cross it (the
+                     lower-ranked tow's cap there gives way). auto (default): parametric with
+                     --periodic, else mesh
   --periodic         with --cell: the textile repeats with the box; the max faces' meshes are
                      the min faces' moved by the box (every node has its partner at exactly +L),
                      refused (exit 2) where a tow's cuts on opposite faces differ by more than
@@ -336,7 +347,7 @@ int runResolve(int argc, char** argv, int first)
                         {{"help"}, {"quiet"}, {"allow-open"}, {"out", true}, {"primary", true}, {"mesh-size", true},
                          {"min-angle", true}, {"loop-spacing", true}, {"formats", true}, {"tolerance", true},
                          {"threads", true}, {"max-triangles", true}, {"no-caps"}, {"report", true}, {"volume"},
-                         {"cell", true}, {"periodic"}, {"face-grading", true}, {"order", true}, {"volume-grading", true}, {"load-cases"}, {"tow-material", true}, {"matrix-material", true}, {"method", true}, {"shrink-both"}, {"report-methods", true}, {"knot-spans"}});
+                         {"cell", true}, {"cell-cut", true}, {"periodic"}, {"face-grading", true}, {"order", true}, {"volume-grading", true}, {"load-cases"}, {"tow-material", true}, {"matrix-material", true}, {"method", true}, {"shrink-both"}, {"report-methods", true}, {"knot-spans"}});
         if (args.has("help")) {
             std::cout << kResolveHelp;
             return kExitOk;

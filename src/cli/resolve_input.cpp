@@ -17,6 +17,15 @@ void readResolveOptions(const Args& args, ResolveOptions& o)
     o.threads = args.threads();
     if (const auto cell = args.value("cell")) o.cell = parseCell(*cell, args.has("periodic"));
     else if (args.has("periodic")) throw UsageError("--periodic needs --cell");
+    if (const auto cut = args.value("cell-cut")) {
+        if (!o.cell) throw UsageError("--cell-cut needs --cell");
+        if (*cut == "auto") o.cell->cut = CellCut::Auto;
+        else if (*cut == "parametric") o.cell->cut = CellCut::Parametric;
+        else if (*cut == "mesh") o.cell->cut = CellCut::Mesh;
+        else throw UsageError("--cell-cut takes auto, parametric or mesh, not '" + *cut + "'");
+        if (o.cell->periodic && o.cell->cut == CellCut::Mesh)
+            throw UsageError("--cell-cut mesh is not periodic: a --periodic cell is cut parametrically");
+    }
     if (args.has("report") && o.intersection.tolerance > 0.0)
         throw UsageError("--tolerance has no effect with --report: the loops were computed with the report's tolerance");
 }

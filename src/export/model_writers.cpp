@@ -66,6 +66,18 @@ std::vector<std::string> towLabels(const TextileMesh& mesh)
 /// True when triangle @p k of @p m lies on one of its end caps.
 bool isCap(const TowMesh& m, std::size_t k) { return k < m.face.size() && m.face[k] != TowFace::Side; }
 
+/// The face of @p box whose plane the three nodes of @p t lie on (a TowFace::Cell cap's).
+CellFace cellFaceOf(const Cell& box, const std::vector<Point3>& nodes, const std::array<std::size_t, 3>& t)
+{
+    for (int f = 0; f < 6; ++f) {
+        const CellFace face = static_cast<CellFace>(f);
+        const double at = box.plane(face);
+        const auto on = [&](std::size_t n) { return (f < 2 ? nodes[n].x : f < 4 ? nodes[n].y : nodes[n].z) == at; };
+        if (on(t[0]) && on(t[1]) && on(t[2])) return face;
+    }
+    throw Error(ErrorCode::Internal, "a cap on the cell lies on none of its faces");
+}
+
 }  // namespace
 
 namespace {
@@ -132,20 +144,19 @@ void writeGmshModel(const TextileMesh& mesh, const VolumeMesh* volumes, std::ost
     for (std::size_t t = 0; t < towCount; ++t) {
         const TowMesh& m = mesh.tows[t];
         Entity side, caps;
-        std::array<Entity, 2> onCell;  // its caps on the cell's faces, at its start and end
-        side.physical = {t + 1};
-        caps.physical = {t + 1, capGroup[t]};
-        side.bounds = caps.bounds = {{t, 1}};
-        if (mesh.cell) side.bounds.emplace_back(matrix, -1), caps.bounds.emplace_back(matrix, -1);
-        for (std::size_t end = 0; end < 2; ++end)
-            if (m.cutAt[end]) {
-                onCell[end].physical = {t + 1, capGroup[t], faceGroup[static_cast<std::size_t>(*m.cutAt[end])]};
-                onCell[end].bounds = {{t, 1}};
-            }
+        std::array<Entity, 6> onCell;  // its caps on the cell's faces, per face
+        for (std::size_t f = 0; f < 6; ++f) {
+            onCell[f].physical = {t + 1, capGroup[t], faceGroup[f]};
+            onCell[f].bounds = {{t, 1}};
+        }
         for (std::size_t k = 0; k < m.triangles.size(); ++k) {
             if (m.region[k] >= 0) continue;
             const std::size_t end = k < m.face.size() && m.face[k] == TowFace::End ? 1 : 0;
-            Entity& e = !isCap(m, k) ? side : m.cutAt[end] ? onCell[end] : caps;
+            const bool cellCap = k < m.face.size() && m.face[k] == TowFace::Cell && mesh.cell;
+            Entity& e = !isCap(m, k)   ? side
+                        : cellCap      ? onCell[static_cast<std::size_t>(cellFaceOf(mesh.cell->box, mesh.nodes, m.triangles[k]))]
+                        : m.cutAt[end] ? onCell[static_cast<std::size_t>(*m.cutAt[end])]
+                                       : caps;
             e.triangles.push_back(m.triangles[k]);
         }
         add(std::move(side));

@@ -185,7 +185,7 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
         if (c.node >= mesh.nodes.size()) throw Error(ErrorCode::InvalidArgument, "a sharp corner's node is out of range");
         const Point3& x = mesh.nodes[c.node];
         corners.push_back({{"tow", towName(tows, c.tow)},
-                           {"face", c.face == TowFace::Side ? "side" : c.face == TowFace::Start ? "start" : "end"},
+                           {"face", c.face == TowFace::Side ? "side" : c.face == TowFace::Start ? "start" : c.face == TowFace::End ? "end" : "cell"},
                            {"node", c.node},
                            {"point", {x.x, x.y, x.z}},
                            {"angle_deg", c.angle}});
@@ -219,6 +219,7 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
         j["cell"] = {{"min", {c.min.x, c.min.y, c.min.z}},
                      {"max", {c.max.x, c.max.y, c.max.z}},
                      {"periodic", c.periodic},
+                     {"cut", c.cutsMeshes() ? "mesh" : "parametric"},
                      {"face_size_growth", c.faceSizeGrowth},
                      {"face_size_max", c.faceSizeMax},
                      {"volume", c.volume()},

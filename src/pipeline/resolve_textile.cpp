@@ -191,7 +191,9 @@ ResolveResult meshWithPlan(const std::vector<TowSurface>& tows, const Intersecti
     for (double x : plan.towH) towHInFrame.push_back(frame.lengthToFrame(x));
     o.mesh.loopSpacing = frame.lengthToFrame(options.mesh.loopSpacing);
     o.intersection = detail::optionsInFrame(options.intersection, frame);
-    if (options.cell) {
+    if (options.cell && options.cell->cutsMeshes()) {
+        o.cell.reset();  // connectRegions() clips the resolved meshes
+    } else if (options.cell) {
         o.cell->min = frame.toFrame(options.cell->min);
         o.cell->max = frame.toFrame(options.cell->max);
     }

@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "cell/face_crossings.hpp"
+#include "cell/mesh_clip.hpp"
 #include "core/parallel.hpp"
 #include "core/progress_report.hpp"
 #include "mesh/mesh_measures.hpp"
@@ -835,6 +836,11 @@ ResolveResult connectRegions(const std::vector<TowSurface>& tows, ResolveResult 
 {
     if (options.method == ResolutionMethod::Shrink)
         throw Error(ErrorCode::InvalidArgument, "the shrink method changes the tows before they are meshed: use resolveTextile() or shrinkTows()");
+    if (options.cell && options.cell->cutsMeshes()) {  // the cell clips the resolved meshes
+        ResolveOptions uncut = options;
+        uncut.cell.reset();
+        return detail::clipResultToCell(tows, connectRegions(tows, std::move(meshed), uncut), options);
+    }
     const Clock::time_point t0 = Clock::now();
     const Parametric uv = readParametric(tows, meshed);
     detail::sayStage(options, "connecting " + std::to_string(meshed.mesh.loops.size()) + " regions");

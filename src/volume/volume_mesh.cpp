@@ -310,9 +310,52 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     for (const std::exception_ptr& e : refused)
         if (e) std::rethrow_exception(e);
     for (std::size_t t = 0; t < towCount; ++t) firstVolume[t + 1] = firstVolume[t] + shellCount[t];
-    // Clipped to a cell: the matrix is one more volume, "tow" towCount.
+    // Clipped to a cell: the matrix, "tow" towCount, is one volume per piece: its boundary (the
+    // box's faces minus the caps, and every tow's free triangles reversed) split into shells; a
+    // shell enclosing a positive volume is a piece (a pocket sealed by tows against the box's
+    // faces is one more), one enclosing a negative volume a tow wholly inside, a hole of the
+    // largest piece.
     const bool matrix = surfaces.cell.has_value();
-    std::vector<std::size_t> volumeTow(firstVolume[towCount] + (matrix ? 1 : 0), towCount);
+    const auto onCellFace = [&](const TowMesh& m, std::size_t k) {
+        return k < m.face.size() && (m.face[k] == TowFace::Cell || (m.face[k] == TowFace::Start && m.cutAt[0]) ||
+                                     (m.face[k] == TowFace::End && m.cutAt[1]));
+    };
+    std::vector<std::array<std::size_t, 3>> matrixBoundary;  // the cell's triangles, then each tow's free ones reversed
+    std::vector<std::size_t> matrixShell;                     // per triangle of matrixBoundary
+    std::vector<std::size_t> firstFree(towCount + 1, 0);      // tow t's free triangles from matrixBoundary[firstFree[t]]
+    std::vector<std::size_t> pieceOfShell;                    // matrix volume (from firstVolume[towCount]) of each shell
+    double matrixVolume = 0.0;                                // enclosed by its boundary, for the check of the tetrahedra
+    std::size_t matrixPieces = 0;
+    if (matrix) {
+        matrixBoundary = surfaces.cell->triangles;
+        for (std::size_t t = 0; t < towCount; ++t) {
+            firstFree[t] = matrixBoundary.size();
+            const TowMesh& m = surfaces.tows[t];
+            for (std::size_t k = 0; k < m.triangles.size(); ++k)
+                if (m.region[k] < 0 && !onCellFace(m, k)) matrixBoundary.push_back({m.triangles[k][0], m.triangles[k][2], m.triangles[k][1]});
+        }
+        firstFree[towCount] = matrixBoundary.size();
+        std::size_t shells = 0;
+        matrixShell = shellsOf(matrixBoundary, "the matrix", shells);
+        std::vector<std::vector<std::array<std::size_t, 3>>> byShell(shells);
+        for (std::size_t k = 0; k < matrixBoundary.size(); ++k) byShell[matrixShell[k]].push_back(matrixBoundary[k]);
+        std::vector<double> enclosedBy(shells);
+        for (std::size_t i = 0; i < shells; ++i) {
+            enclosedBy[i] = detail::signedVolume(surfaces.nodes, byShell[i]);
+            matrixVolume += enclosedBy[i];
+        }
+        const std::size_t largest = static_cast<std::size_t>(std::max_element(enclosedBy.begin(), enclosedBy.end()) - enclosedBy.begin());
+        pieceOfShell.assign(shells, 0);
+        std::size_t largestPiece = 0;
+        for (std::size_t i = 0; i < shells; ++i)
+            if (enclosedBy[i] > 0.0) {
+                if (i == largest) largestPiece = matrixPieces;
+                pieceOfShell[i] = matrixPieces++;
+            }
+        for (std::size_t i = 0; i < shells; ++i)
+            if (!(enclosedBy[i] > 0.0)) pieceOfShell[i] = largestPiece;
+    }
+    std::vector<std::size_t> volumeTow(firstVolume[towCount] + matrixPieces, towCount);
     for (std::size_t t = 0; t < towCount; ++t)
         for (std::size_t v = firstVolume[t]; v < firstVolume[t + 1]; ++v) volumeTow[v] = t;
     const auto nameOf = [&](std::size_t t) { return t < towCount ? "tow '" + surfaces.tows[t].name + "'" : std::string("the matrix"); };
@@ -351,38 +394,36 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
             s.triangles.push_back(n + 1);
         }
     };
-    // Each shell's own triangles in two parts: on the cell's faces (its caps where the cell cut
-    // it), and the rest, which the matrix shares.
-    std::vector<int> matrixBounds;
+    // Each shell's own triangles in parts: on the cell's faces (its caps where the cell cut it),
+    // and the rest, which the matrix shares, split by the matrix's piece it bounds.
+    const auto matrixPiece = [&](std::size_t boundaryTriangle) { return firstVolume[towCount] + pieceOfShell[matrixShell[boundaryTriangle]]; };
     for (std::size_t t = 0; t < towCount; ++t) {
         const TowMesh& m = surfaces.tows[t];
         giver.push_back(nameOf(t));
-        const auto onCell = [&](std::size_t k) {
-            return (m.face[k] == TowFace::Start && m.cutAt[0]) || (m.face[k] == TowFace::End && m.cutAt[1]);
-        };
-        for (std::size_t v = firstVolume[t]; v < firstVolume[t + 1]; ++v)
-            for (const bool cellPart : {false, true}) {
-                Surface s{static_cast<int>(patches.size()) + 1, {}, {}};
-                for (std::size_t k = 0; k < m.triangles.size(); ++k)
-                    if (m.region[k] < 0 && firstVolume[t] + shell[t][k] == v && (k < m.face.size() && onCell(k)) == cellPart)
-                        add(s, m.triangles[k]);
-                if (s.triangles.empty()) continue;
-                bounds[v].push_back(s.tag);
-                if (!cellPart) matrixBounds.push_back(-s.tag);  // the tow's outward normal points into the matrix
-                patches.push_back(std::move(s));
-                patchTows.push_back({t, cellPart || !matrix ? kNoTow : towCount});
-            }
+        std::map<std::pair<std::size_t, std::size_t>, Surface> parts;  // (volume, matrix volume or kNoTow)
+        for (std::size_t k = 0, free = firstFree[t]; k < m.triangles.size(); ++k) {
+            if (m.region[k] >= 0) continue;
+            const bool cellPart = onCellFace(m, k);
+            const std::size_t beside = !matrix || cellPart ? kNoTow : matrixPiece(free++);
+            add(parts[{firstVolume[t] + shell[t][k], beside}], m.triangles[k]);
+        }
+        for (auto& [key, part] : parts) {
+            part.tag = static_cast<int>(patches.size()) + 1;
+            bounds[key.first].push_back(part.tag);
+            if (key.second != kNoTow) bounds[key.second].push_back(-part.tag);  // the tow's outward normal points into the matrix
+            patches.push_back(std::move(part));
+            patchTows.push_back({t, key.second == kNoTow ? kNoTow : towCount});
+        }
     }
-    if (matrix) {  // the box's faces minus the tows' caps, outward
+    if (matrix) {  // the box's faces minus the tows' caps, outward, by face and piece
         const CellMesh& cell = *surfaces.cell;
         giver.push_back("the cell's faces");
-        for (std::size_t f = 0; f < 6; ++f) {
-            Surface s{static_cast<int>(patches.size()) + 1, {}, {}};
-            for (std::size_t k = 0; k < cell.triangles.size(); ++k)
-                if (static_cast<std::size_t>(cell.face.at(k)) == f) add(s, cell.triangles[k]);
-            if (s.triangles.empty()) continue;
-            matrixBounds.push_back(s.tag);
-            patches.push_back(std::move(s));
+        std::map<std::pair<std::size_t, std::size_t>, Surface> parts;  // (face, matrix volume)
+        for (std::size_t k = 0; k < cell.triangles.size(); ++k) add(parts[{static_cast<std::size_t>(cell.face.at(k)), matrixPiece(k)}], cell.triangles[k]);
+        for (auto& [key, part] : parts) {
+            part.tag = static_cast<int>(patches.size()) + 1;
+            bounds[key.second].push_back(part.tag);
+            patches.push_back(std::move(part));
             patchTows.push_back({towCount, kNoTow});
         }
     }
@@ -428,18 +469,6 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         if (given[i].first == given[i - 1].first)
             throw Error(ErrorCode::InvalidArgument, giver[std::max(given[i].second, given[i - 1].second)] +
                                                         ": a surface triangle belongs to two regions or to a region and a tow's own surface");
-    double matrixVolume = 0.0;  // enclosed by its boundary, for the check of the tetrahedra
-    if (matrix) {
-        // The matrix's boundary must be closed too: the box's faces and the tows' free surfaces.
-        std::vector<std::array<std::size_t, 3>> boundary = surfaces.cell->triangles;
-        for (const Surface& s : patches)
-            if (std::find(matrixBounds.begin(), matrixBounds.end(), -s.tag) != matrixBounds.end())
-                for (const auto& t : s.indexed()) boundary.push_back({t[0], t[2], t[1]});
-        std::size_t pieces = 0;
-        shellsOf(boundary, "the matrix", pieces);
-        matrixVolume = detail::signedVolume(surfaces.nodes, boundary);
-        bounds.back() = matrixBounds;
-    }
     for (std::size_t v = 0; v < bounds.size(); ++v)
         if (bounds[v].empty()) throw Error(ErrorCode::Internal, nameOf(volumeTow[v]) + ": a piece of it has no surface");
     // What the tetrahedra must fill (checked after meshing): each tow's surface faces out.
