@@ -23,6 +23,9 @@
 // resolved; a subfolder per seed when --count is above 1);
 // --detect-only stops after detect and prints its counts (for profiling).
 //   bench_scan_family --large [--first SEED] [--threads T] [--dump DIR] [--detect-only] [--smoke]
+// With --large --cell the same textile is cut by a box inset a tenth of its extent from each side
+// and meshed into tetrahedra: issue 39's goal, fit to tetrahedra <= 5 min on 2 cores.
+//   bench_scan_family --large --cell [--first SEED] [--threads T] [--smoke]
 #include <towgeom/towgeom.hpp>
 
 #include <sys/resource.h>
@@ -315,12 +318,73 @@ int runLarge(unsigned seed, std::size_t threads, bool smoke, bool detectOnly, co
     return goals.exitStatus();
 }
 
+/// Issue 39's scan cell: largeScanLikeTextile(seed) cut by a box inset a tenth of the textile's
+/// extent from each side (its faces cut binders several times, tows along their length and at
+/// the box's edges), resolved and meshed into tetrahedra (--volume's defaults) on @p threads
+/// threads. Goal: fit to tetrahedra <= 5 min on 2 cores; every tow closed, the tetrahedra filling
+/// the box (meshVolumes checks that they conform).
+int runLargeCell(unsigned seed, std::size_t threads, bool smoke)
+{
+    towgeom::bench::Goals goals(smoke);
+    const auto start = std::chrono::steady_clock::now();
+    const towgeom::testing::ScanLikeTextile t = towgeom::testing::largeScanLikeTextile(seed);
+    const std::vector<towgeom::TowSurface> tows = towgeom::testing::fitAll(t.stacks);
+    towgeom::BoundingBox all;
+    for (const towgeom::TowSurface& tow : tows) {
+        all.add(tow.boundingBox().min);
+        all.add(tow.boundingBox().max);
+    }
+    towgeom::Cell cell;
+    const towgeom::Vector3 inset = 0.1 * (all.max - all.min);
+    cell.min = all.min + inset;
+    cell.max = all.max - inset;
+    towgeom::ResolveOptions options;
+    options.threads = threads;
+    options.cell = cell;
+    auto t0 = std::chrono::steady_clock::now();
+    const towgeom::ResolveResult r = towgeom::resolveTextile(tows, options);
+    const double resolveSeconds = since(t0);
+    towgeom::VolumeMeshOptions volumeOptions;
+    volumeOptions.threads = threads;
+    t0 = std::chrono::steady_clock::now();
+    const towgeom::VolumeMesh v = towgeom::meshVolumes(r.mesh, volumeOptions);
+    const double volumeSeconds = since(t0);
+    const double total = since(start);
+    double filled = 0.0;
+    for (std::size_t k = 0; k < v.tetrahedra.size(); ++k) filled += std::abs(v.tetrahedronVolume(k));
+    std::size_t inside = 0, pieces = 0, notClosed = 0;
+    for (std::size_t k = 0; k < tows.size(); ++k) {
+        if (r.mesh.tows[k].triangles.empty()) continue;
+        ++inside;
+        pieces += r.tows[k].pieces;
+        notClosed += r.tows[k].boundaryLoops > 0;
+    }
+    std::printf("towgeom bench_scan_family --large --cell: seed %u, %s, %zu tows, %zu threads; box (%.3g, %.3g, %.3g) to (%.3g, %.3g, %.3g)\n",
+                seed, t.choices.describe().c_str(), tows.size(), threads, cell.min.x, cell.min.y, cell.min.z, cell.max.x, cell.max.y,
+                cell.max.z);
+    std::printf("  %zu tows in the box in %zu pieces, %zu unresolved pair(s); %zu tetrahedra, filling the box within %.2g; peak memory %.0f MiB\n",
+                inside, pieces, towgeom::unresolvedPairs(r).size(), v.tetrahedra.size(), std::abs(filled - cell.volume()) / cell.volume(),
+                peakMiB());
+    std::printf("%-28s %10s\n", "stage", "seconds");
+    std::printf("%-28s %10.2f\n", "intersect", r.timings.intersect / 1000.0);
+    std::printf("%-28s %10.2f\n", "mesh", r.timings.mesh / 1000.0);
+    std::printf("%-28s %10.2f\n", "regions and the cell's clip", r.timings.regions / 1000.0);
+    std::printf("%-28s %10.2f\n", "resolve in all", resolveSeconds);
+    std::printf("%-28s %10.2f  (Gmsh %.2f)\n", "volume", volumeSeconds, v.gmshSeconds);
+    std::printf("%-28s %10.2f  (goal <= 300 s)\n", "fit to tetrahedra", total);
+    goals.require("the textile has a real scan's size (>= 50 tows)", tows.size() >= 50);
+    goals.require("every tow in the box closed", notClosed == 0);
+    goals.require("the tetrahedra fill the box within 1e-9", std::abs(filled - cell.volume()) <= 1e-9 * cell.volume());
+    goals.secondsAtMost("fit to tetrahedra", total, 300.0);
+    return goals.exitStatus();
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
 {
     unsigned count = 500, first = 1;
-    bool smoke = false, resolve = false, oracle = true, large = false, detectOnly = false, verbose = false;
+    bool smoke = false, resolve = false, oracle = true, large = false, detectOnly = false, verbose = false, cell = false;
     std::size_t threads = 2;
     std::string dump;
     for (int k = 1; k < argc; ++k) {
@@ -329,6 +393,7 @@ int main(int argc, char** argv)
         else if (a == "--resolve") resolve = true;
         else if (a == "--no-oracle") oracle = false;
         else if (a == "--large") large = true;
+        else if (a == "--cell") cell = true;
         else if (a == "--detect-only") detectOnly = true;
         else if (a == "--verbose") verbose = true;
         else if (a == "--threads" && k + 1 < argc) threads = std::stoul(argv[++k]);
@@ -337,10 +402,12 @@ int main(int argc, char** argv)
         else if (a == "--first" && k + 1 < argc) first = static_cast<unsigned>(std::stoul(argv[++k]));
         else {
             std::fprintf(stderr, "usage: bench_scan_family [--count N] [--first SEED] [--resolve [--verbose]] [--no-oracle] [--dump DIR] [--smoke]\n"
-                                 "       bench_scan_family --large [--first SEED] [--threads T] [--dump DIR] [--detect-only] [--smoke]\n");
+                                 "       bench_scan_family --large [--first SEED] [--threads T] [--dump DIR] [--detect-only] [--smoke]\n"
+                                 "       bench_scan_family --large --cell [--first SEED] [--threads T] [--smoke]\n");
             return 2;
         }
     }
+    if (large && cell) return runLargeCell(first, threads, smoke);
     if (large) return runLarge(first, threads, smoke, detectOnly, dump);
     ResolveTally tally;
     towgeom::bench::Goals goals(smoke);

@@ -242,6 +242,7 @@ TEST_CASE("knot-span classification of a cell-clipped twill: faces on knot lines
     const std::vector<TowSurface> tows = testing::fittedTwill22();
     ResolveOptions o;
     o.cell = Cell{{-0.5, -0.5, -1.0}, {3.5, 3.5, 1.0}};
+    o.cell->cut = CellCut::Parametric;  // cuts along the tows' sections
     const ResolveResult res = resolveTextile(tows, o);
     std::size_t trimmed = 0, invalid = 0;
     for (std::size_t t = 0; t < tows.size(); ++t) {

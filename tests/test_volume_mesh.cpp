@@ -82,7 +82,7 @@ void checkConforming(const ResolveResult& res, const VolumeMesh& v)
             const auto& tri = m.triangles[k];
             std::vector<std::size_t>& bounds = surfaceTows[sorted(tri[0], tri[1], tri[2])];
             bounds.push_back(t);
-            const bool onBox = (m.face[k] == TowFace::Start && m.cutAt[0]) || (m.face[k] == TowFace::End && m.cutAt[1]);
+            const bool onBox = m.face[k] == TowFace::Cell || (m.face[k] == TowFace::Start && m.cutAt[0]) || (m.face[k] == TowFace::End && m.cutAt[1]);
             if (res.mesh.cell && m.region[k] < 0 && !onBox) bounds.push_back(towCount);
         }
     }
@@ -449,7 +449,7 @@ TEST_CASE("a cell: only the tow pairs that may meet inside it are intersected, e
     CHECK(meshed == 8);
 }
 
-TEST_CASE("a cell whose faces do not cut the tows across, away from crossings, is refused naming the tow", "[cell]")
+TEST_CASE("the parametric cut refuses faces that do not cut the tows across, naming the tow; the mesh cut takes those boxes", "[cell]")
 {
     const std::vector<TowSurface> four = twill({"warp_0", "warp_1", "weft_0", "weft_1"});
     const auto refused = [&](Point3 lo, Point3 hi, bool periodic, const std::vector<TowSurface>& tows) {
@@ -459,6 +459,7 @@ TEST_CASE("a cell whose faces do not cut the tows across, away from crossings, i
         c.min = lo;
         c.max = hi;
         c.periodic = periodic;
+        c.cut = CellCut::Parametric;
         o.cell = c;
         try {
             resolveTextile(tows, o);
@@ -466,10 +467,28 @@ TEST_CASE("a cell whose faces do not cut the tows across, away from crossings, i
             CHECK(e.code() == ErrorCode::InvalidArgument);
             return std::string(e.what());
         }
+        if (!periodic && lo.x < hi.x) {  // the default cut: the same box clipped, every tow closed
+            c.cut = CellCut::Auto;
+            o.cell = c;
+            const ResolveResult r = resolveTextile(tows, o);
+            for (const TowResolution& t : r.tows) CHECK(t.boundaryLoops == 0);
+            CHECK(meshVolumes(r.mesh).towVolume(tows.size()) > 0.0);
+        }
         return std::string("not refused");
     };
     // Through the crossings at x = 0: the face cuts weft_0 (at x = 0) lengthwise there.
     std::string m = refused({0.0, -0.5, -0.5}, {3.5, 3.5, 0.5}, false, four);
+    {  // the default (mesh) cut takes it
+        ResolveOptions o;
+        o.mesh.edgeLength = 0.2;
+        o.cell = Cell{{0.0, -0.5, -0.5}, {3.5, 3.5, 0.5}};
+        const ResolveResult r = resolveTextile(four, o);
+        for (const TowResolution& t : r.tows) CHECK(t.boundaryLoops == 0);
+        const VolumeMesh v = meshVolumes(r.mesh);
+        double all = 0.0;
+        for (std::size_t k = 0; k < v.tetrahedra.size(); ++k) all += v.tetrahedronVolume(k);
+        CHECK(all == Approx(o.cell->volume()).epsilon(1e-9));
+    }
     CHECK(m.find("lengthwise") != std::string::npos);
     CHECK(m.find("weft_0") != std::string::npos);
     // Along warp_1's middle (no other tow): the plane y = 1 cuts it lengthwise.
@@ -530,25 +549,32 @@ TEST_CASE("a cell face through a tow's end section: the face cuts it on its rim,
     // its first section. Was an internal error (the cut on the rim left a zero-width strip); the
     // cut is kept 1e-9 of the u range inside, its nodes on the plane, so the face closes the tow.
     // A section within 1e-9 of the tow's size of the face (a hair inside or beyond) is on it.
+    // The mesh cut likewise: the end section in the plane is dropped, the face closes the tow.
     const std::vector<TowSurface> tows = testing::crossingTubes(false);
+    for (const CellCut cut : {CellCut::Parametric, CellCut::Mesh})
     for (const double x0 : {0.0, 1e-10, -1e-10, 1e-9, 0.01}) {
-        INFO("the face x = " << x0);
+        INFO("the face x = " << x0 << ", cut " << cellCutName(cut));
         ResolveOptions o;
         Cell cell;
         cell.min = {x0, -1.5, -1.0};
         cell.max = {3.5, 1.5, 1.5};
+        cell.cut = cut;
         o.cell = cell;
         const ResolveResult res = resolveTextile(tows, o);
         REQUIRE(res.mesh.cell);
         CHECK(res.unresolved.empty());
         CHECK(res.mesh.regions.size() == 1);
-        REQUIRE(res.mesh.tows[0].cutAt[0]);
-        CHECK(*res.mesh.tows[0].cutAt[0] == CellFace::XMin);
+        if (cut == CellCut::Parametric) {
+            REQUIRE(res.mesh.tows[0].cutAt[0]);
+            CHECK(*res.mesh.tows[0].cutAt[0] == CellFace::XMin);
+        }
+        const TowFace capFace = cut == CellCut::Parametric ? TowFace::Start : TowFace::Cell;
         double onFace = 0.0;  // the cut cap: x's section (r 0.5, 48 chords) on the face
         for (std::size_t k = 0; k < res.mesh.tows[0].triangles.size(); ++k) {
-            if (res.mesh.tows[0].face[k] != TowFace::Start) continue;
+            if (res.mesh.tows[0].face[k] != capFace) continue;
             const auto& tri = res.mesh.tows[0].triangles[k];
             const Point3 &p = res.mesh.nodes[tri[0]], &q = res.mesh.nodes[tri[1]], &w = res.mesh.nodes[tri[2]];
+            if (cut == CellCut::Mesh && p.x != x0) continue;  // its cap on the face x = 3.5
             CHECK(p.x == x0);
             onFace -= 0.5 * cross(q - p, w - p).x;  // outward: -x
         }
@@ -578,6 +604,7 @@ TEST_CASE("a cell's faces are meshed at the tow's size at its caps and coarser a
     Cell cell;
     cell.min = {-2.0, -0.5, -1.5};
     cell.max = {4.0, 3.5, 1.5};
+    cell.cut = CellCut::Parametric;  // its caps at its start and end
     const std::vector<TowSurface> one = twill({"weft_1"});
     const auto longestEdge = [](const ResolveResult& r, const std::array<std::size_t, 3>& t) {
         const std::vector<Point3>& n = r.mesh.nodes;
@@ -744,7 +771,8 @@ TEST_CASE("a cell face through an overlap: the loop crosses it, both tows cut th
                         << c.side << " beside");
     const double angle = c.degrees * 3.14159265358979323846 / 180.0, lift = c.lift, wy = c.width, hz = c.height;
     const std::vector<TowSurface> tows = testing::fitAll(testing::tubesCrossingAt(c.degrees, wy, hz, lift, c.side));
-    const Cell cell = testing::crossingAtCell();
+    Cell cell = testing::crossingAtCell();
+    cell.cut = CellCut::Parametric;  // the loop's crossings of the face as nodes of both cuts
     ResolveOptions o;
     o.mesh.edgeLength = 0.1;
     o.cell = cell;
@@ -833,6 +861,7 @@ TEST_CASE("a cell through tows overlapping along their whole length: the loop ac
     Cell cell;
     cell.min = {-1.0, -1.0, -1.0};
     cell.max = {2.0, 2.0, 1.0};
+    cell.cut = CellCut::Parametric;  // the loop across the end caps cut by two faces
     o.cell = cell;
     const ResolveResult res = resolveTextile(tows, o);
     REQUIRE(res.intersections.loops.size() == 1);

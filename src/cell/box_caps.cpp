@@ -85,6 +85,34 @@ constexpr double kProbeDepth = 1e-4;
 
 std::string towName(const TextileMesh& mesh, std::size_t t) { return "tow '" + mesh.tows[t].name + "'"; }
 
+/// The tows a part of a face's mesh lies in that no cut borders (a face all inside a tow): those
+/// whose closed surface before clipping winds around its largest triangle's centroid, tested
+/// on the face, or a hair inside the box where a tow's surface lies in the face's plane there.
+std::vector<std::size_t> towsAround(const FaceJob& job, CellFace face, const std::vector<CDT::Face_handle>& part)
+{
+    const int a = axisOf(face);
+    const auto [b, c] = inPlane(a);
+    const auto area = [](const CDT::Face_handle& g) { return std::abs(CGAL::area(g->vertex(0)->point(), g->vertex(1)->point(), g->vertex(2)->point())); };
+    const CDT::Face_handle largest = *std::max_element(part.begin(), part.end(), [&](const auto& x, const auto& y) { return area(x) < area(y); });
+    const K::Point_2 centre = CGAL::centroid(largest->vertex(0)->point(), largest->vertex(1)->point(), largest->vertex(2)->point());
+    Point3 probe;
+    coord(probe, a) = job.cell.plane(face);
+    coord(probe, b) = centre.x();
+    coord(probe, c) = centre.y();
+    std::vector<std::size_t> in;
+    for (std::size_t t = 0; t < job.solids.size(); ++t) {
+        if (!job.solids[t].contains(probe)) continue;
+        double w = windingNumber(job.mesh.nodes, *job.solids[t].triangles, probe);
+        if (w > 0.25 && w < 0.75) {  // on its surface
+            Point3 inside = probe;
+            coord(inside, a) += (isMaxFace(face) ? -1.0 : 1.0) * kProbeDepth * job.h;
+            w = windingNumber(job.mesh.nodes, *job.solids[t].triangles, inside);
+        }
+        if (w > 0.5) in.push_back(t);
+    }
+    return in;
+}
+
 /// Face @p face meshed around the open edges @p cuts, the tows' edges @p edgesInPlane and nodes
 /// @p nodesInPlane on it: its triangles outward from the box, and per triangle the tow whose cap
 /// it is (-1: the matrix).
@@ -98,7 +126,15 @@ std::pair<std::vector<Triangle>, std::vector<long>> meshFace(FaceJob& job, CellF
     const auto [b, c] = inPlane(a);
     const auto flat = [&, b = b, c = c](std::size_t n) { return K::Point_2(coord(nodes[n], b), coord(nodes[n], c)); };
     const std::string onFace = std::string(" on the cell's face ") + cellFaceName(face);
+    const auto spatialOf = [&, b = b, c = c](const K::Point_2& p) {
+        Point3 q;
+        coord(q, a) = at;
+        coord(q, b) = p.x();
+        coord(q, c) = p.y();
+        return q;
+    };
     CDT cdt;
+    std::map<std::size_t, CDT::Vertex_handle> handle;
     const auto vertex = [&](std::size_t n) {
         const CDT::Vertex_handle v = cdt.insert(flat(n));
         if (v->info().node >= 0 && v->info().node != static_cast<long>(n)) {
@@ -107,6 +143,7 @@ std::pair<std::vector<Triangle>, std::vector<long>> meshFace(FaceJob& job, CellF
             throw Error(ErrorCode::InvalidArgument, "two nodes coincide" + onFace + where.str() + ": tows touch there at a point");
         }
         v->info().node = static_cast<long>(n);
+        handle[n] = v;
         return v;
     };
     const std::vector<std::size_t> rectangle = job.edges.rectangle(a, isMaxFace(face) ? 1 : 0);
@@ -129,8 +166,12 @@ std::pair<std::vector<Triangle>, std::vector<long>> meshFace(FaceJob& job, CellF
             if (CGAL::squared_distance(K::Segment_2(flat(e.a), flat(e.b)), v->point()) < 1e-20 + 1e-12 * job.h * job.h) tows.insert(e.tow);
         std::string names;
         for (std::size_t t : tows) names += (names.empty() ? "" : " and ") + towName(job.mesh, t);
-        throw Error(ErrorCode::InvalidArgument, (names.empty() ? std::string("two tows") : names) + ": their cuts cross" + onFace +
-                                                    ": they overlap there (a pair left unresolved)");
+        std::ostringstream where;
+        where << " near (" << coord(spatialOf(v->point()), 0) << ", " << coord(spatialOf(v->point()), 1) << ", " << coord(spatialOf(v->point()), 2) << ")";
+        throw Error(ErrorCode::InvalidArgument, tows.size() == 1 ? names + ": its cut crosses itself" + onFace + where.str() +
+                                                                       " (its surface folds there at this mesh size: a smaller mesh size helps)"
+                                                                 : (names.empty() ? std::string("two tows") : names) + ": their cuts cross" + onFace +
+                                                                       where.str() + ": they overlap there (a pair left unresolved)");
     }
     for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->set_in_domain(!cdt.is_infinite(f));
     std::vector<std::vector<K::Point_2>> polygons;
@@ -139,62 +180,68 @@ std::pair<std::vector<Triangle>, std::vector<long>> meshFace(FaceJob& job, CellF
     const double angle = std::clamp(job.minAngle, 1.0, 30.0) * 3.14159265358979323846 / 180.0;
     refineKeepingConstraints(cdt, GradedSizeCriteria<CDT>(std::sin(angle) * std::sin(angle), [&size](const K::Point_2& p) { return size(p); }),
                              false);
-    const auto spatial = [&, b = b, c = c](const K::Point_2& p) {
-        Point3 q;
-        coord(q, a) = at;
-        coord(q, b) = p.x();
-        coord(q, c) = p.y();
-        return q;
-    };
     for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
         if (v->info().node >= 0) continue;
         v->info().node = static_cast<long>(nodes.size());
-        nodes.push_back(spatial(v->point()));
-    }
-    // Each part between constraints: the tow it lies in, tested once at its largest triangle.
-    std::map<CDT::Face_handle, long> label;
-    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
-        if (label.count(f)) continue;
-        std::vector<CDT::Face_handle> part{f}, stack{f};
-        label[f] = -1;
-        while (!stack.empty()) {
-            const CDT::Face_handle g = stack.back();
-            stack.pop_back();
-            for (int k = 0; k < 3; ++k) {
-                const CDT::Face_handle n = g->neighbor(k);
-                if (g->is_constrained(k) || cdt.is_infinite(n) || label.count(n)) continue;
-                label[n] = -1;
-                part.push_back(n);
-                stack.push_back(n);
-            }
-        }
-        const auto area = [](const CDT::Face_handle& g) { return std::abs(CGAL::area(g->vertex(0)->point(), g->vertex(1)->point(), g->vertex(2)->point())); };
-        const CDT::Face_handle largest = *std::max_element(part.begin(), part.end(), [&](const auto& x, const auto& y) { return area(x) < area(y); });
-        // A hair inside the box: where a tow's surface lies in the face's plane, what is inside
-        // it next to the face decides.
-        Point3 probe = spatial(CGAL::centroid(largest->vertex(0)->point(), largest->vertex(1)->point(), largest->vertex(2)->point()));
-        coord(probe, a) += (isMaxFace(face) ? -1.0 : 1.0) * kProbeDepth * job.h;
-        std::vector<std::size_t> in;
-        for (std::size_t t = 0; t < job.solids.size(); ++t)
-            if (job.solids[t].contains(probe) && windingNumber(nodes, *job.solids[t].triangles, probe) > 0.5) in.push_back(t);
-        if (in.size() > 1) {
-            std::ostringstream where;
-            where << " at (" << probe.x << ", " << probe.y << ", " << probe.z << ")";
-            throw Error(ErrorCode::InvalidArgument, towName(job.mesh, in[0]) + " and " + towName(job.mesh, in[1]) + " overlap" + onFace +
-                                                        where.str() + " (a pair left unresolved there)");
-        }
-        for (const CDT::Face_handle& g : part) label[g] = in.empty() ? -1 : static_cast<long>(in[0]);
+        nodes.push_back(spatialOf(v->point()));
     }
     // Counter-clockwise in (b, c) is along +a for x and z, along -a for y; outward is -a on a
     // min face.
+    // The parts between constraints. Each is the cap of the tow whose cut edges it lies inside
+    // of (the side the cap closing an open edge takes: it runs along the edge the other way
+    // round), else the matrix's; a part no cut borders (a face all inside a tow) is tested by the
+    // winding number of the tows' surfaces before clipping.
     const bool ccwOutward = (a != 1) == isMaxFace(face);
+    std::map<CDT::Face_handle, std::size_t> partOf;
+    std::vector<std::vector<CDT::Face_handle>> parts;
+    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+        if (partOf.count(f)) continue;
+        parts.emplace_back(1, f);
+        partOf[f] = parts.size() - 1;
+        for (std::size_t i = 0; i < parts.back().size(); ++i) {
+            const CDT::Face_handle g = parts.back()[i];
+            for (int k = 0; k < 3; ++k) {
+                const CDT::Face_handle n = g->neighbor(k);
+                if (g->is_constrained(k) || cdt.is_infinite(n) || partOf.count(n)) continue;
+                partOf[n] = parts.size() - 1;
+                parts.back().push_back(n);
+            }
+        }
+    }
+    std::vector<std::set<std::size_t>> towsOf(parts.size());
+    std::vector<char> bordered(parts.size(), 0);
+    for (const OpenEdge& e : cuts) {
+        const CDT::Vertex_handle va = handle.at(e.a), vb = handle.at(e.b);
+        CDT::Face_handle f;
+        int i = 0;
+        if (!cdt.is_edge(va, vb, f, i)) throw Error(ErrorCode::Internal, towName(job.mesh, e.tow) + ": a cut edge is missing" + onFace);
+        for (const CDT::Face_handle& g : {f, f->neighbor(i)}) {
+            if (cdt.is_infinite(g)) continue;
+            const bool ccwFromA = g->vertex(CDT::ccw(g->index(va))) == vb;
+            bordered[partOf.at(g)] = 1;
+            if (ccwFromA != ccwOutward) towsOf[partOf.at(g)].insert(e.tow);  // written b to a: the cap's side
+        }
+    }
+    std::vector<long> label(parts.size(), -1);
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+        std::vector<std::size_t> in(towsOf[p].begin(), towsOf[p].end());
+        if (in.empty() && !bordered[p]) in = towsAround(job, face, parts[p]);
+        if (in.size() > 1) {
+            const Point3 at = nodes[static_cast<std::size_t>(parts[p][0]->vertex(0)->info().node)];
+            std::ostringstream where;
+            where << " near (" << at.x << ", " << at.y << ", " << at.z << ")";
+            throw Error(ErrorCode::InvalidArgument, towName(job.mesh, in[0]) + " and " + towName(job.mesh, in[1]) + " overlap" + onFace +
+                                                        where.str() + " (a pair left unresolved there)");
+        }
+        if (!in.empty()) label[p] = static_cast<long>(in[0]);
+    }
     std::pair<std::vector<Triangle>, std::vector<long>> out;
     for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
         Triangle tri{static_cast<std::size_t>(f->vertex(0)->info().node), static_cast<std::size_t>(f->vertex(1)->info().node),
                      static_cast<std::size_t>(f->vertex(2)->info().node)};
         if (!ccwOutward) std::swap(tri[1], tri[2]);
         out.first.push_back(tri);
-        out.second.push_back(label.at(f));
+        out.second.push_back(label[partOf.at(f)]);
     }
     return out;
 }

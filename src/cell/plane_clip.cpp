@@ -19,6 +19,15 @@ using Triangle = std::array<std::size_t, 3>;
 
 namespace {
 
+/// The least sine of the angle between an edge and a plane at which its cut point is put on the
+/// tow's surface (below it, on the chord).
+constexpr double kSteepCrossing = 0.2;
+
+/// Closer than this share of the box's diagonal a node lies on a face's plane but for rounding (a
+/// tow's end section in the plane, as a scan cut at the cell's faces gives): it is put there
+/// whatever its neighbours.
+constexpr double kOnPlane = 1e-9;
+
 /// The share of the snapping distance a node may move straight onto a plane (off its surface).
 constexpr double kStraightShare = 0.1;
 
@@ -200,6 +209,14 @@ private:
         const double d = q_.keep * (coord(mesh_.nodes[n], q_.axis) - q_.at);
         return d > 0.0 ? 1 : d < 0.0 ? -1 : 0;
     }
+    /// True when @p p lies on the box's side of (or on) every other face's plane: a point of the
+    /// surface beyond the chord may lie outside the box where the chord is inside.
+    bool insideOtherPlanes(const Point3& p) const
+    {
+        for (std::size_t f = 0; f < planes_.size(); ++f)
+            if (f != index_ && planes_[f].keep * (coord(p, planes_[f].axis) - planes_[f].at) < 0.0) return false;
+        return true;
+    }
     /// True when @p a and @p b both lie on the plane of another face.
     bool onAnotherPlane(std::size_t a, std::size_t b) const
     {
@@ -222,11 +239,16 @@ private:
         Point3 p = pa + (da / (da - db)) * (pb - pa);
         coord(p, q_.axis) = q_.at;
         std::optional<UV> w;
-        if (own >= 0 && !onAnotherPlane(a, b)) {
+        // On the tow's surface (the root along the edge's (u,v) chord) where the edge crosses the
+        // plane steeply; where it grazes it, the surface's point can lie far along the plane from
+        // the chord's, across other cut edges: the chord's then, as on another plane.
+        const bool steep = std::abs(da - db) >= kSteepCrossing * distance(pa, pb);
+        if (own >= 0 && steep && !onAnotherPlane(a, b)) {
             auto& map = uv_[static_cast<std::size_t>(own)];
             const auto ua = map.find(a), ub = map.find(b);
             if (ua != map.end() && ub != map.end())
-                if (const auto root = rootOnSurface(tows_[static_cast<std::size_t>(own)], ua->second, ub->second, q_.axis, q_.at)) {
+                if (const auto root = rootOnSurface(tows_[static_cast<std::size_t>(own)], ua->second, ub->second, q_.axis, q_.at);
+                    root && insideOtherPlanes(root->first)) {
                     p = root->first;
                     w = root->second;
                 }
@@ -311,6 +333,7 @@ std::size_t snapToCellPlanes(TextileMesh& mesh, NodeParameters& uv, const std::v
 {
     const std::array<Plane, 6> planes = planesOf(cell);
     const NodeEdges edges = nodeEdges(mesh);
+    const double onPlane = kOnPlane * distance(cell.min, cell.max);
     const std::vector<double>& shortest = edges.shortest;
     std::size_t moved = 0;
     for (std::size_t n = firstNode; n < mesh.nodes.size(); ++n) {
@@ -325,6 +348,12 @@ std::size_t snapToCellPlanes(TextileMesh& mesh, NodeParameters& uv, const std::v
             Point3& p = mesh.nodes[n];
             const double d = coord(p, q.axis) - q.at;
             if (d == 0.0 || !(std::abs(d) < limit)) continue;
+            if (std::abs(d) < onPlane) {  // on it but for rounding
+                coord(p, q.axis) = q.at;
+                on |= 1u << f;
+                ++moved;
+                continue;
+            }
             bool near = true;  // within the limit of the face's rectangle
             for (int b = 0; b < 3; ++b)
                 if (b != q.axis && !(coord(p, b) >= coord(cell.min, b) - limit && coord(p, b) <= coord(cell.max, b) + limit)) near = false;

@@ -1,7 +1,8 @@
 // A resolved textile's meshes clipped to the half-spaces of a cell's faces, triangle by triangle:
 // where an edge crosses a face's plane, one new node (shared by every triangle on the edge, of
-// every tow) exactly on the plane and, on a tow's own surface, exactly on that surface (the root
-// along the edge's (u,v) chord); the part of each triangle inside is kept (a quad split along
+// every tow) exactly on the plane and, on a tow's own surface where the edge crosses the plane
+// at more than 11.5 degrees, exactly on that surface (the root along the edge's (u,v) chord; a
+// grazing edge's point stays on the chord); the part of each triangle inside is kept (a quad split along
 // its shorter diagonal), the rest dropped, and so is a triangle lying in the plane. Nodes close to a plane are first moved onto it, so
 // the cut makes no sliver. The tows' surfaces are left open on the box's faces (meshBoxCaps()
 // closes them).
@@ -25,7 +26,8 @@ using NodeParameters = std::vector<std::unordered_map<std::size_t, UV>>;
 /// TowMesh::parameters of every tow of @p mesh as maps.
 NodeParameters nodeParameters(const TextileMesh& mesh);
 
-/// Moves every node of @p mesh closer than @p fraction of its shortest incident edge to the plane
+/// Puts every node of @p mesh within 1e-9 of the box's diagonal of a face's plane on it; moves
+/// every node closer than @p fraction of its shortest incident edge to the plane
 /// of a face of @p cell (and within that distance of the face's rectangle), with a neighbour on
 /// the plane's other side (the plane cuts an edge of it), onto the plane: along
 /// its tow's surface (Newton's method in (u,v), its (u,v) in @p uv updated) where it lies on one

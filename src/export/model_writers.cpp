@@ -145,6 +145,10 @@ void writeGmshModel(const TextileMesh& mesh, const VolumeMesh* volumes, std::ost
         const TowMesh& m = mesh.tows[t];
         Entity side, caps;
         std::array<Entity, 6> onCell;  // its caps on the cell's faces, per face
+        side.physical = {t + 1};
+        caps.physical = {t + 1, capGroup[t]};
+        side.bounds = caps.bounds = {{t, 1}};
+        if (mesh.cell) side.bounds.emplace_back(matrix, -1), caps.bounds.emplace_back(matrix, -1);
         for (std::size_t f = 0; f < 6; ++f) {
             onCell[f].physical = {t + 1, capGroup[t], faceGroup[f]};
             onCell[f].bounds = {{t, 1}};

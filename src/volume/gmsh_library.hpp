@@ -37,6 +37,7 @@ namespace detail {
     X(gmshModelMeshGetElementsByType) \
     X(gmshModelMeshSetSizeCallback) \
     X(gmshModelMeshRemoveSizeCallback) \
+    X(gmshModelMeshOptimize) \
     X(gmshLoggerGetLastError)
 
 /// The Gmsh functions towgeom calls, resolved from the shared library. Each call checks Gmsh's
