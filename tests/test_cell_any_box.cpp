@@ -3,6 +3,7 @@
 // corefinement, the tetrahedra's faces counted here (each shared by two, or on the box), their
 // volumes against the box's, and CalculiX's reaction against the closed form of a uniform strain.
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 #include <towgeom/towgeom.hpp>
 
 #include <algorithm>
@@ -351,4 +352,38 @@ TEST_CASE("cells at random places in scan-like textiles, seed 5: every cell mesh
           "[volume][cell][scan][any-box][ccx]")
 {
     checkScanBoxes(5);
+}
+
+TEST_CASE("towgeom resolve --cell through the bundled twill's crossings: the mesh cut by default, --cell-cut checked", "[cli][cell][any-box]")
+{
+    const fs::path dir = fs::temp_directory_path() / ("towgeom_cli_any_box_" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    std::string files;
+    for (const auto& e : fs::directory_iterator(std::string(TOWGEOM_EXAMPLE_DATA) + "/twill"))
+        if (e.path().extension() == ".stw") files += " '" + e.path().string() + "'";
+    // Faces through the crossings at x = 1 and y = 2 (the parametric cut refuses them: they run
+    // along tows there) and a top face through the tows' thickness.
+    const std::string box = " --cell 1,-0.5,-0.5,3.5,2,0.05";
+    const testing::Run parametric = testing::cli("resolve" + files + box + " --cell-cut parametric --quiet --out '" + (dir / "p").string() + "'");
+    CHECK(parametric.status == 2);
+    const testing::Run r = testing::cli("resolve" + files + box + " --volume --quiet --out '" + (dir / "m").string() + "'");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const nlohmann::json report = nlohmann::json::parse(testing::slurp(dir / "m" / "report.json"));
+    CHECK(report["cell"]["cut"] == "mesh");
+    std::size_t pieces = 0;
+    for (const auto& t : report["tows"]) pieces += t["pieces"].get<std::size_t>();
+    CHECK(pieces > 0);
+    CHECK(report["volume_mesh"]["tetrahedra"].get<std::size_t>() > 0);
+    // Usage errors: exit 2, nothing written.
+    const testing::Run unknown = testing::cli("resolve" + files + box + " --cell-cut sideways --quiet --out '" + (dir / "u").string() + "'");
+    CHECK(unknown.status == 2);
+    CHECK(unknown.err.find("--cell-cut takes auto, parametric or mesh") != std::string::npos);
+    const testing::Run periodic = testing::cli("resolve" + files + box + " --periodic --cell-cut mesh --quiet --out '" + (dir / "q").string() + "'");
+    CHECK(periodic.status == 2);
+    CHECK(periodic.err.find("not periodic") != std::string::npos);
+    const testing::Run noCell = testing::cli("resolve" + files + " --cell-cut mesh --quiet --out '" + (dir / "n").string() + "'");
+    CHECK(noCell.status == 2);
+    CHECK(!fs::exists(dir / "u"));
+    fs::remove_all(dir);
 }

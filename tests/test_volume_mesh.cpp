@@ -449,7 +449,7 @@ TEST_CASE("a cell: only the tow pairs that may meet inside it are intersected, e
     CHECK(meshed == 8);
 }
 
-TEST_CASE("the parametric cut refuses faces that do not cut the tows across, naming the tow; the mesh cut takes those boxes", "[cell]")
+TEST_CASE("the parametric cut refuses faces that do not cut the tows across, naming the tow, and the mesh cut takes those boxes", "[cell]")
 {
     const std::vector<TowSurface> four = twill({"warp_0", "warp_1", "weft_0", "weft_1"});
     const auto refused = [&](Point3 lo, Point3 hi, bool periodic, const std::vector<TowSurface>& tows) {

@@ -134,7 +134,10 @@ struct ResolveOptions {
 struct TowResolution {
     bool primaryAnywhere = false;  ///< primary in at least one resolved pair
     bool secondaryAnywhere = false;  ///< secondary in at least one resolved pair
-    double volumeBefore = 0.0;     ///< volume of its own mesh with its caps (ends closed by fans without caps)
+    /// Volume of its own mesh with its caps (ends closed by fans without caps). With a cell cut in
+    /// the meshes (CellCut::Mesh) the whole tow's, before the clip (volumeAfter is inside the
+    /// cell); with the parametric cut both are inside the cell.
+    double volumeBefore = 0.0;
     double volumeAfter = 0.0;      ///< the same after the regions were swapped in
     double area = 0.0;             ///< surface area of the final mesh
     std::size_t boundaryLoops = 0;  ///< 0 for a tow closed by its caps, 2 for a tube open at both ends

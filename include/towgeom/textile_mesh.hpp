@@ -36,7 +36,8 @@ struct TowMesh {
     std::vector<std::array<std::size_t, 3>> triangles;  ///< global node indices
     /// For each triangle: the index of the connected region it belongs to, or -1.
     std::vector<long> region;
-    /// For each triangle: the tube or one of the two end caps (MeshOptions::caps).
+    /// For each triangle: the tube, one of the two end caps (MeshOptions::caps), or a cap on a
+    /// cell's face (CellCut::Mesh).
     std::vector<TowFace> face;
     /// For each triangle the fibre direction of the surface it lies on: the unit tangent along
     /// that tow, dS/du / |dS/du| at the triangle's (u,v) centroid — this tow's for its own

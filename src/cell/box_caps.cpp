@@ -14,6 +14,7 @@
 #include "mesh/constraint_keeping_mesher.hpp"
 #include "mesh/graded_size_criteria.hpp"
 #include "mesh/mesh_cdt.hpp"
+#include "mesh/mesh_measures.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
 
@@ -256,19 +257,6 @@ Vector3 meanDirection(const std::vector<Vector3>& directions)
 }
 
 }  // namespace
-
-double windingNumber(const std::vector<Point3>& nodes, const std::vector<Triangle>& triangles, const Point3& p)
-{
-    double sum = 0.0;
-    for (const Triangle& t : triangles) {
-        const Vector3 a = nodes[t[0]] - p, b = nodes[t[1]] - p, c = nodes[t[2]] - p;
-        const double la = norm(a), lb = norm(b), lc = norm(c);
-        const double numerator = dot(a, cross(b, c));
-        const double denominator = la * lb * lc + dot(a, b) * lc + dot(b, c) * la + dot(c, a) * lb;
-        sum += 2.0 * std::atan2(numerator, denominator);
-    }
-    return sum / (4.0 * 3.14159265358979323846);
-}
 
 CellMesh meshBoxCaps(TextileMesh& mesh, const std::vector<std::vector<Triangle>>& solids, const Cell& cell, double h, double minAngle)
 {

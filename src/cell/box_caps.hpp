@@ -17,10 +17,6 @@
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
 
-/// The winding number of the closed surface @p triangles over @p nodes around @p p: the sum of
-/// the triangles' solid angles at @p p over 4 pi (1 inside an outward-oriented surface, 0 outside).
-double windingNumber(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles, const Point3& p);
-
 /// Closes every tow of @p mesh, clipped to @p cell, by caps on the box's faces (TowFace::Cell
 /// triangles, outward from the box, fibre direction that of the tow's triangles along the cut)
 /// and returns the matrix's part of the faces. @p solids: each tow's closed surface over

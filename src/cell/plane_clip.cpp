@@ -56,7 +56,7 @@ struct PairHash {
 };
 
 /// Per node, the length of its shortest edge in any tow's mesh (infinity for a node of none), and
-/// its neighbours along edges.
+/// its neighbours along edges: of the triangles with a node from firstNode on (nodeEdges()).
 struct NodeEdges {
     std::vector<double> shortest;
     std::vector<std::vector<std::size_t>> neighbours;
@@ -64,12 +64,13 @@ struct NodeEdges {
     std::unordered_map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>, PairHash> thirds;
 };
 
-NodeEdges nodeEdges(const TextileMesh& mesh)
+NodeEdges nodeEdges(const TextileMesh& mesh, std::size_t firstNode)
 {
     NodeEdges out{std::vector<double>(mesh.nodes.size(), std::numeric_limits<double>::infinity()),
                   std::vector<std::vector<std::size_t>>(mesh.nodes.size()), {}};
     for (const TowMesh& m : mesh.tows)
-        for (const Triangle& t : m.triangles)
+        for (const Triangle& t : m.triangles) {
+            if (t[0] < firstNode && t[1] < firstNode && t[2] < firstNode) continue;
             for (int k = 0; k < 3; ++k) {
                 const std::size_t a = t[static_cast<std::size_t>(k)], b = t[static_cast<std::size_t>((k + 1) % 3)];
                 const double l = distance(mesh.nodes[a], mesh.nodes[b]);
@@ -79,6 +80,7 @@ NodeEdges nodeEdges(const TextileMesh& mesh)
                 out.neighbours[b].push_back(a);
                 out.thirds[std::minmax(a, b)].push_back(t[static_cast<std::size_t>((k + 2) % 3)]);
             }
+        }
     return out;
 }
 
@@ -127,6 +129,7 @@ double wrapV(double v, const ParameterRange& r)
 bool moveAlongSurface(const TowSurface& tow, UV& uv, int axis, double at, double limit, Point3& point)
 {
     const ParameterRange range = tow.parameterRange();
+    if (!(uv.u >= range.uMin && uv.u <= range.uMax)) return false;  // on an end cap's chart
     const Point3 start = tow.point(uv.u, uv.v);
     UV w = uv;
     for (int iteration = 0; iteration < 12; ++iteration) {
@@ -154,6 +157,8 @@ bool moveAlongSurface(const TowSurface& tow, UV& uv, int axis, double at, double
 std::optional<std::pair<Point3, UV>> rootOnSurface(const TowSurface& tow, const UV& a, const UV& b, int axis, double at)
 {
     const ParameterRange range = tow.parameterRange();
+    const auto onTube = [&](const UV& w) { return w.u >= range.uMin && w.u <= range.uMax; };
+    if (!onTube(a) || !onTube(b)) return std::nullopt;  // on an end cap's chart
     double dv = b.v - a.v;
     dv -= range.vPeriod() * std::round(dv / range.vPeriod());
     const auto uvAt = [&](double s) { return UV{a.u + s * (b.u - a.u), a.v + s * dv}; };
@@ -332,7 +337,7 @@ std::size_t snapToCellPlanes(TextileMesh& mesh, NodeParameters& uv, const std::v
                              double fraction, std::size_t firstNode, unsigned faces)
 {
     const std::array<Plane, 6> planes = planesOf(cell);
-    const NodeEdges edges = nodeEdges(mesh);
+    const NodeEdges edges = nodeEdges(mesh, firstNode);
     const double onPlane = kOnPlane * distance(cell.min, cell.max);
     const std::vector<double>& shortest = edges.shortest;
     std::size_t moved = 0;
@@ -401,18 +406,22 @@ void clipToCellPlanes(TextileMesh& mesh, NodeParameters& uv, const std::vector<T
         PlaneClipper(mesh, uv, tows, planes, f).clip();
     }
     // The regions as clipped: their triangles where the primary keeps them.
-    for (std::size_t r = 0; r < mesh.regions.size(); ++r) {
-        ConnectedRegion& region = mesh.regions[r];
-        const TowMesh& primary = mesh.tows[region.primary];
+    for (ConnectedRegion& region : mesh.regions) {
         region.triangles.clear();
         region.nodes.clear();
         region.area = 0.0;
-        for (std::size_t k = 0; k < primary.triangles.size(); ++k)
-            if (k < primary.region.size() && primary.region[k] == static_cast<long>(r)) {
-                region.triangles.push_back(k);
-                region.nodes.insert(region.nodes.end(), primary.triangles[k].begin(), primary.triangles[k].end());
-                region.area += triangleArea(mesh.nodes, primary.triangles[k]);
-            }
+    }
+    for (std::size_t t = 0; t < mesh.tows.size(); ++t) {
+        const TowMesh& m = mesh.tows[t];
+        for (std::size_t k = 0; k < m.triangles.size() && k < m.region.size(); ++k) {
+            if (m.region[k] < 0 || mesh.regions[static_cast<std::size_t>(m.region[k])].primary != t) continue;
+            ConnectedRegion& region = mesh.regions[static_cast<std::size_t>(m.region[k])];
+            region.triangles.push_back(k);
+            region.nodes.insert(region.nodes.end(), m.triangles[k].begin(), m.triangles[k].end());
+            region.area += triangleArea(mesh.nodes, m.triangles[k]);
+        }
+    }
+    for (ConnectedRegion& region : mesh.regions) {
         std::sort(region.nodes.begin(), region.nodes.end());
         region.nodes.erase(std::unique(region.nodes.begin(), region.nodes.end()), region.nodes.end());
         std::vector<std::size_t> loopNodes;

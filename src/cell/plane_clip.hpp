@@ -26,8 +26,9 @@ using NodeParameters = std::vector<std::unordered_map<std::size_t, UV>>;
 /// TowMesh::parameters of every tow of @p mesh as maps.
 NodeParameters nodeParameters(const TextileMesh& mesh);
 
-/// Puts every node of @p mesh within 1e-9 of the box's diagonal of a face's plane on it; moves
-/// every node closer than @p fraction of its shortest incident edge to the plane
+/// Of the nodes of @p mesh in a tow's triangles: puts each within both 1e-9 of the box's diagonal
+/// and @p fraction of its shortest edge of a face's plane on it; moves every node closer than
+/// @p fraction of its shortest incident edge to the plane
 /// of a face of @p cell (and within that distance of the face's rectangle), with a neighbour on
 /// the plane's other side (the plane cuts an edge of it), onto the plane: along
 /// its tow's surface (Newton's method in (u,v), its (u,v) in @p uv updated) where it lies on one

@@ -45,6 +45,10 @@ struct SurfaceFigures {
 /// The SurfaceFigures of @p triangles over @p nodes.
 SurfaceFigures surfaceFigures(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles);
 
+/// The winding number of the closed surface @p triangles over @p nodes around @p p: the sum of
+/// the triangles' solid angles at @p p over 4 pi (1 inside an outward-oriented surface, 0 outside).
+double windingNumber(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles, const Point3& p);
+
 /// The area of triangle @p t over @p nodes.
 double triangleArea(const std::vector<Point3>& nodes, const std::array<std::size_t, 3>& t);
 

@@ -165,6 +165,19 @@ TriangleMesh closedSurface(const std::vector<Point3>& nodes, const std::vector<s
 
 namespace detail {
 
+double windingNumber(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles, const Point3& p)
+{
+    double sum = 0.0;
+    for (const auto& t : triangles) {
+        const Vector3 a = nodes[t[0]] - p, b = nodes[t[1]] - p, c = nodes[t[2]] - p;
+        const double la = norm(a), lb = norm(b), lc = norm(c);
+        const double numerator = dot(a, cross(b, c));
+        const double denominator = la * lb * lc + dot(a, b) * lc + dot(b, c) * la + dot(c, a) * lb;
+        sum += 2.0 * std::atan2(numerator, denominator);
+    }
+    return sum / (4.0 * 3.14159265358979323846);
+}
+
 double signedVolume(const std::vector<Point3>& nodes, const std::vector<std::array<std::size_t, 3>>& triangles)
 {
     if (triangles.empty()) return 0.0;

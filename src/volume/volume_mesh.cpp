@@ -344,16 +344,22 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
             enclosedBy[i] = detail::signedVolume(surfaces.nodes, byShell[i]);
             matrixVolume += enclosedBy[i];
         }
-        const std::size_t largest = static_cast<std::size_t>(std::max_element(enclosedBy.begin(), enclosedBy.end()) - enclosedBy.begin());
         pieceOfShell.assign(shells, 0);
-        std::size_t largestPiece = 0;
         for (std::size_t i = 0; i < shells; ++i)
-            if (enclosedBy[i] > 0.0) {
-                if (i == largest) largestPiece = matrixPieces;
-                pieceOfShell[i] = matrixPieces++;
-            }
-        for (std::size_t i = 0; i < shells; ++i)
-            if (!(enclosedBy[i] > 0.0)) pieceOfShell[i] = largestPiece;
+            if (enclosedBy[i] > 0.0) pieceOfShell[i] = matrixPieces++;
+        // A hole (a tow wholly inside the matrix) belongs to the smallest piece around it.
+        for (std::size_t i = 0; i < shells; ++i) {
+            if (enclosedBy[i] > 0.0) continue;
+            const Point3& probe = surfaces.nodes[byShell[i].front()[0]];
+            std::size_t around = shells;
+            for (std::size_t j = 0; j < shells; ++j)
+                if (enclosedBy[j] > 0.0 && (around == shells || enclosedBy[j] < enclosedBy[around]) &&
+                    detail::windingNumber(surfaces.nodes, byShell[j], probe) > 0.5)
+                    around = j;
+            if (around == shells)
+                throw Error(ErrorCode::Internal, "the matrix: a tow inside it lies in none of its pieces");
+            pieceOfShell[i] = pieceOfShell[around];
+        }
     }
     std::vector<std::size_t> volumeTow(firstVolume[towCount] + matrixPieces, towCount);
     for (std::size_t t = 0; t < towCount; ++t)
