@@ -344,10 +344,23 @@ int runLargeCell(unsigned seed, std::size_t threads, bool smoke)
     auto t0 = std::chrono::steady_clock::now();
     const towgeom::ResolveResult r = towgeom::resolveTextile(tows, options);
     const double resolveSeconds = since(t0);
+    std::size_t triangles = 0;
+    for (const towgeom::TowMesh& m : r.mesh.tows) triangles += m.triangles.size();
+    const std::size_t crossing = towgeom::testing::crossingPairsBetweenTows(r.mesh);
+    std::printf("resolved in %.2f s: %zu unresolved pair(s), %zu triangles (%zu on the box's faces), %zu crossing triangle pairs\n",
+                resolveSeconds, towgeom::unresolvedPairs(r).size(), triangles, r.mesh.cell->triangles.size(), crossing);
+    std::fflush(stdout);
     towgeom::VolumeMeshOptions volumeOptions;
     volumeOptions.threads = threads;
     t0 = std::chrono::steady_clock::now();
-    const towgeom::VolumeMesh v = towgeom::meshVolumes(r.mesh, volumeOptions);
+    towgeom::VolumeMesh v;
+    try {
+        v = towgeom::meshVolumes(r.mesh, volumeOptions);
+    } catch (const towgeom::Error& e) {
+        std::printf("meshVolumes failed after %.2f s: %s\n", since(t0), e.what());
+        goals.require("the cell's tetrahedra are made", false);
+        return goals.exitStatus();
+    }
     const double volumeSeconds = since(t0);
     const double total = since(start);
     double filled = 0.0;
@@ -374,6 +387,7 @@ int runLargeCell(unsigned seed, std::size_t threads, bool smoke)
     std::printf("%-28s %10.2f  (goal <= 300 s)\n", "fit to tetrahedra", total);
     goals.require("the textile has a real scan's size (>= 50 tows)", tows.size() >= 50);
     goals.require("every tow in the box closed", notClosed == 0);
+    goals.require("no two tows' triangles cross", crossing == 0);
     goals.require("the tetrahedra fill the box within 1e-9", std::abs(filled - cell.volume()) <= 1e-9 * cell.volume());
     goals.secondsAtMost("fit to tetrahedra", total, 300.0);
     return goals.exitStatus();

@@ -34,11 +34,12 @@ enum class CellCut : unsigned char {
     /// of the tow's mesh; the faces must cut each tow at most once at each end, all around, away
     /// from the box's edges (what a periodic cell needs: its faces' nodes pair up).
     Parametric,
-    /// In the resolved meshes: every triangle clipped by the faces' planes (each new node on the
-    /// plane and, on a tow's own surface, on that surface), nodes closer to a plane than a fifth
-    /// of their shortest edge first moved onto it along their surface (where that fails, only
-    /// those within a fiftieth, straight); nodes of a tow touching a face (not cut by it) are
-    /// nodes of the face's mesh; each face meshed around
+    /// In the resolved meshes: every triangle clipped by the faces' planes (each new node on its
+    /// edge, exactly on the plane: the clipped surfaces cross nowhere the resolved ones did not),
+    /// nodes closer to a plane it cuts past them than a fifth of their shortest edge first moved
+    /// onto it along their surface (where that fails, only those within a fiftieth, straight;
+    /// never turning a triangle over); nodes of a tow touching a face (not cut by it) are nodes
+    /// of the face's mesh; each face meshed around
     /// the cuts. Any box: a face may cut a tow several times, along its length, through its
     /// overlaps with other tows, or at an edge or corner of the box; every piece is closed by its
     /// caps. Not periodic.

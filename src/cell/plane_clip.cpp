@@ -19,10 +19,6 @@ using Triangle = std::array<std::size_t, 3>;
 
 namespace {
 
-/// The least sine of the angle between an edge and a plane at which its cut point is put on the
-/// tow's surface (below it, on the chord).
-constexpr double kSteepCrossing = 0.2;
-
 /// Closer than this share of the box's diagonal a node lies on a face's plane but for rounding (a
 /// tow's end section in the plane, as a scan cut at the cell's faces gives): it is put there
 /// whatever its neighbours.
@@ -104,6 +100,22 @@ bool wouldCrease(const TextileMesh& mesh, const NodeEdges& edges, std::size_t n,
     return false;
 }
 
+/// True when node @p n moved to @p to would turn over one of its triangles (their normals before
+/// and after pointing apart): a sliver next to it folds.
+bool wouldFold(const TextileMesh& mesh, const NodeEdges& edges, std::size_t n, const Point3& to)
+{
+    const Point3& from = mesh.nodes[n];
+    for (std::size_t m : edges.neighbours[n]) {
+        const auto it = edges.thirds.find(std::minmax(n, m));
+        if (it == edges.thirds.end()) continue;
+        for (std::size_t w : it->second) {
+            const Vector3 before = cross(mesh.nodes[m] - from, mesh.nodes[w] - from), after = cross(mesh.nodes[m] - to, mesh.nodes[w] - to);
+            if (!(dot(before, after) > 0.0)) return true;
+        }
+    }
+    return false;
+}
+
 /// The tow on whose own surface node @p n lies, when there is exactly one; else -1.
 long soleTow(const NodeParameters& uv, std::size_t n)
 {
@@ -151,57 +163,10 @@ bool moveAlongSurface(const TowSurface& tow, UV& uv, int axis, double at, double
     return false;
 }
 
-/// Where the segment from @p a to @p b in @p tow's (u,v) (v the shorter way around) crosses the
-/// plane @p axis = @p at, when the surface's values at its ends lie on opposite sides: regula
-/// falsi (Illinois) on the exact surface; the point exactly on the plane and its (u,v).
-std::optional<std::pair<Point3, UV>> rootOnSurface(const TowSurface& tow, const UV& a, const UV& b, int axis, double at)
-{
-    const ParameterRange range = tow.parameterRange();
-    const auto onTube = [&](const UV& w) { return w.u >= range.uMin && w.u <= range.uMax; };
-    if (!onTube(a) || !onTube(b)) return std::nullopt;  // on an end cap's chart
-    double dv = b.v - a.v;
-    dv -= range.vPeriod() * std::round(dv / range.vPeriod());
-    const auto uvAt = [&](double s) { return UV{a.u + s * (b.u - a.u), a.v + s * dv}; };
-    const auto f = [&](double s) {
-        const UV w = uvAt(s);
-        return coord(tow.point(w.u, w.v), axis) - at;
-    };
-    double s0 = 0.0, s1 = 1.0, f0 = f(s0), f1 = f(s1);
-    if (!(f0 * f1 < 0.0)) return std::nullopt;
-    int side = 0;
-    double s = 0.5;
-    for (int iteration = 0; iteration < 100 && s1 - s0 > 1e-15; ++iteration) {
-        s = (s0 * f1 - s1 * f0) / (f1 - f0);
-        if (!(s > s0 && s < s1)) s = 0.5 * (s0 + s1);
-        const double fs = f(s);
-        if (fs == 0.0) break;
-        if ((fs < 0.0) == (f0 < 0.0)) {
-            s0 = s;
-            f0 = fs;
-            if (side == -1) f1 *= 0.5;
-            side = -1;
-        } else {
-            s1 = s;
-            f1 = fs;
-            if (side == 1) f0 *= 0.5;
-            side = 1;
-        }
-    }
-    const UV w = uvAt(s);
-    Point3 p = tow.point(w.u, w.v);
-    coord(p, axis) = at;
-    return std::make_pair(p, UV{w.u, wrapV(w.v, range)});
-}
-
-
 /// Clips every tow of @p mesh by one plane.
 class PlaneClipper {
 public:
-    PlaneClipper(TextileMesh& mesh, NodeParameters& uv, const std::vector<TowSurface>& tows, const std::array<Plane, 6>& planes,
-                 std::size_t plane)
-        : mesh_(mesh), uv_(uv), tows_(tows), planes_(planes), q_(planes[plane]), index_(plane)
-    {
-    }
+    PlaneClipper(TextileMesh& mesh, const Plane& plane) : mesh_(mesh), q_(plane) {}
 
     void clip()
     {
@@ -214,27 +179,9 @@ private:
         const double d = q_.keep * (coord(mesh_.nodes[n], q_.axis) - q_.at);
         return d > 0.0 ? 1 : d < 0.0 ? -1 : 0;
     }
-    /// True when @p p lies on the box's side of (or on) every other face's plane: a point of the
-    /// surface beyond the chord may lie outside the box where the chord is inside.
-    bool insideOtherPlanes(const Point3& p) const
-    {
-        for (std::size_t f = 0; f < planes_.size(); ++f)
-            if (f != index_ && planes_[f].keep * (coord(p, planes_[f].axis) - planes_[f].at) < 0.0) return false;
-        return true;
-    }
-    /// True when @p a and @p b both lie on the plane of another face.
-    bool onAnotherPlane(std::size_t a, std::size_t b) const
-    {
-        for (std::size_t f = 0; f < planes_.size(); ++f) {
-            if (f == index_) continue;
-            const Plane& p = planes_[f];
-            if (coord(mesh_.nodes[a], p.axis) == p.at && coord(mesh_.nodes[b], p.axis) == p.at) return true;
-        }
-        return false;
-    }
-    /// The node where edge (@p a, @p b) crosses the plane; on tow @p own's surface when the edge
-    /// lies there (own >= 0) and both ends have their (u,v).
-    std::size_t cutNode(std::size_t a, std::size_t b, long own)
+    /// The node where edge (@p a, @p b) crosses the plane, on the edge (the resolved mesh's
+    /// surfaces do not cross: neither do their clipped parts), exactly on the plane.
+    std::size_t cutNode(std::size_t a, std::size_t b)
     {
         const auto key = std::minmax(a, b);
         const auto it = cut_.find(key);
@@ -243,24 +190,8 @@ private:
         const double da = coord(pa, q_.axis) - q_.at, db = coord(pb, q_.axis) - q_.at;
         Point3 p = pa + (da / (da - db)) * (pb - pa);
         coord(p, q_.axis) = q_.at;
-        std::optional<UV> w;
-        // On the tow's surface (the root along the edge's (u,v) chord) where the edge crosses the
-        // plane steeply; where it grazes it, the surface's point can lie far along the plane from
-        // the chord's, across other cut edges: the chord's then, as on another plane.
-        const bool steep = std::abs(da - db) >= kSteepCrossing * distance(pa, pb);
-        if (own >= 0 && steep && !onAnotherPlane(a, b)) {
-            auto& map = uv_[static_cast<std::size_t>(own)];
-            const auto ua = map.find(a), ub = map.find(b);
-            if (ua != map.end() && ub != map.end())
-                if (const auto root = rootOnSurface(tows_[static_cast<std::size_t>(own)], ua->second, ub->second, q_.axis, q_.at);
-                    root && insideOtherPlanes(root->first)) {
-                    p = root->first;
-                    w = root->second;
-                }
-        }
         const std::size_t n = mesh_.nodes.size();
         mesh_.nodes.push_back(p);
-        if (w) uv_[static_cast<std::size_t>(own)][n] = *w;
         cut_.emplace(key, n);
         return n;
     }
@@ -283,14 +214,11 @@ private:
                 keep(tri, k);
                 continue;
             }
-            const long own = (k >= m.region.size() || m.region[k] < 0) && (k >= m.face.size() || m.face[k] == TowFace::Side)
-                                 ? static_cast<long>(t)
-                                 : -1;
             std::vector<std::size_t> polygon;
             for (std::size_t i = 0; i < 3; ++i) {
                 const std::size_t j = (i + 1) % 3;
                 if (s[i] >= 0) polygon.push_back(tri[i]);
-                if (s[i] * s[j] < 0) polygon.push_back(cutNode(tri[i], tri[j], own));
+                if (s[i] * s[j] < 0) polygon.push_back(cutNode(tri[i], tri[j]));
             }
             if (polygon.size() == 3) {
                 keep({polygon[0], polygon[1], polygon[2]}, k);
@@ -315,11 +243,7 @@ private:
     }
 
     TextileMesh& mesh_;
-    NodeParameters& uv_;
-    const std::vector<TowSurface>& tows_;
-    const std::array<Plane, 6>& planes_;
     Plane q_;
-    std::size_t index_;
     std::unordered_map<std::pair<std::size_t, std::size_t>, std::size_t, PairHash> cut_;
 };
 
@@ -377,7 +301,8 @@ std::size_t snapToCellPlanes(TextileMesh& mesh, NodeParameters& uv, const std::v
                 if (t >= 0) {
                     UV w = uv[static_cast<std::size_t>(t)].at(n);
                     Point3 onPlane;
-                    if (moveAlongSurface(tows[static_cast<std::size_t>(t)], w, q.axis, q.at, 2.0 * limit, onPlane)) {
+                    if (moveAlongSurface(tows[static_cast<std::size_t>(t)], w, q.axis, q.at, 2.0 * limit, onPlane) &&
+                        !wouldFold(mesh, edges, n, onPlane)) {
                         p = onPlane;
                         uv[static_cast<std::size_t>(t)][n] = w;
                         alongSurface = true;
@@ -387,7 +312,10 @@ std::size_t snapToCellPlanes(TextileMesh& mesh, NodeParameters& uv, const std::v
             if (!alongSurface) {
                 // Straight off its surface: only a hair (a surface grazing the plane stays as it is).
                 if (!(std::abs(d) < kStraightShare * limit)) continue;
-                coord(p, q.axis) = q.at;
+                Point3 onPlane = p;
+                coord(onPlane, q.axis) = q.at;
+                if (wouldFold(mesh, edges, n, onPlane)) continue;
+                p = onPlane;
             }
             on |= 1u << f;
             ++moved;
@@ -403,7 +331,7 @@ void clipToCellPlanes(TextileMesh& mesh, NodeParameters& uv, const std::vector<T
     for (std::size_t f = 0; f < planes.size(); ++f) {
         // The nodes the earlier planes made (on their planes) close to this one: onto it too.
         snapToCellPlanes(mesh, uv, tows, cell, fraction, given, 1u << f);
-        PlaneClipper(mesh, uv, tows, planes, f).clip();
+        PlaneClipper(mesh, planes[f]).clip();
     }
     // The regions as clipped: their triangles where the primary keeps them.
     for (ConnectedRegion& region : mesh.regions) {

@@ -1,11 +1,10 @@
 // A resolved textile's meshes clipped to the half-spaces of a cell's faces, triangle by triangle:
-// where an edge crosses a face's plane, one new node (shared by every triangle on the edge, of
-// every tow) exactly on the plane and, on a tow's own surface where the edge crosses the plane
-// at more than 11.5 degrees, exactly on that surface (the root along the edge's (u,v) chord; a
-// grazing edge's point stays on the chord); the part of each triangle inside is kept (a quad split along
-// its shorter diagonal), the rest dropped, and so is a triangle lying in the plane. Nodes close to a plane are first moved onto it, so
-// the cut makes no sliver. The tows' surfaces are left open on the box's faces (meshBoxCaps()
-// closes them).
+// where an edge crosses a face's plane, one new node on the edge (shared by every triangle on the
+// edge, of every tow) exactly on the plane, so the clipped surfaces are parts of the resolved
+// ones and cross no more than they did; the part of each triangle inside is kept (a quad split
+// along its shorter diagonal), the rest dropped, and so is a triangle lying in the plane. Nodes
+// close to a plane are first moved onto it, so the cut makes few slivers. The tows' surfaces are
+// left open on the box's faces (meshBoxCaps() closes them).
 #pragma once
 
 #include <cstddef>
@@ -42,7 +41,7 @@ std::size_t snapToCellPlanes(TextileMesh& mesh, NodeParameters& uv, const std::v
 
 /// Clips every tow of @p mesh to the box of @p cell, face by face (see the file's comment); the
 /// regions' triangle lists, nodes and areas follow. New nodes are appended to TextileMesh::nodes
-/// (nodes outside stay, unused) and, where on a tow's own surface, to @p uv. A node is on a
+/// (nodes outside stay, unused); @p uv follows the moved nodes. A node is on a
 /// plane only when its coordinate equals the plane's exactly (snapToCellPlanes() first); before
 /// each plane, the nodes the earlier planes made are moved onto it as snapToCellPlanes() does
 /// (@p fraction), so a cut close to an edge of the box meets it there.

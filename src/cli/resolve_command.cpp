@@ -229,9 +229,9 @@ Options:
                      twill)
   --cell-cut auto|parametric|mesh
                      how --cell cuts the tows. mesh: the resolved meshes clipped by the faces'
-                     planes (new nodes on the planes and on the tows' exact surfaces; nodes
-                     within a fifth of an edge of a plane moved onto it along their surface),
-                     any box, not periodic.
+                     planes (new nodes on the cut edges, exactly on the planes; nodes within a
+                     fifth of an edge of a plane moved onto it along their surface), any box,
+                     not periodic.
                      parametric: each cut an exact curve in the tow's (u,v), a constraint of its
                      mesh; the faces must then cut tows across once, away from the box's edges
                      (else exit 2 naming the tow): for a woven cell, halfway between yarns; a
