@@ -35,7 +35,8 @@ enum class CellCut : unsigned char {
     /// from the box's edges (what a periodic cell needs: its faces' nodes pair up).
     Parametric,
     /// In the resolved meshes: every triangle clipped by the faces' planes (each new node on its
-    /// edge, exactly on the plane: the clipped surfaces cross nowhere the resolved ones did not),
+    /// edge, exactly on the plane: the clipped surfaces are parts of the resolved ones but where
+    /// a node was moved, next),
     /// nodes closer to a plane it cuts past them than a fifth of their shortest edge first moved
     /// onto it along their surface (where that fails, only those within a fiftieth, straight;
     /// never turning a triangle over); nodes of a tow touching a face (not cut by it) are nodes

@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <unordered_map>
 #include <utility>
 
@@ -179,8 +178,8 @@ private:
         const double d = q_.keep * (coord(mesh_.nodes[n], q_.axis) - q_.at);
         return d > 0.0 ? 1 : d < 0.0 ? -1 : 0;
     }
-    /// The node where edge (@p a, @p b) crosses the plane, on the edge (the resolved mesh's
-    /// surfaces do not cross: neither do their clipped parts), exactly on the plane.
+    /// The node where edge (@p a, @p b) crosses the plane, on the edge (a part of the resolved
+    /// surface), exactly on the plane.
     std::size_t cutNode(std::size_t a, std::size_t b)
     {
         const auto key = std::minmax(a, b);

@@ -1,7 +1,7 @@
 // A resolved textile's meshes clipped to the half-spaces of a cell's faces, triangle by triangle:
 // where an edge crosses a face's plane, one new node on the edge (shared by every triangle on the
 // edge, of every tow) exactly on the plane, so the clipped surfaces are parts of the resolved
-// ones and cross no more than they did; the part of each triangle inside is kept (a quad split
+// ones (but for the moved nodes below); the part of each triangle inside is kept (a quad split
 // along its shorter diagonal), the rest dropped, and so is a triangle lying in the plane. Nodes
 // close to a plane are first moved onto it, so the cut makes few slivers. The tows' surfaces are
 // left open on the box's faces (meshBoxCaps() closes them).
