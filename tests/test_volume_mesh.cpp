@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "cgal_reference.hpp"
+#include "scan_like.hpp"
 #include "synthetic_tows.hpp"
 
 using namespace towgeom;
@@ -297,6 +298,43 @@ TEST_CASE("meshVolumes refuses tows touching tangentially, naming them and the p
                 for (std::size_t n : tri) nearest = std::min(nearest, distance(res.mesh.nodes[n], at));
             CHECK(nearest < 0.02 * tows[t].boundingBox().diagonal());
         }
+    }
+}
+
+TEST_CASE("meshVolumes refuses a tow whose surface folds, naming it and the place where CGAL finds its triangles crossing", "[volume][fold]")
+{
+    // A binder of the 57-tow scan-like textile (seed 1) cut by the scan's box: sections 0.4 and
+    // 0.8 apart after a right-angle bend, 0.085 thick; the cubic through them dips 0.1 below the
+    // last sections' centres and its surface crosses itself there. HXT stops after its other work
+    // ("a segment and a facet intersect"); meshVolumes names the tow.
+    const testing::ScanLikeTextile textile = testing::largeScanLikeTextile(1);
+    std::vector<TowStack> one;
+    for (const TowStack& s : textile.stacks)
+        if (s.name == "binder_2_p1") one.push_back(s);
+    REQUIRE(one.size() == 1);
+    const std::vector<TowSurface> tows = testing::fitAll(one);
+    const ResolveResult res = resolveTextile(tows, ResolveOptions{});
+    // The independent oracle: CGAL's exact predicates on the output mesh find it crossing itself.
+    const testing::SurfaceCrossings crossings = testing::crossingsInSurfaces(res.mesh);
+    REQUIRE(crossings.crossing > 0);
+    const auto& tri = res.mesh.tows[0].triangles[crossings.first.front().first.index];
+    const Point3 oracle = (1.0 / 3.0) * (res.mesh.nodes[tri[0]] + res.mesh.nodes[tri[1]] + res.mesh.nodes[tri[2]]);
+    try {
+        meshVolumes(res);
+        FAIL("meshed");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::InvalidArgument);
+        CHECK_THAT(e.message(), Catch::Matchers::Contains("tow 'binder_2_p1': its surface crosses itself near (") &&
+                                    Catch::Matchers::Contains("denser sections"));
+        const std::size_t open = e.message().find("near ("), close = e.message().find(')', open);
+        REQUIRE(close != std::string::npos);
+        std::istringstream place(e.message().substr(open + 6, close - open - 6));
+        Point3 at;
+        char comma = 0;
+        place >> at.x >> comma >> at.y >> comma >> at.z;
+        // The fold is a few triangles across (0.02 x 0.01 in the oracle's crossing pairs).
+        CHECK(distance(at, oracle) < 0.05);
+        CHECK_THAT(e.message(), Catch::Matchers::Contains("(" + std::to_string(crossings.crossing) + " crossing triangle pair(s) in all)"));
     }
 }
 

@@ -24,6 +24,7 @@
 #include "core/parallel.hpp"
 #include "mesh/mesh_measures.hpp"
 #include "volume/volume_conformity.hpp"
+#include "volume/facet_crossings.hpp"
 #include "volume/facet_folds.hpp"
 #include "volume/gmsh_library.hpp"
 #include "volume/graded_size.hpp"
@@ -487,20 +488,46 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     }
     if (matrix) enclosed.push_back(matrixVolume);
 
+    std::vector<const std::vector<std::size_t>*> patchTriangles;
+    for (const Surface& s : patches) patchTriangles.push_back(&s.triangles);
+    // The tows (and the matrix) two patches bound.
+    const auto bounding = [&](std::size_t a, std::size_t b) {
+        std::vector<std::size_t> involved;
+        for (std::size_t t : {patchTows[a][0], patchTows[a][1], patchTows[b][0], patchTows[b][1]})
+            if (t != kNoTow && std::find(involved.begin(), involved.end(), t) == involved.end()) involved.push_back(t);
+        std::sort(involved.begin(), involved.end());
+        return involved;
+    };
+    const auto names = [&](const std::vector<std::size_t>& involved) {
+        std::string who;
+        for (std::size_t i = 0; i < involved.size(); ++i)
+            who += (i == 0 ? "" : i + 1 == involved.size() ? " and " : ", ") + nameOf(involved[i]);
+        return who;
+    };
+    // Triangles crossing each other (a tow whose surface folds, surfaces passing through each
+    // other) stop HXT late, after its other work, with "a segment and a facet intersect at
+    // (x, y, z)". Looked for only then (it costs about a third of HXT's time on a scan's cell),
+    // to refuse naming the tows.
+    const auto refuseCrossings = [&]() {
+        const std::optional<detail::FacetCrossing> crossing = detail::firstCrossing(surfaces.nodes, patchTriangles);
+        if (!crossing) return;
+        std::vector<std::size_t> involved = bounding(crossing->surfaceA, crossing->surfaceB);
+        involved.erase(std::remove(involved.begin(), involved.end(), towCount), involved.end());  // the matrix
+        std::ostringstream text;
+        text.precision(6);
+        text << (involved.size() == 1 ? nameOf(involved[0]) + ": its surface crosses itself" : names(involved) + ": their surfaces cross")
+             << " near (" << crossing->at.x << ", " << crossing->at.y << ", " << crossing->at.z << ") (" << crossing->pairs
+             << " crossing triangle pair(s) in all): no volume mesh fits there";
+        if (involved.size() == 1)
+            text << ". A tow's surface folds where it bends sharper than it is thick between sections far apart (a cubic "
+                    "through them overshoots): denser sections there unfold it";
+        throw Error(ErrorCode::InvalidArgument, text.str());
+    };
     {
         // Surfaces meeting at an angle below HXT's tolerance (tows touching tangentially) stop it
         // with a message on the terminal: refused here, before Gmsh, naming the tows and the place.
-        std::vector<const std::vector<std::size_t>*> triangles;
-        for (const Surface& s : patches) triangles.push_back(&s.triangles);
-        if (const std::optional<detail::FacetFold> fold = detail::sharpestFold(surfaces.nodes, triangles, kHxtFoldTolerance)) {
-            std::vector<std::size_t> involved;
-            for (std::size_t t : {patchTows[fold->surfaceA][0], patchTows[fold->surfaceA][1], patchTows[fold->surfaceB][0],
-                                  patchTows[fold->surfaceB][1]})
-                if (t != kNoTow && std::find(involved.begin(), involved.end(), t) == involved.end()) involved.push_back(t);
-            std::sort(involved.begin(), involved.end());
-            std::string who;
-            for (std::size_t i = 0; i < involved.size(); ++i)
-                who += (i == 0 ? "" : i + 1 == involved.size() ? " and " : ", ") + nameOf(involved[i]);
+        if (const std::optional<detail::FacetFold> fold = detail::sharpestFold(surfaces.nodes, patchTriangles, kHxtFoldTolerance)) {
+            const std::string who = names(bounding(fold->surfaceA, fold->surfaceB));
             std::ostringstream text;
             text.precision(2);
             text << who << ": two surface triangles on an edge meet at " << fold->angle * kDegree << " degrees near (";
@@ -583,7 +610,12 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
             g.call("gmshModelMeshSetSizeCallback", api.gmshModelMeshSetSizeCallback, &gradedSizeAt, static_cast<void*>(&*grading));
         }
         const auto generateStart = std::chrono::steady_clock::now();
-        g.call("gmshModelMeshGenerate", api.gmshModelMeshGenerate, 3);
+        try {
+            g.call("gmshModelMeshGenerate", api.gmshModelMeshGenerate, 3);
+        } catch (...) {
+            refuseCrossings();  // the cause, named, if it is crossing triangles
+            throw;
+        }
         // Gmsh's tetrahedral optimiser once more, forced (its Mesh.Optimize pass leaves flat
         // tetrahedra HXT makes with a size callback: a point inserted a hair from a surface
         // triangle, 2e-20 in volume beside a region of a scan-like cell; CalculiX's uniform strain

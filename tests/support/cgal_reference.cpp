@@ -219,6 +219,29 @@ std::size_t crossingPairsBetweenTows(const TextileMesh& mesh)
     return crossing;
 }
 
+SurfaceCrossings crossingsInSurfaces(const TextileMesh& mesh)
+{
+    std::vector<std::array<std::size_t, 3>> all;
+    std::vector<MeshTriangle> owner;
+    for (std::size_t t = 0; t < mesh.tows.size(); ++t)
+        for (std::size_t k = 0; k < mesh.tows[t].triangles.size(); ++k) {
+            all.push_back(mesh.tows[t].triangles[k]);
+            owner.push_back({t, k});
+        }
+    if (mesh.cell)
+        for (std::size_t k = 0; k < mesh.cell->triangles.size(); ++k) {
+            all.push_back(mesh.cell->triangles[k]);
+            owner.push_back({MeshTriangle::kCellTriangles, k});
+        }
+    // Each unordered pair comes twice (as (i, j) and (j, i)); a triangle with itself is identical.
+    const TriangleCrossings c = crossingTrianglePairs(mesh.nodes, all, all);
+    SurfaceCrossings out;
+    out.crossing = c.crossing / 2;
+    for (const auto& [i, j] : c.first)
+        if (i < j && out.first.size() < 50) out.first.push_back({owner[i], owner[j]});
+    return out;
+}
+
 std::vector<TowPairCrossings> crossingsByTowPair(const TextileMesh& mesh)
 {
     std::vector<TowPairCrossings> out;

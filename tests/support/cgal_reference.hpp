@@ -58,6 +58,24 @@ struct TowPairCrossings {
     Point3 firstAt;                  ///< the centroid of a's triangle in the first crossing pair
 };
 
+/// A triangle of a TextileMesh: its tow (or kCellTriangles for the box's matrix faces) and its
+/// index in that tow's (or CellMesh's) triangles.
+struct MeshTriangle {
+    static constexpr std::size_t kCellTriangles = static_cast<std::size_t>(-1);
+    std::size_t tow = 0;
+    std::size_t index = 0;
+};
+
+/// Every crossing pair of triangles among all of @p mesh's surfaces at once: within one tow,
+/// between tows, and against the box's matrix faces (CellMesh::triangles), by
+/// crossingTrianglePairs()'s rules (a triangle shared by two tows counts once). This is what
+/// a tetrahedral mesher needs of its boundary: no two facets meeting beyond what they share.
+struct SurfaceCrossings {
+    std::size_t crossing = 0;                                    ///< crossing pairs, each counted once
+    std::vector<std::pair<MeshTriangle, MeshTriangle>> first;    ///< up to the first 50 of them
+};
+SurfaceCrossings crossingsInSurfaces(const TextileMesh& mesh);
+
 /// crossingTrianglePairs() for every two tows of @p mesh, only the pairs that cross.
 std::vector<TowPairCrossings> crossingsByTowPair(const TextileMesh& mesh);
 
