@@ -264,6 +264,15 @@ void printSurfaceCrossings(const std::vector<towgeom::TowSurface>& tows, const t
         std::printf("  crossing: %s and %s\n", describe(crossings.first[k].first).c_str(), describe(crossings.first[k].second).c_str());
 }
 
+/// The tows whose surfaces resolveTextile() found folding (TowResolution::fold).
+void printFolds(const std::vector<towgeom::TowSurface>& tows, const towgeom::ResolveResult& r)
+{
+    for (std::size_t t = 0; t < tows.size(); ++t)
+        if (const auto& f = r.tows[t].fold)
+            std::printf("  fold reported: %s near (%.4f, %.4f, %.4f), %zu crossing pairs of its sampled surface\n", tows[t].name().c_str(),
+                        f->at.x, f->at.y, f->at.z, f->crossingPairs);
+}
+
 /// The 57-tow goals of issue 38 on largeScanLikeTextile(seed): detect and resolve timed in
 /// process, peak memory after resolving (before CGAL runs), then CGAL's surface_intersection on
 /// every overlapping pair tessellated at 120 x 64.
@@ -309,6 +318,10 @@ int runLarge(unsigned seed, std::size_t threads, bool smoke, bool detectOnly, co
                 report.loops.size(), report.openCount(), unresolved.size(), codes.c_str(), crossing, notClosed, r.quality.minAngle,
                 triangles, peak);
     printSurfaceCrossings(tows, r.mesh, crossings);
+    printFolds(tows, r);
+    t0 = std::chrono::steady_clock::now();
+    for (const towgeom::TowSurface& tow : tows) (void)towgeom::findFold(tow);
+    std::printf("  findFold on every tow (part of resolve): %.2f s on one thread\n", since(t0));
     std::printf("  %zu sharp constraint corners, %zu triangles at them, %zu under the %.3g deg bound elsewhere; smallest angle away "
                 "from corners %.3g deg\n",
                 r.mesh.sharpCorners.size(), r.quality.atSharpCorners, r.quality.underBound, r.quality.angleBound,
@@ -377,6 +390,7 @@ int runLargeCell(unsigned seed, std::size_t threads, bool smoke)
                 "(within or between tows, or against the box's faces)\n",
                 resolveSeconds, towgeom::unresolvedPairs(r).size(), triangles, r.mesh.cell->triangles.size(), crossings.crossing);
     printSurfaceCrossings(tows, r.mesh, crossings);
+    printFolds(tows, r);
     std::fflush(stdout);
     towgeom::VolumeMeshOptions volumeOptions;
     volumeOptions.threads = threads;

@@ -16,9 +16,12 @@
 #include <sstream>
 #include <utility>
 
+#include <nlohmann/json.hpp>
+
 #include "cli_runner.hpp"
 #include "mesh_checks.hpp"
 #include "occt_reference.hpp"
+#include "scan_like.hpp"
 #include "synthetic_tows.hpp"
 
 namespace fs = std::filesystem;
@@ -1577,4 +1580,31 @@ TEST_CASE("CalculiX solves a cell whose face cuts through an overlap: the giver'
         CHECK(largestDisplacement(dat, set, 0) > 1e-4);  // the pull is 3e-3 over the cell
     }
     fs::remove_all(dir);
+}
+
+TEST_CASE("towgeom resolve warns of a tow whose surface folds, names the place in report.json, and refuses its volume mesh", "[cli][resolve][fold]")
+{
+    // binder_2_p1 of the 57-tow scan-like textile (seed 1): its cubic overshoots after a bend and
+    // crosses itself (test_surface_fold.cpp checks the place against CGAL).
+    const testing::ScanLikeTextile textile = testing::largeScanLikeTextile(1);
+    std::vector<TowStack> one;
+    for (const TowStack& s : textile.stacks)
+        if (s.name == "binder_2_p1") one.push_back(s);
+    REQUIRE(one.size() == 1);
+    const fs::path out = scratch("fold");
+    const std::string files = testing::writeStacks(out / "in", one);
+    const Run r = cli("resolve " + files + " --out '" + (out / "res").string() + "' --volume --quiet");
+    const std::optional<SurfaceFold> fold = findFold(testing::fitAll(one).front());
+    REQUIRE(fold);
+    CHECK(r.status == 3);  // the volume mesh asked for is missing
+    CHECK_THAT(r.err, Catch::Matchers::Contains("warning: tow 'binder_2_p1': its surface crosses itself near (") &&
+                          Catch::Matchers::Contains("no volume mesh written (--volume)") &&
+                          Catch::Matchers::Contains("its surface crosses itself near ("));
+    const nlohmann::json report = nlohmann::json::parse(testing::slurp(out / "res" / "report.json"));
+    const nlohmann::json& f = report["tows"][0]["fold"];
+    REQUIRE(f.is_object());
+    CHECK(f["point"][0].get<double>() == Approx(fold->at.x).margin(1e-12));
+    CHECK(f["point"][2].get<double>() == Approx(fold->at.z).margin(1e-12));
+    CHECK(f["crossing_pairs"].get<std::size_t>() == fold->crossingPairs);
+    fs::remove_all(out);
 }

@@ -16,6 +16,7 @@
 #include "towgeom/textile_mesh.hpp"
 #include "towgeom/tow_intersection.hpp"
 #include "towgeom/tow_stack.hpp"
+#include "towgeom/surface_fold.hpp"
 #include "towgeom/tow_surface.hpp"
 #include "towgeom/export.hpp"
 
@@ -147,6 +148,9 @@ struct TowResolution {
     /// The mesh size h this tow was meshed at: MeshOptions::relativeEdgeLength x its own size,
     /// or MeshOptions::edgeLength, at most a quarter of its circumference.
     double meshSize = 0.0;
+    /// Where the tow's fitted surface crosses itself (findFold()), inside the cell if there is
+    /// one; nullopt where it does not. Its meshes cross there, and meshVolumes() refuses it.
+    std::optional<SurfaceFold> fold;
     /// "primary" (primary in some region, secondary in none), "secondary", "both" or "none".
     const char* role() const
     {

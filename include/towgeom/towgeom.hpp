@@ -17,6 +17,7 @@
 #include "towgeom/intersection_loop.hpp"
 #include "towgeom/intersection_options.hpp"
 #include "towgeom/intersection_report_json.hpp"
+#include "towgeom/surface_fold.hpp"
 #include "towgeom/surface_mesher.hpp"
 #include "towgeom/progress.hpp"
 #include "towgeom/load_cases.hpp"

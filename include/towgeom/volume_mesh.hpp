@@ -121,7 +121,11 @@ TOWGEOM_EXPORT TetrahedronQuality tetrahedronQuality(const VolumeMesh& volumes);
 ///         surfaces meet (a loop's, a cap's rim) lie at under 0.01 degrees to each other, the
 ///         least angle Gmsh 4.8's HXT accepts: tows touching tangentially (pressed flat together)
 ///         leave no room for a tetrahedron there (ResolutionMethod::Shrink leaves a gap);
-///         (Internal) with Gmsh's message if Gmsh fails, if it added, moved or renumbered a
+///         (Unsupported) naming the tow(s), the place and the count if Gmsh's HXT stops and
+///         surface triangles are found crossing each other (exact predicates, looked for only
+///         then): a tow whose fitted surface folds (TowResolution::fold), or surfaces passing
+///         through each other;
+///         (Internal) with Gmsh's message if Gmsh fails otherwise, if it added, moved or renumbered a
 ///         surface node, or (order 2) if a tetrahedron has no node at the middle of an edge.
 TOWGEOM_EXPORT VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& options = {});
 

@@ -55,7 +55,8 @@ three surfaces and shared by the three meshes. Writes, all or nothing:
                    *ELSET/*NSET REGION_k, *ELSET CAPS_NAME; with --cell also *ELSET
                    MATRIX_FACES (the box's faces outside the tows) and *NSET XMIN ... ZMAX
   DIR/report.json  {"tows":[{"name","role","volume_before","volume_after","area","triangles",
-                   "boundary_loops","pieces","mesh_size"(,"largest_section_change")}], "loops":[...as detect...], "findings":[...as detect...],
+                   "boundary_loops","pieces","mesh_size"(,"largest_section_change")(,"fold":{"point":[x,y,z],
+                   "uv":[u,v],"crossing_pairs"})}], "loops":[...as detect...], "findings":[...as detect...],
                    "unresolved":[{"tow_a","tow_b","reason","message"}], "regions":[{"primary",
                    "secondary","triangles","nodes","area","volume_removed","surface","note"}],
                    "triple_points":[{"tows":[3 names],"node","point":[x,y,z]}],
@@ -465,8 +466,9 @@ int runResolve(int argc, char** argv, int first)
                 volumes = meshVolumes(mesh, vo);
                 addFibreDirections(volumes, tows, options.threads);
             } catch (const Error& e) {
-                // Surfaces the tetrahedral mesher cannot take (tows touching tangentially): the
-                // surfaces are still written, the volume mesh is refused as for overlapping tows.
+                // Surfaces the tetrahedral mesher cannot take (tows touching tangentially, a tow
+                // whose surface folds): the surfaces are still written, the volume mesh is
+                // refused as for overlapping tows.
                 if (e.code() != ErrorCode::Unsupported) throw;
                 volumeRefused = e.message() + " [" + errorCodeName(e.code()) + "]";
                 tetrahedra = false;
@@ -583,6 +585,12 @@ int runResolve(int argc, char** argv, int first)
                       << " pairs of triangles of two tows' tubes still cross (report.json crossing_triangle_pairs): the "
                          "surfaces are closer there than the mesh follows after refining both around them (try a smaller "
                          "--mesh-size), or the tows pass through each other where no intersection loop bounds the overlap\n";
+        for (std::size_t t = 0; t < tows.size(); ++t)  // a warning, whatever --quiet says
+            if (const std::optional<SurfaceFold>& f = result.tows[t].fold)
+                std::cerr << "towgeom resolve: warning: tow '" << tows[t].name() << "': its surface crosses itself near (" << f->at.x
+                          << ", " << f->at.y << ", " << f->at.z << ") (u = " << f->uv.u
+                          << "; report.json \"fold\"): it bends sharper than it is thick between sections far apart, and "
+                             "its written meshes cross there (no volume mesh fits); denser sections at the bend unfold it\n";
         if (!quiet)
             for (const ConnectedRegion& g : mesh.regions)
                 if (!g.note.empty()) std::cerr << "towgeom resolve: note: " << g.note << "\n";

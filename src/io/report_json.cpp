@@ -152,6 +152,10 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
                            {"pieces", r.pieces},
                            {"mesh_size", r.meshSize}});
         if (t < result.shrunk.size()) towList.back()["largest_section_change"] = result.shrunk[t].largestSectionChange();
+        if (r.fold)
+            towList.back()["fold"] = {{"point", {r.fold->at.x, r.fold->at.y, r.fold->at.z}},
+                                      {"uv", {r.fold->uv.u, r.fold->uv.v}},
+                                      {"crossing_pairs", r.fold->crossingPairs}};
     }
     j["tows"] = std::move(towList);
     j["loops"] = loopsJson(result.intersections, tows, 0.0, options.threads);

@@ -3,6 +3,7 @@
 #include "towgeom/connect_regions.hpp"
 #include "towgeom/mesh_tows.hpp"
 #include "towgeom/resolve.hpp"
+#include "towgeom/surface_fold.hpp"
 #include "towgeom/shrink_tows.hpp"
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "cell/cell_faces.hpp"
+#include "core/parallel.hpp"
 #include "core/progress_report.hpp"
 #include "pipeline/resolve_checks.hpp"
 #include "intersect/textile_frame.hpp"
@@ -179,6 +181,21 @@ struct MeshSizePlan {
     }
 };
 
+/// TowResolution::fold of every tow (inside the cell, if any): findFold() on @p options.threads
+/// threads.
+void findFolds(const std::vector<TowSurface>& tows, const ResolveOptions& options, ResolveResult& result)
+{
+    detail::sayStage(options, "looking for folds in " + std::to_string(tows.size()) + " tows' surfaces");
+    detail::parallelFor(tows.size(), detail::workerCount(options.threads), [&](std::size_t t) {
+        std::optional<SurfaceFold> fold = findFold(tows[t]);
+        if (fold && options.cell) {  // a fold outside the cell is clipped away
+            const Point3 &lo = options.cell->min, &hi = options.cell->max, &p = fold->at;
+            if (p.x < lo.x || p.y < lo.y || p.z < lo.z || p.x > hi.x || p.y > hi.y || p.z > hi.z) fold.reset();
+        }
+        result.tows[t].fold = fold;
+    });
+}
+
 /// meshTows() with @p report for @p tows, both checked, the sizes planned. Computed in the
 /// textile's normalised frame (as intersectTows()), so that the meshes do not depend on the
 /// user's units; the result is in the user's units.
@@ -216,6 +233,7 @@ ResolveResult meshWithPlan(const std::vector<TowSurface>& tows, const Intersecti
     for (const SkippedLoop& s : result.skippedLoops) result.skipped.emplace_back(s.loop, s.message);
 #pragma GCC diagnostic pop
     for (std::size_t t = 0; t < tows.size(); ++t) result.tows[t].meshSize = plan.towH[t];
+    findFolds(tows, options, result);
     return result;
 }
 

@@ -814,7 +814,10 @@ std::vector<TowFailure> connect(const std::vector<TowSurface>& tows, const Resol
         r.boundaryLoops = f.boundaryLoops;
         badEdges[t] = f.badEdges;
         r.pieces = detail::connectedPieces(triangles);
-        if (t < meshed.tows.size()) r.meshSize = meshed.tows[t].meshSize;
+        if (t < meshed.tows.size()) {
+            r.meshSize = meshed.tows[t].meshSize;
+            r.fold = meshed.tows[t].fold;
+        }
     });
     for (std::size_t t = 0; t < tows.size(); ++t)
         if (badEdges[t] != 0 || out.tows[t].boundaryLoops != (uv.capped[t] || meshed.mesh.tows[t].triangles.empty() ? 0u : 2u))

@@ -24,7 +24,7 @@
 #include "core/parallel.hpp"
 #include "mesh/mesh_measures.hpp"
 #include "volume/volume_conformity.hpp"
-#include "volume/facet_crossings.hpp"
+#include "core/triangle_crossings.hpp"
 #include "volume/facet_folds.hpp"
 #include "volume/gmsh_library.hpp"
 #include "volume/graded_size.hpp"
@@ -509,7 +509,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     // (x, y, z)". Looked for only then (it costs about a third of HXT's time on a scan's cell),
     // to refuse naming the tows.
     const auto refuseCrossings = [&]() {
-        const std::optional<detail::FacetCrossing> crossing = detail::firstCrossing(surfaces.nodes, patchTriangles);
+        const std::optional<detail::TriangleCrossing> crossing = detail::firstCrossing(surfaces.nodes, patchTriangles);
         if (!crossing) return;
         std::vector<std::size_t> involved = bounding(crossing->surfaceA, crossing->surfaceB);
         involved.erase(std::remove(involved.begin(), involved.end(), towCount), involved.end());  // the matrix
@@ -521,7 +521,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         if (involved.size() == 1)
             text << ". A tow's surface folds where it bends sharper than it is thick between sections far apart (a cubic "
                     "through them overshoots): denser sections there unfold it";
-        throw Error(ErrorCode::InvalidArgument, text.str());
+        throw Error(ErrorCode::Unsupported, text.str());
     };
     {
         // Surfaces meeting at an angle below HXT's tolerance (tows touching tangentially) stop it

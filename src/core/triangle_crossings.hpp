@@ -1,8 +1,7 @@
-// Surface triangles that cross each other: a tow whose fitted surface folds (it bends sharper
-// than it is thick between widely spaced sections), or two surfaces that pass through each
-// other. Gmsh's tetrahedral mesher stops on either with "PLC Error: A segment and a facet
-// intersect", after its other work; found before Gmsh is called, so the refusal can name the
-// surfaces and the place.
+// Triangles that cross each other: a tow whose fitted surface folds (it bends sharper than it is
+// thick between widely spaced sections), or two surfaces that pass through each other. The
+// surface stage looks for folds with it (findFold()), the volume stage names the surfaces when
+// Gmsh's tetrahedral mesher stops on crossing triangles.
 #pragma once
 
 #include <cstddef>
@@ -16,9 +15,10 @@ TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
 
 /// Two triangles that meet beyond the nodes and edge they share.
-struct FacetCrossing {
+struct TriangleCrossing {
     std::size_t surfaceA = 0, surfaceB = 0;  ///< indices into the surfaces given (A <= B)
     Point3 at;                               ///< the centroid of the first crossing pair's first triangle
+    std::size_t triangle = 0;                ///< that triangle's index among all triangles given, in order
     std::size_t pairs = 0;                   ///< crossing pairs in all
 };
 
@@ -29,7 +29,7 @@ struct FacetCrossing {
 ///  - an edge in common: they lie in one plane on the same side of the edge (fold onto it).
 /// Candidates come from CGAL::box_self_intersection_d on the triangles' boxes; the same three
 /// nodes twice are passed over. nullopt when no two cross.
-std::optional<FacetCrossing> firstCrossing(const std::vector<Point3>& nodes, const std::vector<const std::vector<std::size_t>*>& surfaces);
+std::optional<TriangleCrossing> firstCrossing(const std::vector<Point3>& nodes, const std::vector<const std::vector<std::size_t>*>& surfaces);
 
 }  // namespace detail
 TOWGEOM_END_NAMESPACE

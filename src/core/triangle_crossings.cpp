@@ -1,4 +1,4 @@
-#include "volume/facet_crossings.hpp"
+#include "core/triangle_crossings.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
@@ -49,7 +49,7 @@ bool cross(const Facet& s, const Facet& t, const std::vector<Kernel::Point_3>& p
 
 }  // namespace
 
-std::optional<FacetCrossing> firstCrossing(const std::vector<Point3>& nodes, const std::vector<const std::vector<std::size_t>*>& surfaces)
+std::optional<TriangleCrossing> firstCrossing(const std::vector<Point3>& nodes, const std::vector<const std::vector<std::size_t>*>& surfaces)
 {
     std::vector<Kernel::Point_3> p;
     p.reserve(nodes.size());
@@ -62,7 +62,7 @@ std::optional<FacetCrossing> firstCrossing(const std::vector<Point3>& nodes, con
     boxes.reserve(facets.size());
     for (std::size_t f = 0; f < facets.size(); ++f)
         boxes.emplace_back(p[facets[f].node[0]].bbox() + p[facets[f].node[1]].bbox() + p[facets[f].node[2]].bbox(), f);
-    std::optional<FacetCrossing> first;
+    std::optional<TriangleCrossing> first;
     std::size_t pairs = 0;
     CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& x, const Box& y) {
         const Facet &s = facets[x.info()], &t = facets[y.info()];
@@ -70,7 +70,7 @@ std::optional<FacetCrossing> firstCrossing(const std::vector<Point3>& nodes, con
         ++pairs;
         if (first) return;
         const Point3 &a = nodes[s.node[0]], &b = nodes[s.node[1]], &c = nodes[s.node[2]];
-        first = FacetCrossing{std::min(s.surface, t.surface), std::max(s.surface, t.surface), (1.0 / 3.0) * (a + b + c), 0};
+        first = TriangleCrossing{std::min(s.surface, t.surface), std::max(s.surface, t.surface), (1.0 / 3.0) * (a + b + c), x.info(), 0};
     });
     if (first) first->pairs = pairs;
     return first;
