@@ -1,6 +1,7 @@
 // findFold() against CGAL's exact predicates on a dense tessellation of the same surface (an
-// oracle that knows nothing of the sampling findFold() uses): on every tow of a 57-tow
-// scan-like textile, a fold is found exactly where the oracle finds the surface crossing itself.
+// oracle that knows nothing of the sampling findFold() uses): on every tow of the 60-tow
+// scan-like textile of seed 1, a fold is found exactly where the oracle finds the surface
+// crossing itself.
 #include <catch2/catch.hpp>
 #include <towgeom/towgeom.hpp>
 
@@ -56,11 +57,13 @@ TEST_CASE("findFold: the scan-like textile's folded binder is found where CGAL f
     for (const TowSurface& tow : tows) {
         INFO("tow " << tow.name());
         const std::optional<SurfaceFold> fold = findFold(tow);
-        // The oracle: 8 samples per section span along the tow (twice findFold's), 96 around.
+        // The oracle: uniform in u, 8 samples per section span on average (twice findFold's), 96
+        // around (three times).
         const std::vector<Point3> oracle = oracleFold(tow, 8 * (tow.sectionCount() - 1) + 1, 96);
         CHECK(fold.has_value() == !oracle.empty());
         if (!fold || oracle.empty()) continue;
         ++folded;
+        CHECK(tow.name() == "binder_2_p1");
         CHECK(fold->crossingPairs > 0);
         // The same fold: a crossing of the oracle's within one of findFold's sampling steps (its
         // triangles are that long) of the place found.
@@ -80,4 +83,30 @@ TEST_CASE("findFold refuses a grid too coarse to be a surface, naming the tow", 
     FoldSearchOptions o;
     o.around = 4;
     CHECK_THROWS_WITH(findFold(tows[0], o), Catch::Matchers::Contains("tow 'straight'") && Catch::Matchers::Contains("8 around"));
+    o.around = 32;
+    o.perSpan = 0;
+    CHECK_THROWS_WITH(findFold(tows[0], o), Catch::Matchers::Contains("tow 'straight'") && Catch::Matchers::Contains("1 sample per section span"));
+}
+
+TEST_CASE("findFold within a box: the binder's fold is found in a box around it and not in a box beside it", "[fold]")
+{
+    const testing::ScanLikeTextile textile = testing::largeScanLikeTextile(1);
+    std::vector<TowStack> one;
+    for (const TowStack& s : textile.stacks)
+        if (s.name == "binder_2_p1") one.push_back(s);
+    REQUIRE(one.size() == 1);
+    const TowSurface tow = testing::fitAll(one).front();
+    const std::optional<SurfaceFold> anywhere = findFold(tow);
+    REQUIRE(anywhere);
+    FoldSearchOptions o;
+    o.within.add(anywhere->at - Vector3{0.3, 0.3, 0.3});
+    o.within.add(anywhere->at + Vector3{0.3, 0.3, 0.3});
+    const std::optional<SurfaceFold> around = findFold(tow, o);
+    REQUIRE(around);
+    CHECK(around->crossingPairs <= anywhere->crossingPairs);
+    // A box over the tow's first half (x below 3; the fold is at x = 6.4 to 6.6): none.
+    FoldSearchOptions beside;
+    beside.within.add(tow.boundingBox().min);
+    beside.within.add(Point3{3.0, tow.boundingBox().max.y, tow.boundingBox().max.z});
+    CHECK_FALSE(findFold(tow, beside).has_value());
 }

@@ -149,7 +149,8 @@ struct TowResolution {
     /// or MeshOptions::edgeLength, at most a quarter of its circumference.
     double meshSize = 0.0;
     /// Where the tow's fitted surface crosses itself (findFold()), inside the cell if there is
-    /// one; nullopt where it does not. Its meshes cross there, and meshVolumes() refuses it.
+    /// one; nullopt where it does not. Its meshes cross there unless coarser than the fold, and
+    /// Gmsh's tetrahedral mesher then stops (meshVolumes() names the tow).
     std::optional<SurfaceFold> fold;
     /// "primary" (primary in some region, secondary in none), "secondary", "both" or "none".
     const char* role() const

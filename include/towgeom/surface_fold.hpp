@@ -18,7 +18,7 @@ TOWGEOM_BEGIN_NAMESPACE
 /// A place where a tow's surface crosses itself.
 struct SurfaceFold {
     Point3 at;                     ///< a point of the surface there (a crossing triangle's centroid)
-    UV uv;                         ///< its parameters on the tow
+    UV uv;                         ///< that centroid's parameters on the sampling grid (v within the period)
     std::size_t crossingPairs = 0;  ///< crossing triangle pairs of the sampled surface
 };
 
@@ -26,13 +26,16 @@ struct SurfaceFold {
 struct FoldSearchOptions {
     std::size_t perSpan = 4;   ///< samples along the tow between two consecutive sections (at least 1)
     std::size_t around = 32;   ///< samples around the tow (at least 8)
+    /// Only where the sampled surface's triangles meet this box (a cell); empty (default): everywhere.
+    BoundingBox within;
 };
 
 /// Where @p tow's surface crosses itself, or nullopt if its sampled surface does not. A tube fitted
 /// through sections folds where it bends sharper than it is thick between sections far apart: the
-/// cubic through them overshoots, and its inner side passes through its outer side. Each tow's
-/// fold is then in every mesh of it (the surface meshes' triangles cross) and Gmsh's tetrahedral
-/// mesher stops there; denser sections at the bend unfold it.
+/// cubic through them overshoots, and its inner side passes through its outer side (two parts of
+/// a tow passing through each other are found too). Its surface meshes then cross there unless
+/// they are coarser than the fold, and Gmsh's tetrahedral mesher stops on them; denser sections at
+/// the bend unfold it. The end caps are not searched.
 ///
 /// The surface is sampled on a grid (FoldSearchOptions::perSpan points between consecutive
 /// sections' parameters, FoldSearchOptions::around points around, closed across the seam) and

@@ -51,7 +51,8 @@ struct PairHash {
 };
 
 /// Per node, the length of its shortest edge in any tow's mesh (infinity for a node of none), and
-/// its neighbours along edges: of the triangles with a node from firstNode on (nodeEdges()).
+/// its neighbours along edges: of the triangles with a candidate node from firstNode on
+/// (nodeEdges()); every node of none of them has no edge here.
 struct NodeEdges {
     std::vector<double> shortest;
     std::vector<std::vector<std::size_t>> neighbours;
@@ -59,13 +60,14 @@ struct NodeEdges {
     std::unordered_map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>, PairHash> thirds;
 };
 
-NodeEdges nodeEdges(const TextileMesh& mesh, std::size_t firstNode)
+NodeEdges nodeEdges(const TextileMesh& mesh, std::size_t firstNode, const std::vector<char>& candidate)
 {
     NodeEdges out{std::vector<double>(mesh.nodes.size(), std::numeric_limits<double>::infinity()),
                   std::vector<std::vector<std::size_t>>(mesh.nodes.size()), {}};
+    const auto wanted = [&](std::size_t n) { return n >= firstNode && candidate[n]; };
     for (const TowMesh& m : mesh.tows)
         for (const Triangle& t : m.triangles) {
-            if (t[0] < firstNode && t[1] < firstNode && t[2] < firstNode) continue;
+            if (!wanted(t[0]) && !wanted(t[1]) && !wanted(t[2])) continue;
             for (int k = 0; k < 3; ++k) {
                 const std::size_t a = t[static_cast<std::size_t>(k)], b = t[static_cast<std::size_t>((k + 1) % 3)];
                 const double l = distance(mesh.nodes[a], mesh.nodes[b]);
@@ -260,7 +262,20 @@ std::size_t snapToCellPlanes(TextileMesh& mesh, NodeParameters& uv, const std::v
                              double fraction, std::size_t firstNode, unsigned faces)
 {
     const std::array<Plane, 6> planes = planesOf(cell);
-    const NodeEdges edges = nodeEdges(mesh, firstNode);
+    // Only nodes within fraction x the longest edge of a plane can be within fraction x their own
+    // shortest edge of it: the edges of the others' triangles are not needed (a scan's cell has
+    // millions of them).
+    double longest = 0.0;
+    for (const TowMesh& m : mesh.tows)
+        for (const Triangle& t : m.triangles)
+            if (t[0] >= firstNode || t[1] >= firstNode || t[2] >= firstNode)
+                for (int k = 0; k < 3; ++k)
+                    longest = std::max(longest, distance(mesh.nodes[t[static_cast<std::size_t>(k)]], mesh.nodes[t[static_cast<std::size_t>((k + 1) % 3)]]));
+    std::vector<char> candidate(mesh.nodes.size(), 0);
+    for (std::size_t n = firstNode; n < mesh.nodes.size(); ++n)
+        for (std::size_t f = 0; f < 6; ++f)
+            if ((faces & (1u << f)) && std::abs(coord(mesh.nodes[n], planes[f].axis) - planes[f].at) < fraction * longest) candidate[n] = 1;
+    const NodeEdges edges = nodeEdges(mesh, firstNode, candidate);
     const double onPlane = kOnPlane * distance(cell.min, cell.max);
     const std::vector<double>& shortest = edges.shortest;
     std::size_t moved = 0;

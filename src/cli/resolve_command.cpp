@@ -589,8 +589,9 @@ int runResolve(int argc, char** argv, int first)
             if (const std::optional<SurfaceFold>& f = result.tows[t].fold)
                 std::cerr << "towgeom resolve: warning: tow '" << tows[t].name() << "': its surface crosses itself near (" << f->at.x
                           << ", " << f->at.y << ", " << f->at.z << ") (u = " << f->uv.u
-                          << "; report.json \"fold\"): it bends sharper than it is thick between sections far apart, and "
-                             "its written meshes cross there (no volume mesh fits); denser sections at the bend unfold it\n";
+                          << "; report.json \"fold\"): it bends sharper than it is thick between sections far apart (or two "
+                             "parts of it pass through each other); its meshes cross there unless coarser than the fold, and no "
+                             "volume mesh fits; denser sections at the bend unfold it\n";
         if (!quiet)
             for (const ConnectedRegion& g : mesh.regions)
                 if (!g.note.empty()) std::cerr << "towgeom resolve: note: " << g.note << "\n";

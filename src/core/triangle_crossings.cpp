@@ -8,6 +8,36 @@
 
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
+
+bool trianglesCross(const std::array<std::size_t, 3>& s, const std::array<CGAL::Epick::Point_3, 3>& ps,
+                    const std::array<std::size_t, 3>& t, const std::array<CGAL::Epick::Point_3, 3>& pt, std::size_t sharedBelow)
+{
+    int inT[3], common = 0;  // inT[k]: the corner of t that is s's corner k, or -1
+    for (int k = 0; k < 3; ++k) {
+        inT[k] = -1;
+        if (s[k] >= sharedBelow) continue;
+        for (int l = 0; l < 3; ++l)
+            if (s[k] == t[l]) inT[k] = l;
+        common += inT[k] >= 0;
+    }
+    if (common == 3) return false;
+    using Triangle = CGAL::Epick::Triangle_3;
+    using Segment = CGAL::Epick::Segment_3;
+    if (common == 0) return CGAL::do_intersect(Triangle(ps[0], ps[1], ps[2]), Triangle(pt[0], pt[1], pt[2]));
+    if (common == 2) {
+        int ks = 0, kt = 0;  // the corners not in common
+        while (inT[ks] >= 0) ++ks;
+        const int p = (ks + 1) % 3, q = (ks + 2) % 3;  // the common edge, as s's corners
+        while (kt == inT[p] || kt == inT[q]) ++kt;
+        return CGAL::coplanar(ps[p], ps[q], ps[ks], pt[kt]) && CGAL::coplanar_orientation(ps[p], ps[q], ps[ks], pt[kt]) == CGAL::POSITIVE;
+    }
+    int ks = 0;  // the corner in common
+    while (inT[ks] < 0) ++ks;
+    const int kt = inT[ks];
+    return CGAL::do_intersect(Segment(ps[(ks + 1) % 3], ps[(ks + 2) % 3]), Triangle(pt[0], pt[1], pt[2])) ||
+           CGAL::do_intersect(Segment(pt[(kt + 1) % 3], pt[(kt + 2) % 3]), Triangle(ps[0], ps[1], ps[2]));
+}
+
 namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -18,38 +48,10 @@ struct Facet {
     std::size_t surface;
 };
 
-/// Whether two triangles meet beyond what they share (see firstCrossing()).
-bool cross(const Facet& s, const Facet& t, const std::vector<Kernel::Point_3>& p)
-{
-    int inT[3], shared = 0;  // inT[k]: the index in t of s's corner k, or -1
-    for (int k = 0; k < 3; ++k) {
-        inT[k] = -1;
-        for (int l = 0; l < 3; ++l)
-            if (s.node[k] == t.node[l]) inT[k] = l;
-        shared += inT[k] >= 0;
-    }
-    const auto corner = [&](const Facet& f, int k) -> const Kernel::Point_3& { return p[f.node[(k % 3 + 3) % 3]]; };
-    const Kernel::Triangle_3 ts(corner(s, 0), corner(s, 1), corner(s, 2)), tt(corner(t, 0), corner(t, 1), corner(t, 2));
-    if (shared == 3) return false;
-    if (shared == 0) return CGAL::do_intersect(ts, tt);
-    if (shared == 2) {
-        int ks = 0, kt = 0;  // the corners not shared
-        while (inT[ks] >= 0) ++ks;
-        const std::size_t a = s.node[(ks + 1) % 3], b = s.node[(ks + 2) % 3];
-        while (t.node[kt] == a || t.node[kt] == b) ++kt;
-        return CGAL::coplanar(p[a], p[b], corner(s, ks), corner(t, kt)) &&
-               CGAL::coplanar_orientation(p[a], p[b], corner(s, ks), corner(t, kt)) == CGAL::POSITIVE;
-    }
-    int ks = 0;  // the shared corner
-    while (inT[ks] < 0) ++ks;
-    const int kt = inT[ks];
-    return CGAL::do_intersect(Kernel::Segment_3(corner(s, ks + 1), corner(s, ks + 2)), tt) ||
-           CGAL::do_intersect(Kernel::Segment_3(corner(t, kt + 1), corner(t, kt + 2)), ts);
-}
-
 }  // namespace
 
-std::optional<TriangleCrossing> firstCrossing(const std::vector<Point3>& nodes, const std::vector<const std::vector<std::size_t>*>& surfaces)
+std::optional<TriangleCrossing> firstCrossing(const std::vector<Point3>& nodes, const std::vector<const std::vector<std::size_t>*>& surfaces,
+                                              const BoundingBox& within)
 {
     std::vector<Kernel::Point_3> p;
     p.reserve(nodes.size());
@@ -60,13 +62,18 @@ std::optional<TriangleCrossing> firstCrossing(const std::vector<Point3>& nodes, 
             facets.push_back({{(*surfaces[s])[k] - 1, (*surfaces[s])[k + 1] - 1, (*surfaces[s])[k + 2] - 1}, s});
     std::vector<Box> boxes;
     boxes.reserve(facets.size());
-    for (std::size_t f = 0; f < facets.size(); ++f)
-        boxes.emplace_back(p[facets[f].node[0]].bbox() + p[facets[f].node[1]].bbox() + p[facets[f].node[2]].bbox(), f);
+    const CGAL::Bbox_3 region = within.empty() ? CGAL::Bbox_3() : CGAL::Bbox_3(within.min.x, within.min.y, within.min.z, within.max.x, within.max.y, within.max.z);
+    for (std::size_t f = 0; f < facets.size(); ++f) {
+        const std::array<std::size_t, 3>& n = facets[f].node;
+        if (CGAL::collinear(p[n[0]], p[n[1]], p[n[2]])) continue;  // no area: CGAL's tests need a plane
+        const CGAL::Bbox_3 box = p[n[0]].bbox() + p[n[1]].bbox() + p[n[2]].bbox();
+        if (within.empty() || CGAL::do_overlap(box, region)) boxes.emplace_back(box, f);
+    }
     std::optional<TriangleCrossing> first;
     std::size_t pairs = 0;
     CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& x, const Box& y) {
         const Facet &s = facets[x.info()], &t = facets[y.info()];
-        if (!cross(s, t, p)) return;
+        if (!trianglesCross(s.node, {p[s.node[0]], p[s.node[1]], p[s.node[2]]}, t.node, {p[t.node[0]], p[t.node[1]], p[t.node[2]]})) return;
         ++pairs;
         if (first) return;
         const Point3 &a = nodes[s.node[0]], &b = nodes[s.node[1]], &c = nodes[s.node[2]];

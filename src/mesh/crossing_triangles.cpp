@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "core/parallel.hpp"
+#include "core/triangle_crossings.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
@@ -49,30 +50,7 @@ struct TowNodes {
 bool cross(const TowNodes& a, std::size_t i, const TowNodes& b, std::size_t j)
 {
     const Triangle &s = a.triangle(i), &t = b.triangle(j);
-    int inT[3], common = 0;  // inT[k]: the corner of t that is s's corner k, or -1
-    for (int k = 0; k < 3; ++k) {
-        inT[k] = -1;
-        if (s[k] >= a.ownFrom) continue;  // a tow's own node is no other tow's
-        for (int l = 0; l < 3; ++l)
-            if (s[k] == t[l]) inT[k] = l;
-        common += inT[k] >= 0;
-    }
-    if (common == 3) return false;
-    if (common == 0) return CGAL::do_intersect(a.geometry(i), b.geometry(j));
-    if (common == 2) {
-        int ks = 0, kt = 0;  // the corners not in common
-        while (inT[ks] >= 0) ++ks;
-        const std::size_t p = s[(ks + 1) % 3], q = s[(ks + 2) % 3];
-        while (t[kt] == p || t[kt] == q) ++kt;
-        const K::Point_3 P = a.point(p), Q = a.point(q), S = a.point(s[ks]), T = b.point(t[kt]);
-        return CGAL::coplanar(P, Q, S, T) && CGAL::coplanar_orientation(P, Q, S, T) == CGAL::POSITIVE;
-    }
-    int ks = 0;  // the corner in common
-    while (inT[ks] < 0) ++ks;
-    const int kt = inT[ks];
-    const K::Segment_3 oppositeS(a.point(s[(ks + 1) % 3]), a.point(s[(ks + 2) % 3]));
-    const K::Segment_3 oppositeT(b.point(t[(kt + 1) % 3]), b.point(t[(kt + 2) % 3]));
-    return CGAL::do_intersect(oppositeS, b.geometry(j)) || CGAL::do_intersect(oppositeT, a.geometry(i));
+    return trianglesCross(s, {a.point(s[0]), a.point(s[1]), a.point(s[2])}, t, {b.point(t[0]), b.point(t[1]), b.point(t[2])}, a.ownFrom);
 }
 
 /// The box of every node a tow's triangles use.

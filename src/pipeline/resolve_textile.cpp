@@ -186,14 +186,12 @@ struct MeshSizePlan {
 void findFolds(const std::vector<TowSurface>& tows, const ResolveOptions& options, ResolveResult& result)
 {
     detail::sayStage(options, "looking for folds in " + std::to_string(tows.size()) + " tows' surfaces");
-    detail::parallelFor(tows.size(), detail::workerCount(options.threads), [&](std::size_t t) {
-        std::optional<SurfaceFold> fold = findFold(tows[t]);
-        if (fold && options.cell) {  // a fold outside the cell is clipped away
-            const Point3 &lo = options.cell->min, &hi = options.cell->max, &p = fold->at;
-            if (p.x < lo.x || p.y < lo.y || p.z < lo.z || p.x > hi.x || p.y > hi.y || p.z > hi.z) fold.reset();
-        }
-        result.tows[t].fold = fold;
-    });
+    FoldSearchOptions search;
+    if (options.cell) {  // a fold outside the cell is clipped away
+        search.within.add(options.cell->min);
+        search.within.add(options.cell->max);
+    }
+    detail::parallelFor(tows.size(), detail::workerCount(options.threads), [&](std::size_t t) { result.tows[t].fold = findFold(tows[t], search); });
 }
 
 /// meshTows() with @p report for @p tows, both checked, the sizes planned. Computed in the

@@ -38,14 +38,19 @@ std::optional<SurfaceFold> findFold(const TowSurface& tow, const FoldSearchOptio
             const std::size_t a = i * nv + j + 1, b = i * nv + (j + 1) % nv + 1, c = a + nv, d = b + nv;
             triangles.insert(triangles.end(), {a, c, d, a, d, b});
         }
-    const std::optional<detail::TriangleCrossing> crossing = detail::firstCrossing(nodes, {&triangles});
+    const std::optional<detail::TriangleCrossing> crossing = detail::firstCrossing(nodes, {&triangles}, options.within);
     if (!crossing) return std::nullopt;
     const std::size_t k = 3 * crossing->triangle;
     const UV &p = uvs[triangles[k] - 1], &q = uvs[triangles[k + 1] - 1], &r = uvs[triangles[k + 2] - 1];
-    // The centroid's parameters (the triangle may straddle the seam: v taken from its first corner).
+    // The centroid's parameters on the grid: the first corner is (i, j) in both triangles of a
+    // cell, the centroid a third (a, c, d) or two thirds (a, d, b) of a step further around
+    // (across the seam for the last column: wrapped).
+    const double step = range.vPeriod() / static_cast<double>(nv);
+    double v = p.v + step * (crossing->triangle % 2 == 0 ? 1.0 : 2.0) / 3.0;
+    if (v >= range.vMin + range.vPeriod()) v -= range.vPeriod();
     SurfaceFold fold;
     fold.at = crossing->at;
-    fold.uv = {(p.u + q.u + r.u) / 3.0, p.v};
+    fold.uv = {(p.u + q.u + r.u) / 3.0, v};
     fold.crossingPairs = crossing->pairs;
     return fold;
 }

@@ -506,21 +506,30 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     };
     // Triangles crossing each other (a tow whose surface folds, surfaces passing through each
     // other) stop HXT late, after its other work, with "a segment and a facet intersect at
-    // (x, y, z)". Looked for only then (it costs about a third of HXT's time on a scan's cell),
-    // to refuse naming the tows.
-    const auto refuseCrossings = [&]() {
+    // (x, y, z)". Looked for only then (about 20 s on a scan's cell of 3.3 M triangles, against
+    // the 50 s HXT had spent), to refuse naming the surfaces; @p gmshSaid is Gmsh's message.
+    const auto refuseCrossings = [&](const std::string& gmshSaid) {
         const std::optional<detail::TriangleCrossing> crossing = detail::firstCrossing(surfaces.nodes, patchTriangles);
         if (!crossing) return;
-        std::vector<std::size_t> involved = bounding(crossing->surfaceA, crossing->surfaceB);
-        involved.erase(std::remove(involved.begin(), involved.end(), towCount), involved.end());  // the matrix
+        // A patch's own tow (towCount: the cell's faces), and the tows it bounds.
+        const std::size_t ownA = patchTows[crossing->surfaceA][0], ownB = patchTows[crossing->surfaceB][0];
         std::ostringstream text;
         text.precision(6);
-        text << (involved.size() == 1 ? nameOf(involved[0]) + ": its surface crosses itself" : names(involved) + ": their surfaces cross")
-             << " near (" << crossing->at.x << ", " << crossing->at.y << ", " << crossing->at.z << ") (" << crossing->pairs
-             << " crossing triangle pair(s) in all): no volume mesh fits there";
-        if (involved.size() == 1)
+        const bool itself = ownA == ownB && ownA < towCount;
+        if (itself) {
+            text << nameOf(ownA) << ": its surface crosses itself";
+        } else {
+            std::vector<std::size_t> involved = bounding(crossing->surfaceA, crossing->surfaceB);
+            involved.erase(std::remove(involved.begin(), involved.end(), towCount), involved.end());  // the matrix
+            const bool faces = ownA == towCount || ownB == towCount;
+            text << names(involved) << (involved.empty() ? "" : faces ? " and " : "") << (faces ? "the cell's faces" : "")
+                 << ": their surfaces cross";
+        }
+        text << " near (" << crossing->at.x << ", " << crossing->at.y << ", " << crossing->at.z << ") (" << crossing->pairs
+             << " crossing triangle pair(s) in all; Gmsh: " << gmshSaid << "): no volume mesh fits there";
+        if (itself)
             text << ". A tow's surface folds where it bends sharper than it is thick between sections far apart (a cubic "
-                    "through them overshoots): denser sections there unfold it";
+                    "through them overshoots; TowResolution::fold): denser sections there unfold it";
         throw Error(ErrorCode::Unsupported, text.str());
     };
     {
@@ -561,6 +570,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     const detail::GmshApi& api = g.api();
     std::unique_lock<std::mutex> lock(gmshMutex());
     std::string where = "the tows' volumes";  // for messages
+    bool hxtStopped = false;  // gmshModelMeshGenerate threw
     try {
         GmshSession session(g);
         for (Surface& s : patches) {
@@ -613,7 +623,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         try {
             g.call("gmshModelMeshGenerate", api.gmshModelMeshGenerate, 3);
         } catch (...) {
-            refuseCrossings();  // the cause, named, if it is crossing triangles
+            hxtStopped = true;  // the cause looked for below, out of Gmsh's session and lock
             throw;
         }
         // Gmsh's tetrahedral optimiser once more, forced (its Mesh.Optimize pass leaves flat
@@ -701,8 +711,16 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
             }
         }
     } catch (const Error& e) {
+        if (hxtStopped) {
+            lock.unlock();
+            refuseCrossings(e.message());
+        }
         throw Error(e.code(), where + ": " + e.message());
     } catch (const std::exception& e) {
+        if (hxtStopped) {
+            lock.unlock();
+            refuseCrossings(e.what());
+        }
         throw Error(ErrorCode::Internal, "Gmsh failed meshing " + where + ": " + e.what());
     }
     lock.unlock();  // Gmsh is done

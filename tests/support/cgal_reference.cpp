@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -221,18 +222,22 @@ std::size_t crossingPairsBetweenTows(const TextileMesh& mesh)
 
 SurfaceCrossings crossingsInSurfaces(const TextileMesh& mesh)
 {
+    // Each triangle once (a region's is in both its tows' lists): by its sorted nodes, the first
+    // owner kept.
     std::vector<std::array<std::size_t, 3>> all;
     std::vector<MeshTriangle> owner;
+    std::set<std::array<std::size_t, 3>> seen;
+    const auto add = [&](const std::array<std::size_t, 3>& t, MeshTriangle who) {
+        std::array<std::size_t, 3> key = t;
+        std::sort(key.begin(), key.end());
+        if (!seen.insert(key).second) return;
+        all.push_back(t);
+        owner.push_back(who);
+    };
     for (std::size_t t = 0; t < mesh.tows.size(); ++t)
-        for (std::size_t k = 0; k < mesh.tows[t].triangles.size(); ++k) {
-            all.push_back(mesh.tows[t].triangles[k]);
-            owner.push_back({t, k});
-        }
+        for (std::size_t k = 0; k < mesh.tows[t].triangles.size(); ++k) add(mesh.tows[t].triangles[k], {t, k});
     if (mesh.cell)
-        for (std::size_t k = 0; k < mesh.cell->triangles.size(); ++k) {
-            all.push_back(mesh.cell->triangles[k]);
-            owner.push_back({MeshTriangle::kCellTriangles, k});
-        }
+        for (std::size_t k = 0; k < mesh.cell->triangles.size(); ++k) add(mesh.cell->triangles[k], {MeshTriangle::kCellTriangles, k});
     // Each unordered pair comes twice (as (i, j) and (j, i)); a triangle with itself is identical.
     const TriangleCrossings c = crossingTrianglePairs(mesh.nodes, all, all);
     SurfaceCrossings out;

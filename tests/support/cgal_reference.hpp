@@ -68,7 +68,7 @@ struct MeshTriangle {
 
 /// Every crossing pair of triangles among all of @p mesh's surfaces at once: within one tow,
 /// between tows, and against the box's matrix faces (CellMesh::triangles), by
-/// crossingTrianglePairs()'s rules (a triangle shared by two tows counts once). This is what
+/// crossingTrianglePairs()'s rules (a triangle in two tows' lists, a region's, taken once). This is what
 /// a tetrahedral mesher needs of its boundary: no two facets meeting beyond what they share.
 struct SurfaceCrossings {
     std::size_t crossing = 0;                                    ///< crossing pairs, each counted once
