@@ -148,8 +148,9 @@ struct TowResolution {
     /// The mesh size h this tow was meshed at: MeshOptions::relativeEdgeLength x its own size,
     /// or MeshOptions::edgeLength, at most a quarter of its circumference.
     double meshSize = 0.0;
-    /// Where the tow's fitted surface crosses itself (findFold()), inside the cell if there is
-    /// one; nullopt where it does not. Its meshes cross there unless coarser than the fold, and
+    /// Where the tow's fitted surface crosses itself (findFold()), among its sampled triangles
+    /// that reach into the cell if there is one (the point may lie just outside it); nullopt
+    /// where it does not. Its meshes cross there unless coarser than the fold, and
     /// Gmsh's tetrahedral mesher then stops (meshVolumes() names the tow).
     std::optional<SurfaceFold> fold;
     /// "primary" (primary in some region, secondary in none), "secondary", "both" or "none".

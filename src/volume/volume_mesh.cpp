@@ -554,12 +554,17 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         const std::optional<detail::TriangleCrossing> crossing = detail::firstCrossing(surfaces.nodes, patchTriangles);
         if (!crossing) return;
         // A patch's own tow (towCount: the cell's faces), and the tows it bounds.
-        const std::size_t ownA = patchTows[crossing->surfaceA][0], ownB = patchTows[crossing->surfaceB][0];
+        const std::size_t ownA = patchTows[crossing->surfaceA][0], ownB = patchTows[crossing->surfaceB][0];  // towCount: the cell's faces
         std::ostringstream text;
         text.precision(6);
-        const bool itself = ownA == ownB && ownA < towCount;
+        // A tow's surface is its own patch and its regions': two patches of one tow cross it.
+        std::size_t common = kNoTow;
+        for (std::size_t a : patchTows[crossing->surfaceA])
+            for (std::size_t b : patchTows[crossing->surfaceB])
+                if (a == b && a < towCount && common == kNoTow) common = a;
+        const bool itself = common != kNoTow;
         if (itself) {
-            text << nameOf(ownA) << ": its surface crosses itself";
+            text << nameOf(common) << ": its surface crosses itself";
         } else {
             std::vector<std::size_t> involved = bounding(crossing->surfaceA, crossing->surfaceB);
             involved.erase(std::remove(involved.begin(), involved.end(), towCount), involved.end());  // the matrix
@@ -675,9 +680,15 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         if (options.optimize) g.call("gmshModelMeshOptimize", api.gmshModelMeshOptimize, "", 1, 1, nullptr, std::size_t(0));
         // HXT on several threads varies run to run, and now and then a flat tetrahedron (2.8e-20
         // in a cell of 1.1) survives that pass: CalculiX's uniform strain was then 1-3.5 % off.
-        // Optimised again while any is left (Gmsh's optimiser, then Netgen's), at most 3 times.
-        for (int attempt = 0; options.optimize && attempt < 3 && flatTetrahedra(g) > 0; ++attempt)
-            g.call("gmshModelMeshOptimize", api.gmshModelMeshOptimize, attempt < 2 ? "" : "Netgen", 1, 1, nullptr, std::size_t(0));
+        // Optimised again while their count falls, at most twice more. (Debian's Gmsh 4.8 has no
+        // Netgen optimiser.)
+        if (options.optimize)
+            for (std::size_t attempt = 0, flat = flatTetrahedra(g); attempt < 2 && flat > 0; ++attempt) {
+                g.call("gmshModelMeshOptimize", api.gmshModelMeshOptimize, "", 1, 1, nullptr, std::size_t(0));
+                const std::size_t left = flatTetrahedra(g);
+                if (left >= flat) break;
+                flat = left;
+            }
 
         const auto nodesOn = [&](int dim, std::vector<std::size_t>& tags, std::vector<double>& coords) {
             std::size_t* t = nullptr;
