@@ -52,7 +52,8 @@ endif()
 # expects (the CLI's own codes are 0, 1 and 2), so a report can never pass for an expected
 # failure. LeakSanitizer is on (ASan's default on Linux), stated so that it stays on.
 # LeakSanitizer suppresses OpenCASCADE's process-lifetime statics of STEP, IGES and XCAF by their
-# toolkits (tests/sanitizer/lsan_occt.supp says why, and what that costs); nothing else is
+# toolkits, and Gmsh HXT's leaks when its boundary recovery fails, by HXT's functions
+# (tests/sanitizer/lsan_libraries.supp says why, and what that costs); nothing else is
 # suppressed (OCCT allocates
 # through malloc/free, so ASan sees no new/free mismatch).
 if(TOWGEOM_SANITIZE)
@@ -61,7 +62,7 @@ if(TOWGEOM_SANITIZE)
   file(WRITE "${PROJECT_BINARY_DIR}/sanitizer_environment.cmake"
     "set(ENV{ASAN_OPTIONS} \"${asan}:\$ENV{ASAN_OPTIONS}\")\n"
     "set(ENV{UBSAN_OPTIONS} \"${ubsan}:\$ENV{UBSAN_OPTIONS}\")\n"
-    "set(ENV{LSAN_OPTIONS} \"suppressions=${PROJECT_SOURCE_DIR}/tests/sanitizer/lsan_occt.supp:print_suppressions=0:\$ENV{LSAN_OPTIONS}\")\n")
+    "set(ENV{LSAN_OPTIONS} \"suppressions=${PROJECT_SOURCE_DIR}/tests/sanitizer/lsan_libraries.supp:print_suppressions=0:\$ENV{LSAN_OPTIONS}\")\n")
   set_property(DIRECTORY "${PROJECT_SOURCE_DIR}" APPEND PROPERTY TEST_INCLUDE_FILES
     "${PROJECT_BINARY_DIR}/sanitizer_environment.cmake")
 endif()
