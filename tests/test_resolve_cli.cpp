@@ -1586,11 +1586,7 @@ TEST_CASE("towgeom resolve warns of a tow whose surface folds, names the place i
 {
     // binder_2_p1 of the 60-tow scan-like textile (seed 1): its cubic overshoots after a bend and
     // crosses itself (test_surface_fold.cpp checks the place against CGAL).
-    const testing::ScanLikeTextile textile = testing::largeScanLikeTextile(1);
-    std::vector<TowStack> one;
-    for (const TowStack& s : textile.stacks)
-        if (s.name == "binder_2_p1") one.push_back(s);
-    REQUIRE(one.size() == 1);
+    const std::vector<TowStack> one{testing::foldingBinder()};
     const fs::path out = scratch("fold");
     const std::string files = testing::writeStacks(out / "in", one);
     const Run r = cli("resolve " + files + " --out '" + (out / "res").string() + "' --volume --quiet");

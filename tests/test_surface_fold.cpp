@@ -90,11 +90,7 @@ TEST_CASE("findFold refuses a grid too coarse to be a surface, naming the tow", 
 
 TEST_CASE("findFold within a box: the binder's fold is found in a box around it and not in a box beside it", "[fold]")
 {
-    const testing::ScanLikeTextile textile = testing::largeScanLikeTextile(1);
-    std::vector<TowStack> one;
-    for (const TowStack& s : textile.stacks)
-        if (s.name == "binder_2_p1") one.push_back(s);
-    REQUIRE(one.size() == 1);
+    const std::vector<TowStack> one{testing::foldingBinder()};
     const TowSurface tow = testing::fitAll(one).front();
     const std::optional<SurfaceFold> anywhere = findFold(tow);
     REQUIRE(anywhere);

@@ -39,13 +39,19 @@ const GmshApi& gmshApi()
     return api;
 }
 
-std::string gmshLastError(const GmshApi& api)
+std::string gmshLastErrorText(const GmshApi& api)
 {
     char* error = nullptr;
     int ierr = 0;
     api.gmshLoggerGetLastError(&error, &ierr);
     std::string message = error ? error : "";
     if (error) api.gmshFree(error);
+    return message;
+}
+
+std::string gmshLastError(const GmshApi& api)
+{
+    const std::string message = gmshLastErrorText(api);
     return message.empty() ? std::string("no message") : message;
 }
 

@@ -54,6 +54,9 @@ const GmshApi& gmshApi();
 
 /// Gmsh's last error message ("no message" when it has none).
 std::string gmshLastError(const GmshApi& api);
+/// Gmsh's last error message as it is: empty when none was logged since Gmsh last cleared it
+/// (its mesh generation clears it when it starts).
+std::string gmshLastErrorText(const GmshApi& api);
 
 /// Throws std::runtime_error with Gmsh's last error if @p ierr is set.
 void gmshCheck(const GmshApi& api, int ierr, const char* call);

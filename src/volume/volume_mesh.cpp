@@ -130,6 +130,8 @@ public:
         for (auto& [name, value] : saved_) g.call("gmshOptionGetNumber", api.gmshOptionGetNumber, name, &value);
         try {
             g.call("gmshOptionSetNumber", api.gmshOptionSetNumber, "General.Terminal", 0.0);
+            // An error in a call throws (and sets ierr), whatever the host set.
+            g.call("gmshOptionSetNumber", api.gmshOptionSetNumber, "General.AbortOnError", 2.0);
             g.call("gmshModelAdd", api.gmshModelAdd, kModel);
             added_ = true;
         } catch (...) {
@@ -161,7 +163,8 @@ private:
     const Gmsh& g_;
     bool hadCurrent_ = false, added_ = false;
     std::string hostModel_;
-    std::pair<const char*, double> saved_[15] = {{"General.Terminal", 0.0},
+    std::pair<const char*, double> saved_[16] = {{"General.Terminal", 0.0},
+                                                {"General.AbortOnError", 0.0},
                                                 {"Mesh.MeshSizeFromCurvature", 0.0},
                                                 {"Mesh.MeshSizeFromPoints", 0.0},
                                                 {"Mesh.MeshSizeExtendFromBoundary", 0.0},
@@ -667,11 +670,23 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
             g.call("gmshModelMeshSetSizeCallback", api.gmshModelMeshSetSizeCallback, &gradedSizeAt, static_cast<void*>(&*grading));
         }
         const auto generateStart = std::chrono::steady_clock::now();
+        // Gmsh 4.8 throws an error out of its mesh generation before it releases its own lock
+        // (CTX::lock, released only at the end of GenerateMesh): every later generate in the
+        // process would then return at once, meshing nothing. So errors do not throw here; an
+        // error logged during it (generate clears the last one when it starts), or a volume left
+        // without tetrahedra (below), is the failure. Either way its cause is looked for out of
+        // Gmsh's session and towgeom's lock (hxtStopped).
+        option("General.AbortOnError", 0);
         try {
             g.call("gmshModelMeshGenerate", api.gmshModelMeshGenerate, 3);
         } catch (...) {
-            hxtStopped = true;  // the cause looked for below, out of Gmsh's session and lock
+            hxtStopped = true;
             throw;
+        }
+        option("General.AbortOnError", 2);
+        if (const std::string error = detail::gmshLastErrorText(api); !error.empty()) {
+            hxtStopped = true;
+            throw std::runtime_error("gmshModelMeshGenerate: " + error);
         }
         // Gmsh's tetrahedral optimiser once more, forced (its Mesh.Optimize pass leaves flat
         // tetrahedra HXT makes with a size callback: a point inserted a hair from a surface
@@ -757,8 +772,10 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
             g.call("gmshModelMeshGetElementsByType", api.gmshModelMeshGetElementsByType, type, &e, &ne, &n, &nn, static_cast<int>(v) + 1,
                    std::size_t(0), std::size_t(1));
             const std::vector<std::size_t> elements = detail::gmshTake(api, e, ne), nodes = detail::gmshTake(api, n, nn);
-            if (elements.empty() || nodes.size() != per * elements.size())
+            if (elements.empty() || nodes.size() != per * elements.size()) {
+                hxtStopped = true;
                 throw Error(ErrorCode::Internal, "Gmsh made no tetrahedron (" + detail::gmshLastError(api) + ")");
+            }
             for (std::size_t k = 0; k < elements.size(); ++k) {
                 const std::size_t* q = &nodes[per * k];
                 std::array<std::size_t, 4> tet{node(q[0]), node(q[1]), node(q[2]), node(q[3])};

@@ -342,4 +342,11 @@ ScanLikeTextile largeScanLikeTextile(unsigned seed, const ScanLikeSize& size)
     return scanned(o, c, rng);
 }
 
+TowStack foldingBinder()
+{
+    for (TowStack& s : largeScanLikeTextile(1).stacks)
+        if (s.name == "binder_2_p1") return std::move(s);
+    throw std::logic_error("largeScanLikeTextile(1) has no binder_2_p1 any more");
+}
+
 }  // namespace towgeom::testing

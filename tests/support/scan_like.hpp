@@ -61,6 +61,12 @@ struct ScanLikeSize {
 /// with the defaults 53 yarns, binders split by the box into more tows.
 ScanLikeTextile largeScanLikeTextile(unsigned seed, const ScanLikeSize& size = {});
 
+/// binder_2_p1 of largeScanLikeTextile(1), the one tow of it whose fitted surface folds: sections
+/// 0.4 and 0.8 apart after a right-angle bend, 0.085 thick; the cubic through them dips 0.1 below
+/// the last sections' centres and crosses itself (tests/test_surface_fold.cpp checks the place
+/// against CGAL on a dense tessellation).
+TowStack foldingBinder();
+
 /// @p polygon (a closed planar section, not repeated at its end) as a scan gives it back: its
 /// plane rasterised with pixel @p pixel (at most a sixth of its smaller extent; grey = covered fraction, ramp of one pixel, plus normal
 /// noise of @p noise), contoured at 1/2 by marching squares, resampled to @p points points uniform
