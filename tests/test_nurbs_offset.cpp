@@ -142,6 +142,12 @@ TEST_CASE("a ply on a cylinder: the offset cylinder exactly, volume pi((R+t)^2 -
                    << m.minJacobian << " .. " << m.maxJacobian);
     CHECK(std::abs(m.volume - exact) <= 9e-11 * exact);  // README: to 9e-12
     CHECK(m.minJacobian > 0.0);
+    CHECK_FALSE(m.folds());
+    // The weakest quadrature point lies in the ply (between radii R and R + t), its parameters
+    // giving that point.
+    CHECK(std::hypot(m.weakestPoint.x, m.weakestPoint.y) >= r);
+    CHECK(std::hypot(m.weakestPoint.x, m.weakestPoint.y) <= r + t);
+    CHECK(distance(ply.point(m.weakestParameters[0], m.weakestParameters[1], m.weakestParameters[2]), m.weakestPoint) < 1e-12);
     // Sampled independently of the quadrature points: positive everywhere.
     double smallest = 1e300;
     for (int k = 0; k < 2000; ++k) smallest = std::min(smallest, ply.jacobian(p(random), p(random), p(random)));
@@ -650,4 +656,62 @@ TEST_CASE("a ply quadratic through its thickness: any middle surface at w = 1/2,
     }
     CHECK(moved <= 1e-12);
     CHECK_THROWS_AS(withKnotsOf(finer, s), Error);  // the "finer" one lacks knots
+}
+
+TEST_CASE("towgeom ply on a sphere: folding at a pole refused by place, a band exact, a missed tolerance warned (exit 3)", "[placement][ply][cli]")
+{
+    const fs::path dir = fs::temp_directory_path() / ("towgeom_ply_sphere_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const double r = 10.0, t = 0.3;
+    // The whole sphere: its parametrisation collapses a row of poles onto each pole, where the
+    // offset outwards turns inside out (the issue's Jacobian -22 to 38).
+    testing::writeSphereFace((dir / "sphere.step").string(), r, -kPi / 2, kPi / 2);
+    for (const double thickness : {t, -t}) {
+        const fs::path out = dir / "whole.out";
+        const testing::Run run = testing::cli("ply '" + (dir / "sphere.step").string() + "' --thickness " + std::to_string(thickness) + " --out '" +
+                                              out.string() + "' --quiet");
+        INFO(run.err << run.out);
+        CHECK(run.status == 2);
+        CHECK(run.out.empty());
+        CHECK_FALSE(fs::exists(out));
+        CHECK(testing::count(run.err, "\n") == 1);
+        CHECK_THAT(run.err, Catch::Contains("ply 1 folds near (") && Catch::Contains("[unsupported]"));
+        const std::size_t open = run.err.find("near ("), close = run.err.find(')', open);
+        REQUIRE(close != std::string::npos);
+        std::istringstream place(run.err.substr(open + 6, close - open - 6));
+        Point3 at;
+        char comma = 0;
+        place >> at.x >> comma >> at.y >> comma >> at.z;
+        // At a pole (0, 0, +-R), inside the ply: the first knot span next to it.
+        CHECK(std::hypot(at.x, at.y) < 0.05 * r);
+        CHECK(std::abs(at.z) >= r - t);
+        CHECK(std::abs(at.z) <= r + t);
+    }
+    // A band between latitudes -1 and 1 has no pole: the exact volume
+    // 2 pi / 3 ((R + t)^3 - R^3) (sin 1 - sin -1), converged, exit 0.
+    testing::writeSphereFace((dir / "band.step").string(), r, -1.0, 1.0);
+    const double exact = 2.0 * kPi / 3.0 * (std::pow(r + t, 3) - std::pow(r, 3)) * 2.0 * std::sin(1.0);
+    const testing::Run band = testing::cli("ply '" + (dir / "band.step").string() + "' --thickness 0.3 --out '" + (dir / "band.out").string() + "' --quiet");
+    INFO(band.err << band.out);
+    REQUIRE(band.status == 0);
+    CHECK(band.err.empty());
+    const std::size_t at = band.out.find("\"volume\":");
+    REQUIRE(at != std::string::npos);
+    // Gauss-Legendre (8 points per span) integrates the rational Jacobian to 1.0e-8 here
+    // (measured), within the 1e-6 that fibre placement asks of a ply's volume.
+    CHECK(std::stod(band.out.substr(at + 9)) == Approx(exact).epsilon(5e-8));
+    // A tolerance below what rounding allows is never met: written, "converged": false, a
+    // warning naming the ply even under --quiet, exit 3; --allow-unconverged: exit 0, still warned.
+    for (const bool allow : {false, true}) {
+        const fs::path out = dir / (allow ? "tight_allowed.out" : "tight.out");
+        const testing::Run tight = testing::cli("ply '" + (dir / "band.step").string() + "' --thickness 0.3 --tolerance 1e-15 --out '" + out.string() +
+                                                "' --quiet" + (allow ? " --allow-unconverged" : ""));
+        INFO(tight.err << tight.out);
+        CHECK(tight.status == (allow ? 0 : 3));
+        CHECK(testing::count(tight.out, "\"converged\":false") == 1);
+        CHECK_THAT(tight.err, Catch::Contains("towgeom ply: warning: ply 1: its top is up to ") && Catch::Contains("over --tolerance"));
+        CHECK(fs::exists(out / "ply_1.json"));
+    }
+    fs::remove_all(dir);
 }

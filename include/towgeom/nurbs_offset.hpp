@@ -4,6 +4,7 @@
 /// surface and its offset, for isogeometric analysis of laminates.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <iosfwd>
 #include <vector>
@@ -148,11 +149,21 @@ struct VolumeMeasure {
     double volume = 0.0;
     double minJacobian = 0.0;  ///< the smallest Jacobian at the quadrature points
     double maxJacobian = 0.0;  ///< the largest
+    /// The quadrature point where the Jacobian, taken in the map's orientation (the sign of its
+    /// integral), is smallest: the minimum's for a positive map, the maximum's for a negative
+    /// one. Where the map folds when folds(). Its parameters (u, v, w) ...
+    std::array<double, 3> weakestParameters{};
+    Point3 weakestPoint{};  ///< ... and the point of the volume there.
+
+    /// Whether the map folds (turns inside out) at a quadrature point: its Jacobian vanishes
+    /// there or has the sign opposite to another point's. A sampled test: a fold narrower than
+    /// the quadrature points' spacing may pass it.
+    bool folds() const { return !(minJacobian > 0.0 || maxJacobian < 0.0); }
 };
 
 /// The volume of @p volume by Gauss-Legendre quadrature, @p points per knot span in each
-/// direction, and the range of its Jacobian at those points (of one sign everywhere: the map
-/// does not fold). @throws towgeom::Error (InvalidArgument) for an ill-formed volume or points
+/// direction, the range of its Jacobian at those points (of one sign everywhere: the map does
+/// not fold, VolumeMeasure::folds()) and where it is weakest. @throws towgeom::Error (InvalidArgument) for an ill-formed volume or points
 /// outside 1 to 40.
 TOWGEOM_EXPORT VolumeMeasure measureVolume(const NurbsVolume& volume, int points = 8);
 

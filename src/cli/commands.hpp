@@ -1,7 +1,8 @@
 // The towgeom subcommands. Each returns the process exit code:
 //   0 success, 2 bad input or usage (one line on stderr), 1 failure to write or internal error,
 //   3 (detect, resolve, export) a tow pair is unresolved: an open intersection curve, tows that overlap
-//   without a curve (nested, identical, touching), or (resolve) a loop around a tow.
+//   without a curve (nested, identical, touching), or (resolve) a loop around a tow; (ply) a ply's
+//   offset missed its tolerance.
 #pragma once
 
 namespace towgeom::cli {

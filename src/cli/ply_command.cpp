@@ -2,7 +2,9 @@
 // and its offset, thin layer on layer.
 #include <algorithm>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 #include "cli/args.hpp"
@@ -43,7 +45,8 @@ and prints one JSON object on stdout:
   min/max_jacobian  the Jacobian's range at the quadrature points: of one sign where the ply
                   does not fold (negative for a negative --thickness: a ply on the inside)
   offset_error    the largest distance of the top surface from the exact offset, sampled
-  converged       false where no refinement meets --tolerance (a crease in the surface)
+  converged       false where no refinement meets --tolerance (a crease in the surface, or
+                  a pole of its parametrisation): each such ply is also named on stderr
 
 Options:
   --thickness T   ply thickness in millimetres (OpenCASCADE reads STEP and IGES lengths as
@@ -58,17 +61,47 @@ Options:
                   quadratic (w degree 2: the same solid, degree-elevated, for codes that
                   want quadratic functions through the thickness)
   --samples S     VTK hexahedra per knot span along u and v (default 4; S/2 through)
+  --allow-unconverged  exit 0 even when a ply's offset misses --tolerance (still warned)
   --out DIR       where to write (created if needed)
   --quiet         no progress lines on stderr
   -h, --help      this help
 
-Exit status: 0 success (even unconverged: see "converged"); 2 invalid input or usage (one
-line on stderr naming the file); 1 an output file could not be written, or an internal
-failure of OpenCASCADE.
+A ply that folds (its Jacobian changes sign: the offset turns inside out, as at a pole of a
+sphere's face offset outwards, or where the surface curves tighter than the thickness) is
+refused, naming the ply and the place; nothing is written.
+
+Exit status: 0 success; 3 written, but a ply's offset misses --tolerance ("converged": false;
+a warning on stderr names it, even with --quiet; --allow-unconverged makes this 0); 2 invalid
+input or usage, or a ply that folds (one line on stderr naming the file or the place); 1 an
+output file could not be written, or an internal failure of OpenCASCADE.
 
 Example:
   towgeom ply tool.step --thickness 0.25 --layers 4 --out plies
 )";
+
+/// Why ply @p ply (1-based) is refused: its Jacobian changes sign (measure @p m), on @p base.
+std::string plyFolds(std::size_t ply, double thickness, const VolumeMeasure& m, const NurbsSurface& base)
+{
+    std::ostringstream text;
+    text << std::setprecision(6) << "ply " << ply << " folds near (" << m.weakestPoint.x << ", " << m.weakestPoint.y << ", "
+         << m.weakestPoint.z << ") (u " << m.weakestParameters[0] << ", v " << m.weakestParameters[1] << " of the surface under it; "
+         << "u in [" << base.uKnots.front() << ", " << base.uKnots.back() << "], v in [" << base.vKnots.front() << ", " << base.vKnots.back()
+         << "]): its Jacobian runs from " << m.minJacobian << " to " << m.maxJacobian << ", so the offset by " << thickness
+         << " turns inside out there (a pole or a collapsed edge of the surface's parametrisation, or a radius of curvature "
+            "below the thickness); nothing written";
+    return text.str();
+}
+
+/// The warning for ply @p ply (1-based) whose offset @p o missed its tolerance.
+std::string plyMissesTolerance(std::size_t ply, const SurfaceOffset& o)
+{
+    std::ostringstream text;
+    text << std::setprecision(6) << "ply " << ply << ": its top is up to " << o.maxError
+         << " from the exact offset, over --tolerance after " << o.knotsInserted
+         << " knot(s) inserted (a crease, a pole of the surface's parametrisation, or a tolerance finer than rounding allows); "
+            "written with \"converged\": false";
+    return text.str();
+}
 
 }  // namespace
 
@@ -76,7 +109,7 @@ int runPly(int argc, char** argv, int first)
 {
     try {
         const Args args(argc, argv, first,
-                        {{"help"}, {"quiet"}, {"thickness", true}, {"face", true}, {"layers", true}, {"tolerance", true}, {"samples", true}, {"through", true},
+                        {{"help"}, {"quiet"}, {"allow-unconverged"}, {"thickness", true}, {"face", true}, {"layers", true}, {"tolerance", true}, {"samples", true}, {"through", true},
                          {"out", true}});
         if (args.has("help")) {
             std::cout << kPlyHelp;
@@ -109,6 +142,7 @@ int runPly(int argc, char** argv, int first)
         report["through"] = through;
         report["plies"] = Json::array();
         NurbsSurface base = tool.surface;
+        std::vector<std::string> unconverged;  // warnings, one per ply
         for (std::size_t k = 0; k < layers; ++k) {
             if (!quiet) std::cerr << "towgeom ply: [" << k + 1 << "/" << layers << "] offsetting the surface\n";
             const SurfaceOffset o = offsetSurface(base, *thickness, options);
@@ -122,6 +156,8 @@ int runPly(int argc, char** argv, int first)
                 plies.push_back(plySolid(o.base, o.offset));
             }
             const VolumeMeasure m = measureVolume(plies.back());
+            if (m.folds()) throw Error(ErrorCode::Unsupported, plyFolds(k + 1, *thickness, m, base));
+            if (!o.converged) unconverged.push_back(plyMissesTolerance(k + 1, o));
             report["plies"].push_back({{"volume", m.volume},
                                        {"min_jacobian", m.minJacobian},
                                        {"max_jacobian", m.maxJacobian},
@@ -139,7 +175,8 @@ int runPly(int argc, char** argv, int first)
         }
         files.commit();
         std::cout << jsonText(report) << "\n";
-        return kExitOk;
+        for (const std::string& warning : unconverged) std::cerr << "towgeom ply: warning: " << warning << "\n";
+        return unconverged.empty() || args.has("allow-unconverged") ? kExitOk : kExitUnresolved;
     } catch (const std::exception& e) {
         return reportError("ply", e);
     }

@@ -154,6 +154,8 @@ VolumeMeasure measureVolume(const NurbsVolume& vol, int points)
     VolumeMeasure m;
     m.minJacobian = std::numeric_limits<double>::infinity();
     m.maxJacobian = -std::numeric_limits<double>::infinity();
+    std::array<double, 3> minAt{}, maxAt{};
+    Point3 minPoint, maxPoint;
     const auto su = spansOf(vol.knots[0]), sv = spansOf(vol.knots[1]), sw = spansOf(vol.knots[2]);
     for (const auto& [u0, u1] : su)
         for (const auto& [v0, v1] : sv)
@@ -162,13 +164,25 @@ VolumeMeasure measureVolume(const NurbsVolume& vol, int points)
                 for (int i = 1; i <= points; ++i)
                     for (int j = 1; j <= points; ++j)
                         for (int k = 1; k <= points; ++k) {
-                            const VolumePoint p = evaluate(vol, u0 + hu * (1.0 + gx(i)), v0 + hv * (1.0 + gx(j)), w0 + hw * (1.0 + gx(k)));
+                            const std::array<double, 3> at{u0 + hu * (1.0 + gx(i)), v0 + hv * (1.0 + gx(j)), w0 + hw * (1.0 + gx(k))};
+                            const VolumePoint p = evaluate(vol, at[0], at[1], at[2]);
                             const double jac = dot(p.d[0], cross(p.d[1], p.d[2]));
-                            m.minJacobian = std::min(m.minJacobian, jac);
-                            m.maxJacobian = std::max(m.maxJacobian, jac);
+                            if (jac < m.minJacobian) {
+                                m.minJacobian = jac;
+                                minAt = at;
+                                minPoint = p.x;
+                            }
+                            if (jac > m.maxJacobian) {
+                                m.maxJacobian = jac;
+                                maxAt = at;
+                                maxPoint = p.x;
+                            }
                             m.volume += gw(i) * gw(j) * gw(k) * hu * hv * hw * jac;
                         }
             }
+    const bool positive = m.volume >= 0.0;
+    m.weakestParameters = positive ? minAt : maxAt;
+    m.weakestPoint = positive ? minPoint : maxPoint;
     m.volume = std::abs(m.volume);
     return m;
 }

@@ -12,6 +12,7 @@
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom_CylindricalSurface.hxx>
+#include <Geom_SphericalSurface.hxx>
 #include <IGESControl_Writer.hxx>
 #include <STEPControl_Writer.hxx>
 #include <BRep_Builder.hxx>
@@ -137,6 +138,15 @@ void writeCylinderFace(const std::string& path, double radius, double height, do
     }
     STEPControl_Writer writer;
     if (writer.Transfer(lateral, STEPControl_AsIs) != IFSelect_RetDone || writer.Write(path.c_str()) != IFSelect_RetDone)
+        throw std::runtime_error("cannot write STEP " + path);
+}
+
+void writeSphereFace(const std::string& path, double radius, double fromLatitude, double toLatitude)
+{
+    const TopoDS_Face face =
+        BRepBuilderAPI_MakeFace(new Geom_SphericalSurface(gp_Ax3(), radius), 0.0, 2.0 * M_PI, fromLatitude, toLatitude, 1e-7).Face();
+    STEPControl_Writer writer;
+    if (writer.Transfer(face, STEPControl_AsIs) != IFSelect_RetDone || writer.Write(path.c_str()) != IFSelect_RetDone)
         throw std::runtime_error("cannot write STEP " + path);
 }
 

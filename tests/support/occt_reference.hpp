@@ -38,6 +38,10 @@ ReadShapes readBrep(const std::string& path, bool volumes = true);
 /// @p fromAngle < @p toAngle only the part between those angles (a face on OCCT's cylindrical
 /// surface).
 void writeCylinderFace(const std::string& path, double radius, double height, double fromAngle = 0.0, double toAngle = 0.0);
+/// Writes a face of a sphere of @p radius about the origin (OCCT's spherical surface: u the
+/// longitude over [0, 2 pi), v the latitude, poles at v = -pi/2 and pi/2) alone to the STEP file
+/// @p path: the latitudes from @p fromLatitude to @p toLatitude.
+void writeSphereFace(const std::string& path, double radius, double fromLatitude, double toLatitude);
 
 /// One whole tow as built by writeWholeTowSolids().
 struct WholeTowSolid {
