@@ -45,9 +45,6 @@ Face sorted(std::size_t a, std::size_t b, std::size_t c)
 
 namespace {
 
-/// The independent checks of a volume mesh @p v of @p res: no flat or inverted tetrahedron, each
-/// tow's tetrahedra fill its closed surface's volume, every interior face shared by two
-/// tetrahedra of one tow, every surface triangle a face of one tetrahedron of each tow it bounds.
 /// The point an error message names as "near (x, y, z)".
 Point3 placeNamedIn(const std::string& message)
 {
@@ -61,6 +58,9 @@ Point3 placeNamedIn(const std::string& message)
     return at;
 }
 
+/// The independent checks of a volume mesh @p v of @p res: no flat or inverted tetrahedron, each
+/// tow's tetrahedra fill its closed surface's volume, every interior face shared by two
+/// tetrahedra of one tow, every surface triangle a face of one tetrahedron of each tow it bounds.
 void checkConforming(const ResolveResult& res, const VolumeMesh& v)
 {
     REQUIRE(v.surfaceNodes == res.mesh.nodes.size());

@@ -63,6 +63,9 @@ double signedVolume(const Point3& a, const Point3& b, const Point3& c, const Poi
     return dot(cross(b - a, c - a), d - a) / 6.0;
 }
 
+/// An option Gmsh does not have: asking for it logs an error (volume meshing's sentinel).
+constexpr const char* kSentinelOption = "General.TowgeomSentinelNotAnOption";
+
 /// Gmsh's C API with its error flag checked (a failed call throws std::runtime_error with
 /// Gmsh's message).
 class Gmsh {
@@ -130,8 +133,9 @@ public:
         for (auto& [name, value] : saved_) g.call("gmshOptionGetNumber", api.gmshOptionGetNumber, name, &value);
         try {
             g.call("gmshOptionSetNumber", api.gmshOptionSetNumber, "General.Terminal", 0.0);
-            // An error in a call throws (and sets ierr), whatever the host set.
-            g.call("gmshOptionSetNumber", api.gmshOptionSetNumber, "General.AbortOnError", 2.0);
+            // An error in a call throws (and sets ierr), whatever the host set (3: also while
+            // Gmsh's GUI runs, where 2 does not throw).
+            g.call("gmshOptionSetNumber", api.gmshOptionSetNumber, "General.AbortOnError", 3.0);
             g.call("gmshModelAdd", api.gmshModelAdd, kModel);
             added_ = true;
         } catch (...) {
@@ -620,7 +624,7 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     const detail::GmshApi& api = g.api();
     std::unique_lock<std::mutex> lock(gmshMutex());
     std::string where = "the tows' volumes";  // for messages
-    bool hxtStopped = false;  // gmshModelMeshGenerate threw
+    bool hxtStopped = false;  // Gmsh's mesh generation failed (threw, logged an error, or left a volume empty)
     try {
         GmshSession session(g);
         for (Surface& s : patches) {
@@ -672,21 +676,30 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
         const auto generateStart = std::chrono::steady_clock::now();
         // Gmsh 4.8 throws an error out of its mesh generation before it releases its own lock
         // (CTX::lock, released only at the end of GenerateMesh): every later generate in the
-        // process would then return at once, meshing nothing. So errors do not throw here; an
-        // error logged during it (generate clears the last one when it starts), or a volume left
-        // without tetrahedra (below), is the failure. Either way its cause is looked for out of
-        // Gmsh's session and towgeom's lock (hxtStopped).
-        option("General.AbortOnError", 0);
+        // process would then return at once, meshing nothing. So here an error stops the meshing
+        // without throwing (AbortOnError 1), and an error logged during it (generate clears the
+        // last one when it starts), or a volume left without tetrahedra (below), is the failure.
+        // Either way its cause is looked for out of Gmsh's session and towgeom's lock
+        // (hxtStopped). A sentinel error logged first tells a generate that never ran (the lock
+        // held by a host's call that threw) from one that failed.
+        option("General.AbortOnError", 1);
+        double unused = 0.0;
+        int sentinelError = 0;
+        api.gmshOptionGetNumber(kSentinelOption, &unused, &sentinelError);  // logs "... option ..." as the last error
+        const std::string sentinel = detail::gmshLastErrorText(api);
         try {
             g.call("gmshModelMeshGenerate", api.gmshModelMeshGenerate, 3);
         } catch (...) {
             hxtStopped = true;
             throw;
         }
-        option("General.AbortOnError", 2);
-        if (const std::string error = detail::gmshLastErrorText(api); !error.empty()) {
+        option("General.AbortOnError", 3);
+        if (const std::string error = detail::gmshLastErrorText(api); !sentinel.empty() && error == sentinel) {
+            throw Error(ErrorCode::Internal, "Gmsh's mesh generation did not run: Gmsh is locked by an earlier call in this process that "
+                                             "failed (a generate outside towgeom that threw); restart the process");
+        } else if (!error.empty()) {
             hxtStopped = true;
-            throw std::runtime_error("gmshModelMeshGenerate: " + error);
+            throw std::runtime_error("its mesh generation failed (last error: " + error + ")");
         }
         // Gmsh's tetrahedral optimiser once more, forced (its Mesh.Optimize pass leaves flat
         // tetrahedra HXT makes with a size callback: a point inserted a hair from a surface
