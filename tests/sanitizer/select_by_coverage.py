@@ -151,22 +151,39 @@ def select(measured, costs, keep_below):
     return kept, set(measured) - kept, cost, lines, universe
 
 
-def write_list(path, left_out, kept, cost, lines, universe, keep_below):
+def write_list(path, left_out, kept, cost, lines, universe, keep_below, within=None):
     total = sum(cost.values())
     kept_cost = sum(cost[n] for n in kept)
+    if within is None:
+        scope = [
+            "# test cheaper than %g s under ASan+UBSan stays; of the others, a greedy weighted set cover" % keep_below,
+            "# keeps the fewest sanitized seconds that still run every line of src/ and include/ that the",
+            "# whole suite runs (gcov, one test at a time). Each test below runs in Release as before, and",
+            "# each line of its code also runs in the sanitized tests named under it.",
+            "# Measured: %d lines run by the suite, all of them by the %d tests kept (%.0f s of the"
+            % (len(universe), len(kept), kept_cost),
+        ]
+    else:
+        scope = [
+            "# list was narrowed (--within): only tests the list before left in could stay; of those, every",
+            "# test cheaper than %g s under ASan+UBSan stays, and a costly one went where the others kept" % keep_below,
+            "# run all its lines (gcov, one test at a time). So every line the sanitized tests ran before",
+            "# still runs in them. The tests left out before are listed last, as they were (their lines",
+            "# are not all run sanitized: a full run of this script would bring some back).",
+            "# Measured: %d lines run by the tests allowed, all of them by the %d tests kept (%.0f s of the"
+            % (len(universe), len(kept), kept_cost),
+        ]
     out = [
         "# Tests the sanitizer stage (tests/run_sanitized.sh) does not run, one CTest name per line.",
-        "# Written by tests/sanitizer/select_by_coverage.py (do not edit by hand; run it again): every",
-        "# test cheaper than %g s under ASan+UBSan stays; of the others, a greedy weighted set cover" % keep_below,
-        "# keeps the fewest sanitized seconds that still run every line of src/ and include/ that the",
-        "# whole suite runs (gcov, one test at a time). Each test below runs in Release as before, and",
-        "# each line of its code also runs in the sanitized tests named under it.",
-        "# Measured: %d lines run by the suite, all of them by the %d tests kept (%.0f s of the"
-        % (len(universe), len(kept), kept_cost),
+        "# Written by tests/sanitizer/select_by_coverage.py (do not edit by hand; run it again): every" if within is None else
+        "# Written by tests/sanitizer/select_by_coverage.py (do not edit by hand; run it again). The",
+        *scope,
         "# %.0f s all would take sanitized, summed over tests)." % total,
         "#",
     ]
     for name in sorted(left_out, key=lambda n: -cost[n]):
+        if within is not None and name in within:
+            continue
         mine = lines[name]
         covers = sorted(kept, key=lambda k: -len(mine & lines[k]))
         names = []
@@ -180,6 +197,10 @@ def write_list(path, left_out, kept, cost, lines, universe, keep_below):
         shown = "; ".join('"%s"' % k for k in names[:3]) + (" and %d more" % (len(names) - 3) if len(names) > 3 else "")
         out.append("# %.0f s sanitized, %d lines, all run by: %s" % (cost[name], len(mine), shown))
         out.append(name)
+    if within is not None:
+        out.append("#")
+        out.append("# Left out by the list before (--within), kept out:")
+        out.extend(sorted(within, key=lambda n: -cost.get(n, 0.0)))
     pathlib.Path(path).write_text("\n".join(out) + "\n")
 
 
@@ -194,6 +215,8 @@ def main():
     parser.add_argument("--again", action="append", default=[],
                         help="with --reuse, measure again the tests whose names contain this text (repeatable)")
     parser.add_argument("--out", default=str(ROOT / "tests" / "sanitizer" / "not_sanitized.txt"))
+    parser.add_argument("--within", help="a not_sanitized.txt: its tests stay left out, and only the lines the "
+                                         "others run need to stay covered (narrows a list without a full run's costs)")
     args = parser.parse_args()
     build = pathlib.Path(args.build)
     cache = build / "coverage_per_test.json"
@@ -203,8 +226,19 @@ def main():
     if failed:
         print("select_by_coverage: tests failed in the coverage build (their lines still count):\n  " +
               "\n  ".join(failed), file=sys.stderr)
-    kept, left_out, cost, lines, universe = select(measured, sanitized_costs(args.costs), args.keep_below)
-    write_list(args.out, left_out, kept, cost, lines, universe, args.keep_below)
+    within = None
+    if args.within:
+        within = {line for line in pathlib.Path(args.within).read_text().splitlines() if line and not line.startswith("#")}
+        allowed = {n: m for n, m in measured.items() if n not in within}
+        within &= set(measured)
+        kept, left_out, cost, lines, universe = select(allowed, sanitized_costs(args.costs), args.keep_below)
+        _, _, all_cost, _, _ = select(measured, sanitized_costs(args.costs), args.keep_below)
+        cost = all_cost
+        lines = {n: set(map(tuple, m["lines"])) for n, m in measured.items()}
+        left_out = left_out | within
+    else:
+        kept, left_out, cost, lines, universe = select(measured, sanitized_costs(args.costs), args.keep_below)
+    write_list(args.out, left_out, kept, cost, lines, universe, args.keep_below, within)
     print("select_by_coverage: %d lines; %d tests kept (%.0f s sanitized), %d left out (%.0f s); wrote %s" %
           (len(universe), len(kept), sum(cost[n] for n in kept), len(left_out), sum(cost[n] for n in left_out), args.out))
 
