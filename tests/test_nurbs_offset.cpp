@@ -670,19 +670,44 @@ TEST_CASE("a ply quadratic through its thickness: any middle surface at w = 1/2,
     CHECK_THROWS_AS(withKnotsOf(finer, s), Error);  // the "finer" one lacks knots
 }
 
-TEST_CASE("towgeom ply on a sphere: folding at a pole refused by place, a band exact, a missed tolerance warned (exit 3)", "[placement][ply][cli]")
+TEST_CASE("towgeom ply on a sphere: through its poles without folding, a band exact, a missed tolerance warned (exit 3)", "[placement][ply][cli]")
 {
     const fs::path dir = fs::temp_directory_path() / ("towgeom_ply_sphere_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     const double r = 10.0, t = 0.3;
-    // The whole sphere: its parametrisation collapses a row of poles onto each pole, where the
-    // offset outwards turns inside out (the issue's Jacobian -22 to 38).
+    // The whole sphere: its parametrisation collapses a row of poles onto each pole. The offset
+    // there follows the normal's limit, the same for the whole row (it folded before: Jacobian
+    // -22 to 38). Outwards and inwards: 4/3 pi ((R + t)^3 - R^3) and 4/3 pi (R^3 - (R - t)^3).
     testing::writeSphereFace((dir / "sphere.step").string(), r, -kPi / 2, kPi / 2);
     for (const double thickness : {t, -t}) {
-        const fs::path out = dir / "whole.out";
+        const fs::path out = dir / (thickness > 0.0 ? "outwards.out" : "inwards.out");
         const testing::Run run = testing::cli("ply '" + (dir / "sphere.step").string() + "' --thickness " + std::to_string(thickness) + " --out '" +
                                               out.string() + "' --quiet");
+        INFO(run.err << run.out);
+        REQUIRE(run.status == 0);
+        const double outer = std::max(r, r + thickness), inner = std::min(r, r + thickness);
+        const double exact = 4.0 / 3.0 * kPi * (std::pow(outer, 3) - std::pow(inner, 3));
+        const std::size_t at = run.out.find("\"volume\":");
+        REQUIRE(at != std::string::npos);
+        CHECK(std::stod(run.out.substr(at + 9)) == Approx(exact).epsilon(1e-6));
+        // The Jacobian keeps its sign, sampled independently of the quadrature points: in the
+        // VTK file's point data (4 x 4 x 2 hexahedra per knot span), read by meshio. It vanishes
+        // on the poles' collapsed rows (to rounding: 1e-9 of its largest size allowed there).
+        const testing::Run py = testing::runShell("/usr/bin/python3 -c \"import meshio\n"
+                                                  "j = meshio.read('" + (out / "ply_1.vtk").string() + "').point_data['jacobian']\n"
+                                                  "e = 1e-9 * abs(j).max()\n"
+                                                  "print(int(j.min() >= -e or j.max() <= e), j.min(), j.max())\"");
+        REQUIRE(py.status == 0);
+        INFO("one sign (1), then the Jacobian's range: " << py.out);
+        CHECK(py.out.substr(0, 2) == "1 ");
+    }
+    // Folding is refused, naming the place: a cylinder (R 1.5) offset inwards by 2 passes its
+    // axis at three quarters of the thickness (R + t w = 0), where the Jacobian changes sign.
+    testing::writeCylinderFace((dir / "cylinder.step").string(), 1.5, 2.0);
+    {
+        const fs::path out = dir / "folded.out";
+        const testing::Run run = testing::cli("ply '" + (dir / "cylinder.step").string() + "' --thickness -2 --out '" + out.string() + "' --quiet");
         INFO(run.err << run.out);
         CHECK(run.status == 2);
         CHECK(run.out.empty());
@@ -695,10 +720,10 @@ TEST_CASE("towgeom ply on a sphere: folding at a pole refused by place, a band e
         Point3 at;
         char comma = 0;
         place >> at.x >> comma >> at.y >> comma >> at.z;
-        // At a pole: within 0.25 of the pole's point halfway through the ply, (0, 0, +-(R + T/2))
-        // (measured 0.17 and 0.14: a quadrature point of the knot span next to the pole).
-        const double middle = r + 0.5 * thickness;
-        CHECK(std::min(distance(at, Point3{0.0, 0.0, middle}), distance(at, Point3{0.0, 0.0, -middle})) < 0.25);
+        // Past the axis, where the offset lies turned over: within 0.5 of it (the offset's radius).
+        CHECK(std::hypot(at.x, at.y) <= 0.5 + 1e-9);
+        CHECK(at.z >= 0.0);
+        CHECK(at.z <= 2.0);
     }
     // A band between latitudes -1 and 1 has no pole: the exact volume
     // 2 pi / 3 ((R + t)^3 - R^3) (sin 1 - sin -1), converged, exit 0.

@@ -111,7 +111,9 @@ TOWGEOM_EXPORT CurveOffset offsetCurve(const NurbsCurve& curve, double distance,
 /// Offsets @p surface by @p distance along its unit normal (NurbsSurface::normal()), as
 /// offsetCurve() does a curve: the same degrees, knots and weights; poles collocating the exact
 /// offset at the Greville points; knots inserted where it strays further than the tolerance
-/// (sampled at 9 x 9 points per knot-span element), until SurfaceOffset::converged.
+/// (sampled at 9 x 9 points per knot-span element), until SurfaceOffset::converged. Where a
+/// boundary row (or column) of poles collapses to one point (a pole of the parametrisation, as a
+/// sphere face's), the normal there is its limit from inside the surface, the same along the row.
 /// @throws towgeom::Error (InvalidArgument) for an ill-formed surface or a degenerate normal;
 ///         (Internal) if the collocation system is singular.
 TOWGEOM_EXPORT SurfaceOffset offsetSurface(const NurbsSurface& surface, double distance, const OffsetOptions& options = {});

@@ -66,9 +66,11 @@ Options:
   --quiet         no progress lines on stderr
   -h, --help      this help
 
-A ply that folds (its Jacobian changes sign: the offset turns inside out, as at a pole of a
-sphere's face offset outwards, or where the surface curves tighter than the thickness) is
-refused, naming the ply and the place; nothing is written.
+The offset passes a pole of the surface's parametrisation (a boundary row of poles collapsed
+to one point, as at a sphere face's poles) along the normal's limit there. A ply that folds
+(its Jacobian changes sign: the offset turns inside out where the surface curves tighter than
+the thickness, or at a point with no single normal, as a cone's apex) is refused, naming the
+ply and the place; nothing is written.
 
 Exit status: 0 success; 3 written, but a ply's offset misses --tolerance ("converged": false;
 a warning on stderr names it, even with --quiet; --allow-unconverged makes this 0); 2 invalid
@@ -87,8 +89,8 @@ std::string plyFolds(std::size_t ply, double thickness, const VolumeMeasure& m, 
          << m.weakestPoint.z << ") (u " << m.weakestParameters[0] << ", v " << m.weakestParameters[1] << " of the surface under it; "
          << "u in [" << base.uKnots.front() << ", " << base.uKnots.back() << "], v in [" << base.vKnots.front() << ", " << base.vKnots.back()
          << "]): its Jacobian runs from " << m.minJacobian << " to " << m.maxJacobian << ", so the offset by " << thickness
-         << " turns inside out there (a pole or a collapsed edge of the surface's parametrisation, or a radius of curvature "
-            "below the thickness); nothing written";
+         << " turns inside out there (a radius of curvature below the thickness, or a point with no single normal such as a "
+            "cone's apex); nothing written";
     return text.str();
 }
 

@@ -80,6 +80,35 @@ Eigen::MatrixXd solveSparse(std::size_t n, const std::vector<Eigen::Triplet<doub
 /// direction (relative: at a collapsed row of poles it is zero only up to rounding).
 bool degenerate(double n, double a, double b) { return !(n > 1e-10 * a * b); }
 
+/// The direction of @p s's normal at (@p u, @p v), dS/du x dS/dv, also at a pole: where a
+/// boundary row or column of poles collapses to one point (dS/du vanishes along a sphere's pole
+/// row, to rounding), the limit from inside the surface. Near v = v0 with dS/du(u, v0) = 0,
+/// dS/du ~ (v - v0) d2S/dudv, so the normal points along (v - v0) (d2S/dudv x dS/dv): the same
+/// for every u of the row, as the pole's offset must be. @throws towgeom::Error
+/// (InvalidArgument) where neither gives a normal.
+gp_Vec normalDirection(const Handle(Geom_BSplineSurface)& s, double u, double v)
+{
+    gp_Pnt p;
+    gp_Vec du, dv, duu, dvv, duv;
+    s->D2(u, v, p, du, dv, duu, dvv, duv);
+    double u0, u1, v0, v1;
+    s->Bounds(u0, u1, v0, v1);
+    constexpr double kCollapsed = 1e-8;  // |dS/du| below this x |dS/dv|: the row is a point
+    gp_Vec n = du.Crossed(dv);
+    double a = du.Magnitude(), b = dv.Magnitude();
+    if (du.Magnitude() < kCollapsed * dv.Magnitude()) {
+        n = duv.Crossed(dv) * (v - v0 <= v1 - v ? 1.0 : -1.0);
+        a = duv.Magnitude();
+    } else if (dv.Magnitude() < kCollapsed * du.Magnitude()) {
+        n = du.Crossed(duv) * (u - u0 <= u1 - u ? 1.0 : -1.0);
+        b = duv.Magnitude();
+    }
+    if (degenerate(n.Magnitude(), a, b))
+        throw Error(ErrorCode::InvalidArgument, "offsetSurface: the normal is not defined at (" + std::to_string(u) + ", " + std::to_string(v) +
+                                                    ") (dS/du x dS/dv vanishes, and not at a pole row)");
+    return n;
+}
+
 /// Runs @p f, OpenCASCADE's failures (on input the checks let through) as InvalidArgument.
 template <class F>
 auto guardedEvaluation(const char* what, F f)
@@ -201,14 +230,8 @@ SurfaceOffset offsetSurface(const NurbsSurface& surface, double d, const OffsetO
     try {
         Handle(Geom_BSplineSurface) s = detail::occtSurface(surface);
         const auto exact = [&](double u, double v) {
-            gp_Pnt p;
-            gp_Vec du, dv;
-            s->D1(u, v, p, du, dv);
-            const gp_Vec n = du.Crossed(dv);
-            if (degenerate(n.Magnitude(), du.Magnitude(), dv.Magnitude()))
-                throw Error(ErrorCode::InvalidArgument, "offsetSurface: the normal is not defined at (" + std::to_string(u) + ", " +
-                                                            std::to_string(v) + ") (dS/du x dS/dv vanishes)");
-            return detail::fromOcct(p) + (d / n.Magnitude()) * detail::fromOcct(n);
+            const gp_Vec n = normalDirection(s, u, v);
+            return detail::fromOcct(s->Value(u, v)) + (d / n.Magnitude()) * detail::fromOcct(n);
         };
         int flat = 0;  // rounds in a row that did not cut the error
         for (int round = 0;; ++round) {
