@@ -242,6 +242,21 @@ TEST_CASE("offsets and plies refuse ill-formed NURBS, naming what", "[placement]
             }
         CHECK_THROWS_WITH(s.normal(0.0, 0.5), Catch::Contains("no normal"));
     }
+    {
+        // A cone: the cylinder's row at z = 0 collapsed onto its axis, the apex. Its normal's
+        // limit there turns with u, so no offset point is the apex's: refused, naming it.
+        NurbsSurface cone = cylinder(1.0, 2.0);
+        for (std::size_t i = 0; i < cone.uCount; ++i) cone.poles[i * cone.vCount] = {0.0, 0.0, 0.0};
+        try {
+            offsetSurface(cone, 0.1);
+            FAIL("offset");
+        } catch (const Error& e) {
+            CHECK(e.code() == ErrorCode::Unsupported);
+            CHECK_THAT(e.message(), Catch::Contains("no single normal at its point (") && Catch::Contains("a cone's apex"));
+            // The apex is the origin: the point named is the row's, to the digits printed.
+            CHECK_THAT(e.message(), Catch::Matches(".*point \\(-?0\\.000000, -?0\\.000000, -?0\\.000000\\).*"));
+        }
+    }
 
     NurbsCurve c = circle(1.0, 0.0, 0.0, 0.0);
     c.knots[2] = 0.1;  // not clamped
@@ -690,7 +705,12 @@ TEST_CASE("towgeom ply on a sphere: through its poles without folding, a band ex
         const double exact = 4.0 / 3.0 * kPi * (std::pow(outer, 3) - std::pow(inner, 3));
         const std::size_t at = run.out.find("\"volume\":");
         REQUIRE(at != std::string::npos);
-        CHECK(std::stod(run.out.substr(at + 9)) == Approx(exact).epsilon(1e-6));
+        // Measured 1.3e-9 (the quadrature of the rational Jacobian); exact offset, no knot added.
+        CHECK(std::stod(run.out.substr(at + 9)) == Approx(exact).epsilon(1e-8));
+        CHECK(testing::count(run.out, "\"knots_inserted\":0,") == 1);
+        const std::size_t error = run.out.find("\"offset_error\":");
+        REQUIRE(error != std::string::npos);
+        CHECK(std::stod(run.out.substr(error + 15)) < 1e-12 * r);
         // The Jacobian keeps its sign, sampled independently of the quadrature points: in the
         // VTK file's point data (4 x 4 x 2 hexahedra per knot span), read by meshio. It vanishes
         // on the poles' collapsed rows (to rounding: 1e-9 of its largest size allowed there).

@@ -108,13 +108,17 @@ struct SurfaceOffset {
 TOWGEOM_EXPORT CurveOffset offsetCurve(const NurbsCurve& curve, double distance, const Vector3& planeNormal,
                                        const OffsetOptions& options = {});
 
-/// Offsets @p surface by @p distance along its unit normal (NurbsSurface::normal()), as
+/// Offsets @p surface by @p distance along its unit normal (NurbsSurface::normal(); at a pole
+/// its limit, below), as
 /// offsetCurve() does a curve: the same degrees, knots and weights; poles collocating the exact
 /// offset at the Greville points; knots inserted where it strays further than the tolerance
 /// (sampled at 9 x 9 points per knot-span element), until SurfaceOffset::converged. Where a
 /// boundary row (or column) of poles collapses to one point (a pole of the parametrisation, as a
-/// sphere face's), the normal there is its limit from inside the surface, the same along the row.
+/// sphere face's; NurbsSurface::normal() has no normal there), the normal is its limit from
+/// inside the surface, which must be the same along the row.
 /// @throws towgeom::Error (InvalidArgument) for an ill-formed surface or a degenerate normal;
+///         (Unsupported) naming the point where a collapsed row's limit normal differs along it
+///         (a cone's apex: its offset is not a point);
 ///         (Internal) if the collocation system is singular.
 TOWGEOM_EXPORT SurfaceOffset offsetSurface(const NurbsSurface& surface, double distance, const OffsetOptions& options = {});
 

@@ -45,8 +45,8 @@ and prints one JSON object on stdout:
   min/max_jacobian  the Jacobian's range at the quadrature points: of one sign where the ply
                   does not fold (negative for a negative --thickness: a ply on the inside)
   offset_error    the largest distance of the top surface from the exact offset, sampled
-  converged       false where no refinement meets --tolerance (a crease in the surface, or
-                  a pole of its parametrisation): each such ply is also named on stderr
+  converged       false where no refinement meets --tolerance (a crease in the surface, or a
+                  tolerance finer than rounding allows): each such ply is also named on stderr
 
 Options:
   --thickness T   ply thickness in millimetres (OpenCASCADE reads STEP and IGES lengths as
@@ -68,9 +68,9 @@ Options:
 
 The offset passes a pole of the surface's parametrisation (a boundary row of poles collapsed
 to one point, as at a sphere face's poles) along the normal's limit there. A ply that folds
-(its Jacobian changes sign: the offset turns inside out where the surface curves tighter than
-the thickness, or at a point with no single normal, as a cone's apex) is refused, naming the
-ply and the place; nothing is written.
+(its Jacobian changes sign at its volume's quadrature points: the offset turns inside out where
+the surface curves tighter than the thickness), or whose surface has a point with no single
+normal (a cone's apex), is refused, naming the ply or the place; nothing is written.
 
 Exit status: 0 success; 3 written, but a ply's offset misses --tolerance ("converged": false;
 a warning on stderr names it, even with --quiet; --allow-unconverged makes this 0); 2 invalid
@@ -89,8 +89,7 @@ std::string plyFolds(std::size_t ply, double thickness, const VolumeMeasure& m, 
          << m.weakestPoint.z << ") (u " << m.weakestParameters[0] << ", v " << m.weakestParameters[1] << " of the surface under it; "
          << "u in [" << base.uKnots.front() << ", " << base.uKnots.back() << "], v in [" << base.vKnots.front() << ", " << base.vKnots.back()
          << "]): its Jacobian runs from " << m.minJacobian << " to " << m.maxJacobian << ", so the offset by " << thickness
-         << " turns inside out there (a radius of curvature below the thickness, or a point with no single normal such as a "
-            "cone's apex); nothing written";
+         << " turns inside out there (the surface curves tighter than the thickness); nothing written";
     return text.str();
 }
 
@@ -100,7 +99,7 @@ std::string plyMissesTolerance(std::size_t ply, const SurfaceOffset& o)
     std::ostringstream text;
     text << std::setprecision(6) << "ply " << ply << ": its top is up to " << o.maxError
          << " from the exact offset, over --tolerance after " << o.knotsInserted
-         << " knot(s) inserted (a crease, a pole of the surface's parametrisation, or a tolerance finer than rounding allows); "
+         << " knot(s) inserted (a crease in the surface, or a tolerance finer than rounding allows); "
             "written with \"converged\": false";
     return text.str();
 }

@@ -80,33 +80,85 @@ Eigen::MatrixXd solveSparse(std::size_t n, const std::vector<Eigen::Triplet<doub
 /// direction (relative: at a collapsed row of poles it is zero only up to rounding).
 bool degenerate(double n, double a, double b) { return !(n > 1e-10 * a * b); }
 
-/// The direction of @p s's normal at (@p u, @p v), dS/du x dS/dv, also at a pole: where a
-/// boundary row or column of poles collapses to one point (dS/du vanishes along a sphere's pole
-/// row, to rounding), the limit from inside the surface. Near v = v0 with dS/du(u, v0) = 0,
-/// dS/du ~ (v - v0) d2S/dudv, so the normal points along (v - v0) (d2S/dudv x dS/dv): the same
-/// for every u of the row, as the pole's offset must be. @throws towgeom::Error
-/// (InvalidArgument) where neither gives a normal.
-gp_Vec normalDirection(const Handle(Geom_BSplineSurface)& s, double u, double v)
+/// Which boundary rows (v = v0, v1: poles (i, 0), (i, vCount - 1)) and columns (u = u0, u1) of
+/// a surface's poles collapse to one point (within 1e-10 of the control net's size): its poles
+/// in the parametrisation, as a sphere face's.
+struct CollapsedEdges {
+    bool u0 = false, u1 = false, v0 = false, v1 = false;
+};
+
+CollapsedEdges collapsedEdges(const NurbsSurface& s)
+{
+    Point3 lo = s.poles.front(), hi = lo;
+    for (const Point3& q : s.poles) {
+        lo = {std::min(lo.x, q.x), std::min(lo.y, q.y), std::min(lo.z, q.z)};
+        hi = {std::max(hi.x, q.x), std::max(hi.y, q.y), std::max(hi.z, q.z)};
+    }
+    const double tol = 1e-10 * distance(lo, hi);
+    const auto point = [&](std::size_t first, std::size_t stride, std::size_t count) {
+        for (std::size_t k = 1; k < count; ++k)
+            if (distance(s.poles[first + k * stride], s.poles[first]) > tol) return false;
+        return true;
+    };
+    const std::size_t nu = s.uCount, nv = s.vCount;
+    return {point(0, 1, nv), point((nu - 1) * nv, 1, nv), point(0, nv, nu), point(nv - 1, nv, nu)};
+}
+
+/// The direction of @p s's normal at (@p u, @p v), dS/du x dS/dv, also on a collapsed boundary
+/// row or column @p edges names: there the limit from inside the surface. On v = v0 with the
+/// row a point, dS/du ~ (v - v0) d2S/dudv nearby, so the normal points along
+/// (d2S/dudv x dS/dv) (negated on v = v1; on a collapsed column, along dS/du x d2S/dudv).
+/// @throws towgeom::Error (InvalidArgument) where neither gives a normal.
+gp_Vec normalDirection(const Handle(Geom_BSplineSurface)& s, const CollapsedEdges& edges, double u, double v)
 {
     gp_Pnt p;
     gp_Vec du, dv, duu, dvv, duv;
     s->D2(u, v, p, du, dv, duu, dvv, duv);
     double u0, u1, v0, v1;
     s->Bounds(u0, u1, v0, v1);
-    constexpr double kCollapsed = 1e-8;  // |dS/du| below this x |dS/dv|: the row is a point
     gp_Vec n = du.Crossed(dv);
     double a = du.Magnitude(), b = dv.Magnitude();
-    if (du.Magnitude() < kCollapsed * dv.Magnitude()) {
-        n = duv.Crossed(dv) * (v - v0 <= v1 - v ? 1.0 : -1.0);
+    const bool onRow = (edges.v0 && v == v0) || (edges.v1 && v == v1), onColumn = (edges.u0 && u == u0) || (edges.u1 && u == u1);
+    if (onRow && !onColumn) {
+        n = duv.Crossed(dv) * (v == v0 ? 1.0 : -1.0);
         a = duv.Magnitude();
-    } else if (dv.Magnitude() < kCollapsed * du.Magnitude()) {
-        n = du.Crossed(duv) * (u - u0 <= u1 - u ? 1.0 : -1.0);
+    } else if (onColumn && !onRow) {
+        n = du.Crossed(duv) * (u == u0 ? 1.0 : -1.0);
         b = duv.Magnitude();
     }
     if (degenerate(n.Magnitude(), a, b))
         throw Error(ErrorCode::InvalidArgument, "offsetSurface: the normal is not defined at (" + std::to_string(u) + ", " + std::to_string(v) +
-                                                    ") (dS/du x dS/dv vanishes, and not at a pole row)");
+                                                    ") (dS/du x dS/dv vanishes, and its limit at a collapsed edge is not of first order)");
     return n;
+}
+
+/// Refuses a collapsed boundary row or column of @p s (@p edges) whose normal's limit differs
+/// along it (beyond 1e-6 radians, at @p samples points): a cone's apex, where no offset point
+/// is the offset of the apex.
+void requireSingleNormals(const Handle(Geom_BSplineSurface)& s, const CollapsedEdges& edges, int samples = 16)
+{
+    double u0, u1, v0, v1;
+    s->Bounds(u0, u1, v0, v1);
+    const auto check = [&](bool collapsed, bool alongU, double fixed) {
+        if (!collapsed) return;
+        gp_Vec first;
+        for (int k = 0; k <= samples; ++k) {
+            const double t = alongU ? u0 + (u1 - u0) * k / samples : v0 + (v1 - v0) * k / samples;
+            const gp_Vec n = (alongU ? normalDirection(s, edges, t, fixed) : normalDirection(s, edges, fixed, t)).Normalized();
+            if (k == 0) {
+                first = n;
+            } else if (first.Angle(n) > 1e-6) {
+                const gp_Pnt q = alongU ? s->Value(t, fixed) : s->Value(fixed, t);
+                throw Error(ErrorCode::Unsupported, "offsetSurface: the surface has no single normal at its point (" + std::to_string(q.X()) + ", " +
+                                                        std::to_string(q.Y()) + ", " + std::to_string(q.Z()) +
+                                                        ") where an edge of its parametrisation collapses (a cone's apex): no offset point there");
+            }
+        }
+    };
+    check(edges.v0, true, v0);
+    check(edges.v1, true, v1);
+    check(edges.u0, false, u0);
+    check(edges.u1, false, u1);
 }
 
 /// Runs @p f, OpenCASCADE's failures (on input the checks let through) as InvalidArgument.
@@ -229,8 +281,12 @@ SurfaceOffset offsetSurface(const NurbsSurface& surface, double d, const OffsetO
     SurfaceOffset result;
     try {
         Handle(Geom_BSplineSurface) s = detail::occtSurface(surface);
+        // A pole of the parametrisation (a boundary row of poles collapsed to one point): its
+        // offset the normal's limit there, the same along the row (refused where it is not).
+        const CollapsedEdges edges = collapsedEdges(surface);
+        requireSingleNormals(s, edges);
         const auto exact = [&](double u, double v) {
-            const gp_Vec n = normalDirection(s, u, v);
+            const gp_Vec n = normalDirection(s, edges, u, v);
             return detail::fromOcct(s->Value(u, v)) + (d / n.Magnitude()) * detail::fromOcct(n);
         };
         int flat = 0;  // rounds in a row that did not cut the error
