@@ -111,14 +111,18 @@ CollapsedEdges collapsedEdges(const NurbsSurface& s)
 /// @throws towgeom::Error (InvalidArgument) where neither gives a normal.
 gp_Vec normalDirection(const Handle(Geom_BSplineSurface)& s, const CollapsedEdges& edges, double u, double v)
 {
-    gp_Pnt p;
-    gp_Vec du, dv, duu, dvv, duv;
-    s->D2(u, v, p, du, dv, duu, dvv, duv);
     double u0, u1, v0, v1;
     s->Bounds(u0, u1, v0, v1);
+    const bool onRow = (edges.v0 && v == v0) || (edges.v1 && v == v1), onColumn = (edges.u0 && u == u0) || (edges.u1 && u == u1);
+    gp_Pnt p;
+    gp_Vec du, dv, duu, dvv, duv;
+    if (onRow || onColumn) {
+        s->D2(u, v, p, du, dv, duu, dvv, duv);  // the mixed derivative for the limit
+    } else {
+        s->D1(u, v, p, du, dv);
+    }
     gp_Vec n = du.Crossed(dv);
     double a = du.Magnitude(), b = dv.Magnitude();
-    const bool onRow = (edges.v0 && v == v0) || (edges.v1 && v == v1), onColumn = (edges.u0 && u == u0) || (edges.u1 && u == u1);
     if (onRow && !onColumn) {
         n = duv.Crossed(dv) * (v == v0 ? 1.0 : -1.0);
         a = duv.Magnitude();
