@@ -3,6 +3,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <towgeom/point.hpp>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -26,6 +28,19 @@ inline std::size_t count(const std::string& text, const std::string& what)
     std::size_t n = 0;
     for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
     return n;
+}
+
+/// The point a message names as "near (x, y, z)" (an error's or a warning's place).
+inline Point3 placeNamedIn(const std::string& message)
+{
+    const std::size_t open = message.find("near ("), close = message.find(')', open);
+    REQUIRE(close != std::string::npos);
+    std::istringstream place(message.substr(open + 6, close - open - 6));
+    Point3 at;
+    char comma = 0;
+    place >> at.x >> comma >> at.y >> comma >> at.z;
+    REQUIRE(place);
+    return at;
 }
 
 inline std::string slurp(const std::filesystem::path& p)

@@ -734,12 +734,7 @@ TEST_CASE("towgeom ply on a sphere: through its poles without folding, a band ex
         CHECK_FALSE(fs::exists(out));
         CHECK(testing::count(run.err, "\n") == 1);
         CHECK_THAT(run.err, Catch::Contains("ply 1 folds near (") && Catch::Contains("[unsupported]"));
-        const std::size_t open = run.err.find("near ("), close = run.err.find(')', open);
-        REQUIRE(close != std::string::npos);
-        std::istringstream place(run.err.substr(open + 6, close - open - 6));
-        Point3 at;
-        char comma = 0;
-        place >> at.x >> comma >> at.y >> comma >> at.z;
+        const Point3 at = testing::placeNamedIn(run.err);
         // Past the axis, where the offset lies turned over: within 0.5 of it (the offset's radius).
         CHECK(std::hypot(at.x, at.y) <= 0.5 + 1e-9);
         CHECK(at.z >= 0.0);

@@ -17,6 +17,7 @@
 #include <tuple>
 #include <vector>
 
+#include "cli_runner.hpp"
 #include "cgal_reference.hpp"
 #include "scan_like.hpp"
 #include "synthetic_tows.hpp"
@@ -44,19 +45,6 @@ Face sorted(std::size_t a, std::size_t b, std::size_t c)
 }  // namespace
 
 namespace {
-
-/// The point an error message names as "near (x, y, z)".
-Point3 placeNamedIn(const std::string& message)
-{
-    const std::size_t open = message.find("near ("), close = message.find(')', open);
-    REQUIRE(close != std::string::npos);
-    std::istringstream place(message.substr(open + 6, close - open - 6));
-    Point3 at;
-    char comma = 0;
-    place >> at.x >> comma >> at.y >> comma >> at.z;
-    REQUIRE(place);
-    return at;
-}
 
 /// The independent checks of a volume mesh @p v of @p res: no flat or inverted tetrahedron, each
 /// tow's tetrahedra fill its closed surface's volume, every interior face shared by two
@@ -299,7 +287,7 @@ TEST_CASE("meshVolumes refuses tows touching tangentially, naming them and the p
         for (std::size_t t = 0; t < tows.size(); ++t)
             if (e.message().find("tow '" + tows[t].name() + "'") != std::string::npos) named.push_back(t);
         REQUIRE(named.size() == 2);
-        const Point3 at = placeNamedIn(e.message());
+        const Point3 at = testing::placeNamedIn(e.message());
         for (std::size_t t : named) {  // the middle of an edge both tows' meshes have: a node of each close by
             double nearest = 1e300;
             for (const auto& tri : res.mesh.tows[t].triangles)
@@ -334,7 +322,7 @@ TEST_CASE("meshVolumes refuses a tow whose surface folds, naming it and the plac
         CHECK(e.code() == ErrorCode::Unsupported);
         CHECK_THAT(e.message(), Catch::Matchers::Contains("tow 'binder_2_p1': its surface crosses itself near (") &&
                                     Catch::Matchers::Contains("denser sections"));
-        const Point3 at = placeNamedIn(e.message());
+        const Point3 at = testing::placeNamedIn(e.message());
         // The fold is a few triangles across (0.02 x 0.01 in the oracle's crossing pairs).
         CHECK(distance(at, oracle) < 0.05);
         CHECK_THAT(e.message(), Catch::Matchers::Contains("(" + std::to_string(crossings.crossing) + " crossing triangle pair(s) in all; Gmsh: "));

@@ -89,12 +89,7 @@ struct CollapsedEdges {
 
 CollapsedEdges collapsedEdges(const NurbsSurface& s)
 {
-    Point3 lo = s.poles.front(), hi = lo;
-    for (const Point3& q : s.poles) {
-        lo = {std::min(lo.x, q.x), std::min(lo.y, q.y), std::min(lo.z, q.z)};
-        hi = {std::max(hi.x, q.x), std::max(hi.y, q.y), std::max(hi.z, q.z)};
-    }
-    const double tol = 1e-10 * distance(lo, hi);
+    const double tol = 1e-10 * sizeOf(s.poles);
     const auto point = [&](std::size_t first, std::size_t stride, std::size_t count) {
         for (std::size_t k = 1; k < count; ++k)
             if (distance(s.poles[first + k * stride], s.poles[first]) > tol) return false;
