@@ -19,6 +19,21 @@ struct MeshOptions {
     double edgeLength = 0.0;
     /// edgeLength relative to the tow size when edgeLength is 0. Default 0.1.
     double relativeEdgeLength = 0.1;
+    /// Chord deviation d, for a mesh graded by the surface's curvature: where the largest
+    /// principal curvature is k, edges are at most sqrt(8 d / k) long (an edge of length s
+    /// stands off an arc of radius 1/k by about s^2 k / 8), never longer than the edge length h
+    /// above (which becomes the size of the flat parts, the seam and the end caps) nor shorter
+    /// than minEdgeLength, growing by at most the distance between two points of the surface.
+    /// 0 (default) with relativeChordDeviation 0: no grading, edges at about h everywhere.
+    double chordDeviation = 0.0;
+    /// chordDeviation relative to the tow size, when chordDeviation is 0. Default 0 (off).
+    double relativeChordDeviation = 0.0;
+    /// The shortest edges a mesh graded by curvature asks for (at a flat tow's sharp edges,
+    /// where the fitted surface's curvature is that of a crease); 0 (default) with
+    /// relativeMinEdgeLength 0: h / 100. Taken within [h / 100, h].
+    double minEdgeLength = 0.0;
+    /// minEdgeLength relative to the tow size, when minEdgeLength is 0. Default 0.
+    double relativeMinEdgeLength = 0.0;
     /// The smallest angle the mesher aims for, in degrees (at most 30). Default 20. It is asked in
     /// the plane each tow is meshed in, and 3/4 of it (15 degrees by default) on the surface for
     /// faces longer than an eighth of the local mesh size (below, the plane's refinement would
@@ -42,6 +57,20 @@ struct MeshOptions {
     /// input sections) (TowFace::Start, TowFace::End), so every tow's mesh
     /// is a closed surface. False: tubes open at their two ends.
     bool caps = true;
+
+    /// The sizes for a volume mesh (meshVolumes()), where every surface triangle costs about five
+    /// tetrahedra: graded by curvature (relativeChordDeviation 0.01) from edges of a quarter of
+    /// the tow size (relativeEdgeLength 0.25) where the tows are flat down to the default's tenth
+    /// (relativeMinEdgeLength 0.1) at their sharp edges. On the 8x8 twill about a quarter of the
+    /// default's triangles (see benchmarks/bench_resolve --volume).
+    static MeshOptions forVolume()
+    {
+        MeshOptions o;
+        o.relativeEdgeLength = 0.25;
+        o.relativeChordDeviation = 0.01;
+        o.relativeMinEdgeLength = 0.1;
+        return o;
+    }
 };
 
 TOWGEOM_END_NAMESPACE

@@ -59,6 +59,7 @@ Options:
                      marked periodic is checked so always
   --mesh-size H      edge length of the surface meshes that decide the regions (default: 0.1 x
                      each tow's own size); the solids' faces are exact whatever H is
+  --mesh-deviation D grade those meshes by curvature, as resolve's --mesh-deviation
   --loop-spacing S   node spacing along intersection loops in those meshes (default: the
                      smaller mesh size of the loop's two tows)
   --tolerance T      intersection point tolerance (default: 1e-7 x the tow size)
@@ -93,7 +94,7 @@ int runExport(int argc, char** argv, int first)
     try {
         const Args args(argc, argv, first,
                         {{"help"}, {"quiet"}, {"allow-open"}, {"step", true}, {"brep", true}, {"primary", true}, {"cell", true},
-                         {"periodic"}, {"mesh-size", true}, {"loop-spacing", true}, {"tolerance", true}, {"report", true},
+                         {"periodic"}, {"mesh-size", true}, {"mesh-deviation", true}, {"loop-spacing", true}, {"tolerance", true}, {"report", true},
                          {"max-triangles", true}, {"threads", true}});
         if (args.has("help")) {
             std::cout << kExportHelp;

@@ -152,9 +152,16 @@ Options:
                      method, section area along each tow before and after, mesh quality, a 3D
                      view of --method's meshes coloured by tow or region) and DIR/report.csv
                      (a row per tow and method). The meshes written are --method's
-  --mesh-size H      target 3D edge length (default: 0.1 x each tow's own size); a tow is meshed
-                     at most at a quarter of its circumference (noted on stderr, and each
-                     tow's "mesh_size" in report.json)
+  --mesh-size H      target 3D edge length (default: 0.1 x each tow's own size; with --volume
+                     0.25 x, graded by curvature as --mesh-deviation 0.01 x the tow size);
+                     a tow is meshed at most at a quarter of its circumference (noted on
+                     stderr, and each tow's "mesh_size" in report.json)
+  --mesh-deviation D grade the surface meshes by curvature: edges at most sqrt(8 D / k) long
+                     where the surface's largest curvature is k (they stand off it by about
+                     D), at most --mesh-size (then the size of the flat parts), at least 1/100
+                     of it. Default: none (with --volume and no --mesh-size: 0.01 x each
+                     tow's size, --mesh-size 0.25 x it). Example: --mesh-size 0.2
+                     --mesh-deviation 0.002
   --min-angle DEG    smallest triangle angle the mesher aims for, at most 30 (default 20)
   --loop-spacing S   node spacing along intersection loops (default: the smaller mesh size of
                      the loop's two tows)
@@ -345,7 +352,7 @@ int runResolve(int argc, char** argv, int first)
 {
     try {
         const Args args(argc, argv, first,
-                        {{"help"}, {"quiet"}, {"allow-open"}, {"out", true}, {"primary", true}, {"mesh-size", true},
+                        {{"help"}, {"quiet"}, {"allow-open"}, {"out", true}, {"primary", true}, {"mesh-size", true}, {"mesh-deviation", true},
                          {"min-angle", true}, {"loop-spacing", true}, {"formats", true}, {"tolerance", true},
                          {"threads", true}, {"max-triangles", true}, {"no-caps"}, {"report", true}, {"volume"},
                          {"cell", true}, {"cell-cut", true}, {"periodic"}, {"face-grading", true}, {"order", true}, {"volume-grading", true}, {"load-cases"}, {"tow-material", true}, {"matrix-material", true}, {"method", true}, {"shrink-both"}, {"report-methods", true}, {"knot-spans"}});

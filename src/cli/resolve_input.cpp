@@ -10,7 +10,11 @@ namespace towgeom::cli {
 void readResolveOptions(const Args& args, ResolveOptions& o)
 {
     o.primaryPatterns = args.values("primary");
+    // A volume mesh costs about five tetrahedra per surface triangle: by default its surfaces
+    // are graded by curvature (MeshOptions::forVolume()), unless a size is given.
+    if (args.has("volume") && !args.has("mesh-size") && !args.has("mesh-deviation")) o.mesh = MeshOptions::forVolume();
     o.mesh.edgeLength = args.positive("mesh-size");
+    o.mesh.chordDeviation = args.positive("mesh-deviation");
     o.mesh.loopSpacing = args.positive("loop-spacing");
     o.mesh.maxTriangles = args.maxTriangles(o.mesh.maxTriangles);
     o.intersection.tolerance = args.positive("tolerance");

@@ -26,19 +26,34 @@ using mesh2::K;
 
 namespace {
 
-/// Stations along [from, to] at most @p h apart, plus @p extra ones (kept exactly); uniform
-/// stations closer than h/3 to an extra one are dropped.
-std::vector<double> stations(double from, double to, double h, const std::vector<double>& extra)
+/// Stations along [from, to] at most @p h apart (or, with @p spacingAt, at most spacingAt(x)
+/// apart, within [h / 100, h]), plus @p extra ones (kept exactly); stations closer than a third
+/// of their spacing to an extra one are dropped.
+std::vector<double> stations(double from, double to, double h, const std::vector<double>& extra,
+                             const std::function<double(double)>& spacingAt = {})
 {
     const double length = to - from;
-    const std::size_t n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(length / h)));
-    std::vector<double> s(extra);
-    for (std::size_t k = 0; k <= n; ++k) {
+    std::vector<double> at;  // the evenly or graded spaced stations, both ends exactly
+    if (!spacingAt) {
+        const std::size_t n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(length / h)));
         // The ends exactly (length * n / n need not be length): the rectangle's corners are
         // shared by two of its sides, and a gap there would let the outside into the domain.
-        const double x = k == 0 ? from : k == n ? to : from + length * static_cast<double>(k) / static_cast<double>(n);
-        const bool crowded = std::any_of(extra.begin(), extra.end(), [&](double e) { return std::abs(e - x) < h / 3.0; });
-        if (!crowded || k == 0 || k == n) s.push_back(x);
+        for (std::size_t k = 0; k <= n; ++k)
+            at.push_back(k == 0 ? from : k == n ? to : from + length * static_cast<double>(k) / static_cast<double>(n));
+    } else {
+        // Walked by the local spacing, then shrunk evenly to end on `to`.
+        at.push_back(from);
+        while (at.back() < to) at.push_back(at.back() + std::clamp(spacingAt(at.back()), h / 100.0, h));
+        const double shrink = length / (at.back() - from);
+        for (double& x : at) x = from + (x - from) * shrink;
+        if (at.size() < 2) at.push_back(to);
+        at.back() = to;
+    }
+    std::vector<double> s(extra);
+    for (std::size_t k = 0; k < at.size(); ++k) {
+        const double x = at[k], spacing = k + 1 < at.size() ? at[k + 1] - x : x - at[k - 1];
+        const bool crowded = std::any_of(extra.begin(), extra.end(), [&](double e) { return std::abs(e - x) < spacing / 3.0; });
+        if (!crowded || k == 0 || k + 1 == at.size()) s.push_back(x);
     }
     std::sort(s.begin(), s.end());
     s.erase(std::unique(s.begin(), s.end()), s.end());
@@ -440,7 +455,13 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
             for (const double side : {m.range.vMin, m.range.vMax})
                 if (c.uv[k].v == side && c.uv[k + 1].v == side)
                     m.seamChords.insert(std::minmax(m.toXY(c.uv[k]).x(), m.toXY(c.uv[k + 1]).x()));
-    std::vector<double> xs = stations(m.x0, m.x1, 0.5 * h, seamX);
+    // Where a size function grades the mesh, the stations follow it: half the local size apart.
+    const Criteria::LocalSize local = m.localSize();
+    const auto spacingAlong = [&](bool alongX, double fixed) -> std::function<double(double)> {
+        if (!local) return {};
+        return [&local, alongX, fixed](double t) { return 0.5 * (alongX ? local(t, fixed) : local(fixed, t)); };
+    };
+    std::vector<double> xs = stations(m.x0, m.x1, 0.5 * h, seamX, spacingAlong(true, 0.0));
     xs.erase(std::remove_if(xs.begin(), xs.end(),
                             [&](double x) {
                                 return std::find(loopSeamX.begin(), loopSeamX.end(), x) == loopSeamX.end() &&
@@ -456,7 +477,8 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
             if (p.u == m.range.uMin) startY.push_back(m.toXY(p).y());
             if (p.u == m.range.uMax) endY.push_back(m.toXY(p).y());
         }
-    std::vector<double> ys = stations(0.0, ly, 0.5 * h, startY), ysEnd = stations(0.0, ly, 0.5 * h, endY);
+    std::vector<double> ys = stations(0.0, ly, 0.5 * h, startY, spacingAlong(false, m.x0)),
+                        ysEnd = stations(0.0, ly, 0.5 * h, endY, spacingAlong(false, m.x1));
     for (int end = 0; end < 2; ++end) {  // and where refinement split them before
         std::vector<double>& y = end == 0 ? ys : ysEnd;
         y.insert(y.end(), m.endStations[end].begin(), m.endStations[end].end());

@@ -163,8 +163,8 @@ constexpr double kTouchingLoops = 1e-3;
 
 /// One attempt of meshTowsInFrame(): loops of the tow pairs in @p excluded are left out.
 /// @throws TowMeshFailures when a tow's mesh cannot be made or is not a tube.
-void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>& towH, const ResolveOptions& options,
-                 const std::set<TowPair>& excluded, ResolveResult& result)
+void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>& towH, const std::vector<TowSizeField>& sizeAt,
+                 const ResolveOptions& options, const std::set<TowPair>& excluded, ResolveResult& result)
 {
     const std::size_t threads = workerCount(options.threads);
     const std::vector<IntersectionLoop>& loops = result.intersections.loops;
@@ -374,6 +374,7 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
         failures.run(t, [&] {
             throwIfCancelled(options.monitor);  // inside: TowFailures must pass it on
             MeshSizes sizes{towH[t], options.mesh.minAngle, {}, {}};
+            if (t < sizeAt.size() && sizeAt[t]) sizes.sizeAt = sizeAt[t];
             if (cuts) {
                 // Only what the cell keeps is meshed; nothing of a tow outside it.
                 sizes.uSpan = cuts->keptSpan(t, tows[t].parameterRange());
@@ -677,7 +678,7 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
 }  // namespace
 
 ResolveResult meshTowsInFrame(const std::vector<TowSurface>& tows, const std::vector<double>& towH, const ResolveOptions& options,
-                              const IntersectionReport& report)
+                              const IntersectionReport& report, const std::vector<TowSizeField>& sizeAt)
 {
     std::set<TowPair> excluded;
     std::vector<UnresolvedPair> unresolved;
@@ -685,7 +686,7 @@ ResolveResult meshTowsInFrame(const std::vector<TowSurface>& tows, const std::ve
         ResolveResult attempt;
         attempt.intersections = report;
         try {
-            meshTextile(tows, towH, options, excluded, attempt);
+            meshTextile(tows, towH, sizeAt, options, excluded, attempt);
         } catch (const TowMeshFailures& failed) {
             // Every pair with loops on a failed tow is left out; the rest is meshed again.
             std::size_t left = 0;

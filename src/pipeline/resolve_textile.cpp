@@ -18,6 +18,7 @@
 #include "core/progress_report.hpp"
 #include "pipeline/resolve_checks.hpp"
 #include "intersect/textile_frame.hpp"
+#include "mesh/curvature_size.hpp"
 #include "mesh/textile_mesher.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
@@ -39,6 +40,10 @@ void checkOptions(const ResolveOptions& o)
         throw Error(ErrorCode::InvalidArgument, "relative mesh edge length must be > 0 and finite");
     if (!(m.minAngle > 0.0 && m.minAngle <= 30.0))
         throw Error(ErrorCode::InvalidArgument, "minimum angle must lie in (0, 30] degrees");
+    if (!nonNegative(m.chordDeviation) || !nonNegative(m.relativeChordDeviation))
+        throw Error(ErrorCode::InvalidArgument, "chord deviation (absolute and relative) must be >= 0 and finite");
+    if (!nonNegative(m.minEdgeLength) || !nonNegative(m.relativeMinEdgeLength))
+        throw Error(ErrorCode::InvalidArgument, "smallest edge length (absolute and relative) must be >= 0 and finite");
     if (!nonNegative(m.loopSpacing)) throw Error(ErrorCode::InvalidArgument, "loop spacing must be >= 0 and finite");
     if (m.maxTriangles == 0) throw Error(ErrorCode::InvalidArgument, "the triangle limit must be at least 1");
     if (o.cell) {
@@ -154,19 +159,24 @@ void resultToUser(ResolveResult& result, const IntersectionReport& report, const
 /// are known; check() repeats the check with the loops' refinement.
 struct MeshSizePlan {
     std::vector<double> towH;  ///< per tow, the user's units
+    /// Per tow, its size graded by curvature (MeshOptions::chordDeviation), the user's units;
+    /// null for a tow meshed at towH everywhere.
+    std::vector<std::shared_ptr<const detail::CurvatureSize>> graded;
     double area = 0.0;         ///< the tows' (faceted) area, and a cell's faces
     double h = 1.0;            ///< the tows' mesh sizes averaged as the triangle count sees them
     double spacing = 1.0;      ///< the loop spacing
 
-    MeshSizePlan(const std::vector<TowSurface>& tows, const MeshOptions& mesh, const std::optional<Cell>& cell = {})
-        : towH(meshSizes(tows, mesh))
+    MeshSizePlan(const std::vector<TowSurface>& tows, const MeshOptions& mesh, const std::optional<Cell>& cell, std::size_t threads)
+        : towH(meshSizes(tows, mesh)), graded(tows.size())
     {
-        // In the user's units, for the message; h area-weighted in 1/h^2.
+        detail::parallelFor(tows.size(), detail::workerCount(threads), [&](std::size_t t) { graded[t] = detail::curvatureSizeFor(tows[t], mesh, towH[t]); });
+        // In the user's units, for the message; h area-weighted in 1/h^2 (a graded tow's
+        // (h / size)^2 averaged over its area).
         double perH2 = 0.0;
         for (std::size_t t = 0; t < tows.size(); ++t) {
             const double a = facetedArea(tows[t], mesh.caps);
             area += a;
-            perH2 += a / (towH[t] * towH[t]);
+            perH2 += a * (graded[t] ? graded[t]->densityOverLargest() : 1.0) / (towH[t] * towH[t]);
         }
         if (cell) {  // the box's faces counted at the finest tow's size: an upper bound (graded coarser away from the caps)
             const double dx = cell->max.x - cell->min.x, dy = cell->max.y - cell->min.y, dz = cell->max.z - cell->min.z;
@@ -205,6 +215,8 @@ ResolveResult meshWithPlan(const std::vector<TowSurface>& tows, const Intersecti
     std::vector<double> towHInFrame;
     for (double x : plan.towH) towHInFrame.push_back(frame.lengthToFrame(x));
     o.mesh.loopSpacing = frame.lengthToFrame(options.mesh.loopSpacing);
+    o.mesh.chordDeviation = frame.lengthToFrame(options.mesh.chordDeviation);
+    o.mesh.minEdgeLength = frame.lengthToFrame(options.mesh.minEdgeLength);
     o.intersection = detail::optionsInFrame(options.intersection, frame);
     if (options.cell && options.cell->cutsMeshes()) {
         o.cell.reset();  // connectRegions() clips the resolved meshes
@@ -224,7 +236,11 @@ ResolveResult meshWithPlan(const std::vector<TowSurface>& tows, const Intersecti
         detail::sayStage(options, "meshing " + std::to_string(tows.size()) + " tows at h = " + std::to_string(*lo) +
                                       (*hi > *lo * (1.0 + 1e-6) ? " to " + std::to_string(*hi) : std::string()));
     }
-    ResolveResult result = detail::meshTowsInFrame(moved, towHInFrame, o, reportInFrame);
+    std::vector<detail::TowSizeField> sizeAt(tows.size());
+    for (std::size_t t = 0; t < tows.size(); ++t)
+        if (const auto graded = plan.graded[t])
+            sizeAt[t] = [graded, scale = frame.lengthToFrame(1.0)](const UV& at) { return scale * graded->at(at); };
+    ResolveResult result = detail::meshTowsInFrame(moved, towHInFrame, o, reportInFrame, sizeAt);
     resultToUser(result, report, frame, options);
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wdeprecated-declarations"  // ResolveResult::skipped, until 0.3
@@ -257,7 +273,7 @@ ResolveResult resolveShrunk(const std::vector<TowSurface>& tows, const Intersect
     const double shrinkMs = msSince(t0);
     ResolveOptions o = options;
     o.method = ResolutionMethod::Connect;
-    ResolveResult result = connectRegions(s.tows, meshWithPlan(s.tows, after, o, MeshSizePlan(s.tows, o.mesh, o.cell)), o);
+    ResolveResult result = connectRegions(s.tows, meshWithPlan(s.tows, after, o, MeshSizePlan(s.tows, o.mesh, o.cell, o.threads)), o);
     result.method = ResolutionMethod::Shrink;
     for (std::size_t t = 0; t < tows.size(); ++t) {
         TowResolution& r = result.tows[t];
@@ -278,20 +294,20 @@ void detail::checkBeforeIntersecting(const std::vector<TowSurface>& tows, const 
 {
     checkOptions(options);
     detail::checkIntersectionOptions(options.intersection);
-    const MeshSizePlan plan(tows, options.mesh, options.cell);
+    const MeshSizePlan plan(tows, options.mesh, options.cell, options.threads);
 }
 
 ResolveResult meshTows(const std::vector<TowSurface>& tows, const IntersectionReport& report, const ResolveOptions& options)
 {
     checkWithReport(tows, report, options);
-    return meshWithPlan(tows, report, options, MeshSizePlan(tows, options.mesh, options.cell));
+    return meshWithPlan(tows, report, options, MeshSizePlan(tows, options.mesh, options.cell, options.threads));
 }
 
 ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const IntersectionReport& report, const ResolveOptions& options)
 {
     checkWithReport(tows, report, options);
     if (options.method == ResolutionMethod::Shrink) return resolveShrunk(tows, report, options);
-    return connectRegions(tows, meshWithPlan(tows, report, options, MeshSizePlan(tows, options.mesh, options.cell)), options);
+    return connectRegions(tows, meshWithPlan(tows, report, options, MeshSizePlan(tows, options.mesh, options.cell, options.threads)), options);
 }
 
 ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveOptions& options)
@@ -299,7 +315,7 @@ ResolveResult resolveTextile(const std::vector<TowSurface>& tows, const ResolveO
     checkOptions(options);
     detail::checkIntersectionOptions(options.intersection);
     // A mesh too large for memory is refused now, before intersecting.
-    const MeshSizePlan plan(tows, options.mesh, options.cell);
+    const MeshSizePlan plan(tows, options.mesh, options.cell, options.threads);
     const Clock::time_point t0 = Clock::now();
     IntersectionOptions io = options.intersection;
     io.threads = options.threads;
