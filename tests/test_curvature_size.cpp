@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "mesh/curvature_size.hpp"
+#include "towgeom/error.hpp"
 #include "towgeom/resolve.hpp"
+#include "towgeom/surface_mesher.hpp"
 
 using namespace towgeom;
 
@@ -46,15 +48,16 @@ double distanceToEllipse(double a, double b, double y, double z)
 }
 
 /// The mean over the ellipse's perimeter of (largest / size)^2, size = sqrt(8 d / k) within
-/// [smallest, largest]: how many times more triangles than at the largest size everywhere.
-double closedFormDensity(double a, double b, double d, double largest, double smallest)
+/// [smallest, largest] (and at most @p cap): how many times more triangles than at the largest
+/// size everywhere.
+double closedFormDensity(double a, double b, double d, double largest, double smallest, double cap = 1e300)
 {
     double weighted = 0.0, perimeter = 0.0;
     constexpr int kSteps = 200000;
     for (int k = 0; k < kSteps; ++k) {
         const double t = 2.0 * kPi * (k + 0.5) / kSteps;
         const double ds = std::hypot(a * std::sin(t), b * std::cos(t));
-        const double size = std::clamp(std::sqrt(8.0 * d / ellipseCurvature(a, b, t)), smallest, largest);
+        const double size = std::min(cap, std::clamp(std::sqrt(8.0 * d / ellipseCurvature(a, b, t)), smallest, largest));
         weighted += ds * (largest / size) * (largest / size);
         perimeter += ds;
     }
@@ -172,4 +175,36 @@ TEST_CASE("a mesh graded by curvature keeps its chord deviation and has fewer tr
     CHECK(ratio > 0.5 * predicted);
     CHECK(ratio < 1.5 * predicted);
     CHECK(ratio < 250.0 / 5.0);
+}
+
+TEST_CASE("ParametricMesher grades by curvature as resolve does, with the host's size function", "[mesh][curvature]")
+{
+    const double a = 0.4, b = 0.1, d = 2e-4;
+    const TowSurface tow = TowSurface::fit(ellipticalTube(a, b, 2.0, 21, 128));
+    SurfaceMeshOptions o;
+    o.edgeLength = 0.1;
+    o.chordDeviation = d;
+    o.caps = false;
+    const auto worstDeviation = [&](const SurfaceMesh& m) {
+        double worst = 0.0;
+        for (const auto& tr : m.triangles) {
+            const Point3 c = (1.0 / 3.0) * (m.nodes[tr[0]] + m.nodes[tr[1]] + m.nodes[tr[2]]);
+            worst = std::max(worst, distanceToEllipse(a, b, c.y, c.z));
+        }
+        return worst;
+    };
+    const SurfaceMesh graded = ParametricMesher(tow, o).mesh({});
+    CHECK(worstDeviation(graded) <= 1.5 * d);
+    // A host's size function finer on half the tube (x < 1): the smaller of the two there, as
+    // many times more triangles on that half as the closed form says (4.6).
+    o.size = [](const UV& at) { return at.u < 0.5 ? 0.01 : 1.0; };
+    const SurfaceMesh both = ParametricMesher(tow, o).mesh({});
+    CHECK(worstDeviation(both) <= 1.5 * d);
+    std::size_t finerHalf = 0, coarserHalf = 0;
+    for (const auto& tr : both.triangles) ((both.nodes[tr[0]].x + both.nodes[tr[1]].x + both.nodes[tr[2]].x) < 3.0 ? finerHalf : coarserHalf)++;
+    const double predicted = closedFormDensity(a, b, d, 0.1, 0.001, 0.01) / closedFormDensity(a, b, d, 0.1, 0.001);
+    CHECK(static_cast<double>(finerHalf) / static_cast<double>(coarserHalf) == Approx(predicted).epsilon(0.4));
+    // Refused: a negative deviation.
+    o.chordDeviation = -1.0;
+    CHECK_THROWS_AS(ParametricMesher(tow, o), Error);
 }

@@ -264,6 +264,29 @@ TEST_CASE("meshVolumes refuses a triangle given twice or turned over, or a tow f
         CHECK(e.code() == ErrorCode::InvalidArgument);
         CHECK(e.message().find("region 1: a surface triangle belongs to two regions") != std::string::npos);
     }
+    // Two tows whose own surfaces share a triangle (two tetrahedra on one face, each closed and
+    // facing out): they touch with no gap, refused as tows touching tangentially, both named.
+    TextileMesh touching;
+    touching.nodes = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0, -1}};
+    const auto tow = [](const std::string& name, std::vector<std::array<std::size_t, 3>> triangles) {
+        TowMesh m;
+        m.name = name;
+        m.region.assign(triangles.size(), -1);
+        m.face.assign(triangles.size(), TowFace::Side);
+        m.fibreDirection.assign(triangles.size(), Vector3{1, 0, 0});
+        m.triangles = std::move(triangles);
+        return m;
+    };
+    touching.tows = {tow("above", {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}), tow("below", {{0, 1, 2}, {0, 4, 1}, {0, 2, 4}, {1, 4, 2}})};
+    try {
+        meshVolumes(touching);
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK(e.code() == ErrorCode::Unsupported);
+        CHECK(e.message().find("tow 'above' and tow 'below': a surface triangle near (0.333333, 0.333333, 0) is on both tows' own surfaces") !=
+              std::string::npos);
+        CHECK(e.message().find("touching tangentially") != std::string::npos);
+    }
 }
 
 TEST_CASE("meshVolumes refuses tows touching tangentially, naming them and the place, before Gmsh", "[volume][tangent]")

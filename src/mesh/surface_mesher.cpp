@@ -13,6 +13,7 @@
 
 #include "mesh/end_caps.hpp"
 #include "mesh/mesh_measures.hpp"
+#include "mesh/curvature_size.hpp"
 #include "mesh/parametric_mesher.hpp"
 #include "surface/fibre_directions.hpp"
 #include "surface/frame.hpp"
@@ -103,6 +104,9 @@ ParametricMesher::ParametricMesher(TowSurface surface, const SurfaceMeshOptions&
     if (!(options.minAngle > 0.0 && options.minAngle <= 30.0))
         throw Error(ErrorCode::InvalidArgument, "the minimum angle must lie in (0, 30] degrees");
     if (options.maxTriangles == 0) throw Error(ErrorCode::InvalidArgument, "the triangle limit must be at least 1");
+    for (const double x : {options.chordDeviation, options.relativeChordDeviation, options.minEdgeLength, options.relativeMinEdgeLength})
+        if (!(x >= 0.0 && std::isfinite(x)))
+            throw Error(ErrorCode::InvalidArgument, "chord deviation and smallest edge length (absolute and relative) must be >= 0 and finite");
     h_ = options.edgeLength > 0.0 ? options.edgeLength : options.relativeEdgeLength * surface_.towSize();
     const double around = 3.14159265358979323846 * surface_.towSize();
     if (h_ > around / 4.0)
@@ -117,7 +121,13 @@ SurfaceMesh ParametricMesher::mesh(const std::vector<MeshConstraint>& constraint
     Pieces pieces(constraints, r);
     // As resolveTextile(): about 3 triangles per equilateral triangle of side h in the area; with
     // a size function, (h / size)^2 times as many on average over a grid of the (u,v) rectangle.
-    double finer = 1.0;
+    MeshOptions grading;
+    grading.chordDeviation = options_.chordDeviation;
+    grading.relativeChordDeviation = options_.relativeChordDeviation;
+    grading.minEdgeLength = options_.minEdgeLength;
+    grading.relativeMinEdgeLength = options_.relativeMinEdgeLength;
+    const std::shared_ptr<const detail::CurvatureSize> graded = detail::curvatureSizeFor(surface_, grading, h_);
+    double finer = graded ? graded->densityOverLargest() : 1.0;
     if (options_.size) {
         double sum = 0.0;
         constexpr int kGrid = 16;
@@ -129,10 +139,10 @@ SurfaceMesh ParametricMesher::mesh(const std::vector<MeshConstraint>& constraint
                     throw Error(ErrorCode::InvalidArgument, "the mesh size function gives " + std::to_string(hl) + " at (u, v) = (" +
                                                                 std::to_string(at.u) + ", " + std::to_string(at.v) + ")",
                                 "tow '" + surface_.name() + "'");
-                const double ratio = h_ / std::clamp(hl, h_ / 100.0, h_);
+                const double ratio = h_ / std::clamp(graded ? std::min(hl, graded->at(at)) : hl, h_ / 100.0, h_);
                 sum += ratio * ratio;
             }
-        finer = sum / (kGrid * kGrid);
+        finer = std::max(finer, sum / (kGrid * kGrid));  // the grid may miss a graded tow's sharp edges
     }
     const double estimate = finer * 3.0 * surface_.area() / (std::sqrt(3.0) / 4.0 * h_ * h_);
     if (!(estimate <= static_cast<double>(options_.maxTriangles)))
@@ -149,7 +159,11 @@ SurfaceMesh ParametricMesher::mesh(const std::vector<MeshConstraint>& constraint
     std::vector<Point3> nodes;  // frame
     for (const UV& p : pieces.nodeUV) nodes.push_back(tow.point(p.u, p.v));
     detail::MeshSizes sizes{h, options_.minAngle, {}, {}};
-    if (options_.size) sizes.sizeAt = [&](const UV& at) { return frame.lengthToFrame(options_.size(at)); };
+    if (options_.size || graded)
+        sizes.sizeAt = [&](const UV& at) {
+            const double user = options_.size ? (graded ? std::min(options_.size(at), graded->at(at)) : options_.size(at)) : graded->at(at);
+            return frame.lengthToFrame(user);
+        };
     detail::ParametricMesher mesher(tow, sizes);
     detail::MeshRequests requests;
     SurfaceMesh out;

@@ -522,9 +522,21 @@ VolumeMesh meshVolumes(const TextileMesh& surfaces, const VolumeMeshOptions& opt
     }
     std::sort(given.begin(), given.end());
     for (std::size_t i = 1; i < given.size(); ++i)
-        if (given[i].first == given[i - 1].first)
-            throw Error(ErrorCode::InvalidArgument, giver[std::max(given[i].second, given[i - 1].second)] +
-                                                        ": a surface triangle belongs to two regions or to a region and a tow's own surface");
+        if (given[i].first == given[i - 1].first) {
+            const std::size_t a = std::min(given[i].second, given[i - 1].second), b = std::max(given[i].second, given[i - 1].second);
+            if (b < towCount && a != b) {
+                // Two tows' own surfaces on the same three nodes (loop nodes of both): they touch
+                // with no gap there, the limit of the sharp wedge refused below.
+                const auto& tri = given[i].first;
+                const Point3 at = (1.0 / 3.0) * (surfaces.nodes[tri[0]] + surfaces.nodes[tri[1]] + surfaces.nodes[tri[2]]);
+                std::ostringstream text;
+                text << giver[a] << " and " << giver[b] << ": a surface triangle near (" << at.x << ", " << at.y << ", " << at.z
+                     << ") is on both tows' own surfaces: no tetrahedron fits between them (tows touching tangentially, e.g. "
+                        "pressed flat together; the shrink method leaves a gap)";
+                throw Error(ErrorCode::Unsupported, text.str());
+            }
+            throw Error(ErrorCode::InvalidArgument, giver[b] + ": a surface triangle belongs to two regions or to a region and a tow's own surface");
+        }
     for (std::size_t v = 0; v < bounds.size(); ++v)
         if (bounds[v].empty()) throw Error(ErrorCode::Internal, nameOf(volumeTow[v]) + ": a piece of it has no surface");
     // What the tetrahedra must fill (checked after meshing): each tow's surface faces out.
