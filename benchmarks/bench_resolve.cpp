@@ -12,7 +12,13 @@
 // z at +-spacing/2): the tows cut by the box and the matrix around them, meshed too with --volume.
 // --unit-cell: clip it to the generator's periodic unit cell instead (one 4x4 repeat of the 8x8
 // twill: only the pairs and parts of tows inside are intersected and meshed).
-//   bench_resolve [--tows N] [--sections M] [--points P] [--threads T] [--h H] [--volume] [--cell | --unit-cell] [--smoke]
+// --stiffness (with --volume --unit-cell; needs ccx): writes the six periodic load cases too
+// (carbon-like orthotropic tows, epoxy matrix, as the tests), solves them with CalculiX, and
+// again with the surfaces at --reference-h (default width / 15, the former default: 0.1 x the
+// tow size) and the same volume grading; prints both cells' engineering constants (E1, E2, E3,
+// G23, G13, G12 from the inverse of the 6x6 stiffness) and their differences. Goal (issue 39):
+// each within 1 % of the reference's. The reference's solve takes about 10 minutes and 2.5 GB.
+//   bench_resolve [--tows N] [--sections M] [--points P] [--threads T] [--h H] [--volume] [--cell | --unit-cell] [--stiffness [--reference-h H]] [--smoke]
 #include <towgeom/towgeom.hpp>
 
 #include "bench_goal.hpp"
@@ -22,7 +28,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -30,8 +38,62 @@
 #include <iterator>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
+
+namespace {
+
+/// The materials of the load cases: carbon-like tows in their fibre axes, an epoxy matrix.
+constexpr const char* kMaterials = " --load-cases --tow-material 140000,10000,10000,0.3,0.3,0.45,5000,5000,3450 --matrix-material 3500,0.35";
+
+/// E1, E2, E3, G23, G13, G12: the reciprocals of the compliance's diagonal (the inverse of @p c,
+/// by Gauss-Jordan with partial pivoting), or empty if @p c is singular.
+std::vector<double> engineeringConstants(std::array<std::array<double, 6>, 6> c)
+{
+    std::array<std::array<double, 6>, 6> inv{};
+    for (std::size_t i = 0; i < 6; ++i) inv[i][i] = 1.0;
+    for (std::size_t col = 0; col < 6; ++col) {
+        std::size_t pivot = col;
+        for (std::size_t r = col + 1; r < 6; ++r)
+            if (std::abs(c[r][col]) > std::abs(c[pivot][col])) pivot = r;
+        if (c[pivot][col] == 0.0) return {};
+        std::swap(c[col], c[pivot]);
+        std::swap(inv[col], inv[pivot]);
+        const double p = c[col][col];
+        for (std::size_t k = 0; k < 6; ++k) c[col][k] /= p, inv[col][k] /= p;
+        for (std::size_t r = 0; r < 6; ++r)
+            if (r != col) {
+                const double f = c[r][col];
+                for (std::size_t k = 0; k < 6; ++k) c[r][k] -= f * c[col][k], inv[r][k] -= f * inv[col][k];
+            }
+    }
+    std::vector<double> e;
+    for (std::size_t i = 0; i < 6; ++i) e.push_back(1.0 / inv[i][i]);
+    return e;
+}
+
+/// CalculiX on @p out's load cases, read back: the engineering constants (empty on failure).
+std::vector<double> solveLoadCases(const fs::path& out)
+{
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::string ccx = "cd '" + out.string() + "' && ccx -i textile_load_cases > ccx.log 2>&1";
+    if (std::system(ccx.c_str()) != 0) {
+        std::printf("ccx failed (see %s/ccx.log)\n", out.string().c_str());
+        return {};
+    }
+    std::ifstream dat(out / "textile_load_cases.dat");
+    const towgeom::EffectiveStiffness k = towgeom::readEffectiveStiffness(dat, (out / "textile_load_cases.dat").string());
+    std::printf("CalculiX: %zu elements, %.0f s\n", k.elements, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    return engineeringConstants(k.c);
+}
+
+void printConstants(const char* what, const std::vector<double>& e)
+{
+    std::printf("%s: E1 %.1f, E2 %.1f, E3 %.1f, G23 %.1f, G13 %.1f, G12 %.1f\n", what, e[0], e[1], e[2], e[3], e[4], e[5]);
+}
+
+}  // namespace
 
 int main(int argc, char** argv)
 {
@@ -55,6 +117,15 @@ int main(int argc, char** argv)
     command += " --out '" + (dir / "out").string() + "'" + (h > 0.0 ? " --mesh-size " + std::to_string(h) : std::string()) +
                " --threads " + std::to_string(threads) + " --formats stl,vtk --quiet" + (volume ? " --volume" : "");
     if (const auto grading = args.other.find("--grading"); volume && grading != args.other.end()) command += " --volume-grading " + grading->second;
+    const bool stiffness = volume && args.flag("--stiffness") && args.flag("--unit-cell");
+    if (args.flag("--stiffness") && !stiffness) {
+        std::fprintf(stderr, "bench_resolve: --stiffness needs --volume and --unit-cell\n");
+        return 2;
+    }
+    if (stiffness) {
+        command += kMaterials;
+        command.replace(command.find("--formats stl,vtk"), 17, "--formats inp");
+    }
     const bool cell = args.flag("--cell");
     if (cell) {
         const double s = o.spacing, lo = -0.5 * s, hx = (static_cast<double>(o.wefts) - 0.5) * s, hy = (static_cast<double>(o.warps) - 0.5) * s;
@@ -80,6 +151,17 @@ int main(int argc, char** argv)
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::ifstream in(dir / "out" / "report.json");
     const std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::vector<double> moduli, reference;
+    if (stiffness && status == 0) {
+        moduli = solveLoadCases(dir / "out");
+        // The reference: the same command at the finer surfaces, its own output directory.
+        const double referenceH = args.number("--reference-h", o.width / 15.0);
+        std::string fine = command + " --mesh-size " + std::to_string(referenceH);
+        const std::string from = "--out '" + (dir / "out").string() + "'", to = "--out '" + (dir / "reference").string() + "'";
+        fine.replace(fine.find(from), from.size(), to);
+        std::printf("reference: surfaces at --mesh-size %g\n", referenceH);
+        if (std::system(fine.c_str()) == 0) reference = solveLoadCases(dir / "reference");
+    }
     fs::remove_all(dir);
     const auto number = [&](const std::string& key) {
         const auto at = report.rfind("\"" + key + "\":");
@@ -119,6 +201,16 @@ int main(int argc, char** argv)
         goals.ratioAtLeast("surface stages / volume stage", surface / stage, 1.0 / 1.5);
         goals.ratioAtLeast("Gmsh's time / towgeom's own in the volume stage", gmsh / (stage - gmsh), 5.0);
         if (cell) goals.atMost("tetrahedra of the cell", tets, 600000.0);
+    }
+    if (stiffness) {
+        goals.require("the load cases were solved at both sizes", moduli.size() == 6 && reference.size() == 6);
+        if (moduli.size() == 6 && reference.size() == 6) {
+            printConstants("default mesh", moduli);
+            printConstants("reference   ", reference);
+            const char* names[] = {"E1", "E2", "E3", "G23", "G13", "G12"};
+            for (std::size_t i = 0; i < 6; ++i)
+                goals.atMost(std::string(names[i]) + ": |default / reference - 1|", std::abs(moduli[i] / reference[i] - 1.0), 0.01);
+        }
     }
     std::size_t regions = 0;
     for (auto at = report.find("\"secondary\":\""); at != std::string::npos; at = report.find("\"secondary\":\"", at + 1)) ++regions;
