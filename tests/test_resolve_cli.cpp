@@ -435,6 +435,42 @@ TEST_CASE("CalculiX reads the surface .inp: numbers of at most 20 characters, ev
     fs::remove_all(out);
 }
 
+TEST_CASE("towgeom resolve --volume grades the surfaces by curvature unless a size is given; --mesh-deviation", "[cli][resolve][volume][curvature]")
+{
+    const fs::path out = scratch("graded");
+    const auto run = [&](const std::string& name, const std::string& options) {
+        const Run r = cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + (out / name).string() + "' --formats stl --quiet" + options);
+        INFO(options << ": " << r.err);
+        REQUIRE(r.status == 0);
+        return nlohmann::json::parse(testing::slurp(out / name / "report.json"));
+    };
+    const nlohmann::json plain = run("plain", ""), volume = run("volume", " --volume");
+    // MeshOptions::forVolume(): the flat parts at 0.25 x the tow size against the default 0.1 x.
+    for (std::size_t t = 0; t < 2; ++t)
+        CHECK(volume["tows"][t]["mesh_size"].get<double>() == Approx(2.5 * plain["tows"][t]["mesh_size"].get<double>()).epsilon(1e-12));
+    // Graded from that size down to the default's at the tows' sharp edges: between (0.1 /
+    // 0.25)^2 = 0.16 of the default's triangles (none graded) and all of them.
+    const double plainTriangles = plain["mesh_quality"]["triangles"].get<double>(), volumeTriangles = volume["mesh_quality"]["triangles"].get<double>();
+    WARN("triangles: default " << plainTriangles << ", --volume " << volumeTriangles << "; tetrahedra " << volume["volume_mesh"]["tetrahedra"]);
+    CHECK(volumeTriangles > 0.16 * plainTriangles);
+    CHECK(volumeTriangles < 0.5 * plainTriangles);
+    // A size given: uniform as before, --volume or not.
+    const nlohmann::json sized = run("sized", " --volume --mesh-size 0.1"), sizedPlain = run("sized_plain", " --mesh-size 0.1");
+    CHECK(sized["mesh_quality"]["triangles"] == sizedPlain["mesh_quality"]["triangles"]);
+    // --mesh-deviation grades below --mesh-size: more triangles, the same largest size.
+    const nlohmann::json graded = run("deviation", " --mesh-size 0.1 --mesh-deviation 0.0005");
+    CHECK(graded["tows"][0]["mesh_size"].get<double>() == Approx(0.1));
+    CHECK(graded["mesh_quality"]["triangles"].get<double>() > 1.2 * sizedPlain["mesh_quality"]["triangles"].get<double>());
+    for (const char* bad : {" --mesh-deviation 0", " --mesh-deviation -1", " --mesh-deviation x"}) {
+        const Run r = cli("resolve" + twill({"warp_0", "weft_0"}) + " --out '" + (out / "bad").string() + "'" + bad + " --quiet");
+        INFO(bad << ": " << r.err);
+        CHECK(r.status == 2);
+        CHECK(r.err.find("--mesh-deviation") != std::string::npos);
+        CHECK_FALSE(fs::exists(out / "bad"));
+    }
+    fs::remove_all(out);
+}
+
 TEST_CASE("towgeom resolve --volume fills the tows with tetrahedra that Gmsh reads", "[cli][resolve][volume]")
 {
     const fs::path out = scratch("volume");
