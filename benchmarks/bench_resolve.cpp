@@ -156,7 +156,10 @@ int main(int argc, char** argv)
         moduli = solveLoadCases(dir / "out");
         // The reference: the same command at the finer surfaces, its own output directory.
         const double referenceH = args.number("--reference-h", o.width / 15.0);
-        std::string fine = command + " --mesh-size " + std::to_string(referenceH);
+        std::string fine = command;
+        if (const auto given = fine.find(" --mesh-size "); given != std::string::npos)  // --h: replaced
+            fine.erase(given, fine.find(" --", given + 1) - given);
+        fine += " --mesh-size " + std::to_string(referenceH);
         const std::string from = "--out '" + (dir / "out").string() + "'", to = "--out '" + (dir / "reference").string() + "'";
         fine.replace(fine.find(from), from.size(), to);
         std::printf("reference: surfaces at --mesh-size %g\n", referenceH);
@@ -177,7 +180,7 @@ int main(int argc, char** argv)
                 number("faces_over_bounds"), number("mesh_rounds"));
     rusage usage{};
     getrusage(RUSAGE_CHILDREN, &usage);
-    std::printf("peak memory of towgeom resolve: %.1f MiB\n", usage.ru_maxrss / 1024.0);
+    std::printf("peak memory of towgeom resolve%s: %.1f MiB\n", stiffness ? " (and of CalculiX, and the reference)" : "", usage.ru_maxrss / 1024.0);
     towgeom::bench::Goals goals(args.flag("--smoke"));
     if (!volume) goals.secondsAtMost("resolve wall time", wall, 3.0);
     goals.require("towgeom resolve exits 0", status == 0);

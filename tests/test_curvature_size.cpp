@@ -101,8 +101,12 @@ TEST_CASE("the curvature size of an elliptical tube follows the closed form sqrt
         }
         // The grid's interpolation of the field between its nodes (256 around), and the fit.
         CHECK(worst < 0.02);
-        // The triangle count's factor: the mean of (largest / size)^2 = k / (8 d) over the area.
-        CHECK(size.densityOverLargest() == Approx(closedFormDensity(a, b, d, largest, smallest)).epsilon(0.02));
+        // The triangle count's factor: the mean of (largest / size)^2 = k / (8 d) over the area;
+        // each grid node takes the largest curvature of itself and half a step either side, so
+        // a little over (2.1 % here).
+        const double density = closedFormDensity(a, b, d, largest, smallest);
+        CHECK(size.densityOverLargest() >= density);
+        CHECK(size.densityOverLargest() <= 1.03 * density);
     }
     SECTION("clamped to [smallest, largest]")
     {
@@ -112,29 +116,75 @@ TEST_CASE("the curvature size of an elliptical tube follows the closed form sqrt
         CHECK(size.at(tow.closestParameters({1.0, 0.0, b})) == Approx(0.02).epsilon(1e-9));
         CHECK(size.at(tow.closestParameters({1.0, a, 0.0})) == Approx(0.005).epsilon(1e-6));
     }
-    SECTION("graded: the size grows by at most the slope times the distance")
+    SECTION("graded: the size grows by at most the slope times the distance, and the bound is reached")
     {
-        const double slope = 0.3;
-        const detail::CurvatureSize size(tow, d, largest, smallest, slope);
+        // The ungraded field grows by up to about 0.15 per unit length here: a slope of 0.02
+        // shrinks most of it.
+        const double slope = 0.02;
+        const detail::CurvatureSize size(tow, d, largest, smallest, slope), free(tow, d, largest, smallest, 1e9);
         std::mt19937 random(7);
         std::uniform_real_distribution<double> t(0.0, 2.0 * kPi), x(0.2, 2.8);
         double worst = 0.0;
         for (int k = 0; k < 2000; ++k) {
-            const Point3 p{x(random), 0.0, 0.0}, q{p.x + 0.01, 0.0, 0.0};
-            const double tp = t(random), tq = tp + 0.02;
-            const Point3 P{p.x, a * std::cos(tp), b * std::sin(tp)}, Q{q.x, a * std::cos(tq), b * std::sin(tq)};
+            const double px = x(random), tp = t(random), tq = tp + 0.05;
+            const Point3 P{px, a * std::cos(tp), b * std::sin(tp)}, Q{px + 0.01, a * std::cos(tq), b * std::sin(tq)};
             const double grow = std::abs(size.at(tow.closestParameters(P)) - size.at(tow.closestParameters(Q)));
             worst = std::max(worst, grow / distance(P, Q));
         }
-        // Interpolated between grid nodes graded along the grid's edges: within 1.5 x the slope.
+        // Interpolated between grid nodes graded along the grid's edges: within 1.5 x the slope,
+        // and near it somewhere (the graded field is steep wherever the grading acted).
         CHECK(worst <= 1.5 * slope);
-        // Never larger than the ungraded field.
-        const detail::CurvatureSize free(tow, d, largest, smallest, 1e9);
+        CHECK(worst >= 0.5 * slope);
+        // Never larger than the ungraded field, and smaller where the grading acted: at the
+        // minor axis's ends, 0.1 (a quarter of the way round) from the tips' 0.0045, at most
+        // 0.0045 + 0.02 x 0.42 (the arc from a tip) = 0.0129 against the ungraded 0.036.
         for (int k = 0; k < 64; ++k) {
             const UV at = tow.closestParameters({1.5, a * std::cos(0.1 * k), b * std::sin(0.1 * k)});
             CHECK(size.at(at) <= free.at(at) * (1.0 + 1e-12));
         }
+        const UV minor = tow.closestParameters({1.5, 0.0, b});
+        CHECK(free.at(minor) == Approx(std::sqrt(8.0 * d / ellipseCurvature(a, b, 0.5 * kPi))).epsilon(0.02));
+        CHECK(size.at(minor) < 0.0135);
+        CHECK(size.at(minor) > 0.0045);
     }
+}
+
+TEST_CASE("largestCurvature: |H| + sqrt(H^2 - K) against the largest normal curvature over all directions", "[mesh][curvature]")
+{
+    // A twisted elliptical tube (sections turned by 1.5 radians over its length): its (u,v) lines
+    // are not lines of curvature (F and M nonzero), unlike the straight tube's. The oracle: the
+    // normal curvature II(t,t) / I(t,t) maximised over 20,000 directions t = cos(s) S_u + sin(s) S_v.
+    TowStack twisted;
+    twisted.name = "twisted";
+    for (std::size_t i = 0; i < 41; ++i) {
+        const double x = 3.0 * static_cast<double>(i) / 40.0, turn = 0.5 * x;
+        std::vector<Point3> section;
+        for (std::size_t j = 0; j < 64; ++j) {
+            const double t = 2.0 * kPi * static_cast<double>(j) / 64.0, y = 0.4 * std::cos(t), z = 0.15 * std::sin(t);
+            section.push_back({x, y * std::cos(turn) - z * std::sin(turn), y * std::sin(turn) + z * std::cos(turn)});
+        }
+        twisted.sections.push_back(section);
+    }
+    const TowSurface tow = TowSurface::fit(twisted);
+    const ParameterRange r = tow.parameterRange();
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> u(r.uMin + 0.1 * (r.uMax - r.uMin), r.uMax - 0.1 * (r.uMax - r.uMin)), v(r.vMin, r.vMax);
+    double worst = 0.0, mixed = 0.0;
+    for (int k = 0; k < 50; ++k) {
+        const SurfaceSecondDerivatives d = tow.secondDerivatives(u(random), v(random));
+        const Vector3 n = (1.0 / norm(cross(d.du, d.dv))) * cross(d.du, d.dv);
+        double best = 0.0;
+        for (int s = 0; s < 20000; ++s) {
+            const double c = std::cos(kPi * s / 20000.0), si = std::sin(kPi * s / 20000.0);
+            const Vector3 t = c * d.du + si * d.dv;
+            const double second = c * c * dot(d.duu, n) + 2.0 * c * si * dot(d.duv, n) + si * si * dot(d.dvv, n);
+            best = std::max(best, std::abs(second) / dot(t, t));
+        }
+        worst = std::max(worst, std::abs(detail::largestCurvature(d) / best - 1.0));
+        mixed = std::max(mixed, std::abs(dot(d.du, d.dv)) / (norm(d.du) * norm(d.dv)) + std::abs(dot(d.duv, n)));
+    }
+    CHECK(mixed > 0.1);  // F and M are not zero: the test reaches the mixed terms
+    CHECK(worst < 1e-6);
 }
 
 TEST_CASE("a mesh graded by curvature keeps its chord deviation and has fewer triangles", "[mesh][curvature][resolve]")

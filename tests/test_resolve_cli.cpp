@@ -454,6 +454,10 @@ TEST_CASE("towgeom resolve --volume grades the surfaces by curvature unless a si
     WARN("triangles: default " << plainTriangles << ", --volume " << volumeTriangles << "; tetrahedra " << volume["volume_mesh"]["tetrahedra"]);
     CHECK(volumeTriangles > 0.16 * plainTriangles);
     CHECK(volumeTriangles < 0.5 * plainTriangles);
+    // Graded: more triangles than the same largest size everywhere (the sharp edges' finer).
+    const double largest = std::min(volume["tows"][0]["mesh_size"].get<double>(), volume["tows"][1]["mesh_size"].get<double>());
+    const nlohmann::json uniform = run("uniform", " --mesh-size " + std::to_string(largest));
+    CHECK(volumeTriangles > 1.15 * uniform["mesh_quality"]["triangles"].get<double>());
     // A size given: uniform as before, --volume or not.
     const nlohmann::json sized = run("sized", " --volume --mesh-size 0.1"), sizedPlain = run("sized_plain", " --mesh-size 0.1");
     CHECK(sized["mesh_quality"]["triangles"] == sizedPlain["mesh_quality"]["triangles"]);

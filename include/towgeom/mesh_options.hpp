@@ -19,6 +19,31 @@ struct MeshOptions {
     double edgeLength = 0.0;
     /// edgeLength relative to the tow size when edgeLength is 0. Default 0.1.
     double relativeEdgeLength = 0.1;
+    /// The smallest angle the mesher aims for, in degrees (at most 30). Default 20. It is asked in
+    /// the plane each tow is meshed in, and 3/4 of it (15 degrees by default) on the surface for
+    /// faces longer than an eighth of the local mesh size (below, the plane's refinement would
+    /// not converge on the surface's shape). Faces whose refinement would split a loop chord or
+    /// seam edge in the last round may stay under it (MeshQuality::facesOverBounds).
+    double minAngle = 20.0;
+    /// Spacing of the nodes along intersection loops. 0 (default): the smaller mesh size of the
+    /// loop's two tows. A smaller spacing refines the mesh along loops ("high" refinement), a
+    /// larger one coarsens it.
+    double loopSpacing = 0.0;
+    /// The most triangles the meshes may have, all tows together (about 250 bytes of memory
+    /// each while meshing). resolveTextile() estimates the count before meshing (about 3 x the
+    /// tows' area (end caps included) / (sqrt(3)/4 h^2), the mesher keeping every edge below h, plus about 20 x the
+    /// loops' length x (1/loopSpacing - 1/h) for a loop spacing below h; graded by curvature,
+    /// the area's mean of (h / size)^2 times as many; with a Cell, its six
+    /// faces counted at the finest tow's h: an upper bound, they are graded coarser away from the
+    /// tows, Cell::faceSizeGrowth) and refuses a mesh over this with ErrorCode::TooLarge. Default
+    /// 20 million (about 5 GB); must be at least 1.
+    std::size_t maxTriangles = 20000000;
+    /// Close every tow by its two end caps (default): the polygon of the tube's end nodes at each
+    /// end, meshed in its best-fit plane (Newell's normal; the end section's plane for planar
+    /// input sections) (TowFace::Start, TowFace::End), so every tow's mesh
+    /// is a closed surface. False: tubes open at their two ends.
+    bool caps = true;
+
     /// Chord deviation d, for a mesh graded by the surface's curvature: where the largest
     /// principal curvature is k, edges are at most sqrt(8 d / k) long (an edge of length s
     /// stands off an arc of radius 1/k by about s^2 k / 8), never longer than the edge length h
@@ -34,35 +59,13 @@ struct MeshOptions {
     double minEdgeLength = 0.0;
     /// minEdgeLength relative to the tow size, when minEdgeLength is 0. Default 0.
     double relativeMinEdgeLength = 0.0;
-    /// The smallest angle the mesher aims for, in degrees (at most 30). Default 20. It is asked in
-    /// the plane each tow is meshed in, and 3/4 of it (15 degrees by default) on the surface for
-    /// faces longer than an eighth of the local mesh size (below, the plane's refinement would
-    /// not converge on the surface's shape). Faces whose refinement would split a loop chord or
-    /// seam edge in the last round may stay under it (MeshQuality::facesOverBounds).
-    double minAngle = 20.0;
-    /// Spacing of the nodes along intersection loops. 0 (default): the smaller mesh size of the
-    /// loop's two tows. A smaller spacing refines the mesh along loops ("high" refinement), a
-    /// larger one coarsens it.
-    double loopSpacing = 0.0;
-    /// The most triangles the meshes may have, all tows together (about 250 bytes of memory
-    /// each while meshing). resolveTextile() estimates the count before meshing (about 3 x the
-    /// tows' area (end caps included) / (sqrt(3)/4 h^2), the mesher keeping every edge below h, plus about 20 x the
-    /// loops' length x (1/loopSpacing - 1/h) for a loop spacing below h; with a Cell, its six
-    /// faces counted at the finest tow's h: an upper bound, they are graded coarser away from the
-    /// tows, Cell::faceSizeGrowth) and refuses a mesh over this with ErrorCode::TooLarge. Default
-    /// 20 million (about 5 GB); must be at least 1.
-    std::size_t maxTriangles = 20000000;
-    /// Close every tow by its two end caps (default): the polygon of the tube's end nodes at each
-    /// end, meshed in its best-fit plane (Newell's normal; the end section's plane for planar
-    /// input sections) (TowFace::Start, TowFace::End), so every tow's mesh
-    /// is a closed surface. False: tubes open at their two ends.
-    bool caps = true;
 
     /// The sizes for a volume mesh (meshVolumes()), where every surface triangle costs about five
     /// tetrahedra: graded by curvature (relativeChordDeviation 0.01) from edges of a quarter of
-    /// the tow size (relativeEdgeLength 0.25) where the tows are flat down to the default's tenth
-    /// (relativeMinEdgeLength 0.1) at their sharp edges. On the 8x8 twill about a quarter of the
-    /// default's triangles (see benchmarks/bench_resolve --volume).
+    /// the tow size (relativeEdgeLength 0.25) where the tows are flat down to the default size
+    /// (relativeMinEdgeLength 0.1, a tenth of the tow size) at their sharp edges. On the 8x8
+    /// twill about a quarter of the default's surface triangles and tetrahedra (see
+    /// benchmarks/bench_resolve --volume --cell).
     static MeshOptions forVolume()
     {
         MeshOptions o;

@@ -146,7 +146,8 @@ struct TowResolution {
     /// this one and cuts it (each piece closed by the other tow's surface).
     std::size_t pieces = 1;
     /// The mesh size h this tow was meshed at: MeshOptions::relativeEdgeLength x its own size,
-    /// or MeshOptions::edgeLength, at most a quarter of its circumference.
+    /// or MeshOptions::edgeLength, at most a quarter of its circumference; graded by curvature
+    /// (MeshOptions::chordDeviation), the largest size (its flat parts').
     double meshSize = 0.0;
     /// Where the tow's fitted surface crosses itself (findFold()), among its sampled triangles
     /// that reach into the cell if there is one (the point may lie just outside it); nullopt

@@ -38,13 +38,6 @@ struct SurfaceMeshOptions {
     /// size (TowSurface::towSize()). At most a quarter of the tow's circumference.
     double edgeLength = 0.0;
     double relativeEdgeLength = 0.1;  ///< h relative to the tow size when edgeLength is 0
-    /// Grading by curvature, as MeshOptions::chordDeviation: edges at most sqrt(8 d / k) where
-    /// the surface's largest principal curvature is k, within [minEdgeLength, h]. 0 (default,
-    /// with relativeChordDeviation 0): none.
-    double chordDeviation = 0.0;
-    double relativeChordDeviation = 0.0;  ///< chordDeviation relative to the tow size when it is 0
-    double minEdgeLength = 0.0;           ///< shortest graded edge; 0 (with the relative one 0): h / 100
-    double relativeMinEdgeLength = 0.0;   ///< minEdgeLength relative to the tow size when it is 0
     double minAngle = 20.0;           ///< smallest triangle angle aimed for, degrees in (0, 30] (as MeshOptions::minAngle)
     /// Optional: the target edge length at a (u,v) of the tow, in the user's units, for a mesh
     /// graded where the host needs it (finer near a contact, a crack, a sensor). Taken within
@@ -56,6 +49,13 @@ struct SurfaceMeshOptions {
     /// Refuse (TooLarge) a mesh estimated at more triangles (3 x the surface's area / (sqrt(3)/4
     /// h^2)), before meshing.
     std::size_t maxTriangles = 20'000'000;
+    /// Grading by curvature, as MeshOptions::chordDeviation: edges at most sqrt(8 d / k) where
+    /// the surface's largest principal curvature is k, within [minEdgeLength, h]. 0 (default,
+    /// with relativeChordDeviation 0): none.
+    double chordDeviation = 0.0;
+    double relativeChordDeviation = 0.0;  ///< chordDeviation relative to the tow size when it is 0
+    double minEdgeLength = 0.0;           ///< shortest graded edge; 0 (with the relative one 0): h / 100
+    double relativeMinEdgeLength = 0.0;   ///< minEdgeLength relative to the tow size when it is 0
 };
 
 /// One tow's mesh made by ParametricMesher.

@@ -25,6 +25,8 @@ std::string faceText(CellFace f) { return std::string("the cell's face ") + cell
 
 /// Probes around the tow when deciding whether a plane cuts it all around.
 constexpr int kProbes = 32;
+/// Samples of a graded mesh size between two probes of a cut.
+constexpr int kCutSizeSamples = 8;
 
 /// Every u in [uMin, uMax] where the isoline S(., @p v) meets the plane x_a = @p c (OCCT's
 /// curve/surface intersection, polished by Newton's method on the coordinate); @p inPlane is set
@@ -127,7 +129,7 @@ LoopConstraint CellCuts::constraint(std::size_t tow, int end, const ParameterRan
 }
 
 CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const std::vector<double>& towH, std::vector<Point3>& nodes,
-                 const std::vector<FaceCrossing>& loopCrossings)
+                 const std::vector<FaceCrossing>& loopCrossings, const std::vector<std::function<double(const UV&)>>& sizeAt)
 {
     CellCuts out;
     out.outside.assign(tows.size(), 0);
@@ -225,6 +227,7 @@ CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const st
         const auto rimOf = [&](int end) { return end == 0 ? r.uMin + hair : r.uMax - hair; };
         double perimeter = 0.0;
         Point3 previous;
+        std::vector<double> probeU;
         for (int j = 0; j <= kProbes; ++j) {
             bool inPlane = false;
             const double v = r.vMin + r.vPeriod() * (j % kProbes) / kProbes;
@@ -234,8 +237,20 @@ CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const st
             const Point3 p{g.X(), g.Y(), g.Z()};
             if (j > 0) perimeter += distance(p, previous);
             previous = p;
+            probeU.push_back(us.front());
         }
-        const std::size_t n = std::max<std::size_t>(8, static_cast<std::size_t>(std::ceil(perimeter / towH[t])));
+        // Evenly around at the tow's mesh size, or at the smallest its graded size asks for along
+        // the cut (sampled 8 times between probes, u between the probes'): the cut's chords are
+        // constraints the mesher never splits.
+        double h = towH[t];
+        if (t < sizeAt.size() && sizeAt[t])
+            for (int j = 0; j < kProbes * kCutSizeSamples; ++j) {
+                const double f = static_cast<double>(j % kCutSizeSamples) / kCutSizeSamples;
+                const std::size_t i = static_cast<std::size_t>(j / kCutSizeSamples);
+                const UV at{(1.0 - f) * probeU[i] + f * probeU[i + 1], r.vMin + r.vPeriod() * static_cast<double>(j) / (kProbes * kCutSizeSamples)};
+                h = std::min(h, sizeAt[t](at));
+            }
+        const std::size_t n = std::max<std::size_t>(8, static_cast<std::size_t>(std::ceil(perimeter / h)));
         for (Candidate& cand : candidates) {
             for (std::size_t k = 0; k < n; ++k) {
                 // A face through the tow's end section cuts it on its rim: the cut is kept a hair

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <functional>
 #include <vector>
 
 #include "cell/face_crossings.hpp"
@@ -60,8 +61,10 @@ struct CellCuts {
 /// cell a max face's crossing (FaceCrossing::partner) goes in at the index its partner took in
 /// the min face's cut, with the same stations left out, so the two cuts stay paired station by
 /// station (InvalidArgument naming the tows when that breaks the order around the tow).
+/// Each cut's stations lie evenly around the tow at its mesh size @p towH, or, where @p sizeAt
+/// gives a tow a graded size, at the smallest that size is along the cut.
 CellCuts cutTows(const std::vector<TowSurface>& tows, const Cell& cell, const std::vector<double>& towH, std::vector<Point3>& nodes,
-                 const std::vector<FaceCrossing>& loopCrossings = {});
+                 const std::vector<FaceCrossing>& loopCrossings = {}, const std::vector<std::function<double(const UV&)>>& sizeAt = {});
 
 }  // namespace detail
 TOWGEOM_END_NAMESPACE

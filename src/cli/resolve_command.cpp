@@ -152,16 +152,17 @@ Options:
                      method, section area along each tow before and after, mesh quality, a 3D
                      view of --method's meshes coloured by tow or region) and DIR/report.csv
                      (a row per tow and method). The meshes written are --method's
-  --mesh-size H      target 3D edge length (default: 0.1 x each tow's own size; with --volume
-                     0.25 x, graded by curvature as --mesh-deviation 0.01 x the tow size);
-                     a tow is meshed at most at a quarter of its circumference (noted on
-                     stderr, and each tow's "mesh_size" in report.json)
+  --mesh-size H      target 3D edge length (default: 0.1 x each tow's own size); a tow is meshed
+                     at most at a quarter of its circumference (noted on stderr, and each
+                     tow's "mesh_size" in report.json). With --volume and no --mesh-size the
+                     surfaces are graded by curvature instead: 0.25 x each tow's size where
+                     it is flat, down to 0.1 x at its sharp edges (deviation 0.01 x its size)
   --mesh-deviation D grade the surface meshes by curvature: edges at most sqrt(8 D / k) long
-                     where the surface's largest curvature is k (they stand off it by about
-                     D), at most --mesh-size (then the size of the flat parts), at least 1/100
-                     of it. Default: none (with --volume and no --mesh-size: 0.01 x each
-                     tow's size, --mesh-size 0.25 x it). Example: --mesh-size 0.2
-                     --mesh-deviation 0.002
+                     where the surface's largest curvature is k (so they stand off it by about
+                     D), at most --mesh-size (then the size of the flat parts) and at least
+                     1/100 of it (with --volume and no --mesh-size: D replaces the preset's
+                     deviation, the sizes stay 0.25 and 0.1 x the tow size). Default: none.
+                     Example: --mesh-size 0.2 --mesh-deviation 0.002
   --min-angle DEG    smallest triangle angle the mesher aims for, at most 30 (default 20)
   --loop-spacing S   node spacing along intersection loops (default: the smaller mesh size of
                      the loop's two tows)

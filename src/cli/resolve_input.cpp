@@ -11,10 +11,11 @@ void readResolveOptions(const Args& args, ResolveOptions& o)
 {
     o.primaryPatterns = args.values("primary");
     // A volume mesh costs about five tetrahedra per surface triangle: by default its surfaces
-    // are graded by curvature (MeshOptions::forVolume()), unless a size is given.
-    if (args.has("volume") && !args.has("mesh-size") && !args.has("mesh-deviation")) o.mesh = MeshOptions::forVolume();
+    // are graded by curvature (MeshOptions::forVolume()) unless a size is given; a deviation
+    // given replaces the preset's.
+    if (args.has("volume") && !args.has("mesh-size")) o.mesh = MeshOptions::forVolume();
     o.mesh.edgeLength = args.positive("mesh-size");
-    o.mesh.chordDeviation = args.positive("mesh-deviation");
+    if (args.has("mesh-deviation")) o.mesh.chordDeviation = args.positive("mesh-deviation");
     o.mesh.loopSpacing = args.positive("loop-spacing");
     o.mesh.maxTriangles = args.maxTriangles(o.mesh.maxTriangles);
     o.intersection.tolerance = args.positive("tolerance");
@@ -36,7 +37,7 @@ void readResolveOptions(const Args& args, ResolveOptions& o)
 
 Error budgetExplained(const Error& e)
 {
-    return Error(e.code(), e.message() + "; --max-triangles N raises the limit, a larger --mesh-size or --loop-spacing makes fewer",
+    return Error(e.code(), e.message() + "; --max-triangles N raises the limit, a larger --mesh-size, --mesh-deviation or --loop-spacing makes fewer",
                  e.file(), e.line());
 }
 

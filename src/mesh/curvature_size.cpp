@@ -11,8 +11,8 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// The largest absolute principal curvature where the derivatives are @p d, or 0 where the
-/// surface is singular.
+}  // namespace
+
 double largestCurvature(const SurfaceSecondDerivatives& d)
 {
     const Vector3 n = cross(d.du, d.dv);
@@ -25,13 +25,9 @@ double largestCurvature(const SurfaceSecondDerivatives& d)
     return std::abs(mean) + std::sqrt(std::max(0.0, mean * mean - gauss));
 }
 
-}  // namespace
-
 CurvatureSize::CurvatureSize(const TowSurface& surface, double deviation, double largest, double smallest, double slope)
     : range_(surface.parameterRange())
 {
-    // Around: fine enough for a flat tow's sharp edges (a few grid steps across the smallest
-    // size there); along: half the largest size (tows bend gently along their length).
     const double around = kPi * surface.towSize();
     double length = 0.0;  // along the seam's line, sampled (the exact area() costs far more)
     constexpr int kLengthSteps = 256;
@@ -41,8 +37,13 @@ CurvatureSize::CurvatureSize(const TowSurface& surface, double deviation, double
         length += distance(previous, p);
         previous = p;
     }
-    nv_ = std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(16.0 * around / largest)), 256, 1024);
-    nu_ = std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(2.0 * length / largest)) + 1, 8, 2048);
+    // Around: two grid steps per smallest size (at most 1024, the curvature then also taken
+    // half a step either side); along: half the largest.
+    const auto count = [](double x, std::size_t lo, std::size_t hi) {
+        return static_cast<std::size_t>(std::clamp(std::ceil(x), static_cast<double>(lo), static_cast<double>(hi)));
+    };
+    nv_ = count(2.0 * around / smallest, 256, 1024);
+    nu_ = count(2.0 * length / largest + 1.0, 8, 2048);
     size_.assign(nu_ * nv_, largest);
     std::vector<Point3> points(nu_ * nv_);
     for (std::size_t i = 0; i < nu_; ++i) {
@@ -51,7 +52,11 @@ CurvatureSize::CurvatureSize(const TowSurface& surface, double deviation, double
             const double v = range_.vMin + range_.vPeriod() * static_cast<double>(j) / static_cast<double>(nv_);
             const SurfaceSecondDerivatives d = surface.secondDerivatives(u, v);
             points[i * nv_ + j] = d.point;
-            const double k = largestCurvature(d);
+            // The largest of the node's and the half steps' either side: a flat tow's sharp edge
+            // is narrower than a step.
+            const double half = 0.5 * range_.vPeriod() / static_cast<double>(nv_);
+            const double k = std::max({largestCurvature(d), largestCurvature(surface.secondDerivatives(u, v - half)),
+                                       largestCurvature(surface.secondDerivatives(u, v + half))});
             if (k > 0.0) node(i, j) = std::clamp(std::sqrt(8.0 * deviation / k), smallest, largest);
         }
     }

@@ -40,6 +40,10 @@ private:
     double density_ = 1.0;
 };
 
+/// The largest absolute principal curvature where a surface's derivatives are @p d (from its
+/// fundamental forms: |H| + sqrt(H^2 - K)), or 0 where it is singular.
+double largestCurvature(const SurfaceSecondDerivatives& d);
+
 /// The size field @p mesh asks for on @p tow meshed at @p h (its chord deviation and smallest
 /// size, absolute or relative to the tow's size), or null when it grades nothing.
 std::shared_ptr<const CurvatureSize> curvatureSizeFor(const TowSurface& tow, const MeshOptions& mesh, double h);

@@ -34,7 +34,7 @@ std::vector<double> stations(double from, double to, double h, const std::vector
 {
     const double length = to - from;
     std::vector<double> at;  // the evenly or graded spaced stations, both ends exactly
-    if (!spacingAt) {
+    if (!spacingAt || !(length > 0.0)) {
         const std::size_t n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(length / h)));
         // The ends exactly (length * n / n need not be length): the rectangle's corners are
         // shared by two of its sides, and a gap there would let the outside into the domain.
@@ -51,7 +51,9 @@ std::vector<double> stations(double from, double to, double h, const std::vector
     }
     std::vector<double> s(extra);
     for (std::size_t k = 0; k < at.size(); ++k) {
-        const double x = at[k], spacing = k + 1 < at.size() ? at[k + 1] - x : x - at[k - 1];
+        const double x = at[k];
+        // Even stations: a third of h (as always); graded ones: a third of their own spacing.
+        const double spacing = !spacingAt || at.size() < 2 ? h : k + 1 < at.size() ? at[k + 1] - x : x - at[k - 1];
         const bool crowded = std::any_of(extra.begin(), extra.end(), [&](double e) { return std::abs(e - x) < spacing / 3.0; });
         if (!crowded || k == 0 || k + 1 == at.size()) s.push_back(x);
     }
@@ -456,7 +458,7 @@ void ParametricMesher::mesh(const std::vector<LoopConstraint>& constraints, cons
                 if (c.uv[k].v == side && c.uv[k + 1].v == side)
                     m.seamChords.insert(std::minmax(m.toXY(c.uv[k]).x(), m.toXY(c.uv[k + 1]).x()));
     // Where a size function grades the mesh, the stations follow it: half the local size apart.
-    const Criteria::LocalSize local = m.localSize();
+    const Criteria::LocalSize local = m.sizes.sizeAt ? m.localSize() : Criteria::LocalSize{};  // not for spots alone
     const auto spacingAlong = [&](bool alongX, double fixed) -> std::function<double(double)> {
         if (!local) return {};
         return [&local, alongX, fixed](double t) { return 0.5 * (alongX ? local(t, fixed) : local(fixed, t)); };

@@ -142,7 +142,9 @@ SurfaceMesh ParametricMesher::mesh(const std::vector<MeshConstraint>& constraint
                 const double ratio = h_ / std::clamp(graded ? std::min(hl, graded->at(at)) : hl, h_ / 100.0, h_);
                 sum += ratio * ratio;
             }
-        finer = std::max(finer, sum / (kGrid * kGrid));  // the grid may miss a graded tow's sharp edges
+        // The grid has both sizes; it may miss a graded tow's sharp edges, which the graded
+        // field's own mean has.
+        finer = std::max(finer, sum / (kGrid * kGrid));
     }
     const double estimate = finer * 3.0 * surface_.area() / (std::sqrt(3.0) / 4.0 * h_ * h_);
     if (!(estimate <= static_cast<double>(options_.maxTriangles)))

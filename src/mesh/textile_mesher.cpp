@@ -332,7 +332,7 @@ void meshTextile(const std::vector<TowSurface>& tows, const std::vector<double>&
                      shared.end());
     // The cell's cuts of the tows: constraints of their meshes, the parts beyond them dropped.
     std::optional<CellCuts> cuts;
-    if (options.cell) cuts = cutTows(tows, *options.cell, towH, nodes, crossings);
+    if (options.cell) cuts = cutTows(tows, *options.cell, towH, nodes, crossings, sizeAt);
     constexpr std::size_t kLocal = std::size_t(1) << 60;  // marks a tow's own new nodes
     // Round 1 meshes every tow. Refinement never splits a constraint; where a triangle needs a
     // split of a loop chord or seam edge to meet the bounds, the split becomes an exact loop node
