@@ -435,7 +435,7 @@ TEST_CASE("CalculiX reads the surface .inp: numbers of at most 20 characters, ev
     fs::remove_all(out);
 }
 
-TEST_CASE("towgeom resolve --volume grades the surfaces by curvature unless a size is given; --mesh-deviation", "[cli][resolve][volume][curvature]")
+TEST_CASE("towgeom resolve --volume grades the surfaces by curvature unless a size is given, as --mesh-deviation does", "[cli][resolve][volume][curvature]")
 {
     const fs::path out = scratch("graded");
     const auto run = [&](const std::string& name, const std::string& options) {
