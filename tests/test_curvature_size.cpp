@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include "mesh/curvature_size.hpp"
@@ -26,11 +27,11 @@ double ellipseCurvature(double a, double b, double t)
     return a * b / std::pow(a * a * s * s + b * b * c * c, 1.5);
 }
 
-/// The distance from (y, z) to the ellipse y = a cos t, z = b sin t: the nearest of 20,000
+/// The distance from (y, z) to the ellipse y = a cos t, z = b sin t: the nearest of 1,000
 /// samples, refined by Newton's method on the squared distance.
 double distanceToEllipse(double a, double b, double y, double z)
 {
-    constexpr int kSamples = 20000;
+    constexpr int kSamples = 1000;
     double best = 0.0, bestD2 = 1e300;
     for (int k = 0; k < kSamples; ++k) {
         const double t = 2.0 * kPi * k / kSamples;
@@ -80,6 +81,15 @@ TowStack ellipticalTube(double a, double b, double length, std::size_t sections,
     return stack;
 }
 
+/// The (u,v) of input point @p j of section @p i of the stack @p tow was fitted to (no search).
+UV inputUV(const TowSurface& tow, std::size_t i, std::size_t j)
+{
+    const std::size_t n = tow.pointParameters().size();
+    for (std::size_t k = 0; k < n; ++k)
+        if (tow.inputPointIndex(i, k) == j % n) return {tow.sectionParameters()[i], tow.pointParameters()[k]};
+    throw std::logic_error("no such input point");
+}
+
 }  // namespace
 
 TEST_CASE("the curvature size of an elliptical tube follows the closed form sqrt(8 d / k)", "[mesh][curvature]")
@@ -93,9 +103,10 @@ TEST_CASE("the curvature size of an elliptical tube follows the closed form sqrt
     {
         const detail::CurvatureSize size(tow, d, largest, smallest, 1e9);
         double worst = 0.0;
-        for (int k = 0; k < 64; ++k) {
-            const double t = 2.0 * kPi * (k + 0.5) / 64.0;
-            const UV at = tow.closestParameters({1.3, a * std::cos(t), b * std::sin(t)});
+        for (int k = 0; k < 64; ++k) {  // input points (x = 1.3, t = 2 pi j / 256), their (u,v) the fit's
+            const std::size_t j = 4 * static_cast<std::size_t>(k) + 2;
+            const double t = 2.0 * kPi * static_cast<double>(j) / 256.0;
+            const UV at = inputUV(tow, 13, j);
             const double expected = std::sqrt(8.0 * d / ellipseCurvature(a, b, t));
             worst = std::max(worst, std::abs(size.at(at) / expected - 1.0));
         }
@@ -113,8 +124,8 @@ TEST_CASE("the curvature size of an elliptical tube follows the closed form sqrt
         const detail::CurvatureSize size(tow, d, 0.02, 0.005, 1e9);
         // At the minor axis's ends k = 0.625: sqrt(8 d / k) = 0.036, clamped to 0.02; at the
         // major axis's ends k = 40: 0.0045, clamped to 0.005.
-        CHECK(size.at(tow.closestParameters({1.0, 0.0, b})) == Approx(0.02).epsilon(1e-9));
-        CHECK(size.at(tow.closestParameters({1.0, a, 0.0})) == Approx(0.005).epsilon(1e-6));
+        CHECK(size.at(inputUV(tow, 10, 64)) == Approx(0.02).epsilon(1e-9));  // (x, y, z) = (1, 0, b)
+        CHECK(size.at(inputUV(tow, 10, 0)) == Approx(0.005).epsilon(1e-6));  // (1, a, 0)
     }
     SECTION("graded: the size grows by at most the slope times the distance, and the bound is reached")
     {
@@ -122,15 +133,15 @@ TEST_CASE("the curvature size of an elliptical tube follows the closed form sqrt
         // shrinks most of it.
         const double slope = 0.02;
         const detail::CurvatureSize size(tow, d, largest, smallest, slope), free(tow, d, largest, smallest, 1e9);
-        std::mt19937 random(7);
-        std::uniform_real_distribution<double> t(0.0, 2.0 * kPi), x(0.2, 2.8);
+        // Neighbouring input points around the tube (t 2 pi / 256 apart) at every section.
         double worst = 0.0;
-        for (int k = 0; k < 2000; ++k) {
-            const double px = x(random), tp = t(random), tq = tp + 0.05;
-            const Point3 P{px, a * std::cos(tp), b * std::sin(tp)}, Q{px + 0.01, a * std::cos(tq), b * std::sin(tq)};
-            const double grow = std::abs(size.at(tow.closestParameters(P)) - size.at(tow.closestParameters(Q)));
-            worst = std::max(worst, grow / distance(P, Q));
-        }
+        for (std::size_t i = 2; i <= 28; ++i)
+            for (std::size_t j = 0; j < 256; ++j) {
+                const double tp = 2.0 * kPi * static_cast<double>(j) / 256.0, tq = 2.0 * kPi * static_cast<double>(j + 1) / 256.0;
+                const Point3 P{0.1 * static_cast<double>(i), a * std::cos(tp), b * std::sin(tp)}, Q{P.x, a * std::cos(tq), b * std::sin(tq)};
+                const double grow = std::abs(size.at(inputUV(tow, i, j)) - size.at(inputUV(tow, i, j + 1)));
+                worst = std::max(worst, grow / distance(P, Q));
+            }
         // Interpolated between grid nodes graded along the grid's edges: within 1.5 x the slope,
         // and near it somewhere (the graded field is steep wherever the grading acted).
         CHECK(worst <= 1.5 * slope);
@@ -138,11 +149,11 @@ TEST_CASE("the curvature size of an elliptical tube follows the closed form sqrt
         // Never larger than the ungraded field, and smaller where the grading acted: at the
         // minor axis's ends, 0.1 (a quarter of the way round) from the tips' 0.0045, at most
         // 0.0045 + 0.02 x 0.42 (the arc from a tip) = 0.0129 against the ungraded 0.036.
-        for (int k = 0; k < 64; ++k) {
-            const UV at = tow.closestParameters({1.5, a * std::cos(0.1 * k), b * std::sin(0.1 * k)});
+        for (std::size_t j = 0; j < 256; j += 4) {
+            const UV at = inputUV(tow, 15, j);
             CHECK(size.at(at) <= free.at(at) * (1.0 + 1e-12));
         }
-        const UV minor = tow.closestParameters({1.5, 0.0, b});
+        const UV minor = inputUV(tow, 15, 64);  // (1.5, 0, b)
         CHECK(free.at(minor) == Approx(std::sqrt(8.0 * d / ellipseCurvature(a, b, 0.5 * kPi))).epsilon(0.02));
         CHECK(size.at(minor) < 0.0135);
         CHECK(size.at(minor) > 0.0045);
