@@ -215,8 +215,6 @@ ResolveResult meshWithPlan(const std::vector<TowSurface>& tows, const Intersecti
     std::vector<double> towHInFrame;
     for (double x : plan.towH) towHInFrame.push_back(frame.lengthToFrame(x));
     o.mesh.loopSpacing = frame.lengthToFrame(options.mesh.loopSpacing);
-    o.mesh.chordDeviation = frame.lengthToFrame(options.mesh.chordDeviation);
-    o.mesh.minEdgeLength = frame.lengthToFrame(options.mesh.minEdgeLength);
     o.intersection = detail::optionsInFrame(options.intersection, frame);
     if (options.cell && options.cell->cutsMeshes()) {
         o.cell.reset();  // connectRegions() clips the resolved meshes
