@@ -8,6 +8,7 @@
 #include <iomanip>
 #include <limits>
 #include <ostream>
+#include <vector>
 
 #include "placement/nurbs_basis.hpp"
 #include "towgeom/error.hpp"
@@ -33,23 +34,24 @@ void checkVolume(const NurbsVolume& vol)
     detail::checkPoles(vol.poles, "volume");
 }
 
-VolumePoint evaluate(const NurbsVolume& vol, double u, double v, double w)
+/// The volume's point from the basis rows of its three directions at one parameter triple (the
+/// rows are computed once per parameter of a grid, not once per grid point).
+VolumePoint combine(const NurbsVolume& vol, const detail::BasisRow& bu, const detail::BasisRow& bv, const detail::BasisRow& bw)
 {
-    const detail::BasisRow b[3] = {detail::bsplineBasis(vol.knots[0], vol.degree[0], u), detail::bsplineBasis(vol.knots[1], vol.degree[1], v),
-                                   detail::bsplineBasis(vol.knots[2], vol.degree[2], w)};
+    const detail::BasisRow* b[3] = {&bu, &bv, &bw};
     // A = sum N N N w P and W = sum N N N w, with their three derivatives.
     Vector3 a{}, da[3]{};
     double W = 0.0, dW[3] = {0.0, 0.0, 0.0};
-    for (std::size_t i = 0; i < b[0].values.size(); ++i)
-        for (std::size_t j = 0; j < b[1].values.size(); ++j)
-            for (std::size_t k = 0; k < b[2].values.size(); ++k) {
-                const std::size_t index = ((b[0].first + i) * vol.count[1] + b[1].first + j) * vol.count[2] + b[2].first + k;
+    for (std::size_t i = 0; i < b[0]->values.size(); ++i)
+        for (std::size_t j = 0; j < b[1]->values.size(); ++j)
+            for (std::size_t k = 0; k < b[2]->values.size(); ++k) {
+                const std::size_t index = ((b[0]->first + i) * vol.count[1] + b[1]->first + j) * vol.count[2] + b[2]->first + k;
                 const double wt = vol.weights[index];
                 const Point3& p = vol.poles[index];
                 const Vector3 pv{p.x, p.y, p.z};
-                const double n = b[0].values[i] * b[1].values[j] * b[2].values[k];
-                const double dn[3] = {b[0].slopes[i] * b[1].values[j] * b[2].values[k], b[0].values[i] * b[1].slopes[j] * b[2].values[k],
-                                      b[0].values[i] * b[1].values[j] * b[2].slopes[k]};
+                const double n = b[0]->values[i] * b[1]->values[j] * b[2]->values[k];
+                const double dn[3] = {b[0]->slopes[i] * b[1]->values[j] * b[2]->values[k], b[0]->values[i] * b[1]->slopes[j] * b[2]->values[k],
+                                      b[0]->values[i] * b[1]->values[j] * b[2]->slopes[k]};
                 a = a + (n * wt) * pv;
                 W += n * wt;
                 for (int c = 0; c < 3; ++c) {
@@ -62,6 +64,21 @@ VolumePoint evaluate(const NurbsVolume& vol, double u, double v, double w)
     r.x = {x.x, x.y, x.z};
     for (int c = 0; c < 3; ++c) r.d[c] = (1.0 / W) * (da[c] - dW[c] * x);
     return r;
+}
+
+VolumePoint evaluate(const NurbsVolume& vol, double u, double v, double w)
+{
+    return combine(vol, detail::bsplineBasis(vol.knots[0], vol.degree[0], u), detail::bsplineBasis(vol.knots[1], vol.degree[1], v),
+                   detail::bsplineBasis(vol.knots[2], vol.degree[2], w));
+}
+
+/// The basis rows of direction @p c at each of @p at.
+std::vector<detail::BasisRow> rowsAt(const NurbsVolume& vol, std::size_t c, const std::vector<double>& at)
+{
+    std::vector<detail::BasisRow> rows;
+    rows.reserve(at.size());
+    for (double t : at) rows.push_back(detail::bsplineBasis(vol.knots[c], vol.degree[c], t));
+    return rows;
 }
 
 std::vector<std::pair<double, double>> spansOf(const std::vector<double>& knots)
@@ -156,29 +173,35 @@ VolumeMeasure measureVolume(const NurbsVolume& vol, int points)
     m.maxJacobian = -std::numeric_limits<double>::infinity();
     std::array<double, 3> minAt{}, maxAt{};
     Point3 minPoint, maxPoint;
-    const auto su = spansOf(vol.knots[0]), sv = spansOf(vol.knots[1]), sw = spansOf(vol.knots[2]);
-    for (const auto& [u0, u1] : su)
-        for (const auto& [v0, v1] : sv)
-            for (const auto& [w0, w1] : sw) {
-                const double hu = 0.5 * (u1 - u0), hv = 0.5 * (v1 - v0), hw = 0.5 * (w1 - w0);
-                for (int i = 1; i <= points; ++i)
-                    for (int j = 1; j <= points; ++j)
-                        for (int k = 1; k <= points; ++k) {
-                            const std::array<double, 3> at{u0 + hu * (1.0 + gx(i)), v0 + hv * (1.0 + gx(j)), w0 + hw * (1.0 + gx(k))};
-                            const VolumePoint p = evaluate(vol, at[0], at[1], at[2]);
-                            const double jac = dot(p.d[0], cross(p.d[1], p.d[2]));
-                            if (jac < m.minJacobian) {
-                                m.minJacobian = jac;
-                                minAt = at;
-                                minPoint = p.x;
-                            }
-                            if (jac > m.maxJacobian) {
-                                m.maxJacobian = jac;
-                                maxAt = at;
-                                maxPoint = p.x;
-                            }
-                            m.volume += gw(i) * gw(j) * gw(k) * hu * hv * hw * jac;
-                        }
+    // Per direction: the Gauss points of every span, each with its weight times the span's half
+    // length, and the basis rows there.
+    std::array<std::vector<double>, 3> at, weight;
+    std::array<std::vector<detail::BasisRow>, 3> rows;
+    for (std::size_t c = 0; c < 3; ++c) {
+        for (const auto& [t0, t1] : spansOf(vol.knots[c]))
+            for (int i = 1; i <= points; ++i) {
+                at[c].push_back(t0 + 0.5 * (t1 - t0) * (1.0 + gx(i)));
+                weight[c].push_back(0.5 * (t1 - t0) * gw(i));
+            }
+        rows[c] = rowsAt(vol, c, at[c]);
+    }
+    for (std::size_t i = 0; i < at[0].size(); ++i)
+        for (std::size_t j = 0; j < at[1].size(); ++j)
+            for (std::size_t k = 0; k < at[2].size(); ++k) {
+                const std::array<double, 3> here{at[0][i], at[1][j], at[2][k]};
+                const VolumePoint p = combine(vol, rows[0][i], rows[1][j], rows[2][k]);
+                const double jac = dot(p.d[0], cross(p.d[1], p.d[2]));
+                if (jac < m.minJacobian) {
+                    m.minJacobian = jac;
+                    minAt = here;
+                    minPoint = p.x;
+                }
+                if (jac > m.maxJacobian) {
+                    m.maxJacobian = jac;
+                    maxAt = here;
+                    maxPoint = p.x;
+                }
+                m.volume += weight[0][i] * weight[1][j] * weight[2][k] * jac;
             }
     const bool positive = m.volume >= 0.0;
     m.weakestParameters = positive ? minAt : maxAt;
@@ -219,11 +242,12 @@ void writeNurbsVolumeVtk(const NurbsVolume& vol, std::ostream& out, int samples)
     const auto id = [&](std::size_t i, std::size_t j, std::size_t k) { return (i * nv + j) * nw + k; };
     out << std::setprecision(17) << "# vtk DataFile Version 3.0\ntowgeom NURBS ply solid\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS "
         << nu * nv * nw << " double\n";
+    const std::array<std::vector<detail::BasisRow>, 3> rows{rowsAt(vol, 0, at[0]), rowsAt(vol, 1, at[1]), rowsAt(vol, 2, at[2])};
     std::vector<double> jac;
     for (std::size_t i = 0; i < nu; ++i)
         for (std::size_t j = 0; j < nv; ++j)
             for (std::size_t k = 0; k < nw; ++k) {
-                const VolumePoint p = evaluate(vol, at[0][i], at[1][j], at[2][k]);
+                const VolumePoint p = combine(vol, rows[0][i], rows[1][j], rows[2][k]);
                 out << p.x.x << " " << p.x.y << " " << p.x.z << "\n";
                 jac.push_back(dot(p.d[0], cross(p.d[1], p.d[2])));
             }
