@@ -12,7 +12,7 @@ TOWGEOM_BEGIN_NAMESPACE
 
 namespace {
 
-[[noreturn]] void invalid(const std::string& why) { throw Error(ErrorCode::InvalidArgument, "weave: " + why); }
+[[noreturn]] void invalidWeave(const std::string& why) { throw Error(ErrorCode::InvalidArgument, "weave: " + why); }
 
 /// The interlacement height: the crimp given, else half the yarn height less the overlap.
 double crimpOf(const WeaveOptions& o) { return o.crimp > 0.0 ? o.crimp : 0.5 * o.height * (1.0 - o.overlap); }
@@ -182,28 +182,28 @@ const char* yarnRoleName(YarnRole role) noexcept
 void WeaveOptions::validate() const
 {
     const auto positive = [](double x) { return x > 0.0 && std::isfinite(x); };
-    if (warps < 1 || wefts < 1 || warps > 10000 || wefts > 10000) invalid("warps and wefts must be between 1 and 10000");
-    if (!positive(spacing)) invalid("spacing must be positive");
-    if (!positive(width) || !positive(height)) invalid("yarn width and height must be positive");
-    if (!(overlap >= 0.0 && overlap < 1.0)) invalid("overlap must lie in [0, 1)");
-    if (!(crimp >= 0.0 && std::isfinite(crimp))) invalid("crimp must be non-negative");
-    if (sectionsPerYarn != 0 && (sectionsPerYarn < 4 || sectionsPerYarn > 1000000)) invalid("sections per yarn must be >= 4");
-    if (pointsPerSection < 6 || pointsPerSection > 100000) invalid("points per section must be >= 6");
+    if (warps < 1 || wefts < 1 || warps > 10000 || wefts > 10000) invalidWeave("warps and wefts must be between 1 and 10000");
+    if (!positive(spacing)) invalidWeave("spacing must be positive");
+    if (!positive(width) || !positive(height)) invalidWeave("yarn width and height must be positive");
+    if (!(overlap >= 0.0 && overlap < 1.0)) invalidWeave("overlap must lie in [0, 1)");
+    if (!(crimp >= 0.0 && std::isfinite(crimp))) invalidWeave("crimp must be non-negative");
+    if (sectionsPerYarn != 0 && (sectionsPerYarn < 4 || sectionsPerYarn > 1000000)) invalidWeave("sections per yarn must be >= 4");
+    if (pointsPerSection < 6 || pointsPerSection > 100000) invalidWeave("points per section must be >= 6");
     switch (kind) {
     case WeaveKind::Twill:
-        if (floatOver < 1 || floatUnder < 1) invalid("a twill needs n >= 1 and m >= 1 (n/m)");
-        if (step < 1 || step >= floatOver + floatUnder) invalid("the twill step must lie in [1, n + m)");
+        if (floatOver < 1 || floatUnder < 1) invalidWeave("a twill needs n >= 1 and m >= 1 (n/m)");
+        if (step < 1 || step >= floatOver + floatUnder) invalidWeave("the twill step must lie in [1, n + m)");
         break;
     case WeaveKind::Satin:
-        if (floatOver < 5 && floatOver != 4) invalid("a satin needs a harness of at least 4");
+        if (floatOver < 5 && floatOver != 4) invalidWeave("a satin needs a harness of at least 4");
         if (step <= 1 || step >= floatOver - 1 || std::gcd(step, floatOver) != 1)
-            invalid("the satin step must be coprime with the harness and lie in (1, harness - 1)");
+            invalidWeave("the satin step must be coprime with the harness and lie in (1, harness - 1)");
         break;
     case WeaveKind::Basket:
-        if (floatOver < 1) invalid("a basket weave needs a group size >= 1");
+        if (floatOver < 1) invalidWeave("a basket weave needs a group size >= 1");
         break;
     case WeaveKind::Orthogonal:
-        if (layers < 1 || layers > 100) invalid("an orthogonal weave needs 1 to 100 warp layers");
+        if (layers < 1 || layers > 100) invalidWeave("an orthogonal weave needs 1 to 100 warp layers");
         break;
     case WeaveKind::Plain: break;
     }

@@ -28,7 +28,7 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using P2 = Kernel::Point_2;
-using Triangle = std::array<std::size_t, 3>;
+using CornerIndices = std::array<std::size_t, 3>;
 
 constexpr int kGauss = 12;  // Gauss-Legendre points per direction: ~1e-9 relative or better on a tow's elements
 
@@ -167,7 +167,7 @@ KnotSpanClassification classifyKnotSpans(const std::vector<TowSurface>& tows, co
     // The tow's own kept side triangles in (u,v), v unwrapped from the first corner.
     std::map<std::size_t, UV> uv(mesh.parameters.begin(), mesh.parameters.end());
     std::vector<std::array<UV, 3>> own;
-    std::vector<Triangle> ownNodes;
+    std::vector<CornerIndices> ownNodes;
     for (std::size_t k = 0; k < mesh.triangles.size(); ++k) {
         if (k < mesh.face.size() && mesh.face[k] != TowFace::Side) continue;
         const long id = k < mesh.region.size() ? mesh.region[k] : -1;
@@ -191,7 +191,7 @@ KnotSpanClassification classifyKnotSpans(const std::vector<TowSurface>& tows, co
     // oriented as their triangle runs them (the kept side on the left), cut by each element.
     std::vector<std::vector<std::array<UV, 2>>> pieces(out.elements.size());  // per element, unchained
     std::map<std::pair<std::size_t, std::size_t>, int> uses;
-    for (const Triangle& tri : ownNodes)
+    for (const CornerIndices& tri : ownNodes)
         for (std::size_t m = 0; m < 3; ++m) ++uses[std::minmax(tri[m], tri[(m + 1) % 3])];
     const ParameterRange range = tow.parameterRange();
     const double uEnd = 1e-12 * (range.uMax - range.uMin);

@@ -16,7 +16,7 @@ TOWGEOM_BEGIN_NAMESPACE
 
 namespace {
 
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 
 /// The name of tow @p t, checked against @p tows.
 const std::string& towName(const std::vector<TowSurface>& tows, std::size_t t)
@@ -28,7 +28,7 @@ const std::string& towName(const std::vector<TowSurface>& tows, std::size_t t)
 }
 
 /// "loops": per loop its tows, closedness, length, enclosed areas, distance and points.
-Json loopsJson(const IntersectionReport& report, const std::vector<TowSurface>& tows, double spacing, std::size_t threads)
+OrderedJson loopsJson(const IntersectionReport& report, const std::vector<TowSurface>& tows, double spacing, std::size_t threads)
 {
     for (const IntersectionLoop& l : report.loops) {
         towName(tows, l.towA());
@@ -44,10 +44,10 @@ Json loopsJson(const IntersectionReport& report, const std::vector<TowSurface>& 
         const IntersectionLoop& l = report.loops[k];
         figures[k] = {l.enclosedArea(LoopSide::A), l.enclosedArea(LoopSide::B), spacing > 0.0 ? l.resample(spacing) : l.points()};
     });
-    Json loops = Json::array();
+    OrderedJson loops = OrderedJson::array();
     for (std::size_t k = 0; k < report.loops.size(); ++k) {
         const IntersectionLoop& l = report.loops[k];
-        Json j;
+        OrderedJson j;
         j["tow_a"] = tows[l.towA()].name();
         j["tow_b"] = tows[l.towB()].name();
         j["closed"] = l.closed();
@@ -58,7 +58,7 @@ Json loopsJson(const IntersectionReport& report, const std::vector<TowSurface>& 
         j["max_distance"] = std::max(l.maxDistance(LoopSide::A), l.maxDistance(LoopSide::B));
         const std::vector<LoopPoint>& pts = figures[k].points;
         j["point_count"] = pts.size();
-        Json points = Json::array();
+        OrderedJson points = OrderedJson::array();
         for (const LoopPoint& p : pts) points.push_back({p.point.x, p.point.y, p.point.z});
         j["points"] = std::move(points);
         loops.push_back(std::move(j));
@@ -67,9 +67,9 @@ Json loopsJson(const IntersectionReport& report, const std::vector<TowSurface>& 
 }
 
 /// "findings": pairs that meet without an intersection curve.
-Json findingsJson(const IntersectionReport& report, const std::vector<TowSurface>& tows)
+OrderedJson findingsJson(const IntersectionReport& report, const std::vector<TowSurface>& tows)
 {
-    Json findings = Json::array();
+    OrderedJson findings = OrderedJson::array();
     for (const PairFinding& f : report.findings) {
         const char* kind = f.kind == PairFinding::Kind::Nested       ? "nested"
                            : f.kind == PairFinding::Kind::Contact    ? "contact"
@@ -80,16 +80,16 @@ Json findingsJson(const IntersectionReport& report, const std::vector<TowSurface
     return findings;
 }
 
-void putTime(Json& timings, const char* key, double ms)
+void putTime(OrderedJson& timings, const char* key, double ms)
 {
     if (ms >= 0.0) timings[key] = ms;
 }
 
 /// @p j on @p out, compact, with a final newline; an invalid UTF-8 byte in a name or message
 /// (names come from file names) becomes U+FFFD instead of an exception.
-void dump(const Json& j, std::ostream& out)
+void dump(const OrderedJson& j, std::ostream& out)
 {
-    out << j.dump(-1, ' ', false, Json::error_handler_t::replace) << "\n";
+    out << j.dump(-1, ' ', false, OrderedJson::error_handler_t::replace) << "\n";
     if (!out) throw Error(ErrorCode::WriteFailed, "could not write the report");
 }
 
@@ -113,7 +113,7 @@ const char* skipCode(SkippedLoop::Reason r)
 void writeDetectReport(const IntersectionReport& report, const std::vector<TowSurface>& tows, std::ostream& out,
                        const DetectReportOptions& options)
 {
-    Json j;
+    OrderedJson j;
     j["loops"] = loopsJson(report, tows, options.spacing, options.threads);
     j["findings"] = findingsJson(report, tows);
     j["tow_pairs"] = report.towPairs;
@@ -121,7 +121,7 @@ void writeDetectReport(const IntersectionReport& report, const std::vector<TowSu
     j["window_pairs"] = report.windowPairs;
     j["seeds"] = report.seeds;
     j["walks"] = report.walks;
-    Json timings = Json::object();
+    OrderedJson timings = OrderedJson::object();
     putTime(timings, "read", options.times.read);
     putTime(timings, "fit", options.times.fit);
     timings["broad_phase"] = report.timings.broadPhase;
@@ -138,8 +138,8 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
     if (result.tows.size() != tows.size() || mesh.tows.size() != tows.size())
         throw Error(ErrorCode::InvalidArgument, "the result is of " + std::to_string(result.tows.size()) + " tows, not " +
                                                     std::to_string(tows.size()));
-    Json j;
-    Json towList = Json::array();
+    OrderedJson j;
+    OrderedJson towList = OrderedJson::array();
     for (std::size_t t = 0; t < tows.size(); ++t) {
         const TowResolution& r = result.tows[t];
         towList.push_back({{"name", tows[t].name()},
@@ -160,11 +160,11 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
     j["tows"] = std::move(towList);
     j["loops"] = loopsJson(result.intersections, tows, 0.0, options.threads);
     j["findings"] = findingsJson(result.intersections, tows);
-    Json unresolved = Json::array();
+    OrderedJson unresolved = OrderedJson::array();
     for (const UnresolvedPairEntry& p : unresolvedPairs(result))
         unresolved.push_back({{"tow_a", towName(tows, p.towA)}, {"tow_b", towName(tows, p.towB)}, {"reason", p.code}, {"message", p.message}});
     j["unresolved"] = std::move(unresolved);
-    Json regions = Json::array();
+    OrderedJson regions = OrderedJson::array();
     for (const ConnectedRegion& g : mesh.regions)
         regions.push_back({{"primary", towName(tows, g.primary)},
                            {"secondary", towName(tows, g.secondary)},
@@ -175,7 +175,7 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
                            {"surface", g.surface == SharedSurface::Middle ? "middle" : "primary"},
                            {"note", g.note}});
     j["regions"] = std::move(regions);
-    Json triple = Json::array();
+    OrderedJson triple = OrderedJson::array();
     for (const TriplePoint& p : mesh.triplePoints) {
         if (p.node >= mesh.nodes.size()) throw Error(ErrorCode::InvalidArgument, "a triple point's node is out of range");
         const Point3& x = mesh.nodes[p.node];
@@ -184,7 +184,7 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
                           {"point", {x.x, x.y, x.z}}});
     }
     j["triple_points"] = std::move(triple);
-    Json corners = Json::array();
+    OrderedJson corners = OrderedJson::array();
     for (const SharpCorner& c : mesh.sharpCorners) {
         if (c.node >= mesh.nodes.size()) throw Error(ErrorCode::InvalidArgument, "a sharp corner's node is out of range");
         const Point3& x = mesh.nodes[c.node];
@@ -195,7 +195,7 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
                            {"angle_deg", c.angle}});
     }
     j["sharp_corners"] = std::move(corners);
-    Json skipped = Json::array();
+    OrderedJson skipped = OrderedJson::array();
     for (const SkippedLoop& s : result.skippedLoops) {
         if (s.loop >= result.intersections.loops.size()) throw Error(ErrorCode::InvalidArgument, "a skipped loop is not in the report");
         const IntersectionLoop& l = result.intersections.loops[s.loop];
@@ -239,7 +239,7 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
             ++count[v->tow[k]];
             volume[v->tow[k]] += v->tetrahedronVolume(k);
         }
-        Json perTow = Json::array();
+        OrderedJson perTow = OrderedJson::array();
         double towVolume = 0.0;
         for (std::size_t t = 0; t < tows.size(); ++t) {
             perTow.push_back({{"name", tows[t].name()}, {"tetrahedra", count[t]}, {"volume", volume[t]}});
@@ -265,7 +265,7 @@ void writeResolveReport(const ResolveResult& result, const std::vector<TowSurfac
     } else if (!options.volumeRefused.empty()) {
         j["volume_mesh"] = {{"refused", options.volumeRefused}};
     }
-    Json timings = Json::object();
+    OrderedJson timings = OrderedJson::object();
     putTime(timings, "read", options.times.read);
     putTime(timings, "fit", options.times.fit);
     timings["intersect"] = result.timings.intersect;

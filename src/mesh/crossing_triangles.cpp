@@ -18,8 +18,8 @@ namespace detail {
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Triangle = std::array<std::size_t, 3>;
-using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
+using CornerIndices = std::array<std::size_t, 3>;
+using TriangleBox = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
 
 /// A tow's triangles as points: shared nodes and its own.
 struct TowNodes {
@@ -32,15 +32,15 @@ struct TowNodes {
         const Point3& p = node(n);
         return {p.x, p.y, p.z};
     }
-    const Triangle& triangle(std::size_t k) const { return (*tow.triangles)[k]; }
+    const CornerIndices& triangle(std::size_t k) const { return (*tow.triangles)[k]; }
     K::Triangle_3 geometry(std::size_t k) const
     {
-        const Triangle& t = triangle(k);
+        const CornerIndices& t = triangle(k);
         return {point(t[0]), point(t[1]), point(t[2])};
     }
     CGAL::Bbox_3 box(std::size_t k) const
     {
-        const Triangle& t = triangle(k);
+        const CornerIndices& t = triangle(k);
         return point(t[0]).bbox() + point(t[1]).bbox() + point(t[2]).bbox();
     }
 };
@@ -49,7 +49,7 @@ struct TowNodes {
 /// have in common (see crossingTriangles()).
 bool cross(const TowNodes& a, std::size_t i, const TowNodes& b, std::size_t j)
 {
-    const Triangle &s = a.triangle(i), &t = b.triangle(j);
+    const CornerIndices &s = a.triangle(i), &t = b.triangle(j);
     return trianglesCross(s, {a.point(s[0]), a.point(s[1]), a.point(s[2])}, t, {b.point(t[0]), b.point(t[1]), b.point(t[2])}, a.ownFrom);
 }
 
@@ -57,7 +57,7 @@ bool cross(const TowNodes& a, std::size_t i, const TowNodes& b, std::size_t j)
 CGAL::Bbox_3 boxOf(const TowNodes& tow)
 {
     CGAL::Bbox_3 b;
-    for (const Triangle& t : *tow.tow.triangles)
+    for (const CornerIndices& t : *tow.tow.triangles)
         for (std::size_t n : t) b += tow.point(n).bbox();
     return b;
 }
@@ -70,9 +70,9 @@ CGAL::Bbox_3 overlapOf(const CGAL::Bbox_3& a, const CGAL::Bbox_3& b)
 }
 
 /// The boxes of @p tow's triangles that meet @p within.
-std::vector<Box> boxesWithin(const TowNodes& tow, const CGAL::Bbox_3& within)
+std::vector<TriangleBox> boxesWithin(const TowNodes& tow, const CGAL::Bbox_3& within)
 {
-    std::vector<Box> out;
+    std::vector<TriangleBox> out;
     for (std::size_t k = 0; k < tow.tow.triangles->size(); ++k) {
         const CGAL::Bbox_3 b = tow.box(k);
         if (CGAL::do_overlap(b, within)) out.emplace_back(b, k);
@@ -125,21 +125,21 @@ private:
 /// Keeps only the boxes of @p a and @p b (all within @p both) that share a grid cell with a box
 /// of the other: where two tows' surfaces cross within a box most of their triangles are far
 /// apart. Cells of about the boxes' mean size, at most 128 along a side of @p both.
-void keepNear(std::vector<Box>& a, std::vector<Box>& b, const CGAL::Bbox_3& both)
+void keepNear(std::vector<TriangleBox>& a, std::vector<TriangleBox>& b, const CGAL::Bbox_3& both)
 {
     double extent = 0.0;
-    for (const std::vector<Box>* v : {&a, &b})
-        for (const Box& x : *v) {
+    for (const std::vector<TriangleBox>* v : {&a, &b})
+        for (const TriangleBox& x : *v) {
             const CGAL::Bbox_3& y = x.bbox();
             extent += std::max({y.xmax() - y.xmin(), y.ymax() - y.ymin(), y.zmax() - y.zmin()});
         }
     extent /= static_cast<double>(a.size() + b.size());
     const double side = std::max({both.xmax() - both.xmin(), both.ymax() - both.ymin(), both.zmax() - both.zmin()});
     const double cell = std::max({extent, side / 128.0, 1e-300});
-    const auto filter = [&](std::vector<Box>& kept, const std::vector<Box>& other) {
+    const auto filter = [&](std::vector<TriangleBox>& kept, const std::vector<TriangleBox>& other) {
         OccupancyGrid grid(both, cell);
-        for (const Box& x : other) grid.mark(x.bbox());
-        kept.erase(std::remove_if(kept.begin(), kept.end(), [&](const Box& x) { return !grid.touches(x.bbox()); }), kept.end());
+        for (const TriangleBox& x : other) grid.mark(x.bbox());
+        kept.erase(std::remove_if(kept.begin(), kept.end(), [&](const TriangleBox& x) { return !grid.touches(x.bbox()); }), kept.end());
     };
     filter(a, b);
     filter(b, a);
@@ -167,11 +167,11 @@ std::vector<CrossingTriangles> crossingTriangles(const std::vector<Point3>& shar
     parallelFor(pairs.size(), threads, [&](std::size_t k) {
         const std::size_t a = pairs[k].first, b = pairs[k].second;  // (a lambda below uses them)
         const CGAL::Bbox_3 both = overlapOf(towBox[a], towBox[b]);
-        std::vector<Box> ba = boxesWithin(at[a], both), bb = boxesWithin(at[b], both);
+        std::vector<TriangleBox> ba = boxesWithin(at[a], both), bb = boxesWithin(at[b], both);
         if (ba.empty() || bb.empty()) return;
         keepNear(ba, bb, both);
         std::vector<CrossingTriangles> found;
-        CGAL::box_intersection_d(ba.begin(), ba.end(), bb.begin(), bb.end(), [&](const Box& x, const Box& y) {
+        CGAL::box_intersection_d(ba.begin(), ba.end(), bb.begin(), bb.end(), [&](const TriangleBox& x, const TriangleBox& y) {
             if (cross(at[a], x.info(), at[b], y.info())) found.push_back({a, x.info(), b, y.info()});
         });
         if (found.empty()) return;

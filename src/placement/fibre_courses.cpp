@@ -100,7 +100,7 @@ TowGap measureGap(const Handle(Geom_BSplineSurface)& s, const TowPath& a, const 
     for (std::size_t i = 0; i < n; ++i) {
         try {
             const UV at = a.centreline.uv[i];
-            const detail::Frame f = detail::frameAt(s, at.u, at.v);
+            const detail::SurfaceFrame f = detail::frameAt(s, at.u, at.v);
             gp_Vec t(detail::toOcct(a.centreline.points[i > 0 ? i - 1 : i]), detail::toOcct(a.centreline.points[i + 1 < n ? i + 1 : i]));
             t -= f.n * t.Dot(f.n);
             if (!(t.Magnitude() > 0.0)) continue;

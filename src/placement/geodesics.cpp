@@ -15,9 +15,9 @@ namespace detail {
 /// A point moving along a geodesic: its parameters and their rates per unit length.
 using State = std::array<double, 4>;  // u, v, u', v'
 
-Frame frameAt(const Handle(Geom_BSplineSurface)& s, double u, double v)
+SurfaceFrame frameAt(const Handle(Geom_BSplineSurface)& s, double u, double v)
 {
-    Frame f;
+    SurfaceFrame f;
     s->D1(u, v, f.p, f.su, f.sv);
     f.n = f.su.Crossed(f.sv);
     // Relative: at a collapsed row of poles the cross product vanishes only up to rounding.
@@ -27,7 +27,7 @@ Frame frameAt(const Handle(Geom_BSplineSurface)& s, double u, double v)
 }
 
 /// (du, dv) with S_u du + S_v dv the tangent-plane part of @p t.
-std::array<double, 2> parameterRates(const Frame& f, const gp_Vec& t)
+std::array<double, 2> parameterRates(const SurfaceFrame& f, const gp_Vec& t)
 {
     const double e = f.su.Dot(f.su), g = f.sv.Dot(f.sv), c = f.su.Dot(f.sv);
     const double a = f.su.Dot(t), b = f.sv.Dot(t), det = e * g - c * c;
@@ -59,7 +59,7 @@ bool insideParameters(const Handle(Geom_BSplineSurface)& s, double u, double v)
 /// The end of the geodesic of length @p length from @p from in the 3D tangent direction @p t.
 UV shootGeodesic(const Handle(Geom_BSplineSurface)& s, const UV& from, const gp_Vec& t, double length, int steps)
 {
-    const Frame f = frameAt(s, from.u, from.v);
+    const SurfaceFrame f = frameAt(s, from.u, from.v);
     gp_Vec dir = t - f.n * t.Dot(f.n);
     if (!(dir.Magnitude() > 0.0)) throw Error(ErrorCode::InvalidArgument, "a geodesic's direction is along the surface's normal");
     dir.Normalize();
@@ -113,7 +113,7 @@ double normalCurvature(const Handle(Geom_BSplineSurface)& s, double u, double v,
     gp_Pnt p;
     gp_Vec su, sv, suu, svv, suv;
     s->D2(u, v, p, su, sv, suu, svv, suv);
-    const Frame f = frameAt(s, u, v);
+    const SurfaceFrame f = frameAt(s, u, v);
     const std::array<double, 2> r = parameterRates(f, t);
     const double second = suu.Dot(f.n) * r[0] * r[0] + 2.0 * suv.Dot(f.n) * r[0] * r[1] + svv.Dot(f.n) * r[1] * r[1];
     const gp_Vec along = su * r[0] + sv * r[1];
@@ -122,7 +122,7 @@ double normalCurvature(const Handle(Geom_BSplineSurface)& s, double u, double v,
 
 double geodesicDistanceOn(const Handle(Geom_BSplineSurface)& s, const UV& from, const UV& to, int steps)
 {
-    const Frame f = frameAt(s, from.u, from.v);
+    const SurfaceFrame f = frameAt(s, from.u, from.v);
     const gp_Vec chord(f.p, s->Value(to.u, to.v));
     if (chord.Magnitude() == 0.0) return 0.0;
     // Unknowns: the direction's angle in the tangent plane (about e1) and the length.

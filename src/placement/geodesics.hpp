@@ -15,17 +15,17 @@ TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
 
 /// A surface's point, first derivatives and unit normal at a parameter.
-struct Frame {
+struct SurfaceFrame {
     gp_Pnt p;
     gp_Vec su, sv, n;  ///< n: unit normal
 };
 
 /// The frame at (@p u, @p v). @throws towgeom::Error (InvalidArgument) where the normal vanishes.
-Frame frameAt(const Handle(Geom_BSplineSurface)& s, double u, double v);
+SurfaceFrame frameAt(const Handle(Geom_BSplineSurface)& s, double u, double v);
 
 /// (du, dv) with S_u du + S_v dv the tangent-plane part of @p t. @throws towgeom::Error
 /// (InvalidArgument) where the parametrisation is singular.
-std::array<double, 2> parameterRates(const Frame& f, const gp_Vec& t);
+std::array<double, 2> parameterRates(const SurfaceFrame& f, const gp_Vec& t);
 
 /// Whether (@p u, @p v) lies in the surface's parameter box.
 bool insideParameters(const Handle(Geom_BSplineSurface)& s, double u, double v);

@@ -72,7 +72,7 @@ struct Field {
     std::array<double, 2> rate(double t, double kappa) const
     {
         const auto [uv, dt, dk] = at(t, kappa);
-        const detail::Frame f = detail::frameAt(s, uv.X(), uv.Y());
+        const detail::SurfaceFrame f = detail::frameAt(s, uv.X(), uv.Y());
         const gp_Vec xt = f.su * dt.X() + f.sv * dt.Y(), xk = f.su * dk.X() + f.sv * dk.Y();
         if (!(xt.Magnitude() > 0.0)) throw Error(ErrorCode::InvalidArgument, "fixedAngleCurve: a 0° curve has no tangent there");
         const gp_Vec e = xt.Normalized();
@@ -182,7 +182,7 @@ FixedAngleCurve fixedAngleCurve(const NurbsSurface& surface, const std::vector<C
             gp_Pnt2d c;
             gp_Vec2d dZero;
             field.curves[k]->D1(crossingT[k], c, dZero);
-            const detail::Frame f = detail::frameAt(field.s, uv[i].u, uv[i].v);
+            const detail::SurfaceFrame f = detail::frameAt(field.s, uv[i].u, uv[i].v);
             const gp_Vec a(own.x, own.y, own.z), b = f.su * dZero.X() + f.sv * dZero.Y();
             out.crossings.push_back({k, uv[i], a.Angle(b) * 180.0 / kPi});
         }

@@ -57,7 +57,7 @@ SurfaceOffsetStep offsetOnSurface(const NurbsSurface& surface, const CurveOnSurf
         for (std::size_t i = 0; i < n; ++i) {
             const UV at = curve.uv[i];
             if (!insideParameters(s, at.u, at.v)) throw Error(ErrorCode::InvalidArgument, "offsetOnSurface: a point lies off the surface's parameter range");
-            const Frame f = frameAt(s, at.u, at.v);
+            const SurfaceFrame f = frameAt(s, at.u, at.v);
             // The curve's tangent from its neighbours, in the tangent plane; O = N x T.
             const Point3 a = curve.points[i > 0 ? i - 1 : i], b = curve.points[i + 1 < n ? i + 1 : i];
             gp_Vec t(detail::toOcct(a), detail::toOcct(b));
