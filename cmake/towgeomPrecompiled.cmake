@@ -41,14 +41,15 @@ endfunction()
 # the CLI's sources are compiled eight to a translation unit, so each engine header is parsed once
 # per batch. Measured on the 2-core machine (2026-12-07): the library's Release objects took 379 s
 # of compile time against 632 s one by one, and clang's unoptimised library (the add_subdirectory
-# test) 53 s of wall time against 87 s. The sources keep to one name per entity across files
-# (file-local helpers too) so that any batch compiles. Only those targets batch: tests/, its fuzz
-# harnesses and benchmarks/ and tests/support/ set CMAKE_UNITY_BUILD OFF for their directories (the tests' sources
-# define the same file-local helpers again and again).
-# towgeom_unity_safe(TARGET): every batch of TARGET starts with CGAL's kernel, before any source's
-# OpenCASCADE header defines the macro Handle(Class) that would rewrite CGAL's Handle (one by one,
-# each source includes CGAL first; the precompiled headers do too).
+# test) 53 s of wall time against 87 s. The library's batches of eight, in the order of
+# src/CMakeLists.txt, share no file-local name; larger batches would not compile yet (kPi,
+# msSince, sideOf, ... are defined in several files), so the batch size is fixed at eight whatever
+# a host sets. tests/, tests/support/, the fuzz harnesses and benchmarks/ set CMAKE_UNITY_BUILD OFF
+# for their directories (the tests' sources define the same file-local helpers again and again).
+# towgeom_unity_safe(TARGET): TARGET batches eight sources, each batch starting with CGAL's kernel,
+# before any source's OpenCASCADE header defines the macro Handle(Class) that would rewrite CGAL's
+# Handle (one by one, each source includes CGAL first; the precompiled headers do too).
 function(towgeom_unity_safe target)
-  set_target_properties(${target} PROPERTIES
+  set_target_properties(${target} PROPERTIES UNITY_BUILD_BATCH_SIZE 8
     UNITY_BUILD_CODE_BEFORE_INCLUDE "#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>")
 endfunction()
