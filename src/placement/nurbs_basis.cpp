@@ -14,8 +14,9 @@ namespace detail {
 
 BasisRow bsplineBasis(const std::vector<double>& knots, int p, double t)
 {
-    TColStd_Array1OfReal flat(1, static_cast<int>(knots.size()));
-    for (std::size_t k = 0; k < knots.size(); ++k) flat.SetValue(static_cast<int>(k) + 1, knots[k]);
+    if (knots.empty()) throw Error(ErrorCode::InvalidArgument, "the B-spline basis needs knots");
+    // OCCT's view of the knots in place (NCollection_Array1's buffer constructor): no copy per call.
+    const TColStd_Array1OfReal flat(knots.front(), 1, static_cast<int>(knots.size()));
     math_Matrix basis(1, 2, 1, p + 1, 0.0);
     int first = 0;
     if (BSplCLib::EvalBsplineBasis(1, p + 1, flat, t, first, basis) != 0)
