@@ -3,6 +3,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <chrono>
 #include <optional>
 #include <string>
 #include <vector>
@@ -147,6 +148,13 @@ void bindResolve(py::module_& m)
         "one shared surface per overlap. Options as a ResolveOptions and/or keyword arguments (edge_length=0.1, "
         "method='symmetric', primary=['warp*'], threads=2, ...); progress(stage, done, total) as the work goes on; "
         "Ctrl-C stops it and raises KeyboardInterrupt.");
+    // The peer of the binding's overhead benchmark (benchmarks/bench_python.py): the same call
+    // made and timed in C++ alone (no worker thread, no conversions), its result dropped.
+    m.def("_resolve_seconds_in_cpp", [](const std::vector<TowSurface>& tows, const IntersectionReport& report, const ResolveOptions& options) {
+            const auto start = std::chrono::steady_clock::now();
+            const ResolveResult result = resolveTextile(tows, report, options);
+            return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        }, py::arg("tows"), py::arg("report"), py::arg("options"), py::call_guard<py::gil_scoped_release>());
 }
 
 }  // namespace towgeom::python

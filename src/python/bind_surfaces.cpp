@@ -114,6 +114,10 @@ void bindSurface(py::module_& m)
         .def_property_readonly("tow_size", &TowSurface::towSize, "The tow's size: the scale of the relative tolerances.")
         .def_property_readonly("sections", [](const TowSurface& s) { return sectionsArray(s.sections()); },
                                "The fitted sections (the input, possibly reordered), shape (sections, points, 3).")
+        .def_property_readonly("section_parameters", [](const TowSurface& s) { return py::array_t<double>(py::cast(s.sectionParameters())); },
+                               "u of each section (the sections property's first index).")
+        .def_property_readonly("point_parameters", [](const TowSurface& s) { return py::array_t<double>(py::cast(s.pointParameters())); },
+                               "v of each point of a section (the sections property's second index).")
         .def_property_readonly("parameter_range", [](const TowSurface& s) {
                 const ParameterRange r = s.parameterRange();
                 return py::make_tuple(r.uMin, r.uMax, r.vMin, r.vMax);

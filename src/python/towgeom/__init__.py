@@ -39,18 +39,23 @@ def _to_meshio(self):
 
 
 def _from_meshio(mesh, names=None):
-    """A TextileMesh from a meshio.Mesh: each "triangle" block one tow, named by NAMES, the
-    mesh's field data "tow_names" (as to_meshio() writes it) or tow_0, tow_1, ..."""
+    """A TextileMesh from a meshio.Mesh: its triangles split into tows by the cell data "tow"
+    (as to_meshio() writes it; writers such as VTU's merge the blocks) or else one tow per
+    "triangle" block; named by NAMES, the field data "tow_names", or tow_0, tow_1, ..."""
     import numpy
 
-    blocks = [block for block in mesh.cells if block.type == "triangle"]
+    indices = [k for k, block in enumerate(mesh.cells) if block.type == "triangle"]
+    triangles = [numpy.asarray(mesh.cells[k].data, dtype=numpy.int64) for k in indices]
+    if "tow" in mesh.cell_data:
+        tow_of = numpy.concatenate([numpy.asarray(mesh.cell_data["tow"][k]).ravel() for k in indices])
+        every = numpy.concatenate(triangles) if triangles else numpy.zeros((0, 3), dtype=numpy.int64)
+        triangles = [every[tow_of == t] for t in range(int(tow_of.max()) + 1 if len(tow_of) else 0)]
     if names is None:
         stored = mesh.field_data.get("tow_names") if mesh.field_data else None
-        names = [str(n) for n in stored] if stored is not None and len(stored) == len(blocks) else [f"tow_{k}" for k in range(len(blocks))]
-    if len(names) != len(blocks):
-        raise ValueError(f"{len(names)} names for {len(blocks)} triangle blocks")
-    return TextileMesh.from_arrays(numpy.asarray(mesh.points, dtype=numpy.float64),
-                                   [(name, block.data) for name, block in zip(names, blocks)])
+        names = [str(n) for n in stored] if stored is not None and len(stored) == len(triangles) else [f"tow_{k}" for k in range(len(triangles))]
+    if len(names) != len(triangles):
+        raise ValueError(f"{len(names)} names for {len(triangles)} tows")
+    return TextileMesh.from_arrays(numpy.asarray(mesh.points, dtype=numpy.float64), list(zip(names, triangles)))
 
 
 TextileMesh.to_meshio = _to_meshio
