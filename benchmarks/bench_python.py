@@ -17,23 +17,29 @@ from towgeom import _towgeom
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--repeat", type=int, default=5, help="calls of each, interleaved; the least time of each is kept")
+    parser.add_argument("--threads", type=int, default=0, help="threads of each call (0: all)")
     parser.add_argument("--sizes", default="0.2,0.1,0.05", help="mesh sizes (edge lengths), comma-separated")
     args = parser.parse_args()
     data = pathlib.Path(__file__).resolve().parents[1] / "examples" / "data" / "twill"
     tows = [towgeom.TowSurface.fit(towgeom.read_stack(str(p))) for p in sorted(data.glob("*.stw"))]
     report = towgeom.intersect_tows(tows)
-    print(f"{'mesh size':>10} {'nodes':>8} {'Python s':>9} {'C++ s':>9} {'ratio':>6}")
+    print(f"threads {args.threads}; least of {args.repeat} calls each, interleaved")
+    print(f"{'mesh size':>10} {'nodes':>8} {'wall: Python s':>15} {'C++ s':>7} {'ratio':>6} {'CPU: Python s':>14} {'C++ s':>7} {'ratio':>6}")
     for size in map(float, args.sizes.split(",")):
-        options = towgeom.ResolveOptions(edge_length=size)
-        from_python, in_cpp, nodes = [], [], 0
+        options = towgeom.ResolveOptions(edge_length=size, threads=args.threads)
+        wall, cpu, nodes = ([], []), ([], []), 0
         for _ in range(args.repeat):
-            start = time.perf_counter()
+            start, start_cpu = time.perf_counter(), time.process_time()
             result = towgeom.resolve_textile(tows, report, options)
-            from_python.append(time.perf_counter() - start)
+            wall[0].append(time.perf_counter() - start)
+            cpu[0].append(time.process_time() - start_cpu)
             nodes = len(result.mesh.nodes)
             del result
-            in_cpp.append(_towgeom._resolve_seconds_in_cpp(tows, report, options))
-        print(f"{size:>10g} {nodes:>8} {min(from_python):>9.3f} {min(in_cpp):>9.3f} {min(from_python) / min(in_cpp):>6.3f}")
+            start_cpu = time.process_time()
+            wall[1].append(_towgeom._resolve_seconds_in_cpp(tows, report, options))
+            cpu[1].append(time.process_time() - start_cpu)
+        w, c = [min(x) for x in wall], [min(x) for x in cpu]
+        print(f"{size:>10g} {nodes:>8} {w[0]:>15.3f} {w[1]:>7.3f} {w[0] / w[1]:>6.3f} {c[0]:>14.3f} {c[1]:>7.3f} {c[0] / c[1]:>6.3f}")
 
 
 if __name__ == "__main__":
