@@ -162,15 +162,6 @@ void bindVolumeMesh(py::module_& m)
         .def_readonly("gmsh_seconds", &VolumeMesh::gmshSeconds)
         .def("tow_volume", &VolumeMesh::towVolume, py::arg("tow"))
         .def("__repr__", [](const VolumeMesh& v) { return "<towgeom.VolumeMesh: " + std::to_string(v.tetrahedra.size()) + " tetrahedra>"; });
-    m.def("mesh_volumes", [](const ResolveResult& result, bool optimize, int order, std::size_t threads, double growthRate, double maxSize) {
-            VolumeMeshOptions o;
-            o.optimize = optimize, o.order = order, o.threads = threads, o.growthRate = growthRate, o.maxSize = maxSize;
-            return meshVolumes(result, o);
-        }, py::arg("result"), py::arg("optimize") = true, py::arg("order") = 1, py::arg("threads") = 0, py::arg("growth_rate") = 1.3,
-        py::arg("max_size") = 0.0, py::call_guard<py::gil_scoped_release>(),
-        "Tetrahedra inside the resolved surfaces (Gmsh's HXT); raises towgeom.Error where tows still overlap.");
-    m.def("write_vtu", py::overload_cast<const TextileMesh&, const VolumeMesh&, const std::string&>(&writeVtu), py::arg("mesh"),
-          py::arg("volumes"), py::arg("path"), py::call_guard<py::gil_scoped_release>(), "Writes the tetrahedra as a VTK .vtu file.");
 }
 
 }  // namespace
@@ -181,6 +172,20 @@ void bindMeshes(py::module_& m)
     bindRegion(m);
     bindTextileMesh(m);
     bindVolumeMesh(m);
+}
+
+void bindVolumes(py::module_& m)
+{
+    const VolumeMeshOptions defaults;
+    m.def("mesh_volumes", [](const ResolveResult& result, bool optimize, int order, std::size_t threads, double growthRate, double maxSize) {
+            VolumeMeshOptions o;
+            o.optimize = optimize, o.order = order, o.threads = threads, o.growthRate = growthRate, o.maxSize = maxSize;
+            return meshVolumes(result, o);
+        }, py::arg("result"), py::arg("optimize") = defaults.optimize, py::arg("order") = defaults.order, py::arg("threads") = defaults.threads,
+        py::arg("growth_rate") = defaults.growthRate, py::arg("max_size") = defaults.maxSize, py::call_guard<py::gil_scoped_release>(),
+        "Tetrahedra inside the resolved surfaces (Gmsh's HXT); raises towgeom.Error where tows still overlap.");
+    m.def("write_vtu", py::overload_cast<const TextileMesh&, const VolumeMesh&, const std::string&>(&writeVtu), py::arg("mesh"),
+          py::arg("volumes"), py::arg("path"), py::call_guard<py::gil_scoped_release>(), "Writes the tetrahedra as a VTK .vtu file.");
 }
 
 }  // namespace towgeom::python

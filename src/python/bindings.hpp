@@ -17,6 +17,7 @@ void bindSurfaces(py::module_& m);      // bind_surfaces.cpp: stacks and TowSurf
 void bindIntersections(py::module_& m); // bind_intersections.cpp: intersect_tows and its report
 void bindMeshes(py::module_& m);        // bind_meshes.cpp: TextileMesh and its writers
 void bindResolve(py::module_& m);       // bind_resolve.cpp: resolve_textile, its options and result
+void bindVolumes(py::module_& m);       // bind_meshes.cpp: mesh_volumes, write_vtu (after bindResolve)
 void bindGenerate(py::module_& m);      // bind_generate.cpp: generate_weave
 
 /// Sets each keyword argument on @p options (an instance of a bound options class), looking

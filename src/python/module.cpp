@@ -43,5 +43,6 @@ PYBIND11_MODULE(_towgeom, m)
     tp::bindIntersections(m);
     tp::bindMeshes(m);
     tp::bindResolve(m);
+    tp::bindVolumes(m);
     tp::bindGenerate(m);
 }
