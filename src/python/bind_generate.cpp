@@ -63,6 +63,7 @@ void bindGenerate(py::module_& m)
             for (const GeneratedYarn& y : t.yarns) out.append(yarnRoleName(y.role));
             return out;
         })
+        .def("unit_cell", &Textile::unitCell, "The weave's periodic unit cell (a Cell), or None where it has none.")
         .def("stacks", &Textile::stacks, "Every yarn as a Stack (options.points_per_section points per section).");
     m.def("generate_weave", [](std::optional<WeaveOptions> options, const py::kwargs& keywords) {
             py::object chosen = py::cast(options.value_or(WeaveOptions{}));

@@ -4,12 +4,16 @@
 #include <pybind11/stl.h>
 
 #include <chrono>
+#include <array>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "bindings.hpp"
 #include "interruptible.hpp"
+#include "towgeom/connect_regions.hpp"
+#include "towgeom/mesh_tows.hpp"
 #include "towgeom/method_comparison.hpp"
 #include "towgeom/resolve.hpp"
 
@@ -46,6 +50,38 @@ const char* skippedReasonName(SkippedLoop::Reason reason)
     case SkippedLoop::Reason::Contact: return "contact";
     }
     return "unknown";
+}
+
+using Triple = std::array<double, 3>;
+
+void bindCell(py::module_& m)
+{
+    py::class_<Cell>(m, "Cell", "A box the meshes are clipped to (an FE cell); periodic for a unit cell.")
+        .def(py::init([](const Triple& lo, const Triple& hi, bool periodic, const std::string& cut) {
+                 Cell c;
+                 c.min = {lo[0], lo[1], lo[2]};
+                 c.max = {hi[0], hi[1], hi[2]};
+                 c.periodic = periodic;
+                 c.cut = enumNamed(cut, {CellCut::Auto, CellCut::Parametric, CellCut::Mesh}, &cellCutName, "cell cut");
+                 c.validate();
+                 return c;
+             }), py::arg("min"), py::arg("max"), py::arg("periodic") = false, py::arg("cut") = "auto",
+             "The box from corner MIN to corner MAX; cut 'auto' (mesh for a box that is not periodic), 'parametric' or 'mesh'.")
+        .def_property_readonly("min", [](const Cell& c) { return Triple{c.min.x, c.min.y, c.min.z}; })
+        .def_property_readonly("max", [](const Cell& c) { return Triple{c.max.x, c.max.y, c.max.z}; })
+        .def_readwrite("periodic", &Cell::periodic)
+        .def_property("cut", [](const Cell& c) { return cellCutName(c.cut); },
+                      [](Cell& c, const std::string& name) { c.cut = enumNamed(name, {CellCut::Auto, CellCut::Parametric, CellCut::Mesh}, &cellCutName, "cell cut"); })
+        .def_readwrite("period_tolerance", &Cell::periodTolerance)
+        .def_readwrite("face_size_growth", &Cell::faceSizeGrowth)
+        .def_readwrite("face_size_max", &Cell::faceSizeMax)
+        .def("volume", &Cell::volume)
+        .def("__repr__", [](const Cell& c) {
+            std::ostringstream out;
+            out << "<towgeom.Cell (" << c.min.x << ", " << c.min.y << ", " << c.min.z << ") - (" << c.max.x << ", " << c.max.y << ", " << c.max.z
+                << ")" << (c.periodic ? ", periodic>" : ">");
+            return out.str();
+        });
 }
 
 void bindMeshOptions(py::module_& m)
@@ -85,7 +121,8 @@ void bindResolveOptions(py::module_& m)
         .def_property("method", [](const ResolveOptions& o) { return resolutionMethodName(o.method); },
                       [](ResolveOptions& o, const std::string& name) { o.method = methodNamed(name); },
                       "'connect' (the rank rule), 'symmetric' (mid-surfaces) or 'shrink' (sections scaled until apart).")
-        .def_readwrite("threads", &ResolveOptions::threads, "Worker threads (0: all hardware threads).");
+        .def_readwrite("threads", &ResolveOptions::threads, "Worker threads (0: all hardware threads).")
+        .def_readwrite("cell", &ResolveOptions::cell, "A Cell to clip the meshes to, or None.");
 }
 
 void bindResult(py::module_& m)
@@ -128,18 +165,25 @@ void bindResult(py::module_& m)
         });
 }
 
+/// The options of a stage call: OPTIONS (or the defaults) with the keyword arguments set.
+ResolveOptions resolveOptions(const std::optional<ResolveOptions>& options, const py::kwargs& keywords)
+{
+    py::object chosen = py::cast(options.value_or(ResolveOptions{}));
+    applyKeywords(chosen, keywords, {"mesh", "intersection"});
+    return chosen.cast<ResolveOptions>();
+}
+
 }  // namespace
 
 void bindResolve(py::module_& m)
 {
+    bindCell(m);
     bindMeshOptions(m);
     bindResolveOptions(m);
     bindResult(m);
     m.def("resolve_textile", [](const std::vector<TowSurface>& tows, std::optional<IntersectionReport> report, std::optional<ResolveOptions> options,
                                 py::object progress, const py::kwargs& keywords) {
-            py::object chosen = py::cast(options.value_or(ResolveOptions{}));
-            applyKeywords(chosen, keywords, {"mesh", "intersection"});
-            ResolveOptions o = chosen.cast<ResolveOptions>();
+            ResolveOptions o = resolveOptions(options, keywords);
             PythonProgress monitor(progress);
             o.monitor = &monitor;
             return runInterruptible(monitor, [&] { return report ? resolveTextile(tows, *report, o) : resolveTextile(tows, o); });
@@ -148,6 +192,23 @@ void bindResolve(py::module_& m)
         "one shared surface per overlap. Options as a ResolveOptions and/or keyword arguments (edge_length=0.1, "
         "method='symmetric', primary=['warp*'], threads=2, ...); progress(stage, done, total) as the work goes on; "
         "Ctrl-C stops it and raises KeyboardInterrupt.");
+    m.def("mesh_tows", [](const std::vector<TowSurface>& tows, const IntersectionReport& report, std::optional<ResolveOptions> options,
+                          py::object progress, const py::kwargs& keywords) {
+            ResolveOptions o = resolveOptions(options, keywords);
+            PythonProgress monitor(progress);
+            o.monitor = &monitor;
+            return runInterruptible(monitor, [&] { return meshTows(tows, report, o); });
+        }, py::arg("tows"), py::arg("report"), py::arg("options") = py::none(), py::arg("progress") = py::none(),
+        "The first half of resolve_textile: every tow meshed with the report's loops as constraints, no region shared yet "
+        "(then connect_regions). Options and progress as resolve_textile's.");
+    m.def("connect_regions", [](const std::vector<TowSurface>& tows, const ResolveResult& meshed, std::optional<ResolveOptions> options,
+                                py::object progress, const py::kwargs& keywords) {
+            ResolveOptions o = resolveOptions(options, keywords);
+            PythonProgress monitor(progress);
+            o.monitor = &monitor;
+            return runInterruptible(monitor, [&] { return connectRegions(tows, meshed, o); });
+        }, py::arg("tows"), py::arg("meshed"), py::arg("options") = py::none(), py::arg("progress") = py::none(),
+        "The second half: each overlap's surface shared by both tows in mesh_tows' result (given the same options).");
     // The peer of the binding's overhead benchmark (benchmarks/bench_python.py): the same call
     // made and timed in C++ alone (no worker thread, no conversions), its result dropped.
     m.def("_resolve_seconds_in_cpp", [](const std::vector<TowSurface>& tows, const IntersectionReport& report, const ResolveOptions& options) {

@@ -45,4 +45,5 @@ PYBIND11_MODULE(_towgeom, m)
     tp::bindResolve(m);
     tp::bindVolumes(m);
     tp::bindGenerate(m);
+    tp::bindPlacement(m);
 }

@@ -1,0 +1,93 @@
+"""The cell, the two halves of resolve, and fibre placement from Python: against the command-line
+tool's numbers and closed forms."""
+
+import json
+import subprocess
+
+import numpy
+import pytest
+
+import towgeom
+from conftest import CLI
+
+
+@pytest.fixture(scope="module")
+def twill_6x6(tmp_path_factory):
+    """A 2/2 twill with a periodic unit cell (6 x 6 yarns), from Python and from the CLI."""
+    out = tmp_path_factory.mktemp("twill_6x6")
+    textile = towgeom.generate_weave(kind="twill", warps=6, wefts=6, overlap=0.1)
+    subprocess.run([CLI, "generate", "--weave", "twill", "--tows", "6x6", "--overlap", "0.1", "--out", str(out), "--quiet"], check=True)
+    return textile, out
+
+
+def test_a_periodic_cell_from_python_as_from_the_cli(twill_6x6):
+    textile, out = twill_6x6
+    cell = textile.unit_cell()
+    written = json.loads((out / "textile.json").read_text())["cell"]
+    assert cell.periodic and written["periodic"]
+    assert numpy.allclose(cell.min, written["min"], rtol=0, atol=1e-12) and numpy.allclose(cell.max, written["max"], rtol=0, atol=1e-12)
+    tows = [towgeom.TowSurface.fit(stack) for stack in textile.stacks()]
+    result = towgeom.resolve_textile(tows, edge_length=0.1, cell=cell)
+    stacks = sorted(str(p) for p in out.glob("*.stw"))
+    subprocess.run([CLI, "resolve", *stacks, "--mesh-size", "0.1", "--cell", str(out / "textile.json"), "--formats", "vtk", "--out",
+                    str(out / "resolved"), "--quiet"], check=True)
+    report = json.loads((out / "resolved" / "report.json").read_text())
+    names = [tow.name for tow in result.mesh.tows]
+    assert names == [tow["name"] for tow in report["tows"]]
+    assert len(result.mesh.nodes) == report["node_count"]
+    assert len(result.mesh.regions) == len(report["regions"])
+    # Every node inside the box (the cut puts nodes on its faces exactly).
+    lo, hi = numpy.array(cell.min), numpy.array(cell.max)
+    assert (result.mesh.nodes >= lo - 1e-9 * numpy.abs(hi - lo).max()).all()
+    assert (result.mesh.nodes <= hi + 1e-9 * numpy.abs(hi - lo).max()).all()
+
+
+def test_mesh_tows_then_connect_regions_is_resolve_textile(twill_tows):
+    report = towgeom.intersect_tows(twill_tows)
+    meshed = towgeom.mesh_tows(twill_tows, report, edge_length=0.2)
+    assert len(meshed.mesh.regions) == 0
+    connected = towgeom.connect_regions(twill_tows, meshed, edge_length=0.2)
+    whole = towgeom.resolve_textile(twill_tows, report, edge_length=0.2)
+    assert len(connected.mesh.regions) == len(whole.mesh.regions) == 16
+    assert numpy.array_equal(connected.mesh.nodes, whole.mesh.nodes)
+    for a, b in zip(connected.mesh.tows, whole.mesh.tows):
+        assert numpy.array_equal(a.triangles, b.triangles)
+
+
+def cylinder_grid(radius=10.0, length=40.0, nu=41, nv=33):
+    """Half a cylinder about the x axis: (x, R cos t, R sin t), t in [0, pi]; v fastest."""
+    x = numpy.linspace(0.0, length, nu)
+    t = numpy.linspace(0.0, numpy.pi, nv)
+    grid = numpy.empty((nu, nv, 3))
+    grid[..., 0] = x[:, None]
+    grid[..., 1] = radius * numpy.cos(t)[None, :]
+    grid[..., 2] = radius * numpy.sin(t)[None, :]
+    return grid
+
+
+def test_courses_on_a_cylinder_as_the_cli_lays_them_and_as_the_closed_form(tmp_path):
+    grid = cylinder_grid()
+    surface = towgeom.fit_placement_surface(grid)
+    # The hoop circle x = 20 as reference: geodesic offsets along the axis are the circles
+    # x = 20 + k W (the cylinder is developable, its hoops geodesically parallel).
+    reference = towgeom.reference_from_plane(surface, (20.0, 0.0, 10.0), (1.0, 0.0, 0.0), points=41)
+    plan = towgeom.lay_courses(surface, reference, tow_width=2.0, tows_per_course=3, courses=1, method="geodesic")
+    assert [t.name for t in plan.tows] == ["c1_t1", "c1_t2", "c1_t3"]
+    offsets = sorted(numpy.median(t.centreline.points[:, 0]) - 20.0 for t in plan.tows)
+    assert numpy.allclose(offsets, [-2.0, 0.0, 2.0], rtol=0, atol=1e-6)
+    for tow in plan.tows:
+        x = tow.centreline.points[:, 0]
+        assert numpy.ptp(x) < 1e-6
+    for gap in plan.gaps:
+        assert abs(gap["min"]) < 1e-6 and abs(gap["max"]) < 1e-6
+    # The CLI on the same grid: the same centrelines.
+    lines = ["grid 41 33"] + [f"{p[0]!r} {p[1]!r} {p[2]!r}" for p in grid.reshape(-1, 3)]
+    (tmp_path / "half.grid").write_text("\n".join(lines) + "\n")
+    subprocess.run([CLI, "courses", str(tmp_path / "half.grid"), "--reference", "plane:20,0,10,1,0,0", "--tow-width", "2", "--tows", "3",
+                    "--exact", "--out", str(tmp_path / "plan"), "--quiet"], check=True, capture_output=True)
+    written = json.loads((tmp_path / "plan" / "courses.json").read_text())
+    from_python = json.loads(plan.to_json())
+    assert len(written["tows"]) == len(from_python["tows"]) == 3
+    for a, b in zip(written["tows"], from_python["tows"]):
+        assert a["name"] == b["name"]
+        assert numpy.abs(numpy.array(a["centreline"]["points"]) - numpy.array(b["centreline"]["points"])).max() < 1e-12
