@@ -79,3 +79,27 @@ def test_meshio_round_trip_keeps_nodes_and_cells(twill_tows, tmp_path):
         assert back.enclosed_volume(k) == pytest.approx(mesh.enclosed_volume(k), rel=1e-12)
     with pytest.raises(ValueError, match="node"):
         towgeom.TextileMesh.from_arrays(numpy.zeros((3, 3)), [("t", numpy.array([[0, 1, 3]]))])
+
+
+def test_a_stack_from_a_texgen_style_list_of_sections():
+    class XYZ:  # TexGen's point type: attributes x, y, z
+        def __init__(self, x, y, z):
+            self.x, self.y, self.z = x, y, z
+
+    radius, length = 0.5, 4.0
+    sections = []
+    for i, x in enumerate(numpy.linspace(0.0, length, 9)):
+        n = 48 + 8 * (i % 3)  # 48, 56 or 64 points: different in neighbouring sections
+        t = numpy.linspace(0.0, 2.0 * numpy.pi, n, endpoint=False)
+        sections.append([XYZ(x, radius * numpy.cos(a), radius * numpy.sin(a)) for a in t])
+    with pytest.raises(ValueError, match="points=N"):
+        towgeom.stack_from_sections("yarn", sections)
+    stack = towgeom.stack_from_sections("yarn", sections, points=48)
+    assert (stack.section_count, stack.points_per_section) == (9, 48)
+    tow = towgeom.TowSurface.fit(stack)
+    # Resampled points lie on the input polygons' chords, at most r (1 - cos(pi / 48)) inside the
+    # circle: the volume at most 2 (1 - cos(pi / 48)) = 4.3e-3 below pi r^2 L, and not above it.
+    exact = numpy.pi * radius**2 * length
+    assert 1.0 - 2.0 * (1.0 - numpy.cos(numpy.pi / 48)) < tow.volume() / exact < 1.0
+    same = towgeom.stack_from_sections("yarn", [[(p.x, p.y, p.z) for p in sections[0]]] * 2)
+    assert same.sections.shape == (2, 48, 3)

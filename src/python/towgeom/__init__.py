@@ -58,5 +58,43 @@ def _from_meshio(mesh, names=None):
     return TextileMesh.from_arrays(numpy.asarray(mesh.points, dtype=numpy.float64), list(zip(names, triangles)))
 
 
+def _as_xyz(point):
+    """(x, y, z) of a point given as a sequence or as an object with x, y, z (TexGen's XYZ)."""
+    if hasattr(point, "x"):
+        return (float(point.x), float(point.y), float(point.z))
+    return tuple(float(c) for c in point)
+
+
+def _resample_closed(polygon, count):
+    """COUNT points equally spaced by arc length around a closed polygon, from its first point."""
+    import numpy
+
+    closed = numpy.vstack([polygon, polygon[:1]])
+    along = numpy.concatenate([[0.0], numpy.cumsum(numpy.linalg.norm(numpy.diff(closed, axis=0), axis=1))])
+    at = numpy.linspace(0.0, along[-1], count, endpoint=False)
+    return numpy.column_stack([numpy.interp(at, along, closed[:, k]) for k in range(3)])
+
+
+def stack_from_sections(name, sections, points=None):
+    """A Stack from a list of yarn sections, as textile modellers give them (TexGen's slave
+    nodes' section points, a micro-CT tool's contours): each section a sequence of 3D points
+    (tuples, arrays, or objects with x, y, z), in order around the yarn, not repeating the
+    first point at the end.
+
+    Sections with different numbers of points need POINTS: each closed polygon is then resampled
+    to POINTS points equally spaced by arc length from its first point (corners between samples
+    are cut). Without it they must all have the same number, or ValueError says how many each has.
+    """
+    import numpy
+
+    polygons = [numpy.array([_as_xyz(p) for p in section], dtype=numpy.float64) for section in sections]
+    counts = sorted({len(p) for p in polygons})
+    if points is not None:
+        polygons = [_resample_closed(p, int(points)) for p in polygons]
+    elif len(counts) > 1:
+        raise ValueError(f"the sections of '{name}' have {counts} points: give points=N to resample each to N")
+    return Stack(name, numpy.stack(polygons) if polygons else numpy.zeros((0, 0, 3)))
+
+
 TextileMesh.to_meshio = _to_meshio
 TextileMesh.from_meshio = staticmethod(_from_meshio)
