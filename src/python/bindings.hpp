@@ -19,6 +19,7 @@ void bindMeshes(py::module_& m);        // bind_meshes.cpp: TextileMesh and its 
 void bindResolve(py::module_& m);       // bind_resolve.cpp: resolve_textile, its options and result
 void bindVolumes(py::module_& m);       // bind_meshes.cpp: mesh_volumes, write_vtu (after bindResolve)
 void bindGenerate(py::module_& m);      // bind_generate.cpp: generate_weave
+void bindExports(py::module_& m);       // bind_exports.cpp: per-tow VTK/STL, volume writers, STEP (after bindVolumes)
 void bindPlacement(py::module_& m);     // bind_placement.cpp: tool surfaces, references, lay_courses
 
 /// Sets each keyword argument on @p options (an instance of a bound options class), looking

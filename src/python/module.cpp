@@ -44,6 +44,7 @@ PYBIND11_MODULE(_towgeom, m)
     tp::bindMeshes(m);
     tp::bindResolve(m);
     tp::bindVolumes(m);
+    tp::bindExports(m);
     tp::bindGenerate(m);
     tp::bindPlacement(m);
 }
