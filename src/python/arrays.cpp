@@ -30,9 +30,12 @@ std::vector<Point3> toPoints(const DoubleArray& array, const std::string& what)
     return points;
 }
 
-std::vector<std::array<std::size_t, 3>> toTriangles(const py::array_t<long long, py::array::c_style | py::array::forcecast>& array,
-                                                    std::size_t nodeCount, const std::string& what)
+std::vector<std::array<std::size_t, 3>> toTriangles(const py::handle& indices, std::size_t nodeCount, const std::string& what)
 {
+    const py::array given = py::array::ensure(indices);
+    if (!given || (given.dtype().kind() != 'i' && given.dtype().kind() != 'u'))
+        throw py::type_error(what + ": triangles must be an array of integer node indices");
+    const auto array = given.cast<py::array_t<long long, py::array::c_style | py::array::forcecast>>();
     if (array.ndim() != 2 || array.shape(1) != 3)
         throw py::value_error(what + " must be an (n, 3) array of node indices");
     std::vector<std::array<std::size_t, 3>> triangles(static_cast<std::size_t>(array.shape(0)));

@@ -61,8 +61,8 @@ py::array_t<std::size_t> trianglesArray(const std::vector<std::array<std::size_t
 /// The rows of an (n, 3) array as points; throws ValueError naming @p what for another shape.
 std::vector<Point3> toPoints(const DoubleArray& array, const std::string& what);
 
-/// The rows of an (n, 3) integer array as index triples, each checked against @p nodeCount.
-std::vector<std::array<std::size_t, 3>> toTriangles(const py::array_t<long long, py::array::c_style | py::array::forcecast>& array,
-                                                    std::size_t nodeCount, const std::string& what);
+/// The rows of an (n, 3) array of integers as index triples, each checked against @p nodeCount;
+/// TypeError for floating-point or other non-integer arrays (no silent truncation).
+std::vector<std::array<std::size_t, 3>> toTriangles(const py::handle& indices, std::size_t nodeCount, const std::string& what);
 
 }  // namespace towgeom::python

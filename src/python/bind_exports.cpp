@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "path_argument.hpp"
 #include "towgeom/mesh_export.hpp"
 #include "towgeom/stl_writer.hpp"
 #include "towgeom/trimmed_brep.hpp"
@@ -25,19 +26,20 @@ const TowMesh& towOf(const TextileMesh& mesh, std::size_t tow)
 void bindMeshWriters(py::module_& m)
 {
     py::class_<TextileMesh> mesh = py::reinterpret_borrow<py::class_<TextileMesh>>(m.attr("TextileMesh"));
-    mesh.def("write_tow_vtk", [](const TextileMesh& mesh, std::size_t tow, const std::string& path) {
-                writeVtk(mesh.closedTowSurface(tow), path, towOf(mesh, tow).name);
+    mesh.def("write_tow_vtk", [](const TextileMesh& mesh, std::size_t tow, const Path& path) {
+                writeVtk(mesh.closedTowSurface(tow), path.text, towOf(mesh, tow).name);
             }, py::arg("tow"), py::arg("path"), py::call_guard<py::gil_scoped_release>(),
             "Writes tow TOW's closed surface as legacy VTK polydata.")
-        .def("write_tow_stl", [](const TextileMesh& mesh, std::size_t tow, const std::string& path) {
+        .def("write_tow_stl", [](const TextileMesh& mesh, std::size_t tow, const Path& path) {
                 towOf(mesh, tow);
-                writeStl(mesh.closedTowSurface(tow), path);
+                writeStl(mesh.closedTowSurface(tow), path.text);
             }, py::arg("tow"), py::arg("path"), py::call_guard<py::gil_scoped_release>(), "Writes tow TOW's closed surface as binary STL.")
-        .def("write_gmsh_volumes", py::overload_cast<const TextileMesh&, const VolumeMesh&, const std::string&>(&writeGmsh), py::arg("volumes"),
+        .def("write_gmsh_volumes", [](const TextileMesh& mesh, const VolumeMesh& volumes, const Path& path) { writeGmsh(mesh, volumes, path.text); },
+             py::arg("volumes"),
              py::arg("path"), py::call_guard<py::gil_scoped_release>(), "Writes the surfaces and the tetrahedra (mesh_volumes) as one Gmsh .msh.")
-        .def("write_abaqus_volumes", [](const TextileMesh& mesh, const VolumeMesh& volumes, const std::string& path, bool periodic) {
-                if (periodic) writeAbaqusPeriodic(mesh, volumes, path);
-                else writeAbaqus(mesh, volumes, path);
+        .def("write_abaqus_volumes", [](const TextileMesh& mesh, const VolumeMesh& volumes, const Path& path, bool periodic) {
+                if (periodic) writeAbaqusPeriodic(mesh, volumes, path.text);
+                else writeAbaqus(mesh, volumes, path.text);
             }, py::arg("volumes"), py::arg("path"), py::arg("periodic") = false, py::call_guard<py::gil_scoped_release>(),
             "Writes the tetrahedra as an Abaqus/CalculiX .inp; periodic=True adds the periodic cell's node pairs (*EQUATION).");
 }
@@ -56,9 +58,9 @@ void bindBrep(py::module_& m)
         .def_property_readonly("solids", &TrimmedBrep::solids)
         .def_property_readonly("shared_face_count", &TrimmedBrep::sharedFaceCount)
         .def_property_readonly("matrix", &TrimmedBrep::matrix)
-        .def("write_step", py::overload_cast<const std::string&>(&TrimmedBrep::writeStep, py::const_), py::arg("path"),
+        .def("write_step", [](const TrimmedBrep& b, const Path& path) { b.writeStep(path.text); }, py::arg("path"),
              py::call_guard<py::gil_scoped_release>(), "Writes the solids as STEP (AP214, named).")
-        .def("write_brep", py::overload_cast<const std::string&>(&TrimmedBrep::writeBrep, py::const_), py::arg("path"),
+        .def("write_brep", [](const TrimmedBrep& b, const Path& path) { b.writeBrep(path.text); }, py::arg("path"),
              py::call_guard<py::gil_scoped_release>(), "Writes OpenCASCADE's native .brep.");
     const BrepOptions defaults;
     m.def("trimmed_brep", [](const std::vector<TowSurface>& tows, const ResolveResult& resolved, double tolerance, double relativeTolerance,

@@ -52,7 +52,7 @@ void bindGenerate(py::module_& m)
 {
     bindWeaveOptions(m);
     py::class_<Textile>(m, "Textile", "A generated textile: its yarns as stacks.")
-        .def_readonly("options", &Textile::options)
+        .def_property_readonly("options", [](const Textile& t) { return t.options; }, "A copy of the options that made it.")
         .def_property_readonly("names", [](const Textile& t) {
             py::list out;
             for (const GeneratedYarn& y : t.yarns) out.append(y.name);

@@ -9,6 +9,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "path_argument.hpp"
 #include "interruptible.hpp"
 #include "towgeom/intersection_report_json.hpp"
 #include "towgeom/tow_intersection.hpp"
@@ -71,6 +72,13 @@ void bindOptions(py::module_& m)
         .def_readwrite("threads", &IntersectionOptions::threads, "Worker threads (0: all hardware threads).");
 }
 
+LoopSide sideNamed(const std::string& side)
+{
+    if (side == "a" || side == "A") return LoopSide::A;
+    if (side == "b" || side == "B") return LoopSide::B;
+    throw py::value_error("side is 'a' or 'b', not '" + side + "'");
+}
+
 void bindLoop(py::module_& m)
 {
     py::class_<IntersectionLoop>(m, "IntersectionLoop", "One intersection curve of two tows, in 3D and in both tows' (u, v).")
@@ -84,10 +92,10 @@ void bindLoop(py::module_& m)
         .def_property_readonly("uv_b", [](const IntersectionLoop& l) { return loopColumns(l, 2); }, "(u, v) on tow B, (n, 2).")
         .def("length", &IntersectionLoop::length)
         .def("winds_around", [](const IntersectionLoop& l, const std::string& side) {
-                return l.windsAround(side == "a" || side == "A" ? LoopSide::A : LoopSide::B);
+                return l.windsAround(sideNamed(side));
             }, py::arg("side"), "Whether the curve goes around tow 'a' or 'b' (around its v direction).")
         .def("max_distance", [](const IntersectionLoop& l, const std::string& side) {
-                return l.maxDistance(side == "a" || side == "A" ? LoopSide::A : LoopSide::B);
+                return l.maxDistance(sideNamed(side));
             }, py::arg("side"), "Largest distance of the points to tow 'a' or 'b'.")
         .def("__repr__", [](const IntersectionLoop& l) {
             return "<towgeom.IntersectionLoop tows " + std::to_string(l.towA()) + "-" + std::to_string(l.towB()) + ", " +
@@ -119,20 +127,19 @@ void bindReport(py::module_& m)
                 writeIntersectionReport(r, tows, out);
                 return out.str();
             }, py::arg("tows"), "The report as JSON text (the CLI's report format).")
-        .def("write", py::overload_cast<const IntersectionReport&, const std::vector<TowSurface>&, const std::string&>(&writeIntersectionReport),
-             py::arg("tows"), py::arg("path"), "Writes the report as JSON.")
+        .def("write", [](const IntersectionReport& r, const std::vector<TowSurface>& tows, const Path& path) { writeIntersectionReport(r, tows, path.text); },
+             py::arg("tows"), py::arg("path"), py::call_guard<py::gil_scoped_release>(), "Writes the report as JSON.")
+        .def_static("from_json", [](const std::string& text, const std::vector<TowSurface>& tows) {
+                std::istringstream in(text);
+                return readIntersectionReport(in, tows, "<json text>");
+            }, py::arg("text"), py::arg("tows"), py::call_guard<py::gil_scoped_release>(), "A report from to_json()'s text, for the same tows.")
         .def("__len__", [](const IntersectionReport& r) { return r.loops.size(); })
         .def("__repr__", [](const IntersectionReport& r) {
             return "<towgeom.IntersectionReport: " + std::to_string(r.loops.size()) + " loops, " + std::to_string(r.openCount()) + " open>";
         });
-    m.def("read_intersection_report", [](const std::string& pathOrJson, const std::vector<TowSurface>& tows) {
-            if (!pathOrJson.empty() && pathOrJson.front() == '{') {
-                std::istringstream in(pathOrJson);
-                return readIntersectionReport(in, tows, "<json text>");
-            }
-            return readIntersectionReport(pathOrJson, tows);
-        }, py::arg("path_or_json"), py::arg("tows"), py::call_guard<py::gil_scoped_release>(),
-        "Reads a report written by IntersectionReport.write() (a path) or to_json() (the text) for the same tows.");
+    m.def("read_intersection_report", [](const Path& path, const std::vector<TowSurface>& tows) { return readIntersectionReport(path.text, tows); },
+          py::arg("path"), py::arg("tows"), py::call_guard<py::gil_scoped_release>(),
+          "Reads a report written by IntersectionReport.write() (or the CLI) for the same tows.");
 }
 
 }  // namespace

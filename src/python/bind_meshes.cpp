@@ -11,6 +11,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "path_argument.hpp"
 #include "towgeom/mesh_export.hpp"
 #include "towgeom/resolve.hpp"
 #include "towgeom/textile_mesh.hpp"
@@ -41,19 +42,43 @@ py::list towMeshes(py::object self)
     return out;
 }
 
-/// A mesh made from arrays: nodes (n, 3) and per tow a (name, triangles (m, 3)) pair; every
-/// triangle on the tow's side surface, in no region.
-TextileMesh meshFromArrays(const DoubleArray& nodes, const std::vector<std::pair<std::string, py::object>>& tows)
+/// Per triangle values of a tow given from Python: an integer array of @p count entries.
+std::vector<long long> perTriangle(const py::handle& values, std::size_t count, const std::string& what)
+{
+    const py::array given = py::array::ensure(values);
+    if (!given || (given.dtype().kind() != 'i' && given.dtype().kind() != 'u') || given.ndim() != 1 ||
+        static_cast<std::size_t>(given.shape(0)) != count)
+        throw py::type_error(what + " must be an integer array of one entry per triangle (" + std::to_string(count) + ")");
+    const auto array = given.cast<py::array_t<long long, py::array::c_style | py::array::forcecast>>();
+    return {array.data(), array.data() + count};
+}
+
+/// A mesh made from arrays: nodes (n, 3) and per tow a tuple (name, triangles (m, 3)[, region
+/// (m,)[, face (m,)]]): regions -1 and side faces where not given.
+TextileMesh meshFromArrays(const DoubleArray& nodes, const std::vector<py::tuple>& tows)
 {
     TextileMesh mesh;
     mesh.nodes = toPoints(nodes, "nodes");
-    for (const auto& [name, triangles] : tows) {
+    for (const py::tuple& given : tows) {
+        if (given.size() < 2 || given.size() > 4) throw py::type_error("each tow is (name, triangles[, region[, face]])");
         TowMesh tow;
-        tow.name = name;
-        tow.triangles = toTriangles(triangles.cast<py::array_t<long long, py::array::c_style | py::array::forcecast>>(), mesh.nodes.size(),
-                                    "tow '" + name + "'");
-        tow.region.assign(tow.triangles.size(), -1);
-        tow.face.assign(tow.triangles.size(), TowFace::Side);
+        tow.name = given[0].cast<std::string>();
+        const std::string what = "tow '" + tow.name + "'";
+        tow.triangles = toTriangles(given[1], mesh.nodes.size(), what);
+        const std::size_t m = tow.triangles.size();
+        tow.region.assign(m, -1);
+        tow.face.assign(m, TowFace::Side);
+        if (given.size() > 2) {
+            const std::vector<long long> region = perTriangle(given[2], m, what + "'s region");
+            for (std::size_t t = 0; t < m; ++t) tow.region[t] = static_cast<long>(region[t]);
+        }
+        if (given.size() > 3) {
+            const std::vector<long long> face = perTriangle(given[3], m, what + "'s face");
+            for (std::size_t t = 0; t < m; ++t) {
+                if (face[t] < 0 || face[t] > static_cast<long long>(TowFace::Cell)) throw py::value_error(what + ": a face is 0 to 3 (FACE_NAMES)");
+                tow.face[t] = static_cast<TowFace>(face[t]);
+            }
+        }
         mesh.tows.push_back(std::move(tow));
     }
     return mesh;
@@ -112,11 +137,34 @@ void bindRegion(py::module_& m)
         .def_readonly("note", &ConnectedRegion::note);
 }
 
+void bindCellMesh(py::module_& m)
+{
+    py::class_<CellMesh>(m, "CellMesh", "The faces of a cell's box meshed around the tows (the matrix's boundary).")
+        .def_readonly("box", &CellMesh::box)
+        .def_property_readonly("triangles", [](py::object self) { return trianglesView(self.cast<CellMesh&>().triangles, self); },
+                               "(m, 3) node indices into TextileMesh.nodes (view).")
+        .def_property_readonly("face", [](py::object self) {
+                const auto& f = self.cast<CellMesh&>().face;
+                return vectorView(reinterpret_cast<const unsigned char*>(f.data()), f.size(), self);
+            }, "Per triangle the box's face: 0 xmin, 1 xmax, 2 ymin, 3 ymax, 4 zmin, 5 zmax (uint8 view).")
+        .def_property_readonly("periodic_pairs", [](const CellMesh& c) {
+                py::list out;
+                for (const auto& pairs : c.periodicPairs) {
+                    py::array_t<std::size_t> a({pairs.size(), std::size_t{2}});
+                    std::size_t* o = a.mutable_data();
+                    for (const auto& [lo, hi] : pairs) *o++ = lo, *o++ = hi;
+                    out.append(a);
+                }
+                return out;
+            }, "For x, y and z: the node pairs (min face, max face) a periodic cell's faces match, three (k, 2) arrays.");
+}
+
 void bindTextileMesh(py::module_& m)
 {
     py::class_<TextileMesh>(m, "TextileMesh", "The tows' compatible surface meshes: one node array, triangles per tow.")
         .def_static("from_arrays", &meshFromArrays, py::arg("nodes"), py::arg("tows"),
-                    "A mesh from nodes (n, 3) and a list of (name, triangles (m, 3)) pairs, e.g. read back from meshio.")
+                    "A mesh from nodes (n, 3) and per tow a tuple (name, triangles (m, 3)[, region (m,)[, face (m,)]]), "
+                    "e.g. read back from meshio; regions -1 and side faces where not given.")
         .def_property_readonly("nodes", [](py::object self) { return pointsView(self.cast<TextileMesh&>().nodes, self); },
                                "(n, 3) float64 node positions, a read-only view.")
         .def_property_readonly("tows", &towMeshes, "The tows' meshes, in input order.")
@@ -126,6 +174,11 @@ void bindTextileMesh(py::module_& m)
                 for (ConnectedRegion& r : mesh.regions) out.append(py::cast(&r, py::return_value_policy::reference_internal, self));
                 return out;
             })
+        .def_property_readonly("cell", [](py::object self) -> py::object {
+                const auto& cell = self.cast<TextileMesh&>().cell;
+                if (!cell) return py::none();
+                return py::cast(&*cell, py::return_value_policy::reference_internal, self);
+            }, "The cell's faces (a CellMesh) when the meshes were clipped to a cell, else None.")
         .def("tow_surface", [](const TextileMesh& mesh, std::size_t tow) {
                 if (tow >= mesh.tows.size()) throw py::index_error("tow " + std::to_string(tow) + " of " + std::to_string(mesh.tows.size()));
                 const TriangleMesh s = mesh.towSurface(tow);
@@ -135,9 +188,9 @@ void bindTextileMesh(py::module_& m)
                 if (tow >= mesh.tows.size()) throw py::index_error("tow " + std::to_string(tow) + " of " + std::to_string(mesh.tows.size()));
                 return enclosedVolume(mesh.closedTowSurface(tow));
             }, py::arg("tow"), "Volume enclosed by tow TOW's closed mesh.")
-        .def("write_gmsh", py::overload_cast<const TextileMesh&, const std::string&>(&writeGmsh), py::arg("path"),
+        .def("write_gmsh", [](const TextileMesh& mesh, const Path& path) { writeGmsh(mesh, path.text); }, py::arg("path"),
              py::call_guard<py::gil_scoped_release>(), "Writes a Gmsh .msh (4.1) file: one physical surface per tow.")
-        .def("write_abaqus", py::overload_cast<const TextileMesh&, const std::string&>(&writeAbaqus), py::arg("path"),
+        .def("write_abaqus", [](const TextileMesh& mesh, const Path& path) { writeAbaqus(mesh, path.text); }, py::arg("path"),
              py::call_guard<py::gil_scoped_release>(), "Writes an Abaqus/CalculiX .inp of the surfaces.")
         .def("__repr__", [](const TextileMesh& mesh) {
             return "<towgeom.TextileMesh: " + std::to_string(mesh.nodes.size()) + " nodes, " + std::to_string(mesh.tows.size()) + " tows, " +
@@ -158,6 +211,13 @@ void bindVolumeMesh(py::module_& m)
                 const auto& t = self.cast<VolumeMesh&>().tow;
                 return vectorView(t.data(), t.size(), self);
             }, "Per tetrahedron its tow index (the number of tows for a cell's matrix).")
+        .def_property_readonly("edge_nodes", [](py::object self) {
+                const auto& e = self.cast<VolumeMesh&>().edgeNodes;
+                return rowsView(e.empty() ? nullptr : e.front().data(), e.size(), 6, self);
+            }, "Quadratic tetrahedra (order=2): per tetrahedron its edges' middle nodes, (k, 6) in the order (0,1), (1,2), (2,0), "
+               "(0,3), (1,3), (2,3) (Abaqus C3D10, VTK); empty for linear ones.")
+        .def_property_readonly("fibre_direction", [](py::object self) { return pointsView(self.cast<VolumeMesh&>().fibreDirection, self); },
+                               "Per tetrahedron its unit fibre direction once add_fibre_directions() set them, (k, 3); empty before.")
         .def_readonly("with_matrix", &VolumeMesh::withMatrix)
         .def_readonly("gmsh_seconds", &VolumeMesh::gmshSeconds)
         .def("tow_volume", &VolumeMesh::towVolume, py::arg("tow"))
@@ -170,6 +230,7 @@ void bindMeshes(py::module_& m)
 {
     bindTowMesh(m);
     bindRegion(m);
+    bindCellMesh(m);
     bindTextileMesh(m);
     bindVolumeMesh(m);
 }
@@ -184,7 +245,9 @@ void bindVolumes(py::module_& m)
         }, py::arg("result"), py::arg("optimize") = defaults.optimize, py::arg("order") = defaults.order, py::arg("threads") = defaults.threads,
         py::arg("growth_rate") = defaults.growthRate, py::arg("max_size") = defaults.maxSize, py::call_guard<py::gil_scoped_release>(),
         "Tetrahedra inside the resolved surfaces (Gmsh's HXT); raises towgeom.Error where tows still overlap.");
-    m.def("write_vtu", py::overload_cast<const TextileMesh&, const VolumeMesh&, const std::string&>(&writeVtu), py::arg("mesh"),
+    m.def("add_fibre_directions", &addFibreDirections, py::arg("volumes"), py::arg("tows"), py::arg("threads") = 0,
+          py::call_guard<py::gil_scoped_release>(), "Sets each tetrahedron's fibre direction from its tow's surface.");
+    m.def("write_vtu", [](const TextileMesh& mesh, const VolumeMesh& volumes, const Path& path) { writeVtu(mesh, volumes, path.text); }, py::arg("mesh"),
           py::arg("volumes"), py::arg("path"), py::call_guard<py::gil_scoped_release>(), "Writes the tetrahedra as a VTK .vtu file.");
 }
 

@@ -9,6 +9,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "path_argument.hpp"
 #include "towgeom/fibre_courses.hpp"
 #include "towgeom/placement_surface.hpp"
 #include "towgeom/reference_curve.hpp"
@@ -45,7 +46,8 @@ void bindCurves(py::module_& m)
         .def_readonly("face", &PlacementSurface::face, "Which face of the file (0-based).")
         .def_readonly("face_count", &PlacementSurface::faceCount, "Faces in the file (0 for a grid).")
         .def_readonly("fit_deviation", &PlacementSurface::fitDeviation, "Largest distance of a grid's points from the surface fitted to them.");
-    m.def("read_placement_surface", py::overload_cast<const std::string&, std::size_t>(&readPlacementSurface), py::arg("path"), py::arg("face") = 0,
+    m.def("read_placement_surface", [](const Path& path, std::size_t face) { return readPlacementSurface(path.text, face); }, py::arg("path"),
+          py::arg("face") = 0,
           py::call_guard<py::gil_scoped_release>(), "Face FACE of a STEP or IGES file (or a .grid file of points) as a tool surface.");
     m.def("fit_placement_surface", [](const DoubleArray& grid, double tolerance) {
             if (grid.ndim() != 3 || grid.shape(2) != 3) throw py::value_error("grid must be an array of shape (nu, nv, 3)");

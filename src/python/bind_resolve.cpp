@@ -54,36 +54,6 @@ const char* skippedReasonName(SkippedLoop::Reason reason)
 
 using Triple = std::array<double, 3>;
 
-void bindCell(py::module_& m)
-{
-    py::class_<Cell>(m, "Cell", "A box the meshes are clipped to (an FE cell); periodic for a unit cell.")
-        .def(py::init([](const Triple& lo, const Triple& hi, bool periodic, const std::string& cut) {
-                 Cell c;
-                 c.min = {lo[0], lo[1], lo[2]};
-                 c.max = {hi[0], hi[1], hi[2]};
-                 c.periodic = periodic;
-                 c.cut = enumNamed(cut, {CellCut::Auto, CellCut::Parametric, CellCut::Mesh}, &cellCutName, "cell cut");
-                 c.validate();
-                 return c;
-             }), py::arg("min"), py::arg("max"), py::arg("periodic") = false, py::arg("cut") = "auto",
-             "The box from corner MIN to corner MAX; cut 'auto' (mesh for a box that is not periodic), 'parametric' or 'mesh'.")
-        .def_property_readonly("min", [](const Cell& c) { return Triple{c.min.x, c.min.y, c.min.z}; })
-        .def_property_readonly("max", [](const Cell& c) { return Triple{c.max.x, c.max.y, c.max.z}; })
-        .def_readwrite("periodic", &Cell::periodic)
-        .def_property("cut", [](const Cell& c) { return cellCutName(c.cut); },
-                      [](Cell& c, const std::string& name) { c.cut = enumNamed(name, {CellCut::Auto, CellCut::Parametric, CellCut::Mesh}, &cellCutName, "cell cut"); })
-        .def_readwrite("period_tolerance", &Cell::periodTolerance)
-        .def_readwrite("face_size_growth", &Cell::faceSizeGrowth)
-        .def_readwrite("face_size_max", &Cell::faceSizeMax)
-        .def("volume", &Cell::volume)
-        .def("__repr__", [](const Cell& c) {
-            std::ostringstream out;
-            out << "<towgeom.Cell (" << c.min.x << ", " << c.min.y << ", " << c.min.z << ") - (" << c.max.x << ", " << c.max.y << ", " << c.max.z
-                << ")" << (c.periodic ? ", periodic>" : ">");
-            return out.str();
-        });
-}
-
 void bindMeshOptions(py::module_& m)
 {
     py::class_<MeshOptions>(m, "MeshOptions", "Size and quality of the parametric surface meshes (keyword arguments set the same names).")
@@ -105,14 +75,29 @@ void bindMeshOptions(py::module_& m)
         .def_readwrite("relative_min_edge_length", &MeshOptions::relativeMinEdgeLength);
 }
 
+void bindShrinkOptions(py::module_& m)
+{
+    py::class_<ShrinkOptions>(m, "ShrinkOptions", "Options of resolve method 'shrink' (sections scaled down until the tows part).")
+        .def(py::init([](const py::kwargs& keywords) {
+            py::object options = py::cast(ShrinkOptions{});
+            applyKeywords(options, keywords);
+            return options.cast<ShrinkOptions>();
+        }))
+        .def_readwrite("both", &ShrinkOptions::both, "Shrink both tows of a pair by the same factor (default: the lower-ranked only).")
+        .def_readwrite("blend_length", &ShrinkOptions::blendLength, "Length over which the scale returns to 1 (0: the tow's size).")
+        .def_readwrite("tolerance", &ShrinkOptions::tolerance, "The bisection's tolerance on the scale.")
+        .def_readwrite("margin", &ShrinkOptions::margin, "Extra reduction that keeps a gap.")
+        .def_readwrite("min_scale", &ShrinkOptions::minScale, "The smallest scale tried.");
+}
+
 void bindResolveOptions(py::module_& m)
 {
     py::class_<ResolveOptions>(m, "ResolveOptions",
                                "Options of resolve_textile(); keyword arguments set these names, then MeshOptions' (mesh.*), "
-                               "then IntersectionOptions' (intersection.*).")
+                               "then IntersectionOptions' (intersection.*), then ShrinkOptions' (shrink.*).")
         .def(py::init([](const py::kwargs& keywords) {
             py::object options = py::cast(ResolveOptions{});
-            applyKeywords(options, keywords, {"mesh", "intersection"});
+            applyKeywords(options, keywords, {"mesh", "intersection", "shrink"});
             return options.cast<ResolveOptions>();
         }))
         .def_readwrite("mesh", &ResolveOptions::mesh)
@@ -122,7 +107,10 @@ void bindResolveOptions(py::module_& m)
                       [](ResolveOptions& o, const std::string& name) { o.method = methodNamed(name); },
                       "'connect' (the rank rule), 'symmetric' (mid-surfaces) or 'shrink' (sections scaled until apart).")
         .def_readwrite("threads", &ResolveOptions::threads, "Worker threads (0: all hardware threads).")
-        .def_readwrite("cell", &ResolveOptions::cell, "A Cell to clip the meshes to, or None.");
+        .def_readwrite("shrink", &ResolveOptions::shrink, "Options of method 'shrink'.")
+        .def_property("cell", [](const ResolveOptions& o) { return o.cell; },  // a copy: the optional may be reset
+                      [](ResolveOptions& o, std::optional<Cell> c) { o.cell = std::move(c); },
+                      "A Cell to clip the meshes to, or None (reading gives a copy: assign a changed one back).");
 }
 
 void bindResult(py::module_& m)
@@ -155,6 +143,14 @@ void bindResult(py::module_& m)
                     out.append(py::dict(py::arg("loop") = s.loop, py::arg("reason") = skippedReasonName(s.reason), py::arg("message") = s.message));
                 return out;
             }, "Loops not used as region boundaries, with why (dicts).")
+        .def_property_readonly("shrunk", [](const ResolveResult& r) {
+                py::list out;
+                for (const ShrunkTow& t : r.shrunk)
+                    out.append(py::dict(py::arg("section_scale") = py::array_t<double>(t.sectionScale.size(), t.sectionScale.data()),
+                                        py::arg("volume_before") = t.volumeBefore, py::arg("volume_after") = t.volumeAfter,
+                                        py::arg("stack") = t.stack));
+                return out;
+            }, "Method 'shrink': per tow its section scales, volumes and shrunk stack (dicts; empty otherwise).")
         .def_property_readonly("min_angle", [](const ResolveResult& r) { return r.quality.minAngle; }, "Smallest triangle angle, degrees.")
         .def_property_readonly("timings", [](const ResolveResult& r) {
                 return py::dict(py::arg("intersect") = r.timings.intersect, py::arg("mesh") = r.timings.mesh, py::arg("regions") = r.timings.regions);
@@ -169,7 +165,7 @@ void bindResult(py::module_& m)
 ResolveOptions resolveOptions(const std::optional<ResolveOptions>& options, const py::kwargs& keywords)
 {
     py::object chosen = py::cast(options.value_or(ResolveOptions{}));
-    applyKeywords(chosen, keywords, {"mesh", "intersection"});
+    applyKeywords(chosen, keywords, {"mesh", "intersection", "shrink"});
     return chosen.cast<ResolveOptions>();
 }
 
@@ -177,8 +173,8 @@ ResolveOptions resolveOptions(const std::optional<ResolveOptions>& options, cons
 
 void bindResolve(py::module_& m)
 {
-    bindCell(m);
     bindMeshOptions(m);
+    bindShrinkOptions(m);
     bindResolveOptions(m);
     bindResult(m);
     m.def("resolve_textile", [](const std::vector<TowSurface>& tows, std::optional<IntersectionReport> report, std::optional<ResolveOptions> options,
@@ -213,9 +209,39 @@ void bindResolve(py::module_& m)
     // made and timed in C++ alone (no worker thread, no conversions), its result dropped.
     m.def("_resolve_seconds_in_cpp", [](const std::vector<TowSurface>& tows, const IntersectionReport& report, const ResolveOptions& options) {
             const auto start = std::chrono::steady_clock::now();
-            const ResolveResult result = resolveTextile(tows, report, options);
+            resolveTextile(tows, report, options);  // the result dropped inside the timing, as the Python side's
             return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         }, py::arg("tows"), py::arg("report"), py::arg("options"), py::call_guard<py::gil_scoped_release>());
+}
+
+void bindCell(py::module_& m)
+{
+    py::class_<Cell>(m, "Cell", "A box the meshes are clipped to (an FE cell); periodic for a unit cell.")
+        .def(py::init([](const Triple& lo, const Triple& hi, bool periodic, const std::string& cut) {
+                 Cell c;
+                 c.min = {lo[0], lo[1], lo[2]};
+                 c.max = {hi[0], hi[1], hi[2]};
+                 c.periodic = periodic;
+                 c.cut = enumNamed(cut, {CellCut::Auto, CellCut::Parametric, CellCut::Mesh}, &cellCutName, "cell cut");
+                 c.validate();
+                 return c;
+             }), py::arg("min"), py::arg("max"), py::arg("periodic") = false, py::arg("cut") = "auto",
+             "The box from corner MIN to corner MAX; cut 'auto' (mesh for a box that is not periodic), 'parametric' or 'mesh'.")
+        .def_property_readonly("min", [](const Cell& c) { return Triple{c.min.x, c.min.y, c.min.z}; })
+        .def_property_readonly("max", [](const Cell& c) { return Triple{c.max.x, c.max.y, c.max.z}; })
+        .def_readwrite("periodic", &Cell::periodic)
+        .def_property("cut", [](const Cell& c) { return cellCutName(c.cut); },
+                      [](Cell& c, const std::string& name) { c.cut = enumNamed(name, {CellCut::Auto, CellCut::Parametric, CellCut::Mesh}, &cellCutName, "cell cut"); })
+        .def_readwrite("period_tolerance", &Cell::periodTolerance)
+        .def_readwrite("face_size_growth", &Cell::faceSizeGrowth)
+        .def_readwrite("face_size_max", &Cell::faceSizeMax)
+        .def("volume", &Cell::volume)
+        .def("__repr__", [](const Cell& c) {
+            std::ostringstream out;
+            out << "<towgeom.Cell (" << c.min.x << ", " << c.min.y << ", " << c.min.z << ") - (" << c.max.x << ", " << c.max.y << ", " << c.max.z
+                << ")" << (c.periodic ? ", periodic>" : ">");
+            return out.str();
+        });
 }
 
 }  // namespace towgeom::python

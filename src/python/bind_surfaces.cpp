@@ -9,6 +9,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "path_argument.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/stack_reader.hpp"
 #include "towgeom/tow_stack.hpp"
@@ -81,17 +82,17 @@ void bindStack(py::module_& m)
         .def_property_readonly("section_count", &TowStack::sectionCount)
         .def_property_readonly("points_per_section", &TowStack::pointsPerSection)
         .def("validate", &validateStack, "Raises towgeom.Error naming the first defect (the checks fit() makes).")
-        .def("write", [](const TowStack& s, const std::string& path) {
-                std::ofstream out(path);
-                if (!out) throw Error(ErrorCode::WriteFailed, "cannot open '" + path + "' for writing", path);
+        .def("write", [](const TowStack& s, const Path& path) {
+                std::ofstream out(path.text);
+                if (!out) throw Error(ErrorCode::WriteFailed, "cannot be opened for writing", path.text);
                 writeStack(out, s);
-                if (!out.flush()) throw Error(ErrorCode::WriteFailed, "writing '" + path + "' failed", path);
+                if (!out.flush()) throw Error(ErrorCode::WriteFailed, "writing failed", path.text);
             }, py::arg("path"), "Writes the stack as a .stw file.")
         .def("__repr__", [](const TowStack& s) {
             return "<towgeom.Stack '" + s.name + "': " + std::to_string(s.sectionCount()) + " sections of " +
                    std::to_string(s.pointsPerSection()) + " points>";
         });
-    m.def("read_stack", &readStackFile, py::arg("path"), py::call_guard<py::gil_scoped_release>(),
+    m.def("read_stack", [](const Path& path) { return readStackFile(path.text); }, py::arg("path"), py::call_guard<py::gil_scoped_release>(),
           "Reads a stack file (.stw); a defect raises towgeom.Error with the file and line.");
 }
 

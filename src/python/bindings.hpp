@@ -15,6 +15,7 @@ namespace py = pybind11;
 void bindErrors(py::module_& m);        // errors.cpp: towgeom.Error
 void bindSurfaces(py::module_& m);      // bind_surfaces.cpp: stacks and TowSurface
 void bindIntersections(py::module_& m); // bind_intersections.cpp: intersect_tows and its report
+void bindCell(py::module_& m);          // bind_resolve.cpp: Cell (before the meshes, which name it)
 void bindMeshes(py::module_& m);        // bind_meshes.cpp: TextileMesh and its writers
 void bindResolve(py::module_& m);       // bind_resolve.cpp: resolve_textile, its options and result
 void bindVolumes(py::module_& m);       // bind_meshes.cpp: mesh_volumes, write_vtu (after bindResolve)

@@ -3,6 +3,9 @@
 #include <pybind11/eval.h>
 #include <pybind11/pybind11.h>
 
+#include <optional>
+#include <string>
+
 #include "bindings.hpp"
 #include "towgeom/error.hpp"
 
@@ -12,6 +15,16 @@ namespace {
 
 PyObject* g_errorType = nullptr;  // towgeom.Error, owned by the module for the interpreter's life
 
+/// NAME of a text starting "tow 'NAME'" (the whole text, or followed by ':' or ' ').
+std::optional<std::string> towNamedIn(const std::string& text)
+{
+    if (text.compare(0, 5, "tow '") != 0) return std::nullopt;
+    const std::size_t close = text.find('\'', 5);
+    if (close == std::string::npos || close == 5) return std::nullopt;
+    if (close + 1 < text.size() && text[close + 1] != ':' && text[close + 1] != ' ') return std::nullopt;
+    return text.substr(5, close - 5);
+}
+
 void translateError(std::exception_ptr thrown)
 {
     try {
@@ -20,7 +33,13 @@ void translateError(std::exception_ptr thrown)
         py::object error = py::reinterpret_borrow<py::object>(g_errorType)(e.what());
         error.attr("code") = errorCodeName(e.code());
         error.attr("message") = e.message();
-        error.attr("file") = e.file().empty() ? py::object(py::none()) : py::object(py::str(e.file()));
+        // The library names the tow an error is about where a file's error names the file
+        // ("tow 'NAME'"), or at the start of its message ("tow 'NAME': ...").
+        const std::string& where = e.file();
+        const std::optional<std::string> towInFile = towNamedIn(where), towInMessage = towNamedIn(e.message());
+        const std::optional<std::string> tow = towInFile ? towInFile : towInMessage;
+        error.attr("tow") = tow ? py::object(py::str(*tow)) : py::object(py::none());
+        error.attr("file") = where.empty() || towInFile ? py::object(py::none()) : py::object(py::str(where));
         error.attr("line") = e.line() ? py::object(py::int_(e.line())) : py::object(py::none());
         PyErr_SetObject(g_errorType, error.ptr());
     }
@@ -39,12 +58,14 @@ class Error(RuntimeError):
             ("non_numeric", "invalid_argument", "cancelled", ...).
         message: the sentence without the file and line.
         file: the file the error is in, or None.
+        tow: the tow the error is about (its name), or None.
         line: the 1-based line in that file, or None.
     """
     code = "internal"
     message = ""
     file = None
     line = None
+    tow = None
 )", m.attr("__dict__"));
     m.attr("Error").attr("__module__") = "towgeom";
     g_errorType = m.attr("Error").ptr();

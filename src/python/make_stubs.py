@@ -19,6 +19,8 @@ MODULE = "towgeom._towgeom"
 def clean(text):
     """pybind11's qualified names as the stub spells them."""
     text = text.replace(MODULE + ".", "")
+    text = text.replace("List[float[3]]", "Tuple[float, float, float]")
+    text = text.replace("progress: object", "progress: Optional[Callable[[str, int, int], object]]")
     return re.sub(r"\bnumpy\.ndarray\[[^\]]*\]", "numpy.ndarray", text)
 
 
@@ -95,7 +97,7 @@ def main():
     sys.path[:] = [p for p in sys.path if pathlib.Path(p or ".").resolve() != here]
     module = importlib.import_module(MODULE)
     parts = ['"""Type stubs of towgeom._towgeom, written by src/python/make_stubs.py from the built module."""',
-             "from typing import Any, Callable, Dict, List, Optional, Tuple, overload", "import numpy", "",
+             "import os", "from typing import Any, Callable, Dict, List, Optional, Tuple, Union, overload", "import numpy", "",
              f"__version__: str", f"FACE_NAMES: Tuple[str, ...]", ""]
     for name, value in sorted(vars(module).items()):
         if name.startswith("__"):

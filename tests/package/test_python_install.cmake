@@ -1,18 +1,15 @@
-# The Python package as `cmake --install BUILD --component python` installs it (into
-# site-packages, here under a DESTDIR with the library beside it): it imports from there alone,
-# finds the installed libtowgeom through its RUNPATH, and fits the bundled straight tube to the
-# volume the C++ consumers print (consumer_common.cmake).
-#   -DBUILD_DIR=... -DPYTHON=... -DSITE=<site-packages> -DEXAMPLE=<straight_tube.stw> -DWORK=...
+# The Python package as `cmake --install` installs it under a prefix (here a scratch one, as a
+# user's --prefix): it imports from there alone, finds the installed libtowgeom through its
+# relative RUNPATH, and fits the bundled straight tube to the volume the C++ consumers print
+# (consumer_common.cmake).
+#   -DBUILD_DIR=... -DPYTHON=... -DSITE=<package dir relative to the prefix> -DEXAMPLE=<straight_tube.stw> -DWORK=...
 include("${CMAKE_CURRENT_LIST_DIR}/consumer_common.cmake")
 file(REMOVE_RECURSE "${WORK}")
-set(ENV{DESTDIR} "${WORK}/root")
-run(${CMAKE_COMMAND} --install "${BUILD_DIR}")
-run(${CMAKE_COMMAND} --install "${BUILD_DIR}" --component python)
-unset(ENV{DESTDIR})
-set(ENV{PYTHONPATH} "${WORK}/root${SITE}")
+run(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${WORK}/prefix")
+set(ENV{PYTHONPATH} "${WORK}/prefix/${SITE}")
 set(ENV{PYTHONDONTWRITEBYTECODE} 1)
 run("${PYTHON}" -c "import towgeom
-assert towgeom.__file__.startswith('${WORK}/root'), towgeom.__file__
+assert towgeom.__file__.startswith('${WORK}/prefix'), towgeom.__file__
 tow = towgeom.TowSurface.fit(towgeom.read_stack('${EXAMPLE}'))
 print(tow.name, repr(tow.volume()))")
 string(REGEX MATCH "^straight_tube ([0-9.]+)" matched "${last_output}")

@@ -24,8 +24,8 @@ def test_a_stack_from_an_array_round_trips(tmp_path):
     stack, array = circle_stack("tube")
     assert (stack.section_count, stack.points_per_section) == (6, 12)
     assert numpy.array_equal(stack.sections, array)
-    stack.write(str(tmp_path / "tube.stw"))
-    assert numpy.array_equal(towgeom.read_stack(str(tmp_path / "tube.stw")).sections, array)
+    stack.write(tmp_path / "tube.stw")  # str or any os.PathLike
+    assert numpy.array_equal(towgeom.read_stack(tmp_path / "tube.stw").sections, array)
     with pytest.raises(ValueError):
         towgeom.Stack("flat", numpy.zeros((6, 12)))
 
@@ -46,6 +46,21 @@ def test_evaluation_broadcasts_and_matches_the_closed_form():
     assert tow.volume() == pytest.approx(numpy.pi * 0.25 * 5.0, rel=1e-4)
     vertices, triangles = tow.tessellate(10, 16)
     assert triangles.max() < len(vertices)
+
+
+def test_first_arrays_made_on_several_threads_at_once_do_not_deadlock():
+    import subprocess
+    import sys
+
+    # A fresh interpreter (NumPy not imported by the test) whose threads make their first arrays
+    # together: pybind11 sets NumPy up lazily unless the module does it at import.
+    script = (
+        "import threading, towgeom\n"
+        "stacks = towgeom.generate_weave(kind='plain', warps=2, wefts=2).stacks()\n"
+        "threads = [threading.Thread(target=lambda: [s.sections for s in stacks]) for _ in range(4)]\n"
+        "[t.start() for t in threads]; [t.join() for t in threads]; print('done')\n")
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=60)
+    assert done.stdout.strip() == "done"
 
 
 def test_mesh_arrays_are_read_only_views_that_keep_the_result_alive(twill_tows):
@@ -75,10 +90,14 @@ def test_meshio_round_trip_keeps_nodes_and_cells(twill_tows, tmp_path):
     assert [tow.name for tow in back.tows] == [tow.name for tow in mesh.tows]
     for a, b in zip(mesh.tows, back.tows):
         assert numpy.array_equal(a.triangles, b.triangles)
+        assert numpy.array_equal(a.region, b.region) and numpy.array_equal(a.face, b.face)
+    assert any((tow.region >= 0).any() for tow in back.tows)  # the regions came back, not all -1
     for k in range(len(mesh.tows)):
         assert back.enclosed_volume(k) == pytest.approx(mesh.enclosed_volume(k), rel=1e-12)
     with pytest.raises(ValueError, match="node"):
         towgeom.TextileMesh.from_arrays(numpy.zeros((3, 3)), [("t", numpy.array([[0, 1, 3]]))])
+    with pytest.raises(TypeError, match="integer"):  # no silent truncation of float indices
+        towgeom.TextileMesh.from_arrays(numpy.zeros((3, 3)), [("t", numpy.array([[0.2, 1.7, 2.9]]))])
 
 
 def test_a_stack_from_a_texgen_style_list_of_sections():

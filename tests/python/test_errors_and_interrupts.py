@@ -43,35 +43,63 @@ def test_keywords_reach_the_nested_options():
     assert (options.method, options.threads) == ("symmetric", 1)
 
 
+def test_errors_name_the_tow_they_are_about():
+    textile = towgeom.generate_weave(kind="twill", warps=4, wefts=4, overlap=0.1)
+    tows = [towgeom.TowSurface.fit(stack) for stack in textile.stacks()]
+    # A periodic cell the 4 x 4 twill does not repeat with: refused, naming the first such tow.
+    with pytest.raises(towgeom.Error) as caught:
+        towgeom.resolve_textile(tows, cell=towgeom.Cell((0.5, 0.5, -1.0), (1.5, 1.5, 1.0), periodic=True))
+    assert caught.value.code == "invalid_argument"
+    assert caught.value.tow in textile.names and str(caught.value).startswith(f"tow '{caught.value.tow}'")
+    assert caught.value.file is None
+
+
 def test_ctrl_c_during_resolve_raises_within_a_second(twill_tows):
+    """SIGINT sent (a real signal, as a terminal's Ctrl-C) when the meshing stage starts, from the
+    progress callable: the KeyboardInterrupt must follow within a second."""
     sent = []
 
-    def interrupt():
-        time.sleep(0.5)
-        sent.append(time.monotonic())
-        os.kill(os.getpid(), signal.SIGINT)
+    def interrupt_when_meshing(stage, done, total):
+        if not sent and stage.startswith("meshing tows"):
+            sent.append(time.monotonic())
+            os.kill(os.getpid(), signal.SIGINT)
 
     # A mesh fine enough to take several seconds (about 4 s on the 2-core machine).
-    killer = threading.Thread(target=interrupt)
-    killer.start()
     with pytest.raises(KeyboardInterrupt):
-        towgeom.resolve_textile(twill_tows, edge_length=0.03)
+        towgeom.resolve_textile(twill_tows, edge_length=0.03, progress=interrupt_when_meshing)
     stopped = time.monotonic()
-    killer.join()
-    assert sent, "the resolve finished before the signal"
+    assert sent, "the meshing stage never reported progress"
     assert stopped - sent[0] < 1.0
 
 
-def test_progress_reaches_python_and_its_exception_stops_the_work(twill_tows):
-    seen = []
-    towgeom.intersect_tows(twill_tows, progress=lambda stage, done, total: seen.append((stage, done, total)))
+def test_progress_reaches_python_on_the_calling_thread_and_its_exception_stops_the_work(twill_tows):
+    seen, threads = [], set()
+
+    def record(stage, done, total):
+        seen.append((stage, done, total))
+        threads.add(threading.get_ident())
+
+    towgeom.intersect_tows(twill_tows, progress=record)
     assert seen and all(done <= total for _, done, total in seen)
+    assert threads == {threading.get_ident()}  # never on the library's threads
 
     class Enough(Exception):
         pass
 
+    calls = []
+
     def stop(stage, done, total):
+        calls.append(stage)
         raise Enough(stage)
 
+    start = time.monotonic()
+    towgeom.resolve_textile(twill_tows, edge_length=0.05)
+    whole = time.monotonic() - start
+    start = time.monotonic()
     with pytest.raises(Enough):
-        towgeom.resolve_textile(twill_tows, edge_length=0.1, progress=stop)
+        towgeom.resolve_textile(twill_tows, edge_length=0.05, progress=stop)
+    stopped = time.monotonic() - start
+    assert len(calls) == 1  # no update after the exception
+    assert stopped < 0.5 * whole  # the work was cancelled, not run to its end
+    with pytest.raises(TypeError, match="progress"):
+        towgeom.intersect_tows(twill_tows, progress=5)

@@ -66,15 +66,19 @@ def test_meshes_match_the_cli(resolved, cli_twill_report):
         assert all(tuple(sorted(t)) in secondary for t in primary.tolist())
 
 
-def test_report_json_round_trip(twill_tows, resolved):
+def test_report_json_round_trip(twill_tows, resolved, tmp_path):
     report = resolved.intersections
-    back = towgeom.read_intersection_report(report.to_json(twill_tows), twill_tows)
+    back = towgeom.IntersectionReport.from_json(report.to_json(twill_tows), twill_tows)
     assert len(back.loops) == len(report.loops)
     for a, b in zip(report.loops, back.loops):
         assert (a.tow_a, a.tow_b) == (b.tow_a, b.tow_b)
         assert numpy.array_equal(a.uv_a, b.uv_a) and numpy.array_equal(a.points, b.points)
     again = towgeom.resolve_textile(twill_tows, back, edge_length=TWILL_MESH_SIZE)
     assert numpy.array_equal(again.mesh.nodes, resolved.mesh.nodes)
+    # As a file, named by a pathlib.Path (any os.PathLike is a path).
+    path = tmp_path / "report.json"
+    report.write(twill_tows, path)
+    assert len(towgeom.read_intersection_report(path, twill_tows).loops) == len(report.loops)
 
 
 def test_generated_weave_as_the_cli_generates_it(tmp_path):

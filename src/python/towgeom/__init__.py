@@ -15,10 +15,10 @@ on Ctrl-C with KeyboardInterrupt. Errors of the library raise towgeom.Error, who
 line say what and where.
 """
 
+import numpy  # noqa: F401  (before the extension: its arrays need NumPy set up on this thread)
+
 from ._towgeom import *  # noqa: F401,F403
 from ._towgeom import TextileMesh, __version__  # noqa: F401
-
-__all__ = [name for name in dir() if not name.startswith("_")]
 
 
 def _to_meshio(self):
@@ -41,21 +41,40 @@ def _to_meshio(self):
 def _from_meshio(mesh, names=None):
     """A TextileMesh from a meshio.Mesh: its triangles split into tows by the cell data "tow"
     (as to_meshio() writes it; writers such as VTU's merge the blocks) or else one tow per
-    "triangle" block; named by NAMES, the field data "tow_names", or tow_0, tow_1, ..."""
+    "triangle" block, with the cell data "region" and "face" where present. Named by NAMES, the
+    field data "tow_names" (kept by meshio's own formats, lost by VTU and VTK), or tow_0, ...
+    Other cell types (a Gmsh file's lines and tetrahedra) are ignored."""
     import numpy
 
     indices = [k for k, block in enumerate(mesh.cells) if block.type == "triangle"]
-    triangles = [numpy.asarray(mesh.cells[k].data, dtype=numpy.int64) for k in indices]
-    if "tow" in mesh.cell_data:
-        tow_of = numpy.concatenate([numpy.asarray(mesh.cell_data["tow"][k]).ravel() for k in indices])
-        every = numpy.concatenate(triangles) if triangles else numpy.zeros((0, 3), dtype=numpy.int64)
-        triangles = [every[tow_of == t] for t in range(int(tow_of.max()) + 1 if len(tow_of) else 0)]
+
+    def gathered(key):
+        if key not in mesh.cell_data:
+            return None
+        return numpy.concatenate([numpy.asarray(mesh.cell_data[key][k]).ravel() for k in indices]).astype(numpy.int64)
+
+    blocks = [numpy.asarray(mesh.cells[k].data, dtype=numpy.int64) for k in indices]
+    every = numpy.concatenate(blocks) if blocks else numpy.zeros((0, 3), dtype=numpy.int64)
+    tow_of = gathered("tow")
+    if tow_of is None:
+        tow_of = numpy.concatenate([numpy.full(len(b), k, dtype=numpy.int64) for k, b in enumerate(blocks)]) if blocks else numpy.zeros(0, numpy.int64)
+    count = int(tow_of.max()) + 1 if len(tow_of) else 0
+    region, face = gathered("region"), gathered("face")
     if names is None:
         stored = mesh.field_data.get("tow_names") if mesh.field_data else None
-        names = [str(n) for n in stored] if stored is not None and len(stored) == len(triangles) else [f"tow_{k}" for k in range(len(triangles))]
-    if len(names) != len(triangles):
-        raise ValueError(f"{len(names)} names for {len(triangles)} tows")
-    return TextileMesh.from_arrays(numpy.asarray(mesh.points, dtype=numpy.float64), list(zip(names, triangles)))
+        names = [str(n) for n in stored] if stored is not None and len(stored) == count else [f"tow_{k}" for k in range(count)]
+    if len(names) != count:
+        raise ValueError(f"{len(names)} names for {count} tows")
+    tows = []
+    for k, name in enumerate(names):
+        mine = tow_of == k
+        entry = [name, every[mine]]
+        if region is not None:
+            entry.append(region[mine])
+            if face is not None:
+                entry.append(face[mine])
+        tows.append(tuple(entry))
+    return TextileMesh.from_arrays(numpy.asarray(mesh.points, dtype=numpy.float64), tows)
 
 
 def _as_xyz(point):
@@ -98,3 +117,5 @@ def stack_from_sections(name, sections, points=None):
 
 TextileMesh.to_meshio = _to_meshio
 TextileMesh.from_meshio = staticmethod(_from_meshio)
+
+__all__ = [name for name in dir() if not name.startswith("_") and name != "numpy"]
