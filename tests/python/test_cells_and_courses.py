@@ -36,6 +36,16 @@ def test_a_periodic_cell_from_python_as_from_the_cli(twill_6x6):
     assert names == [tow["name"] for tow in report["tows"]]
     assert len(result.mesh.nodes) == report["node_count"]
     assert len(result.mesh.regions) == len(report["regions"])
+    # The periodic faces' node pairs lie one period apart, on the same place of both faces.
+    faces = result.mesh.cell
+    assert faces is not None and len(faces.triangles) > 0
+    period = numpy.array(cell.max) - numpy.array(cell.min)
+    for axis, pairs in enumerate(faces.periodic_pairs):
+        assert len(pairs) > 0
+        shift = result.mesh.nodes[pairs[:, 1].astype(numpy.int64)] - result.mesh.nodes[pairs[:, 0].astype(numpy.int64)]
+        expected = numpy.zeros(3)
+        expected[axis] = period[axis]
+        assert numpy.abs(shift - expected).max() < 1e-9 * period.max()
     # Every node inside the box (the cut puts nodes on its faces exactly).
     lo, hi = numpy.array(cell.min), numpy.array(cell.max)
     assert (result.mesh.nodes >= lo - 1e-9 * numpy.abs(hi - lo).max()).all()

@@ -58,3 +58,16 @@ def test_the_trimmed_brep_keeps_the_primaries_exact_and_gmsh_reads_its_step(twil
     read = subprocess.run(["gmsh", str(path), "-0", "-o", str(written)], capture_output=True, text=True)
     assert read.returncode == 0 and "Error" not in read.stdout + read.stderr
     assert len(re.findall(r"^So", written.read_text(), flags=re.M)) == len(twill_tows)
+
+
+def test_quadratic_tetrahedra_have_their_middle_nodes_on_straight_edges(twill_tows):
+    resolved = towgeom.resolve_textile(twill_tows[:1] + twill_tows[4:5], edge_length=0.3)
+    volumes = towgeom.mesh_volumes(resolved, order=2, threads=1)
+    tets, middles, nodes = volumes.tetrahedra.astype(numpy.int64), volumes.edge_nodes.astype(numpy.int64), volumes.nodes
+    assert middles.shape == (len(tets), 6)
+    edges = [(0, 1), (1, 2), (2, 0), (0, 3), (1, 3), (2, 3)]  # Abaqus C3D10's order
+    for k, (a, b) in enumerate(edges):
+        midpoint = 0.5 * (nodes[tets[:, a]] + nodes[tets[:, b]])
+        assert numpy.abs(nodes[middles[:, k]] - midpoint).max() < 1e-12 * numpy.ptp(nodes, axis=0).max()
+    towgeom.add_fibre_directions(volumes, twill_tows[:1] + twill_tows[4:5])
+    assert numpy.allclose(numpy.linalg.norm(volumes.fibre_direction, axis=1), 1.0, rtol=0, atol=1e-12)
