@@ -177,18 +177,23 @@ TEST_CASE("a plane reference cuts the surface, points are projected onto it, bot
     bad.towWidth = 0.3;
     bad.courses = 0;
     CHECK_THROWS_AS(layCourses(s, ring, bad), Error);
-    // A course that runs off the surface names the tow.
+    // Courses that run off the surface end the plan: the ring at z = 1.2 on a cylinder 3 high,
+    // courses 1 apart: the second at z = 2.2 or 0.2, the third off (z = 3.2 or -0.8), the fourth
+    // not tried; the second's outer edge (z = 2.7 or -0.3) on the surface or wholly off it (empty).
     CourseOptions wide;
-    wide.towWidth = 3.0;
-    wide.courses = 3;
-    wide.method = SurfaceOffsetMethod::Geodesic;  // the third course's outer edge passes the seam
-    try {
-        layCourses(s, line, wide);
-        FAIL("no error");
-    } catch (const Error& e) {
-        CHECK(e.code() == ErrorCode::InvalidArgument);
-        INFO(e.what());
-        CHECK(std::string(e.what()).find("tow c3_t1's") != std::string::npos);
+    wide.towWidth = 1.0;
+    wide.courses = 4;
+    wide.method = SurfaceOffsetMethod::Geodesic;
+    const CoursePlan plan = layCourses(s, ring, wide);
+    CHECK(plan.offSurface == std::vector<std::string>{"c3", "c4"});
+    REQUIRE(plan.tows.size() == 2);
+    const double z2 = plan.tows[1].centreline.points.front().z;
+    CHECK((std::abs(z2 - 2.2) <= 1e-9 || std::abs(z2 - 0.2) <= 1e-9));
+    const CurveOnSurface& outer = plan.tows[1].left;  // courses go to the left: so does the outer edge
+    if (z2 > 1.2) {
+        for (const Point3& p : outer.points) CHECK(std::abs(p.z - 2.7) <= 1e-9);
+    } else {
+        CHECK(outer.points.empty());
     }
 }
 

@@ -62,7 +62,9 @@ struct TowPath {
     CurveOnSurface centreline;   ///< where the head lays its middle
     CourseStep step;             ///< how the centreline was placed from its course's centreline
     /// Its right edge: the centreline's exact (geodesic) offset by -W/2. With the left edge, the
-    /// band the tow covers, W wide along the surface whatever the planning method.
+    /// band the tow covers, W wide along the surface whatever the planning method. Cut at the
+    /// face's boundary like the centreline; empty (as is its curve) where the whole edge lies
+    /// off the face (a tow laid along the boundary, overhanging it).
     CurveOnSurface right;
     CurveOnSurface left;  ///< its left edge: the centreline's geodesic offset by +W/2
     /// The right edge as a curve on the surface: the cubic B-spline in the surface's (u,v)
@@ -70,6 +72,13 @@ struct TowPath {
     /// chord length.
     NurbsCurve rightCurve;
     NurbsCurve leftCurve;  ///< the left edge likewise
+    double length = 0.0;   ///< the centreline's length along the surface
+    /// Where the centreline starts on the face's boundary: the side of the parameter box
+    /// ("u_min", "u_max", "v_min", "v_max") at which it was cut (its offset left the face) or to
+    /// which it was carried (its course's curve starts on that side, the offset inside it);
+    /// empty where it starts as its course's curve does.
+    std::string startBoundary;
+    std::string endBoundary;  ///< likewise for its end
 };
 
 /// The gap (positive) or overlap (negative) between two neighbouring tows, measured along the
@@ -99,6 +108,9 @@ struct CoursePlan {
     SurfaceOffsetMethod method = SurfaceOffsetMethod::ProjectTangent;  ///< as used
     double largestStepError = 0.0;  ///< the largest | |d| - true distance | over every step
     bool withinTolerance = true;    ///< whether largestStepError <= tolerance
+    /// The courses and tows (by name) that lie off the surface entirely, not laid: a course
+    /// whose centreline leaves the face ends the plan (no later course is tried).
+    std::vector<std::string> offSurface;
 };
 
 /// Lays @p options.courses courses of @p options.towsPerCourse tows on @p surface from
@@ -108,12 +120,25 @@ struct CoursePlan {
 /// (i - (N - 1) / 2) x spacing (one step each, as a head lays a course: the step's error does not
 /// add up across a course, but from course to course it does). Each tow's edges are then its
 /// centreline's exact offsets by -+W/2, and the gaps between neighbours are measured
-/// (TowGap). Every curve has the reference's number of points, point i of each offset from point
-/// i of the curve before.
+/// (TowGap). Point i of each offset curve is offset from point i of the curve before, except at
+/// the face's boundary:
+/// - **Trimmed, not refused**: where offsets leave the face, the longest run of points that
+///   stays on it is kept and ended exactly where the offset meets the boundary (the base point
+///   found by bisection on the base curve's cubic interpolation); where the curve offset from
+///   runs to the boundary and its offset stops inside, the offset is carried on along its end
+///   direction by a geodesic to the boundary (those points' step distances are NaN). Each tow's
+///   TowPath::startBoundary / endBoundary say where, TowPath::length how long it is. Courses and
+///   tows wholly off the face are listed in CoursePlan::offSurface. The boundary is the face's
+///   parameter box (its trimming curves are not kept: see PlacementSurface).
+/// - **Seams**: where the surface closes smoothly (a cylinder's, sphere's or torus's angle; see
+///   NurbsSurface::point()) curves and geodesics cross the seam, their u (or v) running on past
+///   the box, and a closed reference (last point = first) gives closed courses.
+/// - **Poles**: a geodesic that meets a point where the parametrisation is singular (a sphere's
+///   pole) is refused, the message naming the place.
 /// @throws towgeom::Error (InvalidArgument) for a non-positive width, no tows or courses, a
-///         negative spacing or tolerance, a reference of fewer than 4 points, or an offset that
-///         leaves the surface (the message names the course or tow); (Internal) if OpenCASCADE
-///         fails.
+///         negative spacing or tolerance, a reference of fewer than 4 points, no tow left on the
+///         surface, or a singular point met (the message names the course or tow); (Internal)
+///         if OpenCASCADE fails.
 TOWGEOM_EXPORT CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& reference, const CourseOptions& options);
 
 /// Writes @p plan as JSON: {"method", "tow_width", "spacing", "tolerance", "largest_step_error",
@@ -121,9 +146,10 @@ TOWGEOM_EXPORT CoursePlan layCourses(const NurbsSurface& surface, const CurveOnS
 /// "from", "distance", "centreline":{"uv","points"}, "geodesic_distance", "estimated_error"}],
 /// "tows":[{"name", "course", "from", "distance", "centreline", "right", "left",
 /// "right_curve":{"degree","knots","poles":[[u,v,weight],..]}, "left_curve",
-/// "geodesic_distance", "estimated_error"}], "gaps":[{"right", "left" (the tows' names),
-/// "between_courses", "min", "max", "measured", "width"}]} ("from": the curve a step started
-/// from; NaN widths as null).
+/// "geodesic_distance", "estimated_error", "length", "start_boundary", "end_boundary" (a side
+/// of the box or null)}], "gaps":[{"right", "left" (the tows' names), "between_courses", "min",
+/// "max", "measured", "width"}], "off_surface":[names]} ("from": the curve a step started from;
+/// NaN widths and distances as null).
 /// @throws towgeom::Error (InvalidArgument) for a plan whose gaps do not match its tows;
 ///         (WriteFailed) when the stream fails.
 TOWGEOM_EXPORT void writeCoursePlanJson(const CoursePlan& plan, std::ostream& out);

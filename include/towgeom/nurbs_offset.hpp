@@ -43,9 +43,13 @@ struct TOWGEOM_EXPORT NurbsSurface {
     std::size_t vCount = 0;         ///< poles in v
     std::vector<Point3> poles;      ///< uCount x vCount, pole (i, j) at i * vCount + j
     std::vector<double> weights;    ///< one per pole, > 0
-    /// The point at (@p u, @p v). @throws towgeom::Error (InvalidArgument) for an ill-formed surface.
+    /// The point at (@p u, @p v). Where the surface closes smoothly across its u (or v) ends (a
+    /// cylinder's, sphere's or torus's angle: end rows equal, the derivative across them
+    /// continuous) it is periodic there: u past the knots' range by whole periods is the same
+    /// point, as the parameters of fibre-placement curves that cross the seam are.
+    /// @throws towgeom::Error (InvalidArgument) for an ill-formed surface.
     Point3 point(double u, double v) const;
-    /// The unit normal dS/du x dS/dv / |...| at (@p u, @p v).
+    /// The unit normal dS/du x dS/dv / |...| at (@p u, @p v) (periodic as point()).
     Vector3 normal(double u, double v) const;
 };
 

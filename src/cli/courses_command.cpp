@@ -36,6 +36,16 @@ true distance along the surface is measured (geodesic shooting) next to the esti
 tow covers the band W wide about its centreline; the gap (+) or overlap (-) between
 neighbouring tows is measured along the surface at every centreline point.
 
+The face's boundary ends tows rather than refusing them: a tow whose offset leaves the face is
+cut exactly where it meets the boundary, and one whose course runs to the boundary is carried
+on to it (the summary's "trimmed" lists each such tow with its length and the side of the
+face's (u,v) box, "u_min", "u_max", "v_min" or "v_max", where it ends; "off_surface" the tows
+and courses wholly off the face). Where the face closes smoothly on itself (a cylinder's,
+sphere's or torus's angle) courses cross the seam, and a closed reference (a plane cut around
+a cylinder or through a sphere's equator) gives closed courses. A geodesic that meets a pole
+of the face's parametrisation (a sphere's) is refused, naming the place. The face's trimming
+curves are not used: its (u,v) box is the surface.
+
 With --angle THETA the plan is a laminate-family ply: the 0 degree tows are laid first (as
 above; at least two), a curve is traced from the middle of the first tow's centreline (c1_t1)
 across all their centrelines at THETA to every one (integrated on the surface), and the
@@ -56,7 +66,9 @@ and prints one JSON object on stdout:
 
   {"file", "face", "face_name", "method", "tows", "courses", "tow_width", "spacing", "tolerance",
    "largest_step_error", "within_tolerance", "gaps":[{"right", "left", "between_courses",
-   "min", "max"}], "angle":{"theta", "crossings":[{"curve", "angle"}]} (with --angle)}
+   "min", "max"}], "trimmed":[{"tow", "length", "start_boundary", "end_boundary"}],
+   "off_surface":[names], "no_ribbon":[names], "angle":{"theta", "crossings":[{"curve",
+   "angle"}]} (with --angle)}
 
 Options:
   --reference REF   the first course's centreline, one of:
@@ -261,7 +273,11 @@ int runCourses(int argc, char** argv, int first)
         section.width = options.towWidth;
         section.height = thickness;
         std::vector<TowStack> ribbons;
-        for (const TowPath& t : plan.tows) ribbons.push_back(towRibbon(tool.surface, t.centreline, section, 16, t.name));
+        std::vector<std::string> noRibbon;  // tows the face cut too short for a ribbon's sections
+        for (const TowPath& t : plan.tows) {
+            if (t.centreline.uv.size() < TowStack::kMinSections) noRibbon.push_back(t.name);
+            else ribbons.push_back(towRibbon(tool.surface, t.centreline, section, 16, t.name));
+        }
 
         report["method"] = plan.method == SurfaceOffsetMethod::Geodesic ? "geodesic" : "project_tangent";
         report["tows"] = options.towsPerCourse;
@@ -275,6 +291,15 @@ int runCourses(int argc, char** argv, int first)
         for (const TowGap& g : plan.gaps)
             report["gaps"].push_back({{"right", plan.tows[g.right].name}, {"left", plan.tows[g.left].name}, {"between_courses", g.betweenCourses},
                                       {"min", g.minWidth}, {"max", g.maxWidth}});
+        // Where the face's boundary ended a tow, and what it left off.
+        report["trimmed"] = Json::array();
+        for (const TowPath& t : plan.tows)
+            if (!t.startBoundary.empty() || !t.endBoundary.empty())
+                report["trimmed"].push_back({{"tow", t.name}, {"length", t.length},
+                                             {"start_boundary", t.startBoundary.empty() ? Json() : Json(t.startBoundary)},
+                                             {"end_boundary", t.endBoundary.empty() ? Json() : Json(t.endBoundary)}});
+        report["off_surface"] = plan.offSurface;
+        report["no_ribbon"] = noRibbon;
         if (angle) {
             Json crossings = Json::array();
             for (const FamilyCrossing& c : family.crossings) crossings.push_back({{"curve", c.curve}, {"angle", c.angle}});
@@ -296,6 +321,11 @@ int runCourses(int argc, char** argv, int first)
             if (entry.is_regular_file() && std::regex_match(name, std::regex("c[0-9]+_t[0-9]+\\.stw")) && !written.count(name))
                 std::filesystem::remove(entry.path());
         }
+        if (!plan.offSurface.empty() && !quiet)
+            std::cerr << "towgeom courses: note: " << plan.offSurface.size() << " course(s) or tow(s) lie off the face and were not laid (\"off_surface\")\n";
+        if (!noRibbon.empty())
+            std::cerr << "towgeom courses: warning: " << noRibbon.size() << " tow(s) cut by the face's boundary to fewer than " << TowStack::kMinSections
+                      << " points have no .stw ribbon (\"no_ribbon\"; give more --points)\n";
         if (!plan.withinTolerance)
             std::cerr << "towgeom courses: warning: a step is " << plan.largestStepError << " from its distance along the surface, more than --tolerance "
                       << plan.tolerance << " (--exact places them by geodesics)\n";

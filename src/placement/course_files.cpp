@@ -71,6 +71,9 @@ void writeCoursePlanJson(const CoursePlan& plan, std::ostream& out)
         e["left_curve"] = nurbsJson(t.leftCurve);
         e["geodesic_distance"] = t.step.geodesicDistance;
         e["estimated_error"] = t.step.estimatedError;
+        e["length"] = t.length;
+        e["start_boundary"] = t.startBoundary.empty() ? Json() : Json(t.startBoundary);
+        e["end_boundary"] = t.endBoundary.empty() ? Json() : Json(t.endBoundary);
         tows.push_back(std::move(e));
     }
     j["tows"] = std::move(tows);
@@ -84,6 +87,7 @@ void writeCoursePlanJson(const CoursePlan& plan, std::ostream& out)
                         {"measured", g.measured},
                         {"width", g.width}});
     j["gaps"] = std::move(gaps);
+    j["off_surface"] = plan.offSurface;
     out << j.dump(-1, ' ', false, Json::error_handler_t::replace) << "\n";
     if (!out) throw Error(ErrorCode::WriteFailed, "could not write the course plan's JSON");
 }

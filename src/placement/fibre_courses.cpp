@@ -14,6 +14,9 @@
 
 #include "placement/geodesics.hpp"
 #include "placement/nurbs_geometry.hpp"
+#include "placement/offset_point.hpp"
+#include "placement/periodic_surface.hpp"
+#include "placement/trimmed_offset.hpp"
 #include "placement/uv_interpolation.hpp"
 #include "surface/occt_convert.hpp"
 #include "towgeom/error.hpp"
@@ -25,38 +28,43 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-/// @p curve offset by @p d from the curve named @p from, with the step's record.
-std::pair<CurveOnSurface, CourseStep> offsetStep(const NurbsSurface& surface, const CurveOnSurface& curve, const std::string& from, double d,
-                                                 SurfaceOffsetMethod method, int steps, const std::string& what)
+/// @p curve offset by @p d from the curve named @p from, with the step's record: kept on the
+/// surface (cut at, or carried to, its boundary; see detail::offsetWithinSurface()).
+detail::TrimmedOffset offsetStep(const Handle(Geom_BSplineSurface)& s, const CurveOnSurface& curve, double d, SurfaceOffsetMethod method, int steps,
+                                 const std::string& what)
 {
-    CourseStep step;
-    step.from = from;
-    step.distance = d;
     if (d == 0.0) {
-        step.geodesicDistance.assign(curve.uv.size(), 0.0);
-        step.estimatedError.assign(curve.uv.size(), 0.0);
-        return {curve, step};
+        detail::TrimmedOffset same;
+        same.curve = curve;
+        same.geodesicDistance.assign(curve.uv.size(), 0.0);
+        same.estimatedError.assign(curve.uv.size(), 0.0);
+        return same;
     }
     SurfaceOffsetOptions o;
     o.method = method;
     o.geodesicSteps = steps;
     try {
-        SurfaceOffsetStep s = offsetOnSurface(surface, curve, d, o);
-        step.geodesicDistance = std::move(s.geodesicDistance);
-        step.estimatedError = std::move(s.estimatedError);
-        return {std::move(s.curve), step};
+        return detail::offsetWithinSurface(s, curve, d, o);
     } catch (const Error& e) {
         throw Error(e.code(), what + ": " + e.what());
     }
+}
+
+CourseStep stepRecord(const std::string& from, double d, detail::TrimmedOffset& t)
+{
+    CourseStep step;
+    step.from = from;
+    step.distance = d;
+    step.geodesicDistance = std::move(t.geodesicDistance);
+    step.estimatedError = std::move(t.estimatedError);
+    return step;
 }
 
 /// The cubic B-spline in (u,v) through @p uv (chord-length parameters), poles as (u, v, 0).
 /// @throws towgeom::Error (InvalidArgument) naming @p what when the points repeat.
 NurbsCurve parameterCurve(const std::vector<UV>& uv, const std::string& what)
 {
-    std::vector<double> params{0.0};
-    for (std::size_t i = 1; i < uv.size(); ++i) params.push_back(params.back() + std::hypot(uv[i].u - uv[i - 1].u, uv[i].v - uv[i - 1].v));
-    const Handle(Geom2d_BSplineCurve) c = detail::interpolateUV(uv, params);
+    const Handle(Geom2d_BSplineCurve) c = detail::interpolateUV(uv, detail::chordParameters(uv));
     if (c.IsNull()) throw Error(ErrorCode::InvalidArgument, what + ": its points repeat (the reference's points must be distinct)");
     NurbsCurve out;
     out.degree = c->Degree();
@@ -69,50 +77,34 @@ NurbsCurve parameterCurve(const std::vector<UV>& uv, const std::string& what)
     return out;
 }
 
-/// Signed distance in (u,v) of @p p from the polyline @p line (positive to its left) and whether
-/// its nearest point lies within the polyline (not beyond an end).
-std::pair<double, bool> sideOf(const std::vector<UV>& line, const UV& p)
-{
-    double best = std::numeric_limits<double>::infinity(), signedBest = 0.0;
-    bool within = false;
-    for (std::size_t k = 0; k + 1 < line.size(); ++k) {
-        const double ax = line[k].u, ay = line[k].v, dx = line[k + 1].u - ax, dy = line[k + 1].v - ay;
-        const double len2 = dx * dx + dy * dy;
-        if (!(len2 > 0.0)) continue;
-        const double raw = ((p.u - ax) * dx + (p.v - ay) * dy) / len2, t = std::clamp(raw, 0.0, 1.0);
-        const double d = std::hypot(p.u - (ax + t * dx), p.v - (ay + t * dy));
-        if (d < best) {
-            best = d;
-            signedBest = (dx * (p.v - ay) - dy * (p.u - ax)) / std::sqrt(len2);
-            const double slack = 1e-9;
-            within = (k > 0 || raw >= -slack) && (k + 2 < line.size() || raw <= 1.0 + slack);
-        }
-    }
-    return {signedBest, within};
-}
-
 /// The width between tow @p a (right) and tow @p b (left) at each of a's centreline points.
 TowGap measureGap(const Handle(Geom_BSplineSurface)& s, const TowPath& a, const TowPath& b, double width, double spacing, int steps)
 {
     TowGap gap;
     const std::size_t n = a.centreline.uv.size();
+    // b's centreline as its (u,v) cubic: where a perpendicular meets it between its points (as at
+    // ends the boundary cut, where the two tows' points do not pair up) its polyline would be off by
+    // the chords' sagitta.
+    const Handle(Geom2d_BSplineCurve) other = detail::interpolateUV(b.centreline.uv, detail::chordParameters(b.centreline.uv));
+    const auto sideOf = [&](const UV& p) { return detail::sideOfCurve(other, p); };
+    const std::vector<gp_Vec> tangents = detail::curveTangents(s, a.centreline);
     gap.width.assign(n, kNaN);
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < n && !other.IsNull(); ++i) {
         try {
             const UV at = a.centreline.uv[i];
             const detail::SurfaceFrame f = detail::frameAt(s, at.u, at.v);
-            gp_Vec t(detail::toOcct(a.centreline.points[i > 0 ? i - 1 : i]), detail::toOcct(a.centreline.points[i + 1 < n ? i + 1 : i]));
+            gp_Vec t = tangents[i];
             t -= f.n * t.Dot(f.n);
             if (!(t.Magnitude() > 0.0)) continue;
             const gp_Vec o = f.n.Crossed(t.Normalized());
             bool within = false;  // whether the last shot's nearest point on b lies within b
             const auto g = [&](double length) {
-                const auto [side, inside] = sideOf(b.centreline.uv, detail::shootGeodesic(s, at, o, length, steps));
+                const auto [side, inside] = sideOf(detail::shootGeodesic(s, at, o, length, steps));
                 within = inside;
                 return side;
             };
             // Bracket the crossing: the point itself lies to the right of b.
-            double lo = 0.0, glo = sideOf(b.centreline.uv, at).first, hi = spacing, ghi = g(hi);
+            double lo = 0.0, glo = sideOf(at).first, hi = spacing, ghi = g(hi);
             if (!(glo < 0.0)) continue;
             for (int grow = 0; ghi < 0.0 && grow < 4; ++grow) lo = hi, glo = ghi, hi *= 1.5, ghi = g(hi);
             if (!(ghi >= 0.0)) continue;
@@ -176,7 +168,7 @@ CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& referen
         if (i > 0 && distance(reference.points[i], reference.points[i - 1]) == 0.0)
             throw Error(ErrorCode::InvalidArgument, "layCourses: reference points " + std::to_string(i - 1) + " and " + std::to_string(i) + " coincide");
     }
-    const Handle(Geom_BSplineSurface) s = detail::occtSurface(surface);
+    const Handle(Geom_BSplineSurface) s = detail::toolSurface(surface);
     CoursePlan plan;
     plan.reference = reference;
     plan.towWidth = w;
@@ -194,8 +186,13 @@ CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& referen
                 centre.step.from = "reference";
             } else {
                 const CourseCentre& last = plan.courses.back();
-                std::tie(centre.curve, centre.step) =
-                    offsetStep(surface, last.curve, last.name, nTows * plan.spacing, options.method, steps, "course " + centre.name);
+                detail::TrimmedOffset next = offsetStep(s, last.curve, nTows * plan.spacing, options.method, steps, "course " + centre.name);
+                if (next.curve.uv.size() < 2) {  // off the surface: the plan ends here
+                    for (std::size_t k = c; k < options.courses; ++k) plan.offSurface.push_back("c" + std::to_string(k + 1));
+                    break;
+                }
+                centre.curve = next.curve;
+                centre.step = stepRecord(last.name, nTows * plan.spacing, next);
             }
             plan.courses.push_back(centre);
             for (std::size_t i = 0; i < nTows; ++i) {
@@ -203,14 +200,29 @@ CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& referen
                 tow.name = centre.name + "_t" + std::to_string(i + 1);
                 tow.course = c;
                 const double d = (static_cast<double>(i) - 0.5 * static_cast<double>(nTows - 1)) * plan.spacing;
-                std::tie(tow.centreline, tow.step) = offsetStep(surface, centre.curve, centre.name, d, options.method, steps, "tow " + tow.name);
-                tow.right = offsetStep(surface, tow.centreline, tow.name, -0.5 * w, SurfaceOffsetMethod::Geodesic, steps, "tow " + tow.name + "'s right edge").first;
-                tow.left = offsetStep(surface, tow.centreline, tow.name, 0.5 * w, SurfaceOffsetMethod::Geodesic, steps, "tow " + tow.name + "'s left edge").first;
-                tow.rightCurve = parameterCurve(tow.right.uv, "tow " + tow.name + "'s right edge");
-                tow.leftCurve = parameterCurve(tow.left.uv, "tow " + tow.name + "'s left edge");
+                detail::TrimmedOffset line = offsetStep(s, centre.curve, d, options.method, steps, "tow " + tow.name);
+                if (line.curve.uv.size() < 2) {
+                    plan.offSurface.push_back(tow.name);
+                    continue;
+                }
+                tow.centreline = line.curve;
+                tow.startBoundary = line.startSide;
+                tow.endBoundary = line.endSide;
+                tow.step = stepRecord(centre.name, d, line);
+                tow.length = detail::lengthOnSurface(s, tow.centreline);
+                // Each edge, and its (u,v) B-spline; none where the whole edge hangs off the face.
+                const auto edge = [&](double side, const char* which, CurveOnSurface& e, NurbsCurve& curve) {
+                    const std::string what = "tow " + tow.name + "'s " + which + " edge";
+                    e = offsetStep(s, tow.centreline, side, SurfaceOffsetMethod::Geodesic, steps, what).curve;
+                    if (e.uv.size() < 2) e = CurveOnSurface();
+                    else curve = parameterCurve(e.uv, what);
+                };
+                edge(-0.5 * w, "right", tow.right, tow.rightCurve);
+                edge(0.5 * w, "left", tow.left, tow.leftCurve);
                 plan.tows.push_back(std::move(tow));
             }
         }
+        if (plan.tows.empty()) throw Error(ErrorCode::InvalidArgument, "layCourses: every tow lies off the surface");
         for (std::size_t j = 0; j + 1 < plan.tows.size(); ++j) {
             TowGap gap = measureGap(s, plan.tows[j], plan.tows[j + 1], w, plan.spacing, steps);
             gap.right = j;

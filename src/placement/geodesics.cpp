@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "placement/periodic_surface.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
 
@@ -21,7 +22,7 @@ SurfaceFrame frameAt(const Handle(Geom_BSplineSurface)& s, double u, double v)
     s->D1(u, v, f.p, f.su, f.sv);
     f.n = f.su.Crossed(f.sv);
     // Relative: at a collapsed row of poles the cross product vanishes only up to rounding.
-    if (!(f.n.Magnitude() > 1e-10 * f.su.Magnitude() * f.sv.Magnitude())) throw Error(ErrorCode::InvalidArgument, "the surface has no normal at (" + std::to_string(u) + ", " + std::to_string(v) + ")");
+    if (!(f.n.Magnitude() > 1e-10 * f.su.Magnitude() * f.sv.Magnitude())) throw Error(ErrorCode::InvalidArgument, "the surface has no normal at " + singularPlace(s, u, v));
     f.n.Normalize();
     return f;
 }
@@ -35,6 +36,26 @@ std::array<double, 2> parameterRates(const SurfaceFrame& f, const gp_Vec& t)
     return {(g * a - c * b) / det, (e * b - c * a) / det};
 }
 
+/// Names the singular point of @p s's parametrisation at (@p u, @p v): a pole (a side of the box
+/// collapsed to a point, as a sphere's) or another degenerate point, with its position.
+std::string singularPlace(const Handle(Geom_BSplineSurface)& s, double u, double v)
+{
+    const gp_Pnt p = s->Value(u, v);
+    const std::string at = "(" + std::to_string(p.X()) + ", " + std::to_string(p.Y()) + ", " + std::to_string(p.Z()) + ")";
+    double u0, u1, v0, v1;
+    s->Bounds(u0, u1, v0, v1);
+    const auto collapsed = [&](bool alongU, double fixed) {  // the side at `fixed` is one point
+        const gp_Pnt a = alongU ? s->Value(u0, fixed) : s->Value(fixed, v0), b = alongU ? s->Value(0.5 * (u0 + u1), fixed) : s->Value(fixed, 0.5 * (v0 + v1));
+        return a.Distance(b) <= 1e-9 * (1.0 + a.Distance(gp_Pnt(0, 0, 0)));
+    };
+    const double nearV = std::abs(v - v0) < std::abs(v - v1) ? v0 : v1, nearU = std::abs(u - u0) < std::abs(u - u1) ? u0 : u1;
+    if (std::abs(v - nearV) <= 1e-3 * (v1 - v0) && collapsed(true, nearV))
+        return std::string("the pole at ") + at + " (the side v = " + (nearV == v0 ? "v_min" : "v_max") + " of the parameters is one point)";
+    if (std::abs(u - nearU) <= 1e-3 * (u1 - u0) && collapsed(false, nearU))
+        return std::string("the pole at ") + at + " (the side u = " + (nearU == u0 ? "u_min" : "u_max") + " of the parameters is one point)";
+    return "a point where the surface's parametrisation is singular, at " + at;
+}
+
 /// d/ds of a geodesic's state: the parameters' second derivatives keep the 3D acceleration
 /// normal to the surface.
 static State rates(const Handle(Geom_BSplineSurface)& s, const State& x)
@@ -44,17 +65,12 @@ static State rates(const Handle(Geom_BSplineSurface)& s, const State& x)
     s->D2(x[0], x[1], p, su, sv, suu, svv, suv);
     const gp_Vec a = suu * (x[2] * x[2]) + suv * (2.0 * x[2] * x[3]) + svv * (x[3] * x[3]);
     const double e = su.Dot(su), g = sv.Dot(sv), c = su.Dot(sv), det = e * g - c * c;
-    if (!(det > 1e-20 * e * g)) throw Error(ErrorCode::InvalidArgument, "a geodesic reaches a point where the surface's parametrisation is singular");
+    if (!(det > 1e-20 * e * g)) throw Error(ErrorCode::InvalidArgument, "a geodesic reaches " + singularPlace(s, x[0], x[1]));
     const double r1 = -su.Dot(a), r2 = -sv.Dot(a);
     return {x[2], x[3], (g * r1 - c * r2) / det, (e * r2 - c * r1) / det};
 }
 
-bool insideParameters(const Handle(Geom_BSplineSurface)& s, double u, double v)
-{
-    double u0, u1, v0, v1;
-    s->Bounds(u0, u1, v0, v1);
-    return u >= u0 && u <= u1 && v >= v0 && v <= v1;
-}
+bool insideParameters(const Handle(Geom_BSplineSurface)& s, double u, double v) { return onSurface(s, {u, v}); }
 
 /// The end of the geodesic of length @p length from @p from in the 3D tangent direction @p t.
 UV shootGeodesic(const Handle(Geom_BSplineSurface)& s, const UV& from, const gp_Vec& t, double length, int steps)
@@ -100,9 +116,10 @@ UV shootGeodesic(const Handle(Geom_BSplineSurface)& s, const UV& from, const gp_
         // A geodesic along the surface's edge may run just outside it (rounding, or Newton's
         // difference quotients in geodesicDistanceOn()): up to 1e-6 of the box is allowed (the
         // B-spline's polynomial continues there; callers clamp what they keep), more leaves.
+        // A periodic direction has no edge: the geodesic crosses the seam (u runs on past the box).
         const double du = 1e-6 * (u1 - u0), dv = 1e-6 * (v1 - v0);
-        if (!(x[0] >= u0 - du && x[0] <= u1 + du && x[1] >= v0 - dv && x[1] <= v1 + dv))
-            throw Error(ErrorCode::InvalidArgument, "a geodesic leaves the surface");
+        const bool inU = s->IsUPeriodic() || (x[0] >= u0 - du && x[0] <= u1 + du), inV = s->IsVPeriodic() || (x[1] >= v0 - dv && x[1] <= v1 + dv);
+        if (!inU || !inV) throw Error(ErrorCode::InvalidArgument, "a geodesic leaves the surface");
     }
     return {x[0], x[1]};
 }
@@ -120,15 +137,18 @@ double normalCurvature(const Handle(Geom_BSplineSurface)& s, double u, double v,
     return second / along.SquareMagnitude();
 }
 
-double geodesicDistanceOn(const Handle(Geom_BSplineSurface)& s, const UV& from, const UV& to, int steps)
+double geodesicDistanceOn(const Handle(Geom_BSplineSurface)& s, const UV& from, const UV& target, int steps, const gp_Vec* direction, double guess)
 {
+    const UV to = nearestCopy(s, target, from);  // across a periodic seam, the copy nearest
+
     const SurfaceFrame f = frameAt(s, from.u, from.v);
     const gp_Vec chord(f.p, s->Value(to.u, to.v));
     if (chord.Magnitude() == 0.0) return 0.0;
     // Unknowns: the direction's angle in the tangent plane (about e1) and the length.
     gp_Vec e1 = f.su.Normalized(), e2 = f.n.Crossed(e1);
     gp_Vec t0 = chord - f.n * chord.Dot(f.n);
-    double angle = std::atan2(t0.Dot(e2), t0.Dot(e1)), length = chord.Magnitude();
+    if (direction != nullptr && guess > 0.0) t0 = *direction - f.n * direction->Dot(f.n);
+    double angle = std::atan2(t0.Dot(e2), t0.Dot(e1)), length = direction != nullptr && guess > 0.0 ? guess : chord.Magnitude();
     const auto end = [&](double a, double l) { return shootGeodesic(s, from, e1 * std::cos(a) + e2 * std::sin(a), l, steps); };
     for (int it = 0; it < 30; ++it) {
         const UV x = end(angle, length);

@@ -13,6 +13,7 @@
 
 #include "placement/geodesics.hpp"
 #include "placement/nurbs_geometry.hpp"
+#include "placement/periodic_surface.hpp"
 #include "placement/uv_interpolation.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
@@ -120,7 +121,7 @@ FixedAngleCurve fixedAngleCurve(const NurbsSurface& surface, const std::vector<C
     FixedAngleCurve out;
     try {
         Field field;
-        field.s = detail::occtSurface(surface);
+        field.s = detail::toolSurface(surface);
         for (const CurveOnSurface& c : family) field.curves.push_back(interpolate(c.uv));
         field.cosTheta = std::cos(thetaDegrees * kPi / 180.0);
         field.sinTheta = std::sin(thetaDegrees * kPi / 180.0);

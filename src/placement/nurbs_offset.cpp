@@ -17,6 +17,7 @@
 
 #include "placement/nurbs_basis.hpp"
 #include "placement/nurbs_geometry.hpp"
+#include "placement/periodic_surface.hpp"
 #include "surface/occt_convert.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
@@ -190,7 +191,7 @@ Vector3 NurbsCurve::derivative(double t) const
 
 Point3 NurbsSurface::point(double u, double v) const
 {
-    return guardedEvaluation("NurbsSurface::point", [&] { return detail::fromOcct(detail::occtSurface(*this)->Value(u, v)); });
+    return guardedEvaluation("NurbsSurface::point", [&] { return detail::fromOcct(detail::toolSurface(*this)->Value(u, v)); });
 }
 
 Vector3 NurbsSurface::normal(double u, double v) const
@@ -198,7 +199,7 @@ Vector3 NurbsSurface::normal(double u, double v) const
     return guardedEvaluation("NurbsSurface::normal", [&] {
         gp_Pnt p;
         gp_Vec du, dv;
-        detail::occtSurface(*this)->D1(u, v, p, du, dv);
+        detail::toolSurface(*this)->D1(u, v, p, du, dv);
         const gp_Vec n = du.Crossed(dv);
         if (degenerate(n.Magnitude(), du.Magnitude(), dv.Magnitude()))
             throw Error(ErrorCode::InvalidArgument, "NURBS surface: no normal where dS/du x dS/dv vanishes (a pole of the surface?)");

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "placement/nurbs_geometry.hpp"
+#include "placement/periodic_surface.hpp"
 #include "surface/occt_convert.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
@@ -49,7 +50,7 @@ CurveOnSurface referenceFromPoints(const NurbsSurface& surface, const std::vecto
 {
     if (points.size() < 2) throw Error(ErrorCode::InvalidArgument, "referenceFromPoints: at least 2 points");
     if (!(maxDistance >= 0.0)) throw Error(ErrorCode::InvalidArgument, "referenceFromPoints: a distance of 0 or more");
-    const Handle(Geom_BSplineSurface) s = detail::occtSurface(surface);
+    const Handle(Geom_BSplineSurface) s = detail::toolSurface(surface);
     const double allowed = maxDistance > 0.0 ? maxDistance : 1e-3 * netSize(surface);
     std::vector<UV> uv;
     try {
@@ -58,10 +59,11 @@ CurveOnSurface referenceFromPoints(const NurbsSurface& surface, const std::vecto
             if (!(away <= allowed))
                 throw Error(ErrorCode::InvalidArgument, "referenceFromPoints: point " + std::to_string(i) + " lies " + std::to_string(away) +
                                                             " from the surface (more than " + std::to_string(allowed) + ")");
-            if (!uv.empty() && at.u == uv.back().u && at.v == uv.back().v)
+            const UV next = uv.empty() ? at : detail::nearestCopy(s, at, uv.back());  // across a seam: on from the last
+            if (!uv.empty() && next.u == uv.back().u && next.v == uv.back().v)
                 throw Error(ErrorCode::InvalidArgument, "referenceFromPoints: points " + std::to_string(i - 1) + " and " + std::to_string(i) +
                                                             " have the same nearest point on the surface");
-            uv.push_back(at);
+            uv.push_back(next);
         }
     } catch (const Standard_Failure& e) {
         throw Error(ErrorCode::Internal, std::string("referenceFromPoints: OpenCASCADE failed: ") + e.GetMessageString());
@@ -78,7 +80,7 @@ CurveOnSurface referenceFromPlane(const NurbsSurface& surface, const Point3& ori
     if (!(largest > 0.0)) throw Error(ErrorCode::InvalidArgument, "referenceFromPlane: the plane's normal is zero");
     const Vector3 direction = (1.0 / largest) * normal;
     if (points < 2 || points > 10000000) throw Error(ErrorCode::InvalidArgument, "referenceFromPlane: 2 to 10,000,000 points");
-    const Handle(Geom_BSplineSurface) s = detail::occtSurface(surface);
+    const Handle(Geom_BSplineSurface) s = detail::toolSurface(surface);
     const double size = netSize(surface);
     std::vector<UV> uv;
     try {
@@ -102,7 +104,8 @@ CurveOnSurface referenceFromPlane(const NurbsSurface& surface, const Point3& ori
         for (int k = 1; k <= sampler.NbPoints(); ++k) {
             const auto [at, away] = nearest(s, best->Value(sampler.Parameter(k)));
             if (!(away <= 1e-6 * size)) throw Error(ErrorCode::Internal, "referenceFromPlane: an intersection point lies off the surface");
-            uv.push_back(at);
+            // Across a periodic seam the parameters run on (a closed cut ends one period on).
+            uv.push_back(uv.empty() ? at : detail::nearestCopy(s, at, uv.back()));
         }
     } catch (const Standard_Failure& e) {
         throw Error(ErrorCode::Internal, std::string("referenceFromPlane: OpenCASCADE failed: ") + e.GetMessageString());

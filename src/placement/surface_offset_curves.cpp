@@ -10,10 +10,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "placement/geodesics.hpp"
 #include "placement/nurbs_geometry.hpp"
+#include "placement/offset_point.hpp"
+#include "placement/periodic_surface.hpp"
+#include "placement/uv_interpolation.hpp"
 #include "surface/occt_convert.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
@@ -26,9 +30,9 @@ CurveOnSurface curveOnSurface(const NurbsSurface& surface, const std::vector<UV>
 {
     CurveOnSurface c;
     c.uv = uv;
-    const Handle(Geom_BSplineSurface) s = detail::occtSurface(surface);
+    const Handle(Geom_BSplineSurface) s = detail::toolSurface(surface);
     for (const UV& p : uv) {
-        if (!insideParameters(s, p.u, p.v)) throw Error(ErrorCode::InvalidArgument, "curveOnSurface: a point lies off the surface's parameter range");
+        if (!insideParameters(s, p.u, p.v)) throw Error(ErrorCode::InvalidArgument, "curveOnSurface: a point lies off the surface's parameter range");  // any u or v where periodic
         c.points.push_back(detail::fromOcct(s->Value(p.u, p.v)));
     }
     return c;
@@ -37,7 +41,7 @@ CurveOnSurface curveOnSurface(const NurbsSurface& surface, const std::vector<UV>
 double geodesicDistance(const NurbsSurface& surface, const UV& from, const UV& to, int steps)
 {
     if (steps < 1) throw Error(ErrorCode::InvalidArgument, "geodesicDistance: at least one step");
-    const Handle(Geom_BSplineSurface) s = detail::occtSurface(surface);
+    const Handle(Geom_BSplineSurface) s = detail::toolSurface(surface);
     try {
         return geodesicDistanceOn(s, from, to, steps);
     } catch (const Standard_Failure& e) {
@@ -45,51 +49,121 @@ double geodesicDistance(const NurbsSurface& surface, const UV& from, const UV& t
     }
 }
 
+namespace detail {
+
+bool isClosed(const CurveOnSurface& c)
+{
+    if (c.points.size() < 3) return false;
+    BoundingBox box;
+    for (const Point3& p : c.points) box.add(p);
+    return distance(c.points.front(), c.points.back()) <= 1e-12 * distance(box.min, box.max);
+}
+
+std::vector<gp_Vec> curveTangents(const Handle(Geom_BSplineSurface)& s, const CurveOnSurface& c)
+{
+    const std::size_t n = c.points.size();
+    std::vector<gp_Vec> out;
+    const Handle(Geom2d_BSplineCurve) cubic = isClosed(c) ? Handle(Geom2d_BSplineCurve)() : interpolateUV(c.uv, chordParameters(c.uv));
+    const std::vector<double> params = chordParameters(c.uv);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!cubic.IsNull()) {
+            gp_Pnt2d q;
+            gp_Vec2d d;
+            cubic->D1(params[i], q, d);
+            gp_Pnt p;
+            gp_Vec su, sv;
+            s->D1(c.uv[i].u, c.uv[i].v, p, su, sv);
+            out.push_back(su * d.X() + sv * d.Y());
+            continue;
+        }
+        // Closed (or points OpenCASCADE cannot interpolate): the chord between the neighbours.
+        std::size_t before = i > 0 ? i - 1 : i, after = i + 1 < n ? i + 1 : i;
+        if (isClosed(c) && i == 0) before = n - 2;  // the point before the joint
+        if (isClosed(c) && i + 1 == n) after = 1;
+        out.emplace_back(detail::toOcct(c.points[before]), detail::toOcct(c.points[after]));
+    }
+    return out;
+}
+
+OffsetPoint offsetPoint(const Handle(Geom_BSplineSurface)& s, const UV& at, const gp_Vec& tangent, double d, const SurfaceOffsetOptions& options,
+                        bool measure)
+{
+    const SurfaceFrame f = frameAt(s, at.u, at.v);
+    gp_Vec t = tangent - f.n * tangent.Dot(f.n);
+    if (!(t.Magnitude() > 0.0)) throw Error(ErrorCode::InvalidArgument, "offsetOnSurface: two consecutive points coincide");
+    t.Normalize();
+    const gp_Vec o = f.n.Crossed(t);
+    OffsetPoint out;
+    const double kappa = normalCurvature(s, at.u, at.v, o);
+    const double psi = std::atan(std::abs(d * kappa));
+    out.estimatedError = psi > 1e-8 ? std::abs(d) * (1.0 - psi / std::tan(psi)) : std::abs(d) * psi * psi / 3.0;
+    double u0, u1, v0, v1;
+    s->Bounds(u0, u1, v0, v1);
+    if (options.method == SurfaceOffsetMethod::Geodesic) {
+        out.raw = shootGeodesic(s, at, d >= 0.0 ? o : o.Reversed(), std::abs(d), options.geodesicSteps);
+    } else {
+        const gp_Pnt target = f.p.Translated(o * d);
+        GeomAPI_ProjectPointOnSurf projection(target, s);
+        if (!projection.IsDone() || projection.NbPoints() == 0)
+            throw Error(ErrorCode::InvalidArgument, "offsetOnSurface: an offset point does not project onto the surface");
+        projection.LowerDistanceParameters(out.raw.u, out.raw.v);
+        out.raw = nearestCopy(s, out.raw, at);  // across a periodic seam: the copy next to the start
+        // The nearest foot may lie on another part of the surface (the true one past the
+        // surface's edge): a foot farther from the point than twice the step is not this offset.
+        // The same past the surface's edge, where the foot found is some other orthogonal one:
+        // a true foot lies within d^2 kappa / 2 <= |d| / 2 of the target while |d kappa| <= 1
+        // (a longer step than the radius of curvature is no tangent step).
+        // Past the box's edge the nearest point is on the edge, not an orthogonal foot: the
+        // surface ends before the offset does.
+        const SurfaceFrame at2 = frameAt(s, out.raw.u, out.raw.v);
+        const gp_Vec miss(at2.p, target);
+        const double across = (miss - at2.n * miss.Dot(at2.n)).Magnitude();
+        if (across > 1e-7 * std::abs(d))
+            throw Error(ErrorCode::InvalidArgument, "offsetOnSurface: an offset point's foot on the surface is not orthogonal (the offset leaves the surface)");
+        const gp_Pnt foot = at2.p;
+        if (foot.Distance(f.p) > 2.0 * std::abs(d) || foot.Distance(target) > 0.5 * std::abs(d))
+            throw Error(ErrorCode::InvalidArgument, "offsetOnSurface: an offset point's nearest point on the surface is not "
+                                                    "near it (the offset leaves the surface)");
+    }
+    // A geodesic along the edge may end a rounding outside: clamped where the box is the surface.
+    out.uv = out.raw;
+    if (!s->IsUPeriodic()) out.uv.u = std::clamp(out.uv.u, u0, u1);
+    if (!s->IsVPeriodic()) out.uv.v = std::clamp(out.uv.v, v0, v1);
+    if (!measure) {
+        out.geodesicDistance = std::numeric_limits<double>::quiet_NaN();
+        return out;
+    }
+    // From the geodesic shot (converged at once when it ended where it was kept), or the chord.
+    const gp_Vec shot = d >= 0.0 ? o : o.Reversed();
+    const bool geodesic = options.method == SurfaceOffsetMethod::Geodesic;
+    out.geodesicDistance = geodesicDistanceOn(s, at, out.uv, options.geodesicSteps, geodesic ? &shot : nullptr, geodesic ? std::abs(d) : 0.0);
+    // A foot on another part of the surface is not d away along it (Eq. 2's shortfall is a small
+    // part of d while |d kappa| <= 1).
+    if (options.method != SurfaceOffsetMethod::Geodesic && std::abs(out.geodesicDistance - std::abs(d)) > 0.25 * std::abs(d))
+        throw Error(ErrorCode::InvalidArgument, "offsetOnSurface: an offset point's nearest point on the surface is not "
+                                                "near it along the surface (the offset leaves the surface)");
+    return out;
+}
+
+}  // namespace detail
+
 SurfaceOffsetStep offsetOnSurface(const NurbsSurface& surface, const CurveOnSurface& curve, double d, const SurfaceOffsetOptions& options)
 {
     if (curve.uv.size() < 2 || curve.points.size() != curve.uv.size())
         throw Error(ErrorCode::InvalidArgument, "offsetOnSurface: a curve of at least 2 points, each with its (u,v)");
     if (!std::isfinite(d) || options.geodesicSteps < 1) throw Error(ErrorCode::InvalidArgument, "offsetOnSurface: a finite distance, at least one step");
-    const Handle(Geom_BSplineSurface) s = detail::occtSurface(surface);
+    const Handle(Geom_BSplineSurface) s = detail::toolSurface(surface);
     SurfaceOffsetStep out;
     try {
-        const std::size_t n = curve.uv.size();
-        for (std::size_t i = 0; i < n; ++i) {
-            const UV at = curve.uv[i];
+        for (const UV& at : curve.uv)
             if (!insideParameters(s, at.u, at.v)) throw Error(ErrorCode::InvalidArgument, "offsetOnSurface: a point lies off the surface's parameter range");
-            const SurfaceFrame f = frameAt(s, at.u, at.v);
-            // The curve's tangent from its neighbours, in the tangent plane; O = N x T.
-            const Point3 a = curve.points[i > 0 ? i - 1 : i], b = curve.points[i + 1 < n ? i + 1 : i];
-            gp_Vec t(detail::toOcct(a), detail::toOcct(b));
-            t -= f.n * t.Dot(f.n);
-            if (!(t.Magnitude() > 0.0)) throw Error(ErrorCode::InvalidArgument, "offsetOnSurface: two consecutive points coincide");
-            t.Normalize();
-            const gp_Vec o = f.n.Crossed(t);
-            const double kappa = normalCurvature(s, at.u, at.v, o);
-            const double psi = std::atan(std::abs(d * kappa));
-            out.estimatedError.push_back(psi > 1e-8 ? std::abs(d) * (1.0 - psi / std::tan(psi)) : std::abs(d) * psi * psi / 3.0);
-            UV moved;
-            if (options.method == SurfaceOffsetMethod::Geodesic) {
-                moved = shootGeodesic(s, at, d >= 0.0 ? o : o.Reversed(), std::abs(d), options.geodesicSteps);
-                double u0, u1, v0, v1;  // a geodesic along the edge may end a rounding outside
-                s->Bounds(u0, u1, v0, v1);
-                moved = {std::clamp(moved.u, u0, u1), std::clamp(moved.v, v0, v1)};
-            } else {
-                const gp_Pnt target = f.p.Translated(o * d);
-                GeomAPI_ProjectPointOnSurf projection(target, s);
-                if (!projection.IsDone() || projection.NbPoints() == 0)
-                    throw Error(ErrorCode::InvalidArgument, "offsetOnSurface: an offset point does not project onto the surface");
-                projection.LowerDistanceParameters(moved.u, moved.v);
-                // The nearest foot may lie on another part of the surface (the true one past the
-                // surface's edge, or across a closed surface's seam): a foot farther from the
-                // point than twice the step is not this offset.
-                if (s->Value(moved.u, moved.v).Distance(f.p) > 2.0 * std::abs(d))
-                    throw Error(ErrorCode::InvalidArgument, "offsetOnSurface: an offset point's nearest point on the surface is not "
-                                                            "near it (the offset leaves the surface, or crosses its seam)");
-            }
-            out.curve.uv.push_back(moved);
-            out.curve.points.push_back(detail::fromOcct(s->Value(moved.u, moved.v)));
-            out.geodesicDistance.push_back(geodesicDistanceOn(s, at, moved, options.geodesicSteps));
+        const std::vector<gp_Vec> tangents = curveTangents(s, curve);
+        for (std::size_t i = 0; i < curve.uv.size(); ++i) {
+            const OffsetPoint p = offsetPoint(s, curve.uv[i], tangents[i], d, options);
+            out.curve.uv.push_back(p.uv);
+            out.curve.points.push_back(detail::fromOcct(s->Value(p.uv.u, p.uv.v)));
+            out.geodesicDistance.push_back(p.geodesicDistance);
+            out.estimatedError.push_back(p.estimatedError);
         }
     } catch (const Standard_Failure& e) {
         throw Error(ErrorCode::Internal, std::string("offsetOnSurface: OpenCASCADE failed: ") + e.GetMessageString());

@@ -13,6 +13,7 @@
 #include <BRep_Tool.hxx>
 #include <Geom_CylindricalSurface.hxx>
 #include <Geom_SphericalSurface.hxx>
+#include <Geom_ToroidalSurface.hxx>
 #include <IGESControl_Writer.hxx>
 #include <STEPControl_Writer.hxx>
 #include <BRep_Builder.hxx>
@@ -145,6 +146,14 @@ void writeSphereFace(const std::string& path, double radius, double fromLatitude
 {
     const TopoDS_Face face =
         BRepBuilderAPI_MakeFace(new Geom_SphericalSurface(gp_Ax3(), radius), 0.0, 2.0 * M_PI, fromLatitude, toLatitude, 1e-7).Face();
+    STEPControl_Writer writer;
+    if (writer.Transfer(face, STEPControl_AsIs) != IFSelect_RetDone || writer.Write(path.c_str()) != IFSelect_RetDone)
+        throw std::runtime_error("cannot write STEP " + path);
+}
+
+void writeTorusFace(const std::string& path, double major, double minor)
+{
+    const TopoDS_Face face = BRepBuilderAPI_MakeFace(new Geom_ToroidalSurface(gp_Ax3(), major, minor), 1e-7).Face();
     STEPControl_Writer writer;
     if (writer.Transfer(face, STEPControl_AsIs) != IFSelect_RetDone || writer.Write(path.c_str()) != IFSelect_RetDone)
         throw std::runtime_error("cannot write STEP " + path);

@@ -42,6 +42,10 @@ void writeCylinderFace(const std::string& path, double radius, double height, do
 /// longitude over [0, 2 pi), v the latitude, poles at v = -pi/2 and pi/2) alone to the STEP file
 /// @p path: the latitudes from @p fromLatitude to @p toLatitude.
 void writeSphereFace(const std::string& path, double radius, double fromLatitude, double toLatitude);
+/// Writes the whole face of a torus about the z axis (OCCT's toroidal surface: u the angle about
+/// the axis, v the angle about the tube, v = 0 on the outer equator at distance @p major +
+/// @p minor) alone to the STEP file @p path.
+void writeTorusFace(const std::string& path, double major, double minor);
 
 /// One whole tow as built by writeWholeTowSolids().
 struct WholeTowSolid {

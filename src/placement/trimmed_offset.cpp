@@ -1,0 +1,273 @@
+// Offset curves cut at, or carried to, the tool surface's boundary (bisection on the base
+// curve's parameter; geodesics along the curve's end direction).
+#include "placement/trimmed_offset.hpp"
+
+#include <Adaptor3d_CurveOnSurface.hxx>
+#include <GCPnts_AbscissaPoint.hxx>
+#include <Geom2dAdaptor_Curve.hxx>
+#include <GeomAdaptor_Surface.hxx>
+
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "placement/geodesics.hpp"
+#include "placement/offset_point.hpp"
+#include "placement/periodic_surface.hpp"
+#include "placement/uv_interpolation.hpp"
+#include "surface/occt_convert.hpp"
+#include "towgeom/error.hpp"
+#include "towgeom/export.hpp"
+
+TOWGEOM_BEGIN_NAMESPACE
+namespace detail {
+
+namespace {
+
+constexpr double kNaNOffset = std::numeric_limits<double>::quiet_NaN();
+
+/// The cubic B-spline in (u,v) through @p c's points at their (u,v) chord lengths, and those.
+struct UVCurve {
+    Handle(Geom2d_BSplineCurve) curve;
+    std::vector<double> params;
+};
+
+UVCurve uvCurve(const CurveOnSurface& c)
+{
+    UVCurve out;
+    out.params = chordParameters(c.uv);
+    out.curve = interpolateUV(c.uv, out.params);
+    return out;
+}
+
+/// A point of a curve with its 3D direction.
+struct PointAlong {
+    UV uv;
+    gp_Vec tangent;
+};
+
+PointAlong pointAlong(const Handle(Geom_BSplineSurface)& s, const UVCurve& c, double t)
+{
+    gp_Pnt2d p;
+    gp_Vec2d d;
+    c.curve->D1(t, p, d);
+    gp_Pnt q;
+    gp_Vec su, sv;
+    s->D1(p.X(), p.Y(), q, su, sv);
+    return {{p.X(), p.Y()}, su * d.X() + sv * d.Y()};
+}
+
+/// Whether (u,v) lies in the box where it is not periodic (no slack).
+bool strictlyOn(const Handle(Geom_BSplineSurface)& s, const UV& uv) { return onSurface(s, uv); }
+
+/// Whether (u,v) lies in the box, or outside it by at most 1e-9 of it (rounding along an edge).
+bool nearlyOn(const Handle(Geom_BSplineSurface)& s, const UV& uv)
+{
+    double u0, u1, v0, v1;
+    s->Bounds(u0, u1, v0, v1);
+    const double du = 1e-9 * (u1 - u0), dv = 1e-9 * (v1 - v0);
+    return (s->IsUPeriodic() || (uv.u >= u0 - du && uv.u <= u1 + du)) && (s->IsVPeriodic() || (uv.v >= v0 - dv && uv.v <= v1 + dv));
+}
+
+/// The offset of @p at, or nothing when it leaves the surface.
+std::optional<OffsetPoint> tryOffset(const Handle(Geom_BSplineSurface)& s, const PointAlong& at, double d, const SurfaceOffsetOptions& o,
+                                     bool measure = true)
+{
+    try {
+        return offsetPoint(s, at.uv, at.tangent, d, o, measure);
+    } catch (const Error& e) {
+        // Off the surface: the offset (or the geodesic measuring it) leaves it, or a tangent
+        // step's foot is not there; a singular point is the caller's to report.
+        const std::string m = e.what();
+        if (m.find("leaves the surface") == std::string::npos && m.find("not near it") == std::string::npos &&
+            m.find("does not project") == std::string::npos && m.find("did not converge") == std::string::npos)
+            throw;
+        return std::nullopt;
+    }
+}
+
+/// The side of the box nearest @p uv (not periodic).
+std::string nearestSide(const Handle(Geom_BSplineSurface)& s, const UV& uv)
+{
+    double u0, u1, v0, v1;
+    s->Bounds(u0, u1, v0, v1);
+    std::string side;
+    double best = std::numeric_limits<double>::infinity();
+    const auto consider = [&](double gap, const char* name) {
+        if (gap < best) best = gap, side = name;
+    };
+    if (!s->IsUPeriodic()) consider(std::abs(uv.u - u0) / (u1 - u0), "u_min"), consider(std::abs(uv.u - u1) / (u1 - u0), "u_max");
+    if (!s->IsVPeriodic()) consider(std::abs(uv.v - v0) / (v1 - v0), "v_min"), consider(std::abs(uv.v - v1) / (v1 - v0), "v_max");
+    return side;
+}
+
+/// The offset of the base point between parameters @p inside (offset on the surface) and
+/// @p outside (offset off it) whose offset lands on the boundary, put onto that side.
+std::pair<OffsetPoint, std::string> cutAtBoundary(const Handle(Geom_BSplineSurface)& s, const UVCurve& base, double inside, double outside, double d,
+                                                  const SurfaceOffsetOptions& o)
+{
+    const double span = std::abs(outside - inside);
+    for (int it = 0; it < 200 && std::abs(outside - inside) > 1e-15 * span; ++it) {
+        const double mid = 0.5 * (inside + outside);
+        const std::optional<OffsetPoint> p = tryOffset(s, pointAlong(s, base, mid), d, o, false);  // where it lands only
+        if (p && strictlyOn(s, p->raw)) inside = mid;
+        else outside = mid;
+    }
+    // The kept point, measured (if that fails so near the boundary: only where it lands).
+    std::optional<OffsetPoint> kept = tryOffset(s, pointAlong(s, base, inside), d, o);
+    if (!kept) kept = tryOffset(s, pointAlong(s, base, inside), d, o, false);
+    if (!kept) throw Error(ErrorCode::Internal, "an offset cut at the surface's boundary was lost");
+    OffsetPoint end = *kept;
+    const std::string side = nearestSide(s, end.raw);
+    end.uv = onSide(s, end.raw, side);  // within the bisection's 1e-15 of it: its distance stands
+    return {end, side};
+}
+
+/// Where a geodesic carried on from a curve's end meets the boundary.
+struct Carried {
+    UV uv;             ///< the boundary point
+    std::string side;  ///< its side of the box
+    double length = 0.0;  ///< the geodesic's length to it
+};
+
+/// The boundary point reached from @p from along the 3D direction @p t by a geodesic, or nothing
+/// if it does not leave the surface within @p longest.
+std::optional<Carried> carryToBoundary(const Handle(Geom_BSplineSurface)& s, const UV& from, const gp_Vec& t, double step, double longest,
+                                                          int steps)
+{
+    const auto reach = [&](double length) -> std::optional<UV> {
+        try {
+            const UV end = shootGeodesic(s, from, t, length, steps);
+            if (strictlyOn(s, end)) return end;
+        } catch (const Error& e) {
+            if (std::string(e.what()).find("leaves the surface") == std::string::npos) throw;
+        }
+        return std::nullopt;
+    };
+    double inside = 0.0, outside = step;
+    UV kept = from;
+    while (const std::optional<UV> end = reach(outside)) {
+        kept = *end, inside = outside, outside *= 2.0;
+        if (inside > longest) return std::nullopt;
+    }
+    for (int it = 0; it < 200 && outside - inside > 1e-15 * outside; ++it) {
+        const double mid = 0.5 * (inside + outside);
+        if (const std::optional<UV> end = reach(mid)) kept = *end, inside = mid;
+        else outside = mid;
+    }
+    const std::string side = nearestSide(s, kept);
+    return Carried{onSide(s, kept, side), side, inside};
+}
+
+/// The longest run [first, last] of consecutive true entries of @p on (last < first: none).
+std::pair<std::size_t, std::size_t> longestRun(const std::vector<bool>& on)
+{
+    std::size_t bestFirst = 1, bestLast = 0;
+    for (std::size_t i = 0; i < on.size();) {
+        if (!on[i]) {
+            ++i;
+            continue;
+        }
+        std::size_t j = i;
+        while (j + 1 < on.size() && on[j + 1]) ++j;
+        if (bestLast < bestFirst || j - i > bestLast - bestFirst) bestFirst = i, bestLast = j;
+        i = j + 1;
+    }
+    return {bestFirst, bestLast};
+}
+
+void append(TrimmedOffset& out, const Handle(Geom_BSplineSurface)& s, const UV& uv, double geodesic, double estimate, bool front)
+{
+    const Point3 p = fromOcct(s->Value(uv.u, uv.v));
+    const auto at = [front](auto& v) { return front ? v.begin() : v.end(); };
+    out.curve.uv.insert(at(out.curve.uv), uv);
+    out.curve.points.insert(at(out.curve.points), p);
+    out.geodesicDistance.insert(at(out.geodesicDistance), geodesic);
+    out.estimatedError.insert(at(out.estimatedError), estimate);
+}
+
+/// Whether a point at @p uv added next to the curve's end point @p end is a new point (not the
+/// same one to 1e-9 of the box).
+bool distinct(const Handle(Geom_BSplineSurface)& s, const UV& uv, const UV& end)
+{
+    double u0, u1, v0, v1;
+    s->Bounds(u0, u1, v0, v1);
+    return std::abs(uv.u - end.u) > 1e-9 * (u1 - u0) || std::abs(uv.v - end.v) > 1e-9 * (v1 - v0);
+}
+
+}  // namespace
+
+TrimmedOffset offsetWithinSurface(const Handle(Geom_BSplineSurface)& s, const CurveOnSurface& base, double d, const SurfaceOffsetOptions& options)
+{
+    const std::size_t n = base.uv.size();
+    std::vector<std::optional<OffsetPoint>> at(n);
+    std::vector<bool> on(n, false);
+    const std::vector<gp_Vec> tangents = curveTangents(s, base);
+    for (std::size_t i = 0; i < n; ++i) {
+        at[i] = tryOffset(s, {base.uv[i], tangents[i]}, d, options);
+        on[i] = at[i] && nearlyOn(s, at[i]->raw);
+    }
+    TrimmedOffset out;
+    const auto [first, last] = longestRun(on);
+    if (last < first) return out;
+    for (std::size_t i = first; i <= last; ++i) append(out, s, at[i]->uv, at[i]->geodesicDistance, at[i]->estimatedError, false);
+    const bool closed = isClosed(base) && first == 0 && last + 1 == n;
+    if (closed) return out;
+    const UVCurve curve = uvCurve(base);
+    if (curve.curve.IsNull()) throw Error(ErrorCode::InvalidArgument, "a curve's points repeat (its (u,v) cannot be interpolated)");
+    // Cut where the surface ends the offsets.
+    if (first > 0) {
+        const auto [end, side] = cutAtBoundary(s, curve, curve.params[first], curve.params[first - 1], d, options);
+        if (distinct(s, end.uv, out.curve.uv.front())) append(out, s, end.uv, end.geodesicDistance, end.estimatedError, true);
+        else out.curve.uv.front() = end.uv, out.curve.points.front() = fromOcct(s->Value(end.uv.u, end.uv.v));
+        out.startSide = side;
+    }
+    if (last + 1 < n) {
+        const auto [end, side] = cutAtBoundary(s, curve, curve.params[last], curve.params[last + 1], d, options);
+        if (distinct(s, end.uv, out.curve.uv.back())) append(out, s, end.uv, end.geodesicDistance, end.estimatedError, false);
+        else out.curve.uv.back() = end.uv, out.curve.points.back() = fromOcct(s->Value(end.uv.u, end.uv.v));
+        out.endSide = side;
+    }
+    // Carried on where the base runs to the boundary and the offset stops short of it.
+    if (out.curve.uv.size() < 2) return out;
+    double u0, u1, v0, v1;
+    s->Bounds(u0, u1, v0, v1);
+    const double longest = 4.0 * std::abs(d) + 1e-3 * lengthOnSurface(s, base) + std::abs(d);
+    const UVCurve offset = uvCurve(out.curve);
+    if (offset.curve.IsNull()) return out;
+    for (const bool atStart : {true, false}) {
+        const std::string baseSide = boundarySide(s, atStart ? base.uv.front() : base.uv.back(), 1e-9);
+        if (baseSide.empty() || !(atStart ? out.startSide : out.endSide).empty()) continue;
+        const UV end = atStart ? out.curve.uv.front() : out.curve.uv.back();
+        if (!boundarySide(s, end, 1e-9).empty()) continue;  // on the boundary already
+        const PointAlong e = pointAlong(s, offset, atStart ? offset.params.front() : offset.params.back());
+        const gp_Vec direction = atStart ? e.tangent.Reversed() : e.tangent;
+        const std::optional<Carried> reached = carryToBoundary(s, end, direction, std::abs(d), longest, options.geodesicSteps);
+        if (!reached) continue;
+        (atStart ? out.startSide : out.endSide) = reached->side;
+        if (!distinct(s, reached->uv, end)) {  // a rounding short of the side: put onto it
+            (atStart ? out.curve.uv.front() : out.curve.uv.back()) = reached->uv;
+            (atStart ? out.curve.points.front() : out.curve.points.back()) = fromOcct(s->Value(reached->uv.u, reached->uv.v));
+            continue;
+        }
+        // Points along the carried geodesic at about the curve's spacing, then the boundary's.
+        const double spacing = lengthOnSurface(s, out.curve) / static_cast<double>(out.curve.uv.size() - 1);
+        const int pieces = spacing > 0.0 ? static_cast<int>(std::min(1000.0, std::ceil(reached->length / spacing))) : 1;
+        for (int k = 1; k < pieces; ++k)
+            append(out, s, shootGeodesic(s, end, direction, reached->length * k / pieces, options.geodesicSteps), kNaNOffset, kNaNOffset, atStart);
+        append(out, s, reached->uv, kNaNOffset, kNaNOffset, atStart);
+    }
+    return out;
+}
+
+double lengthOnSurface(const Handle(Geom_BSplineSurface)& s, const CurveOnSurface& c)
+{
+    if (c.uv.size() < 2) return 0.0;
+    const UVCurve curve = uvCurve(c);
+    if (curve.curve.IsNull()) return 0.0;
+    const Adaptor3d_CurveOnSurface adaptor(new Geom2dAdaptor_Curve(curve.curve), new GeomAdaptor_Surface(s));
+    return GCPnts_AbscissaPoint::Length(adaptor, 1e-12);
+}
+
+}  // namespace detail
+TOWGEOM_END_NAMESPACE
