@@ -73,10 +73,10 @@ struct TowPath {
     NurbsCurve rightCurve;
     NurbsCurve leftCurve;  ///< the left edge likewise
     double length = 0.0;   ///< the centreline's length along the surface
-    /// Where the centreline starts on the face's boundary: the side of the parameter box
-    /// ("u_min", "u_max", "v_min", "v_max") at which it was cut (its offset left the face) or to
-    /// which it was carried (its course's curve starts on that side, the offset inside it);
-    /// empty where it starts as its course's curve does.
+    /// The side of the face's parameter box ("u_min", "u_max", "v_min", "v_max") the centreline
+    /// starts on (within 1e-9 of the box): cut there (its offset left the face), carried there
+    /// (its course's curve starts on that side, the offset inside it), or there already; empty
+    /// where it starts inside the face, as its course's curve does.
     std::string startBoundary;
     std::string endBoundary;  ///< likewise for its end
 };

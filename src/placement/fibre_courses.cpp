@@ -206,8 +206,9 @@ CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& referen
                     continue;
                 }
                 tow.centreline = line.curve;
-                tow.startBoundary = line.startSide;
-                tow.endBoundary = line.endSide;
+                // The side each end lies on: cut or carried there, or there already.
+                tow.startBoundary = line.startSide.empty() ? detail::boundarySide(s, line.curve.uv.front(), 1e-9) : line.startSide;
+                tow.endBoundary = line.endSide.empty() ? detail::boundarySide(s, line.curve.uv.back(), 1e-9) : line.endSide;
                 tow.step = stepRecord(centre.name, d, line);
                 tow.length = detail::lengthOnSurface(s, tow.centreline);
                 // Each edge, and its (u,v) B-spline; none where the whole edge hangs off the face.

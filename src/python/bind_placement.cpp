@@ -79,6 +79,11 @@ void bindPlan(py::module_& m)
         .def_readonly("centreline", &TowPath::centreline)
         .def_readonly("left", &TowPath::left)
         .def_readonly("right", &TowPath::right)
+        .def_readonly("length", &TowPath::length, "The centreline's length along the surface.")
+        .def_readonly("start_boundary", &TowPath::startBoundary,
+                      "The side of the face's (u,v) box ('u_min', 'u_max', 'v_min', 'v_max') where the centreline was cut or carried to "
+                      "at its start; '' where it starts as its course's curve does.")
+        .def_readonly("end_boundary", &TowPath::endBoundary, "As start_boundary, at its end.")
         .def_property_readonly("geodesic_distance", [](const TowPath& t) { return valuesArray(t.step.geodesicDistance); },
                                "Per centreline point, the measured distance along the surface from the curve it was offset from.");
     py::class_<CoursePlan>(m, "CoursePlan", "Courses of tows laid on a tool surface from a reference curve.")
@@ -89,6 +94,7 @@ void bindPlan(py::module_& m)
         .def_readonly("tolerance", &CoursePlan::tolerance)
         .def_readonly("largest_step_error", &CoursePlan::largestStepError)
         .def_readonly("within_tolerance", &CoursePlan::withinTolerance)
+        .def_readonly("off_surface", &CoursePlan::offSurface, "Courses and tows (names) wholly off the face: not laid.")
         .def_property_readonly("gaps", [](const CoursePlan& p) {
                 py::list out;
                 for (const TowGap& g : p.gaps)

@@ -90,6 +90,12 @@ def test_courses_on_a_cylinder_as_the_cli_lays_them_and_as_the_closed_form(tmp_p
         assert numpy.ptp(x) < 1e-6
     for gap in plan.gaps:
         assert abs(gap["min"]) < 1e-6 and abs(gap["max"]) < 1e-6
+    # The hoop runs from one straight edge of the half cylinder to the other: so does every tow,
+    # its length the half circle's.
+    assert plan.off_surface == []
+    for tow in plan.tows:
+        assert {tow.start_boundary, tow.end_boundary} == {"v_min", "v_max"}
+        assert abs(tow.length - numpy.pi * 10.0) < 1e-4
     # The CLI on the same grid: the same centrelines.
     lines = ["grid 41 33"] + [f"{p[0]!r} {p[1]!r} {p[2]!r}" for p in grid.reshape(-1, 3)]
     (tmp_path / "half.grid").write_text("\n".join(lines) + "\n")
