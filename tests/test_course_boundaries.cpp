@@ -4,6 +4,7 @@
 // tows' ends checked on the boundary from the grid's own coordinates, not the library's (u,v)).
 #include <catch2/catch.hpp>
 
+#include <towgeom/course_coverage.hpp>
 #include <towgeom/error.hpp>
 #include <towgeom/fibre_courses.hpp>
 #include <towgeom/placement_surface.hpp>
@@ -18,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <sstream>
 #include <string>
 
 #include "cli_runner.hpp"
@@ -103,6 +105,25 @@ TEST_CASE("courses across periodic seams: the sphere's equator, a torus's outer 
             const double s = towOffset(plan, plan.tows[k], 4, k);
             CHECK(std::abs(plan.tows[k].length - 2.0 * M_PI * r * std::cos(s / r)) <= 1e-6 * r);
         }
+        // The tow curves as STEP, read back by OpenCASCADE: 36 named edges, each on the sphere at
+        // its latitude within the 3D curves' tolerance (1e-6 W).
+        writeCoursePlanStep(sphere.surface, plan, (scratch.dir / "courses.step").string());
+        const std::vector<testing::ReadEdge> edges = testing::readStepEdges((scratch.dir / "courses.step").string(), 41);
+        REQUIRE(edges.size() == 36);
+        for (std::size_t k = 0; k < plan.tows.size(); ++k)
+            for (const auto& [kind, shift] : {std::pair{"centreline", 0.0}, std::pair{"right", -0.25}, std::pair{"left", 0.25}}) {
+                const std::string name = plan.tows[k].name + "/" + kind;
+                const auto e = std::find_if(edges.begin(), edges.end(), [&](const testing::ReadEdge& x) { return x.name == name; });
+                REQUIRE(e != edges.end());
+                double worst = 0.0;
+                const double latitude = std::asin(std::clamp(e->points.front().z / r, -1.0, 1.0));
+                for (const Point3& p : e->points) {
+                    worst = std::max(worst, std::abs(norm(p - Point3{0, 0, 0}) - r));
+                    worst = std::max(worst, r * std::abs(std::asin(std::clamp(p.z / norm(p - Point3{0, 0, 0}), -1.0, 1.0)) - latitude));
+                }
+                INFO(name << " (" << shift << "): " << worst);
+                CHECK(worst <= 1e-6 * o.towWidth);
+            }
     }
     SECTION("torus R = 10, r = 3, its outer equator (both seams crossed): tube angle -+ s / r")
     {
@@ -230,7 +251,7 @@ TEST_CASE("towgeom courses on a patch's grid: tows trimmed at the boundary, exit
     }
     const fs::path out = scratch.dir / "plan";
     const testing::Run run = testing::cli("courses '" + grid.string() + "' --reference plane:1.3,1,0,1,0.2,0 --reverse --points 25 --tow-width 0.5 --tows 2 " +
-                                          "--courses 3 --exact --quiet --out '" + out.string() + "'");
+                                          "--courses 3 --exact --min-steering-radius 1e6 --quiet --out '" + out.string() + "'");
     INFO(run.err << run.out);
     REQUIRE(run.status == 0);
     const nlohmann::json summary = nlohmann::json::parse(run.out);
@@ -248,4 +269,91 @@ TEST_CASE("towgeom courses on a patch's grid: tows trimmed at the boundary, exit
         CHECK_FALSE(t["end_boundary"].is_null());
     }
     CHECK(fs::exists(out / "c3_t2.stw"));
+    // A steering radius of a million: every tow on the curved patch needs less.
+    CHECK(summary["steering"]["below"].size() == 6);
+    CHECK(summary["steering"]["smallest_radius"].get<double>() < 1e6);
+    CHECK(run.err.find("warning: 6 tow(s) must be steered") != std::string::npos);
+    for (const auto& t : plan["tows"]) CHECK(t["geodesic_curvature"].size() == t["centreline"]["points"].size());
+}
+
+TEST_CASE("steering radius on a cone: geodesic offsets of a parallel are parallels, their radius of geodesic curvature the slant distance to the apex",
+          "[placement][courses][steering]")
+{
+    // Frustum r 4 at z = 0 to r 2 at z = 3: generators 5 long (3-4-5 with the radius's change 2:
+    // sqrt(9 + 4)), the apex at slant distance r L / (r0 - r1) from a parallel of radius r. Unrolled,
+    // a parallel is a circle about the apex and its geodesic offsets (along the generators) the
+    // concentric circles: radius of geodesic curvature = slant distance.
+    const double r0 = 4.0, r1 = 2.0, h = 3.0, slant = std::hypot(h, r0 - r1);
+    const NurbsSurface cone = testing::cone(r0, r1, h);
+    const CurveOnSurface parallel = referenceFromPlane(cone, {3.0, 0, 1.5}, {0, 0, 1}, 33);
+    REQUIRE(distance(parallel.points.front(), parallel.points.back()) <= 1e-9);
+    CourseOptions o;
+    o.towWidth = 0.3;
+    o.towsPerCourse = 3;
+    o.courses = 2;
+    o.method = SurfaceOffsetMethod::Geodesic;
+    o.minSteeringRadius = 4.4;
+    const CoursePlan plan = layCourses(cone, parallel, o);
+    REQUIRE(plan.tows.size() == 6);
+    std::vector<std::string> below;
+    for (const TowPath& t : plan.tows) {
+        // Its slant distance to the apex from its own points (radius about the axis).
+        const double r = std::hypot(t.centreline.points.front().x, t.centreline.points.front().y);
+        const double apex = r * slant / (r0 - r1);
+        INFO(t.name << " at radius " << r << ", slant " << apex << ": steering radius " << t.steeringRadius);
+        CHECK(std::abs(t.steeringRadius - apex) <= 1e-6 * apex);
+        REQUIRE(t.geodesicCurvature.size() == t.centreline.points.size());
+        for (const double k : t.geodesicCurvature) CHECK(std::abs(std::abs(k) - 1.0 / apex) <= 1e-6 / apex);
+        if (apex < 4.4) below.push_back(t.name);
+    }
+    CHECK_FALSE(below.empty());
+    CHECK(plan.belowSteeringRadius == below);
+    // A straight generator as reference on the cone: geodesics, no steering (radius infinite or
+    // beyond a thousand times the cone).
+    std::vector<UV> uv;
+    for (int k = 0; k < 9; ++k) uv.push_back({0.3, 0.1 + 0.1 * k});
+    o.courses = 1;
+    o.towsPerCourse = 1;
+    const CoursePlan straight = layCourses(cone, curveOnSurface(cone, uv), o);
+    CHECK(straight.tows[0].steeringRadius >= 1e3 * slant);
+}
+
+TEST_CASE("coverage of a cylinder by hoop courses: the bands' share of the area once, the rest none, overlaps where the spacing is short",
+          "[placement][courses][coverage]")
+{
+    // Cylinder R 2, 3 long; hoops (closed across the seam) from z = 1.5: 2 courses of 2 tows,
+    // W 0.4, so the tows cover z in [1.1, 2.7] (courses go to one side: 1.6 of the 3, the
+    // fraction 1.6 / 3 whichever side), edge to edge. At spacing 0.36 the three overlaps inside
+    // a course pair and between courses are 0.04 each.
+    const NurbsSurface cylinder = testing::cylinder(2.0, 3.0);
+    const CurveOnSurface hoop = referenceFromPlane(cylinder, {2.0, 0, 1.5}, {0, 0, 1}, 33);
+    CourseOptions o;
+    o.towWidth = 0.4;
+    o.towsPerCourse = 2;
+    o.courses = 2;
+    o.method = SurfaceOffsetMethod::Geodesic;
+    const std::size_t cells = 150;
+    const double cell = 3.0 / cells;  // a cell's height: the bands' borders are within one
+    {
+        const CourseCoverage c = courseCoverage(cylinder, layCourses(cylinder, hoop, o), cells);
+        CHECK(std::abs(c.uncovered + c.once + c.several - 1.0) <= 1e-12);
+        CHECK(std::abs(c.once - 1.6 / 3.0) <= 2.0 * cell / 3.0);
+        CHECK(c.several <= 1e-12);
+        CHECK(c.triangles.size() == 2 * cells * cells);
+        // The tessellation's area: the cylinder's to the chords' error.
+        CHECK(std::abs(c.totalArea - 2.0 * M_PI * 2.0 * 3.0) <= 1e-3 * c.totalArea);
+        std::size_t twice = 0;
+        for (const std::size_t n : c.count) twice += n > 1;
+        CHECK(twice == 0);
+    }
+    o.spacing = 0.36;
+    const CourseCoverage c = courseCoverage(cylinder, layCourses(cylinder, hoop, o), cells);
+    CHECK(std::abs(c.uncovered + c.once + c.several - 1.0) <= 1e-12);
+    // Covered: from -0.2 to 3 x 0.36 + 0.2 about the hoop; three overlaps of 0.04.
+    const double span = 3 * 0.36 + 0.4, overlap = 3 * 0.04;
+    CHECK(std::abs(c.several - overlap / 3.0) <= 6.0 * cell / 3.0);
+    CHECK(std::abs(c.once - (span - overlap) / 3.0) <= 8.0 * cell / 3.0);
+    std::ostringstream vtk;
+    writeCourseCoverageVtk(c, vtk);
+    CHECK(vtk.str().find("coverage 1 " + std::to_string(c.triangles.size()) + " int") != std::string::npos);
 }

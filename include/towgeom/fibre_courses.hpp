@@ -35,6 +35,10 @@ struct CourseOptions {
     /// step met it (it is a check, not a refinement: the method decides the placement).
     double tolerance = 0.0;
     int geodesicSteps = 64;  ///< as SurfaceOffsetOptions::geodesicSteps
+    /// The smallest steering radius the head can lay a tow along (its centreline's radius of
+    /// geodesic curvature); 0: not checked. Tows that need less are listed in
+    /// CoursePlan::belowSteeringRadius (they are laid all the same).
+    double minSteeringRadius = 0.0;
 };
 
 /// One offset step of the plan: a curve placed at a distance from another, point by point.
@@ -79,6 +83,13 @@ struct TowPath {
     /// where it starts inside the face, as its course's curve does.
     std::string startBoundary;
     std::string endBoundary;  ///< likewise for its end
+    /// Per centreline point, its geodesic curvature (the in-plane curvature a head steers: the
+    /// curvature of the centreline seen along the surface's normal; positive turning left),
+    /// from its (u,v) cubic.
+    std::vector<double> geodesicCurvature;
+    /// The smallest steering radius along the centreline, 1 / max |geodesic curvature|
+    /// (infinity for a geodesic).
+    double steeringRadius = 0.0;
 };
 
 /// The gap (positive) or overlap (negative) between two neighbouring tows, measured along the
@@ -111,6 +122,9 @@ struct CoursePlan {
     /// The courses and tows (by name) that lie off the surface entirely, not laid: a course
     /// whose centreline leaves the face ends the plan (no later course is tried).
     std::vector<std::string> offSurface;
+    double minSteeringRadius = 0.0;  ///< as asked (0: not checked)
+    /// The tows (names) whose steering radius is below CourseOptions::minSteeringRadius.
+    std::vector<std::string> belowSteeringRadius;
 };
 
 /// Lays @p options.courses courses of @p options.towsPerCourse tows on @p surface from
@@ -147,12 +161,22 @@ TOWGEOM_EXPORT CoursePlan layCourses(const NurbsSurface& surface, const CurveOnS
 /// "tows":[{"name", "course", "from", "distance", "centreline", "right", "left",
 /// "right_curve":{"degree","knots","poles":[[u,v,weight],..]}, "left_curve",
 /// "geodesic_distance", "estimated_error", "length", "start_boundary", "end_boundary" (a side
-/// of the box or null)}], "gaps":[{"right", "left" (the tows' names), "between_courses", "min",
-/// "max", "measured", "width"}], "off_surface":[names]} ("from": the curve a step started from;
+/// of the box or null), "geodesic_curvature", "steering_radius" (null for infinity)}],
+/// "gaps":[{"right", "left" (the tows' names), "between_courses", "min", "max", "measured",
+/// "width"}], "off_surface":[names], "min_steering_radius", "below_steering_radius":[names]} ("from": the curve a step started from;
 /// NaN widths and distances as null).
 /// @throws towgeom::Error (InvalidArgument) for a plan whose gaps do not match its tows;
 ///         (WriteFailed) when the stream fails.
 TOWGEOM_EXPORT void writeCoursePlanJson(const CoursePlan& plan, std::ostream& out);
+
+/// Writes @p plan's tow curves to the STEP (AP214) file @p path, whole or not at all: each tow's
+/// centreline, right and left edge (empty edges left out) an edge, its own product named
+/// "<tow>/centreline", "<tow>/right", "<tow>/left" (what CAD systems list), its curve on @p surface (the plan's) the points' (u,v) cubic (as
+/// TowPath::rightCurve), its 3D curve approximated from that by OpenCASCADE to @p tolerance (0:
+/// 1e-6 x the tow width).
+/// @throws towgeom::Error (InvalidArgument) for a negative tolerance or a curve whose points
+///         repeat; (WriteFailed) naming the file; (Internal) if OpenCASCADE fails.
+TOWGEOM_EXPORT void writeCoursePlanStep(const NurbsSurface& surface, const CoursePlan& plan, const std::string& path, double tolerance = 0.0);
 
 /// Writes @p plan's centrelines and edges as legacy VTK polylines (ParaView), cell data "tow"
 /// (index in CoursePlan::tows) and "kind" (0 centreline, 1 right edge, 2 left edge), point data

@@ -34,6 +34,7 @@
 #include "towgeom/surface_offset_curves.hpp"
 #include "towgeom/reference_curve.hpp"
 #include "towgeom/fibre_courses.hpp"
+#include "towgeom/course_coverage.hpp"
 #include "towgeom/laminate_family.hpp"
 #include "towgeom/mesh_tows.hpp"
 #include "towgeom/method_comparison.hpp"

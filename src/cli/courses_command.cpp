@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -58,6 +59,10 @@ Writes, all or nothing:
                     and Eq. 2 estimate, and the gaps ("width" per point: + gap, - overlap)
   DIR/courses.vtk   centrelines and edges as polylines for ParaView (cell data "tow",
                     "kind"; point data "gap")
+  DIR/courses.step  every tow's centreline and edges as named edges ("c1_t1/left", ...): curves
+                    on the surface, their 3D curves within 1e-6 W (AP214)
+  DIR/coverage.vtk  the surface's tessellation (--coverage-cells a side, two triangles a
+                    cell) with cell data "coverage": how many tows cover each triangle
   DIR/NAME.stw      each tow as a ribbon W wide and --thickness thick lying on the surface
                     (racetrack sections), NAME c<course>_t<tow>: 'towgeom detect DIR/*.stw'
                     finds the overlaps (ribbons of an earlier plan in DIR are removed)
@@ -67,7 +72,9 @@ and prints one JSON object on stdout:
   {"file", "face", "face_name", "method", "tows", "courses", "tow_width", "spacing", "tolerance",
    "largest_step_error", "within_tolerance", "gaps":[{"right", "left", "between_courses",
    "min", "max"}], "trimmed":[{"tow", "length", "start_boundary", "end_boundary"}],
-   "off_surface":[names], "no_ribbon":[names], "angle":{"theta", "crossings":[{"curve",
+   "off_surface":[names], "no_ribbon":[names], "coverage":{"cells", "area", "uncovered",
+   "once", "several"} (fractions of the area, adding to 1), "steering":{"smallest_radius", "min_radius",
+   "below":[names]}, "angle":{"theta", "crossings":[{"curve",
    "angle"}]} (with --angle)}
 
 Options:
@@ -89,6 +96,14 @@ Options:
                     tangent-and-project
   --tolerance E     the step error allowed (default 1e-3 W); within_tolerance says whether
                     every step met it (a warning on stderr if not)
+  --coverage-cells N
+                    the coverage's tessellation: N x N cells of the face's (u,v) box (default
+                    200; the fractions are accurate to about a cell along each band's border)
+  --min-steering-radius R
+                    the smallest radius the head can steer a tow on: tows whose centreline's
+                    geodesic curvature needs less are listed ("steering": "below") with a
+                    warning (each tow's "steering_radius" and per-point "geodesic_curvature"
+                    are in courses.json whether or not this is given)
   --angle THETA     a laminate-family ply at THETA degrees (0 < THETA < 180) to the 0 degree
                     tows the reference and the options above lay
   --points N        points along a plane reference (default 41)
@@ -219,7 +234,7 @@ int runCourses(int argc, char** argv, int first)
         const Args args(argc, argv, first,
                         {{"help"}, {"quiet"}, {"exact"}, {"reverse"}, {"reference", true}, {"tow-width", true}, {"tows", true}, {"courses", true},
                          {"spacing", true}, {"tolerance", true}, {"angle", true}, {"points", true}, {"thickness", true}, {"face", true},
-                         {"out", true}});
+                         {"min-steering-radius", true}, {"coverage-cells", true}, {"out", true}});
         if (args.has("help")) {
             std::cout << kCoursesHelp;
             return kExitOk;
@@ -234,10 +249,12 @@ int runCourses(int argc, char** argv, int first)
         options.courses = args.whole("courses", 1, 1, 10000, "1 to 10000");
         options.spacing = args.positive("spacing");
         options.tolerance = args.positive("tolerance");
+        options.minSteeringRadius = args.positive("min-steering-radius");
         if (args.has("exact")) options.method = SurfaceOffsetMethod::Geodesic;
         const auto angle = args.number("angle");
         if (angle && !(*angle > 0.0 && *angle < 180.0)) throw UsageError("--angle takes degrees between 0 and 180");
         const std::size_t points = args.whole("points", 41, 4, 100000, "4 to 100000");
+        const std::size_t coverageCells = args.whole("coverage-cells", 200, 2, 4000, "2 to 4000");
         const double thickness = args.has("thickness") ? args.positive("thickness") : 0.1 * options.towWidth;
         if (thickness > options.towWidth) throw UsageError("--thickness must not exceed --tow-width (the ribbons' sections are racetracks)");
         if (angle && options.towsPerCourse * options.courses < 2)
@@ -299,6 +316,15 @@ int runCourses(int argc, char** argv, int first)
                                              {"start_boundary", t.startBoundary.empty() ? Json() : Json(t.startBoundary)},
                                              {"end_boundary", t.endBoundary.empty() ? Json() : Json(t.endBoundary)}});
         report["off_surface"] = plan.offSurface;
+        say("measuring the coverage on " + std::to_string(coverageCells) + " x " + std::to_string(coverageCells) + " cells");
+        const CourseCoverage coverage = courseCoverage(tool.surface, plan, coverageCells);
+        report["coverage"] = {{"cells", coverageCells}, {"area", coverage.totalArea}, {"uncovered", coverage.uncovered}, {"once", coverage.once},
+                              {"several", coverage.several}};
+        double smallest = std::numeric_limits<double>::infinity();
+        for (const TowPath& t : plan.tows) smallest = std::min(smallest, t.steeringRadius);
+        report["steering"] = {{"smallest_radius", std::isfinite(smallest) ? Json(smallest) : Json()},
+                              {"min_radius", plan.minSteeringRadius},
+                              {"below", plan.belowSteeringRadius}};
         report["no_ribbon"] = noRibbon;
         if (angle) {
             Json crossings = Json::array();
@@ -311,8 +337,11 @@ int runCourses(int argc, char** argv, int first)
         const std::filesystem::path dir(*outDir);
         writeCoursePlanJson(plan, files.open((dir / "courses.json").string()));
         writeCoursePlanVtk(plan, files.open((dir / "courses.vtk").string()));
+        writeCourseCoverageVtk(coverage, files.open((dir / "coverage.vtk").string()));
         for (const TowStack& r : ribbons) writeStack(files.open((dir / (r.name + ".stw")).string()), r);
         files.commit();
+        // The tow curves as STEP, written whole next to the rest (OpenCASCADE writes the file).
+        writeCoursePlanStep(tool.surface, plan, (dir / "courses.step").string());
         // Ribbons of an earlier, larger plan in DIR would join 'detect DIR/*.stw': removed.
         std::set<std::string> written;
         for (const TowStack& r : ribbons) written.insert(r.name + ".stw");
@@ -326,6 +355,9 @@ int runCourses(int argc, char** argv, int first)
         if (!noRibbon.empty())
             std::cerr << "towgeom courses: warning: " << noRibbon.size() << " tow(s) cut by the face's boundary to fewer than " << TowStack::kMinSections
                       << " points have no .stw ribbon (\"no_ribbon\"; give more --points)\n";
+        if (!plan.belowSteeringRadius.empty())
+            std::cerr << "towgeom courses: warning: " << plan.belowSteeringRadius.size() << " tow(s) must be steered on a radius below --min-steering-radius "
+                      << plan.minSteeringRadius << " (smallest " << smallest << "; \"steering\" lists them)\n";
         if (!plan.withinTolerance)
             std::cerr << "towgeom courses: warning: a step is " << plan.largestStepError << " from its distance along the surface, more than --tolerance "
                       << plan.tolerance << " (--exact places them by geodesics)\n";

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "core/elapsed.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
 
@@ -11,7 +12,7 @@ TOWGEOM_BEGIN_NAMESPACE
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using detail::kPi;
 
 using Bezier = std::array<Point2, 4>;
 

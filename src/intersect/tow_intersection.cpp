@@ -10,6 +10,7 @@
 #include <mutex>
 #include <vector>
 
+#include "core/elapsed.hpp"
 #include "core/parallel.hpp"
 #include "core/progress_report.hpp"
 #include "core/section_geometry.hpp"
@@ -32,10 +33,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double msSince(Clock::time_point t0)
-{
-    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
+using detail::msSince;
 
 struct PairResult {
     std::vector<IntersectionLoop> loops;

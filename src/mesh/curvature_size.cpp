@@ -3,13 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/elapsed.hpp"
 #include "towgeom/export.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using detail::kPi;
 
 }  // namespace
 

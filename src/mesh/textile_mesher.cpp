@@ -16,6 +16,7 @@
 #include "cell/cell_faces.hpp"
 #include "cell/face_crossings.hpp"
 #include "cell/tow_cuts.hpp"
+#include "core/elapsed.hpp"
 #include "core/parallel.hpp"
 #include "intersect/intersection_loop_data.hpp"
 #include "core/progress_report.hpp"
@@ -43,7 +44,7 @@ using Clock = std::chrono::steady_clock;
 using Triangle = std::array<std::size_t, 3>;
 using TowPair = std::pair<std::size_t, std::size_t>;
 
-double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+using detail::msSince;
 
 /// @p p with v moved into the period [vMin, vMax) by whole periods.
 UV inPeriod(UV p, const ParameterRange& r)

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cell/cell_faces.hpp"
+#include "core/elapsed.hpp"
 #include "core/parallel.hpp"
 #include "core/progress_report.hpp"
 #include "pipeline/resolve_checks.hpp"
@@ -29,7 +30,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+using detail::msSince;
 
 void checkOptions(const ResolveOptions& o)
 {

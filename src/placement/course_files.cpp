@@ -74,6 +74,8 @@ void writeCoursePlanJson(const CoursePlan& plan, std::ostream& out)
         e["length"] = t.length;
         e["start_boundary"] = t.startBoundary.empty() ? Json() : Json(t.startBoundary);
         e["end_boundary"] = t.endBoundary.empty() ? Json() : Json(t.endBoundary);
+        e["geodesic_curvature"] = t.geodesicCurvature;
+        e["steering_radius"] = std::isfinite(t.steeringRadius) ? Json(t.steeringRadius) : Json();
         tows.push_back(std::move(e));
     }
     j["tows"] = std::move(tows);
@@ -88,6 +90,8 @@ void writeCoursePlanJson(const CoursePlan& plan, std::ostream& out)
                         {"width", g.width}});
     j["gaps"] = std::move(gaps);
     j["off_surface"] = plan.offSurface;
+    j["min_steering_radius"] = plan.minSteeringRadius;
+    j["below_steering_radius"] = plan.belowSteeringRadius;
     out << j.dump(-1, ' ', false, Json::error_handler_t::replace) << "\n";
     if (!out) throw Error(ErrorCode::WriteFailed, "could not write the course plan's JSON");
 }

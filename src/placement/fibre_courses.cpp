@@ -12,6 +12,7 @@
 #include <string>
 #include <tuple>
 
+#include "placement/curve_derivatives.hpp"
 #include "placement/geodesics.hpp"
 #include "placement/nurbs_geometry.hpp"
 #include "placement/offset_point.hpp"
@@ -160,6 +161,8 @@ CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& referen
     if (!(options.spacing >= 0.0) || !std::isfinite(options.spacing) || !(options.tolerance >= 0.0) || !std::isfinite(options.tolerance))
         throw Error(ErrorCode::InvalidArgument, "layCourses: the spacing and tolerance must be finite, 0 or more");
     if (options.geodesicSteps < 1) throw Error(ErrorCode::InvalidArgument, "layCourses: at least one geodesic step");
+    if (!(options.minSteeringRadius >= 0.0) || !std::isfinite(options.minSteeringRadius))
+        throw Error(ErrorCode::InvalidArgument, "layCourses: the smallest steering radius must be finite, 0 or more");
     if (reference.uv.size() < 4 || reference.points.size() != reference.uv.size())
         throw Error(ErrorCode::InvalidArgument, "layCourses: a reference of at least 4 points, each with its (u,v)");
     for (std::size_t i = 0; i < reference.uv.size(); ++i) {
@@ -175,6 +178,7 @@ CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& referen
     plan.spacing = options.spacing > 0.0 ? options.spacing : w;
     plan.tolerance = options.tolerance > 0.0 ? options.tolerance : 1e-3 * w;
     plan.method = options.method;
+    plan.minSteeringRadius = options.minSteeringRadius;
     const std::size_t nTows = options.towsPerCourse;
     const int steps = options.geodesicSteps;
     try {
@@ -211,6 +215,11 @@ CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& referen
                 tow.endBoundary = line.endSide.empty() ? detail::boundarySide(s, line.curve.uv.back(), 1e-9) : line.endSide;
                 tow.step = stepRecord(centre.name, d, line);
                 tow.length = detail::lengthOnSurface(s, tow.centreline);
+                tow.geodesicCurvature = detail::geodesicCurvatures(s, tow.centreline);
+                double sharpest = 0.0;
+                for (const double k : tow.geodesicCurvature) sharpest = std::max(sharpest, std::abs(k));
+                tow.steeringRadius = sharpest > 0.0 ? 1.0 / sharpest : std::numeric_limits<double>::infinity();
+                if (options.minSteeringRadius > 0.0 && tow.steeringRadius < options.minSteeringRadius) plan.belowSteeringRadius.push_back(tow.name);
                 // Each edge, and its (u,v) B-spline; none where the whole edge hangs off the face.
                 const auto edge = [&](double side, const char* which, CurveOnSurface& e, NurbsCurve& curve) {
                     const std::string what = "tow " + tow.name + "'s " + which + " edge";

@@ -11,6 +11,7 @@
 #include <limits>
 #include <string>
 
+#include "core/elapsed.hpp"
 #include "placement/geodesics.hpp"
 #include "placement/nurbs_geometry.hpp"
 #include "placement/periodic_surface.hpp"
@@ -22,7 +23,7 @@ TOWGEOM_BEGIN_NAMESPACE
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using detail::kPi;
 
 /// The cubic B-spline in (u,v) through @p uv at parameters i / (n - 1).
 Handle(Geom2d_BSplineCurve) interpolate(const std::vector<UV>& uv)

@@ -30,13 +30,5 @@ struct OffsetPoint {
 OffsetPoint offsetPoint(const Handle(Geom_BSplineSurface)& s, const UV& at, const gp_Vec& tangent, double d, const SurfaceOffsetOptions& options,
                         bool measure = true);
 
-/// Whether @p c is closed: its last point is its first (to 1e-12 of its extent).
-bool isClosed(const CurveOnSurface& c);
-
-/// The 3D direction of @p c (on @p s) at each of its points: the derivative of its (u,v) cubic
-/// interpolation (chord-length parameters) for an open curve, accurate to its ends; the chord
-/// between a point's neighbours for a closed one (across its joint, see isClosed()).
-std::vector<gp_Vec> curveTangents(const Handle(Geom_BSplineSurface)& s, const CurveOnSurface& c);
-
 }  // namespace detail
 TOWGEOM_END_NAMESPACE

@@ -15,6 +15,7 @@
 
 #include "placement/geodesics.hpp"
 #include "placement/nurbs_geometry.hpp"
+#include "placement/curve_derivatives.hpp"
 #include "placement/offset_point.hpp"
 #include "placement/periodic_surface.hpp"
 #include "placement/uv_interpolation.hpp"
@@ -50,40 +51,6 @@ double geodesicDistance(const NurbsSurface& surface, const UV& from, const UV& t
 }
 
 namespace detail {
-
-bool isClosed(const CurveOnSurface& c)
-{
-    if (c.points.size() < 3) return false;
-    BoundingBox box;
-    for (const Point3& p : c.points) box.add(p);
-    return distance(c.points.front(), c.points.back()) <= 1e-12 * distance(box.min, box.max);
-}
-
-std::vector<gp_Vec> curveTangents(const Handle(Geom_BSplineSurface)& s, const CurveOnSurface& c)
-{
-    const std::size_t n = c.points.size();
-    std::vector<gp_Vec> out;
-    const Handle(Geom2d_BSplineCurve) cubic = isClosed(c) ? Handle(Geom2d_BSplineCurve)() : interpolateUV(c.uv, chordParameters(c.uv));
-    const std::vector<double> params = chordParameters(c.uv);
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!cubic.IsNull()) {
-            gp_Pnt2d q;
-            gp_Vec2d d;
-            cubic->D1(params[i], q, d);
-            gp_Pnt p;
-            gp_Vec su, sv;
-            s->D1(c.uv[i].u, c.uv[i].v, p, su, sv);
-            out.push_back(su * d.X() + sv * d.Y());
-            continue;
-        }
-        // Closed (or points OpenCASCADE cannot interpolate): the chord between the neighbours.
-        std::size_t before = i > 0 ? i - 1 : i, after = i + 1 < n ? i + 1 : i;
-        if (isClosed(c) && i == 0) before = n - 2;  // the point before the joint
-        if (isClosed(c) && i + 1 == n) after = 1;
-        out.emplace_back(detail::toOcct(c.points[before]), detail::toOcct(c.points[after]));
-    }
-    return out;
-}
 
 OffsetPoint offsetPoint(const Handle(Geom_BSplineSurface)& s, const UV& at, const gp_Vec& tangent, double d, const SurfaceOffsetOptions& options,
                         bool measure)

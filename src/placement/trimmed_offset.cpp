@@ -11,6 +11,7 @@
 #include <limits>
 #include <optional>
 
+#include "placement/curve_derivatives.hpp"
 #include "placement/geodesics.hpp"
 #include "placement/offset_point.hpp"
 #include "placement/periodic_surface.hpp"

@@ -10,6 +10,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "path_argument.hpp"
+#include "towgeom/course_coverage.hpp"
 #include "towgeom/fibre_courses.hpp"
 #include "towgeom/placement_surface.hpp"
 #include "towgeom/reference_curve.hpp"
@@ -81,9 +82,12 @@ void bindPlan(py::module_& m)
         .def_readonly("right", &TowPath::right)
         .def_readonly("length", &TowPath::length, "The centreline's length along the surface.")
         .def_readonly("start_boundary", &TowPath::startBoundary,
-                      "The side of the face's (u,v) box ('u_min', 'u_max', 'v_min', 'v_max') where the centreline was cut or carried to "
-                      "at its start; '' where it starts as its course's curve does.")
+                      "The side of the face's (u,v) box ('u_min', 'u_max', 'v_min', 'v_max') the centreline starts on (cut, carried or "
+                      "there already); '' where it starts inside the face.")
         .def_readonly("end_boundary", &TowPath::endBoundary, "As start_boundary, at its end.")
+        .def_property_readonly("geodesic_curvature", [](const TowPath& t) { return valuesArray(t.geodesicCurvature); },
+                               "Per centreline point, its geodesic (in-plane, steering) curvature; positive turning left.")
+        .def_readonly("steering_radius", &TowPath::steeringRadius, "1 / the largest |geodesic curvature| (inf for a geodesic).")
         .def_property_readonly("geodesic_distance", [](const TowPath& t) { return valuesArray(t.step.geodesicDistance); },
                                "Per centreline point, the measured distance along the surface from the curve it was offset from.");
     py::class_<CoursePlan>(m, "CoursePlan", "Courses of tows laid on a tool surface from a reference curve.")
@@ -95,6 +99,9 @@ void bindPlan(py::module_& m)
         .def_readonly("largest_step_error", &CoursePlan::largestStepError)
         .def_readonly("within_tolerance", &CoursePlan::withinTolerance)
         .def_readonly("off_surface", &CoursePlan::offSurface, "Courses and tows (names) wholly off the face: not laid.")
+        .def_readonly("min_steering_radius", &CoursePlan::minSteeringRadius)
+        .def_readonly("below_steering_radius", &CoursePlan::belowSteeringRadius,
+                      "Tows (names) whose steering radius is below min_steering_radius.")
         .def_property_readonly("gaps", [](const CoursePlan& p) {
                 py::list out;
                 for (const TowGap& g : p.gaps)
@@ -107,18 +114,37 @@ void bindPlan(py::module_& m)
             writeCoursePlanJson(p, out);
             return out.str();
         }, "The plan as the CLI's courses.json.");
+    py::class_<CourseCoverage>(m, "CourseCoverage", "How many tows cover each triangle of a tool surface's tessellation.")
+        .def_property_readonly("nodes", [](const CourseCoverage& c) { return pointsArray(c.nodes); }, "(n, 3) nodes.")
+        .def_property_readonly("triangles", [](const CourseCoverage& c) { return trianglesArray(c.triangles); }, "(m, 3) node indices.")
+        .def_property_readonly("count", [](const CourseCoverage& c) {
+                return py::array_t<std::size_t>(c.count.size(), c.count.data());
+            }, "Per triangle, the tows covering it.")
+        .def_property_readonly("area", [](const CourseCoverage& c) { return valuesArray(c.area); }, "Per triangle, its area.")
+        .def_readonly("total_area", &CourseCoverage::totalArea)
+        .def_readonly("uncovered", &CourseCoverage::uncovered, "Fraction of the area no tow covers.")
+        .def_readonly("once", &CourseCoverage::once, "Fraction covered by one tow.")
+        .def_readonly("several", &CourseCoverage::several, "Fraction covered by two or more.");
+    m.def("course_coverage", [](const PlacementSurface& surface, const CoursePlan& plan, std::size_t cells) {
+            py::gil_scoped_release released;
+            return courseCoverage(surface.surface, plan, cells);
+        }, py::arg("surface"), py::arg("plan"), py::arg("cells") = 200,
+        "The surface's (u,v) box as cells x cells cells (two triangles each), each triangle's tows counted at its centroid.");
     const CourseOptions defaults;
     m.def("lay_courses", [](const PlacementSurface& surface, const CurveOnSurface& reference, double towWidth, std::size_t towsPerCourse,
-                            std::size_t courses, double spacing, const std::string& method, double tolerance, int geodesicSteps) {
+                            std::size_t courses, double spacing, const std::string& method, double tolerance, int geodesicSteps,
+                            double minSteeringRadius) {
             CourseOptions o;
             o.towWidth = towWidth, o.towsPerCourse = towsPerCourse, o.courses = courses, o.spacing = spacing, o.tolerance = tolerance;
             o.geodesicSteps = geodesicSteps;
+            o.minSteeringRadius = minSteeringRadius;
             o.method = enumNamed(method, {SurfaceOffsetMethod::ProjectTangent, SurfaceOffsetMethod::Geodesic}, &offsetMethodName, "offset method");
             py::gil_scoped_release released;
             return layCourses(surface.surface, reference, o);
         }, py::arg("surface"), py::arg("reference"), py::arg("tow_width"), py::arg("tows_per_course") = defaults.towsPerCourse,
         py::arg("courses") = defaults.courses, py::arg("spacing") = defaults.spacing, py::arg("method") = offsetMethodName(defaults.method),
         py::arg("tolerance") = defaults.tolerance, py::arg("geodesic_steps") = defaults.geodesicSteps,
+        py::arg("min_steering_radius") = defaults.minSteeringRadius,
         "K courses of N tows of width W on the surface, the first course's centreline the reference, each next course to its "
         "left; method 'project-tangent' (Schueler et al.) or 'geodesic' (exact).");
 }

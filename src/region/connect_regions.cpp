@@ -15,6 +15,7 @@
 
 #include "cell/face_crossings.hpp"
 #include "cell/mesh_clip.hpp"
+#include "core/elapsed.hpp"
 #include "core/parallel.hpp"
 #include "core/progress_report.hpp"
 #include "mesh/mesh_measures.hpp"
@@ -38,7 +39,7 @@ using Triangle = std::array<std::size_t, 3>;
 using TowPair = std::pair<std::size_t, std::size_t>;
 using NodeUV = std::pair<std::size_t, UV>;
 
-double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+using detail::msSince;
 
 Triangle reversed(const Triangle& t) { return {t[0], t[2], t[1]}; }
 

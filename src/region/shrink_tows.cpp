@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "core/elapsed.hpp"
 #include "core/progress_report.hpp"
 #include "region/tow_ranks.hpp"
 #include "towgeom/error.hpp"
@@ -17,7 +18,7 @@ TOWGEOM_BEGIN_NAMESPACE
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using detail::kPi;
 
 /// A tow's sections as TowSurface::sections() gives them, their centroids and the length along
 /// the polyline of centroids at each.

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "core/elapsed.hpp"
 #include "core/parallel.hpp"
 #include "core/progress_report.hpp"
 #include "pipeline/resolve_checks.hpp"
@@ -20,7 +21,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+using detail::msSince;
 
 /// Each tow's cross-section areas at its input sections' planes, in @p mesh.
 std::vector<std::vector<double>> sectionAreas(const std::vector<std::vector<detail::SectionPlane>>& planes, const TextileMesh& mesh,

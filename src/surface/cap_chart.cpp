@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 
+#include "core/elapsed.hpp"
 #include "surface/occt_convert.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
@@ -12,7 +13,7 @@ namespace detail {
 namespace {
 
 constexpr int kRimSamples = 256;
-constexpr double kPi = 3.14159265358979323846;
+using detail::kPi;
 
 /// The mean point of the section at @p u (from kRimSamples points).
 gp_XYZ sectionMean(const GeomAdaptor_Surface& s, double u, double v0, double period, int n)

@@ -96,6 +96,14 @@ def test_courses_on_a_cylinder_as_the_cli_lays_them_and_as_the_closed_form(tmp_p
     for tow in plan.tows:
         assert {tow.start_boundary, tow.end_boundary} == {"v_min", "v_max"}
         assert abs(tow.length - numpy.pi * 10.0) < 1e-4
+        assert numpy.all(numpy.isfinite(tow.geodesic_curvature))
+    # Three tows 2 wide edge to edge across the 40 long half cylinder: 6 / 40 of it once.
+    coverage = towgeom.course_coverage(surface, plan, cells=80)
+    assert abs(coverage.uncovered + coverage.once + coverage.several - 1.0) < 1e-12
+    assert abs(coverage.once - 6.0 / 40.0) < 2.0 / 80.0
+    assert coverage.several < 1e-12
+    assert coverage.count.shape == (coverage.triangles.shape[0],)
+    assert abs(coverage.area.sum() - coverage.total_area) < 1e-9 * coverage.total_area
     # The CLI on the same grid: the same centrelines.
     lines = ["grid 41 33"] + [f"{p[0]!r} {p[1]!r} {p[2]!r}" for p in grid.reshape(-1, 3)]
     (tmp_path / "half.grid").write_text("\n".join(lines) + "\n")

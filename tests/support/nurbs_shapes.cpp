@@ -2,6 +2,7 @@
 #include "nurbs_shapes.hpp"
 
 #include <cmath>
+#include <utility>
 
 namespace towgeom::testing {
 
@@ -37,6 +38,24 @@ NurbsSurface cylinder(double r, double length)
     for (std::size_t i = 0; i < c.poles.size(); ++i)
         for (double z : {0.0, length}) {
             s.poles.push_back({c.poles[i].x, c.poles[i].y, z});
+            s.weights.push_back(c.weights[i]);
+        }
+    return s;
+}
+
+NurbsSurface cone(double r0, double r1, double height)
+{
+    const NurbsCurve c = circle(1.0, 0.0, 0.0, 0.0);
+    NurbsSurface s;
+    s.uDegree = 2;
+    s.vDegree = 1;
+    s.uKnots = c.knots;
+    s.vKnots = {0, 0, 1, 1};
+    s.uCount = c.poles.size();
+    s.vCount = 2;
+    for (std::size_t i = 0; i < c.poles.size(); ++i)
+        for (const auto& [r, z] : {std::pair{r0, 0.0}, std::pair{r1, height}}) {
+            s.poles.push_back({r * c.poles[i].x, r * c.poles[i].y, z});
             s.weights.push_back(c.weights[i]);
         }
     return s;

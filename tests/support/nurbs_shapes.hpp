@@ -15,6 +15,11 @@ NurbsCurve circle(double r, double cx, double cy, double z);
 /// v along (degree 1). Its normal dS/du x dS/dv points outward.
 NurbsSurface cylinder(double r, double length);
 
+/// A cone's frustum about the z axis, radius @p r0 at z = 0 and @p r1 at z = @p height (the
+/// rational circle's poles at both heights, degree 1 between: each generator straight): u
+/// around, v along.
+NurbsSurface cone(double r0, double r1, double height);
+
 /// A bicubic saddle z = 0.3 (x^2 - y^2) over [-1, 1]^2 (poles on a 5 x 5 grid, not rational).
 NurbsSurface saddle();
 

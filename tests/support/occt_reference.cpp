@@ -12,6 +12,7 @@
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom_CylindricalSurface.hxx>
+#include <Geom_Curve.hxx>
 #include <Geom_SphericalSurface.hxx>
 #include <Geom_ToroidalSurface.hxx>
 #include <IGESControl_Writer.hxx>
@@ -116,6 +117,50 @@ ReadShapes readStep(const std::string& path)
     const ReadShapes r = describe(tool->GetShape(free.Value(1)), names, true);
     XCAFApp_Application::GetApplication()->Close(doc);
     return r;
+}
+
+std::vector<ReadEdge> readStepEdges(const std::string& path, int samples)
+{
+    Handle(TDocStd_Document) doc;
+    XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", doc);
+    STEPCAFControl_Reader reader;
+    Interface_Static::SetIVal("read.stepcaf.subshapes.name", 1);
+    reader.SetNameMode(Standard_True);
+    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone || !reader.Transfer(doc)) throw std::runtime_error("cannot read STEP " + path);
+    const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+    TDF_LabelSequence free;
+    tool->GetFreeShapes(free);
+    std::vector<ReadEdge> out;
+    TDF_LabelSequence labels;  // the free shapes and every label under them
+    for (int f = 1; f <= free.Length(); ++f) {
+        labels.Append(free.Value(f));
+        for (TDF_ChildIterator it(free.Value(f), Standard_True); it.More(); it.Next()) labels.Append(it.Value());
+    }
+    for (int l = 1; l <= labels.Length(); ++l) {
+        {
+            Handle(TDataStd_Name) n;
+            // A named curve set (GEOMETRIC_CURVE_SET) comes back as a shape holding its edge.
+            const TopoDS_Shape shape = tool->GetShape(labels.Value(l));
+            if (shape.IsNull() || !labels.Value(l).FindAttribute(TDataStd_Name::GetID(), n)) continue;
+            TopExp_Explorer x(shape, TopAbs_EDGE);
+            if (!x.More()) continue;
+            const TopoDS_Edge edge = TopoDS::Edge(x.Current());
+            x.Next();
+            if (x.More()) continue;  // not one edge
+            ReadEdge e;
+            e.name = TCollection_AsciiString(n->Get()).ToCString();
+            double first = 0.0, last = 0.0;
+            const Handle(Geom_Curve) c = BRep_Tool::Curve(edge, first, last);
+            if (c.IsNull()) throw std::runtime_error("STEP " + path + ": edge " + e.name + " has no 3D curve");
+            for (int k = 0; k < samples; ++k) {
+                const gp_Pnt p = c->Value(first + (last - first) * k / (samples - 1));
+                e.points.push_back({p.X(), p.Y(), p.Z()});
+            }
+            out.push_back(e);
+        }
+    }
+    XCAFApp_Application::GetApplication()->Close(doc);
+    return out;
 }
 
 ReadShapes readBrep(const std::string& path, bool volumes) { return describe(brepShape(path), {}, volumes); }

@@ -33,6 +33,15 @@ ReadShapes readStep(const std::string& path);
 /// Reads @p path with OCCT's BREP reader; volumes only when @p volumes (seconds per trimmed
 /// solid), else 0.
 ReadShapes readBrep(const std::string& path, bool volumes = true);
+/// One edge of a STEP file read back: its name (XDE) and points along its 3D curve.
+struct ReadEdge {
+    std::string name;
+    std::vector<towgeom::Point3> points;  ///< @p samples points evenly in the curve's parameter
+};
+
+/// The named edges of the STEP file @p path (OCCT's XDE reader), each sampled at @p samples points.
+std::vector<ReadEdge> readStepEdges(const std::string& path, int samples);
+
 /// Writes the lateral face of a cylinder of @p radius about the z axis from z = 0 to @p height
 /// (OCCT's primitive) alone to the STEP file @p path, or IGES when the path ends in .igs; with
 /// @p fromAngle < @p toAngle only the part between those angles (a face on OCCT's cylindrical
