@@ -182,7 +182,7 @@ TEST_CASE("a plane cut running to a B-spline patch's boundary: every tow cut at 
         return std::min({std::abs(p.x), std::abs(p.x - 4.0), std::abs(p.y), std::abs(p.y - 3.0)}) <= 1e-9 * size;
     };
     // x = 1.3 - 0.2 (y - 1), from y = 0 to y = 3, run so that the courses go to +x.
-    const CurveOnSurface reference = referenceFromPlane(patch.surface, {1.3, 1, 0}, {1, 0.2, 0}, 33, true);
+    const CurveOnSurface reference = referenceFromPlane(patch.surface, {1.3, 1, 0}, {1, 0.2, 0}, 21, true);
     REQUIRE(onBoundary(reference.points.front()));
     REQUIRE(onBoundary(reference.points.back()));
     for (const SurfaceOffsetMethod method : {SurfaceOffsetMethod::Geodesic, SurfaceOffsetMethod::ProjectTangent}) {

@@ -46,7 +46,9 @@ struct CourseStep {
     std::string from;    ///< the curve it was offset from ("reference", or a course's name)
     double distance = 0.0;  ///< the distance asked for (negative: to the right)
     /// Per point, the true distance along the surface from the point it was offset from (the
-    /// geodesic between the two).
+    /// geodesic between the two, shot by Newton's method from the chord). For a geodesic step
+    /// Newton starts from the step's own geodesic, which ends there: the value is |distance|
+    /// (re-shot, not measured independently); NaN at points carried to the boundary.
     std::vector<double> geodesicDistance;
     /// Per point, Schueler's Eq. 2 estimate of the shortfall |distance| - geodesicDistance.
     std::vector<double> estimatedError;
