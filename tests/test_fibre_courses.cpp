@@ -178,14 +178,14 @@ TEST_CASE("a plane reference cuts the surface, points are projected onto it, bot
     bad.courses = 0;
     CHECK_THROWS_AS(layCourses(s, ring, bad), Error);
     // Courses that run off the surface end the plan: the ring at z = 1.2 on a cylinder 3 high,
-    // courses 1 apart: the second at z = 2.2 or 0.2, the third off (z = 3.2 or -0.8), the fourth
-    // not tried; the second's outer edge (z = 2.7 or -0.3) on the surface or wholly off it (empty).
+    // courses 1 apart: the second at z = 2.2 or 0.2, the third off (z = 3.2 or -0.8; its one tow
+    // too), the fourth not tried; the second's outer edge (z = 2.7 or -0.3) on the surface or wholly off it (empty).
     CourseOptions wide;
     wide.towWidth = 1.0;
     wide.courses = 4;
     wide.method = SurfaceOffsetMethod::Geodesic;
     const CoursePlan plan = layCourses(s, ring, wide);
-    CHECK(plan.offSurface == std::vector<std::string>{"c3", "c4"});
+    CHECK(plan.offSurface == std::vector<std::string>{"c3", "c3_t1", "c4"});
     REQUIRE(plan.tows.size() == 2);
     const double z2 = plan.tows[1].centreline.points.front().z;
     CHECK((std::abs(z2 - 2.2) <= 1e-9 || std::abs(z2 - 0.2) <= 1e-9));

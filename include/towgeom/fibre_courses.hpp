@@ -121,8 +121,9 @@ struct CoursePlan {
     SurfaceOffsetMethod method = SurfaceOffsetMethod::ProjectTangent;  ///< as used
     double largestStepError = 0.0;  ///< the largest | |d| - true distance | over every step
     bool withinTolerance = true;    ///< whether largestStepError <= tolerance
-    /// The courses and tows (by name) that lie off the surface entirely, not laid: a course
-    /// whose centreline leaves the face ends the plan (no later course is tried).
+    /// The course centrelines and tows (by name) that lie off the surface entirely, not laid. A
+    /// course whose centreline is off the face still has its tows tried (offset from the course
+    /// before by the combined distance, TowPath::step from that course); no later course is.
     std::vector<std::string> offSurface;
     double minSteeringRadius = 0.0;  ///< as asked (0: not checked)
     /// The tows (names) whose steering radius is below CourseOptions::minSteeringRadius.
@@ -179,6 +180,10 @@ TOWGEOM_EXPORT void writeCoursePlanJson(const CoursePlan& plan, std::ostream& ou
 /// @throws towgeom::Error (InvalidArgument) for a negative tolerance or a curve whose points
 ///         repeat; (WriteFailed) naming the file; (Internal) if OpenCASCADE fails.
 TOWGEOM_EXPORT void writeCoursePlanStep(const NurbsSurface& surface, const CoursePlan& plan, const std::string& path, double tolerance = 0.0);
+
+/// As the other overload, to @p out (through a temporary file: OpenCASCADE writes files).
+/// @throws towgeom::Error as the other overload; (WriteFailed) when the stream fails.
+TOWGEOM_EXPORT void writeCoursePlanStep(const NurbsSurface& surface, const CoursePlan& plan, std::ostream& out, double tolerance = 0.0);
 
 /// Writes @p plan's centrelines and edges as legacy VTK polylines (ParaView), cell data "tow"
 /// (index in CoursePlan::tows) and "kind" (0 centreline, 1 right edge, 2 left edge), point data

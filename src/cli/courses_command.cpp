@@ -339,9 +339,8 @@ int runCourses(int argc, char** argv, int first)
         writeCoursePlanVtk(plan, files.open((dir / "courses.vtk").string()));
         writeCourseCoverageVtk(coverage, files.open((dir / "coverage.vtk").string()));
         for (const TowStack& r : ribbons) writeStack(files.open((dir / (r.name + ".stw")).string()), r);
+        writeCoursePlanStep(tool.surface, plan, files.open((dir / "courses.step").string()));
         files.commit();
-        // The tow curves as STEP, written whole next to the rest (OpenCASCADE writes the file).
-        writeCoursePlanStep(tool.surface, plan, (dir / "courses.step").string());
         // Ribbons of an earlier, larger plan in DIR would join 'detect DIR/*.stw': removed.
         std::set<std::string> written;
         for (const TowStack& r : ribbons) written.insert(r.name + ".stw");

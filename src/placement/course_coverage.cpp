@@ -82,15 +82,21 @@ bool inBand(const Band& band, const UV& p)
     return inside;
 }
 
-/// The copies of @p p (one per period, in each periodic direction) a tow's (u,v) may run through.
-std::vector<UV> copiesOf(const Handle(Geom_BSplineSurface)& s, const UV& p)
+/// Whether some copy of @p p (moved by whole periods, in each periodic direction) lies in
+/// @p band: only the copies inside the band's box are tried, however many turns it makes.
+bool inBandAnywhere(const Handle(Geom_BSplineSurface)& s, const Band& band, const UV& p)
 {
-    std::vector<UV> out;
     const double pu = s->IsUPeriodic() ? s->UPeriod() : 0.0, pv = s->IsVPeriodic() ? s->VPeriod() : 0.0;
-    const int ku = pu > 0.0 ? 2 : 0, kv = pv > 0.0 ? 2 : 0;
-    for (int i = -ku; i <= ku; ++i)
-        for (int j = -kv; j <= kv; ++j) out.push_back({p.u + i * pu, p.v + j * pv});
-    return out;
+    const auto shifts = [](double at, double lo, double hi, double period) {
+        if (!(period > 0.0)) return std::pair<long, long>{0, 0};
+        return std::pair<long, long>{static_cast<long>(std::ceil((lo - at) / period)), static_cast<long>(std::floor((hi - at) / period))};
+    };
+    const auto [iu0, iu1] = shifts(p.u, band.lo.u, band.hi.u, pu);
+    const auto [iv0, iv1] = shifts(p.v, band.lo.v, band.hi.v, pv);
+    for (long i = iu0; i <= iu1; ++i)
+        for (long j = iv0; j <= iv1; ++j)
+            if (inBand(band, {p.u + static_cast<double>(i) * pu, p.v + static_cast<double>(j) * pv})) return true;
+    return false;
 }
 
 }  // namespace
@@ -120,12 +126,7 @@ CourseCoverage courseCoverage(const NurbsSurface& surface, const CoursePlan& pla
                     const double area = 0.5 * norm(cross(out.nodes[t[1]] - out.nodes[t[0]], out.nodes[t[2]] - out.nodes[t[0]]));
                     const UV centre{(uv[t[0]].u + uv[t[1]].u + uv[t[2]].u) / 3.0, (uv[t[0]].v + uv[t[1]].v + uv[t[2]].v) / 3.0};
                     std::size_t count = 0;
-                    for (const Band& band : bands)
-                        for (const UV& copy : copiesOf(s, centre))
-                            if (inBand(band, copy)) {
-                                ++count;
-                                break;
-                            }
+                    for (const Band& band : bands) count += inBandAnywhere(s, band, centre) ? 1 : 0;
                     out.triangles.push_back(t);
                     out.count.push_back(count);
                     out.area.push_back(area);

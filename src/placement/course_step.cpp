@@ -3,10 +3,15 @@
 // own named product.
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepLib.hxx>
+#include <BRep_Tool.hxx>
 #include <Standard_Failure.hxx>
 #include <TopoDS_Edge.hxx>
 
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,8 +35,10 @@ TopoDS_Edge edgeOn(const Handle(Geom_BSplineSurface)& s, const CurveOnSurface& c
     BRepBuilderAPI_MakeEdge make(cubic, s, cubic->FirstParameter(), cubic->LastParameter());
     if (!make.IsDone()) throw Error(ErrorCode::Internal, "writeCoursePlanStep: OpenCASCADE could not make " + what + " an edge");
     TopoDS_Edge edge = make.Edge();
-    if (!BRepLib::BuildCurve3d(edge, tolerance, GeomAbs_C2, 14, 256))
-        throw Error(ErrorCode::Internal, "writeCoursePlanStep: OpenCASCADE could not build " + what + "'s 3D curve");
+    // BuildCurve3d records the deviation it reached as the edge's tolerance: checked, not assumed.
+    if (!BRepLib::BuildCurve3d(edge, tolerance, GeomAbs_C2, 14, 256) || !(BRep_Tool::Tolerance(edge) <= tolerance))
+        throw Error(ErrorCode::Internal, "writeCoursePlanStep: OpenCASCADE could not build " + what + "'s 3D curve within " + std::to_string(tolerance) +
+                                             " (reached " + std::to_string(BRep_Tool::Tolerance(edge)) + ")");
     return edge;
 }
 
@@ -56,6 +63,23 @@ void writeCoursePlanStep(const NurbsSurface& surface, const CoursePlan& plan, co
         throw Error(ErrorCode::Internal, std::string("writeCoursePlanStep: OpenCASCADE failed: ") + e.GetMessageString(), path);
     }
     detail::writeReplacing(path, [&](const std::string& file) { return detail::writeNamedStep(parts, file); });
+}
+
+void writeCoursePlanStep(const NurbsSurface& surface, const CoursePlan& plan, std::ostream& out, double tolerance)
+{
+    // OpenCASCADE writes files: a temporary one, copied into the stream.
+    const std::string file = detail::uniqueFile((std::filesystem::temp_directory_path() / "towgeom-courses-").string(), ".step");
+    try {
+        writeCoursePlanStep(surface, plan, file, tolerance);
+        std::ifstream in(file, std::ios::binary);
+        out << in.rdbuf();
+        const bool ok = static_cast<bool>(in) && static_cast<bool>(out);
+        std::remove(file.c_str());
+        if (!ok) throw Error(ErrorCode::WriteFailed, "could not copy the course plan's STEP into the stream");
+    } catch (...) {
+        std::remove(file.c_str());
+        throw;
+    }
 }
 
 TOWGEOM_END_NAMESPACE

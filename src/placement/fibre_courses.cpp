@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <tuple>
 
@@ -151,6 +152,38 @@ double largestError(const CourseStep& step)
     return worst;
 }
 
+/// The tow @p name whose centreline is @p base's curve offset by @p d, with its edges, length and
+/// steering; nothing when the centreline lies off the face.
+std::optional<TowPath> layTow(const Handle(Geom_BSplineSurface)& s, const CourseCentre& base, double d, const std::string& name,
+                              const CourseOptions& options, double w)
+{
+    const int steps = options.geodesicSteps;
+    detail::TrimmedOffset line = offsetStep(s, base.curve, d, options.method, steps, "tow " + name);
+    if (line.curve.uv.size() < 2) return std::nullopt;
+    TowPath tow;
+    tow.name = name;
+    tow.centreline = line.curve;
+    // The side each end lies on: cut or carried there, or there already.
+    tow.startBoundary = line.startSide.empty() ? detail::boundarySide(s, line.curve.uv.front(), 1e-9) : line.startSide;
+    tow.endBoundary = line.endSide.empty() ? detail::boundarySide(s, line.curve.uv.back(), 1e-9) : line.endSide;
+    tow.step = stepRecord(base.name, d, line);
+    tow.length = detail::lengthOnSurface(s, tow.centreline);
+    tow.geodesicCurvature = detail::geodesicCurvatures(s, tow.centreline);
+    double sharpest = 0.0;
+    for (const double k : tow.geodesicCurvature) sharpest = std::max(sharpest, std::abs(k));
+    tow.steeringRadius = sharpest > 0.0 ? 1.0 / sharpest : std::numeric_limits<double>::infinity();
+    // Each edge, and its (u,v) B-spline; none where the whole edge hangs off the face.
+    const auto edge = [&](double side, const char* which, CurveOnSurface& e, NurbsCurve& curve) {
+        const std::string what = "tow " + name + "'s " + which + " edge";
+        e = offsetStep(s, tow.centreline, side, SurfaceOffsetMethod::Geodesic, steps, what).curve;
+        if (e.uv.size() < 2) e = CurveOnSurface();
+        else curve = parameterCurve(e.uv, what);
+    };
+    edge(-0.5 * w, "right", tow.right, tow.rightCurve);
+    edge(0.5 * w, "left", tow.left, tow.leftCurve);
+    return tow;
+}
+
 }  // namespace
 
 CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& reference, const CourseOptions& options)
@@ -185,51 +218,45 @@ CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& referen
         for (std::size_t c = 0; c < options.courses; ++c) {
             CourseCentre centre;
             centre.name = "c" + std::to_string(c + 1);
+            // Where this course's tows are offset from, and by how much more than their place in it.
+            CourseCentre base;
+            double beyond = 0.0;
             if (c == 0) {
                 centre.curve = reference;
                 centre.step.from = "reference";
             } else {
                 const CourseCentre& last = plan.courses.back();
                 detail::TrimmedOffset next = offsetStep(s, last.curve, nTows * plan.spacing, options.method, steps, "course " + centre.name);
-                if (next.curve.uv.size() < 2) {  // off the surface: the plan ends here
-                    for (std::size_t k = c; k < options.courses; ++k) plan.offSurface.push_back("c" + std::to_string(k + 1));
-                    break;
+                if (next.curve.uv.size() < 2) {  // its centreline is off the face: its tows from the last one's
+                    base = last;
+                    beyond = nTows * plan.spacing;
+                } else {
+                    centre.curve = next.curve;
+                    centre.step = stepRecord(last.name, nTows * plan.spacing, next);
                 }
-                centre.curve = next.curve;
-                centre.step = stepRecord(last.name, nTows * plan.spacing, next);
             }
-            plan.courses.push_back(centre);
+            const bool centreOff = beyond > 0.0;
+            if (centreOff) {
+                plan.offSurface.push_back(centre.name);
+            } else {
+                plan.courses.push_back(centre);
+                base = centre;
+            }
             for (std::size_t i = 0; i < nTows; ++i) {
-                TowPath tow;
-                tow.name = centre.name + "_t" + std::to_string(i + 1);
-                tow.course = c;
-                const double d = (static_cast<double>(i) - 0.5 * static_cast<double>(nTows - 1)) * plan.spacing;
-                detail::TrimmedOffset line = offsetStep(s, centre.curve, d, options.method, steps, "tow " + tow.name);
-                if (line.curve.uv.size() < 2) {
-                    plan.offSurface.push_back(tow.name);
+                const std::string name = centre.name + "_t" + std::to_string(i + 1);
+                const double d = (static_cast<double>(i) - 0.5 * static_cast<double>(nTows - 1)) * plan.spacing + beyond;
+                std::optional<TowPath> tow = layTow(s, base, d, name, options, w);
+                if (!tow) {
+                    plan.offSurface.push_back(name);
                     continue;
                 }
-                tow.centreline = line.curve;
-                // The side each end lies on: cut or carried there, or there already.
-                tow.startBoundary = line.startSide.empty() ? detail::boundarySide(s, line.curve.uv.front(), 1e-9) : line.startSide;
-                tow.endBoundary = line.endSide.empty() ? detail::boundarySide(s, line.curve.uv.back(), 1e-9) : line.endSide;
-                tow.step = stepRecord(centre.name, d, line);
-                tow.length = detail::lengthOnSurface(s, tow.centreline);
-                tow.geodesicCurvature = detail::geodesicCurvatures(s, tow.centreline);
-                double sharpest = 0.0;
-                for (const double k : tow.geodesicCurvature) sharpest = std::max(sharpest, std::abs(k));
-                tow.steeringRadius = sharpest > 0.0 ? 1.0 / sharpest : std::numeric_limits<double>::infinity();
-                if (options.minSteeringRadius > 0.0 && tow.steeringRadius < options.minSteeringRadius) plan.belowSteeringRadius.push_back(tow.name);
-                // Each edge, and its (u,v) B-spline; none where the whole edge hangs off the face.
-                const auto edge = [&](double side, const char* which, CurveOnSurface& e, NurbsCurve& curve) {
-                    const std::string what = "tow " + tow.name + "'s " + which + " edge";
-                    e = offsetStep(s, tow.centreline, side, SurfaceOffsetMethod::Geodesic, steps, what).curve;
-                    if (e.uv.size() < 2) e = CurveOnSurface();
-                    else curve = parameterCurve(e.uv, what);
-                };
-                edge(-0.5 * w, "right", tow.right, tow.rightCurve);
-                edge(0.5 * w, "left", tow.left, tow.leftCurve);
-                plan.tows.push_back(std::move(tow));
+                tow->course = c;
+                if (options.minSteeringRadius > 0.0 && tow->steeringRadius < options.minSteeringRadius) plan.belowSteeringRadius.push_back(name);
+                plan.tows.push_back(std::move(*tow));
+            }
+            if (centreOff) {  // later courses lie farther off
+                for (std::size_t k = c + 1; k < options.courses; ++k) plan.offSurface.push_back("c" + std::to_string(k + 1));
+                break;
             }
         }
         if (plan.tows.empty()) throw Error(ErrorCode::InvalidArgument, "layCourses: every tow lies off the surface");

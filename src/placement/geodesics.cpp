@@ -119,7 +119,7 @@ UV shootGeodesic(const Handle(Geom_BSplineSurface)& s, const UV& from, const gp_
         // A periodic direction has no edge: the geodesic crosses the seam (u runs on past the box).
         const double du = 1e-6 * (u1 - u0), dv = 1e-6 * (v1 - v0);
         const bool inU = s->IsUPeriodic() || (x[0] >= u0 - du && x[0] <= u1 + du), inV = s->IsVPeriodic() || (x[1] >= v0 - dv && x[1] <= v1 + dv);
-        if (!inU || !inV) throw Error(ErrorCode::InvalidArgument, "a geodesic leaves the surface");
+        if (!inU || !inV) throw OffSurface(ErrorCode::InvalidArgument, "a geodesic leaves the surface");
     }
     return {x[0], x[1]};
 }

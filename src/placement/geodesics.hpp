@@ -9,11 +9,19 @@
 #include <array>
 #include <string>
 
+#include "towgeom/error.hpp"
 #include "towgeom/point.hpp"
 #include "towgeom/export.hpp"
 
 TOWGEOM_BEGIN_NAMESPACE
 namespace detail {
+
+/// What a geodesic or an offset throws when it leaves the surface's box (where it is not
+/// periodic): the one failure trimming at the boundary takes as the surface's end.
+class OffSurface : public Error {
+public:
+    using Error::Error;
+};
 
 /// A surface's point, first derivatives and unit normal at a parameter.
 struct SurfaceFrame {

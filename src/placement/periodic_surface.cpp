@@ -39,6 +39,10 @@ bool closesSmoothly(const Handle(Geom_BSplineSurface)& s, bool alongU)
         const gp_Pnt& a = alongU ? poles(poles.LowerRow(), poles.LowerCol() + k) : poles(poles.LowerRow() + k, poles.LowerCol());
         const gp_Pnt& b = alongU ? poles(poles.UpperRow(), poles.LowerCol() + k) : poles(poles.LowerRow() + k, poles.UpperCol());
         if (a.Distance(b) > 1e-9 * size) return false;
+        const int i = alongU ? poles.LowerRow() : poles.LowerRow() + k, j = alongU ? poles.LowerCol() + k : poles.LowerCol();
+        const int i2 = alongU ? poles.UpperRow() : i, j2 = alongU ? j : poles.UpperCol();
+        // Made periodic, the last row is dropped for the first, weights and all: they must agree.
+        if (std::abs(s->Weight(i, j) - s->Weight(i2, j2)) > 1e-12 * s->Weight(i, j)) return false;
     }
     double largest = 0.0;
     for (int k = 0; k <= 16; ++k) {

@@ -72,7 +72,7 @@ OffsetPoint offsetPoint(const Handle(Geom_BSplineSurface)& s, const UV& at, cons
         const gp_Pnt target = f.p.Translated(o * d);
         GeomAPI_ProjectPointOnSurf projection(target, s);
         if (!projection.IsDone() || projection.NbPoints() == 0)
-            throw Error(ErrorCode::InvalidArgument, "offsetOnSurface: an offset point does not project onto the surface");
+            throw OffSurface(ErrorCode::InvalidArgument, "offsetOnSurface: an offset point does not project onto the surface (it leaves the surface)");
         projection.LowerDistanceParameters(out.raw.u, out.raw.v);
         out.raw = nearestCopy(s, out.raw, at);  // across a periodic seam: the copy next to the start
         // The nearest foot may lie on another part of the surface (the true one past the
@@ -85,8 +85,8 @@ OffsetPoint offsetPoint(const Handle(Geom_BSplineSurface)& s, const UV& at, cons
         const SurfaceFrame at2 = frameAt(s, out.raw.u, out.raw.v);
         const gp_Vec miss(at2.p, target);
         const double across = (miss - at2.n * miss.Dot(at2.n)).Magnitude();
-        if (across > 1e-7 * std::abs(d))
-            throw Error(ErrorCode::InvalidArgument, "offsetOnSurface: an offset point's foot on the surface is not orthogonal (the offset leaves the surface)");
+        if (across > 1e-7 * std::abs(d) + 1e-9 * miss.Magnitude())
+            throw OffSurface(ErrorCode::InvalidArgument, "offsetOnSurface: an offset point's foot on the surface is not orthogonal (the offset leaves the surface)");
         const gp_Pnt foot = at2.p;
         if (foot.Distance(f.p) > 2.0 * std::abs(d) || foot.Distance(target) > 0.5 * std::abs(d))
             throw Error(ErrorCode::InvalidArgument, "offsetOnSurface: an offset point's nearest point on the surface is not "

@@ -76,14 +76,8 @@ std::optional<OffsetPoint> tryOffset(const Handle(Geom_BSplineSurface)& s, const
 {
     try {
         return offsetPoint(s, at.uv, at.tangent, d, o, measure);
-    } catch (const Error& e) {
-        // Off the surface: the offset (or the geodesic measuring it) leaves it, or a tangent
-        // step's foot is not there; a singular point is the caller's to report.
-        const std::string m = e.what();
-        if (m.find("leaves the surface") == std::string::npos && m.find("not near it") == std::string::npos &&
-            m.find("does not project") == std::string::npos && m.find("did not converge") == std::string::npos)
-            throw;
-        return std::nullopt;
+    } catch (const OffSurface&) {
+        return std::nullopt;  // off the surface; anything else (a singular point, no convergence) is the caller's
     }
 }
 
@@ -119,7 +113,11 @@ std::pair<OffsetPoint, std::string> cutAtBoundary(const Handle(Geom_BSplineSurfa
     if (!kept) kept = tryOffset(s, pointAlong(s, base, inside), d, o, false);
     if (!kept) throw Error(ErrorCode::Internal, "an offset cut at the surface's boundary was lost");
     OffsetPoint end = *kept;
-    const std::string side = nearestSide(s, end.raw);
+    // The bisection ends on the boundary; anywhere else something other than the face's end
+    // stopped the offsets.
+    const std::string side = boundarySide(s, end.raw, 1e-6);
+    if (side.empty())
+        throw Error(ErrorCode::InvalidArgument, "an offset stops inside the face at (" + std::to_string(end.raw.u) + ", " + std::to_string(end.raw.v) + ")");
     end.uv = onSide(s, end.raw, side);  // within the bisection's 1e-15 of it: its distance stands
     return {end, side};
 }
@@ -140,8 +138,7 @@ std::optional<Carried> carryToBoundary(const Handle(Geom_BSplineSurface)& s, con
         try {
             const UV end = shootGeodesic(s, from, t, length, steps);
             if (strictlyOn(s, end)) return end;
-        } catch (const Error& e) {
-            if (std::string(e.what()).find("leaves the surface") == std::string::npos) throw;
+        } catch (const OffSurface&) {
         }
         return std::nullopt;
     };
@@ -187,6 +184,16 @@ void append(TrimmedOffset& out, const Handle(Geom_BSplineSurface)& s, const UV& 
     out.estimatedError.insert(at(out.estimatedError), estimate);
 }
 
+/// The curve's first (@p front) or last point replaced by @p end, with its step's record.
+void replaceEnd(TrimmedOffset& out, const Handle(Geom_BSplineSurface)& s, const OffsetPoint& end, bool front)
+{
+    const std::size_t k = front ? 0 : out.curve.uv.size() - 1;
+    out.curve.uv[k] = end.uv;
+    out.curve.points[k] = fromOcct(s->Value(end.uv.u, end.uv.v));
+    out.geodesicDistance[k] = end.geodesicDistance;
+    out.estimatedError[k] = end.estimatedError;
+}
+
 /// Whether a point at @p uv added next to the curve's end point @p end is a new point (not the
 /// same one to 1e-9 of the box).
 bool distinct(const Handle(Geom_BSplineSurface)& s, const UV& uv, const UV& end)
@@ -208,25 +215,38 @@ TrimmedOffset offsetWithinSurface(const Handle(Geom_BSplineSurface)& s, const Cu
         at[i] = tryOffset(s, {base.uv[i], tangents[i]}, d, options);
         on[i] = at[i] && nearlyOn(s, at[i]->raw);
     }
+    // A closed base whose offsets leave the face somewhere: the run on the face may pass its
+    // joint. Laid again as an open curve starting after an offset that left, so that it does not.
+    if (isClosed(base) && n >= 4) {
+        std::size_t off = n;
+        for (std::size_t k = 0; k + 1 < n && off == n; ++k)
+            if (!on[k]) off = k;
+        if (off < n) {
+            const UV period{base.uv.back().u - base.uv.front().u, base.uv.back().v - base.uv.front().v};
+            CurveOnSurface open;
+            for (std::size_t k = off + 1; k < n; ++k) open.uv.push_back(base.uv[k]), open.points.push_back(base.points[k]);
+            for (std::size_t k = 1; k <= off; ++k) open.uv.push_back({base.uv[k].u + period.u, base.uv[k].v + period.v}), open.points.push_back(base.points[k]);
+            return offsetWithinSurface(s, open, d, options);
+        }
+    }
     TrimmedOffset out;
     const auto [first, last] = longestRun(on);
     if (last < first) return out;
     for (std::size_t i = first; i <= last; ++i) append(out, s, at[i]->uv, at[i]->geodesicDistance, at[i]->estimatedError, false);
-    const bool closed = isClosed(base) && first == 0 && last + 1 == n;
-    if (closed) return out;
+    if (isClosed(base)) return out;  // all on the face (else laid open above)
     const UVCurve curve = uvCurve(base);
     if (curve.curve.IsNull()) throw Error(ErrorCode::InvalidArgument, "a curve's points repeat (its (u,v) cannot be interpolated)");
     // Cut where the surface ends the offsets.
     if (first > 0) {
         const auto [end, side] = cutAtBoundary(s, curve, curve.params[first], curve.params[first - 1], d, options);
         if (distinct(s, end.uv, out.curve.uv.front())) append(out, s, end.uv, end.geodesicDistance, end.estimatedError, true);
-        else out.curve.uv.front() = end.uv, out.curve.points.front() = fromOcct(s->Value(end.uv.u, end.uv.v));
+        else replaceEnd(out, s, end, true);
         out.startSide = side;
     }
     if (last + 1 < n) {
         const auto [end, side] = cutAtBoundary(s, curve, curve.params[last], curve.params[last + 1], d, options);
         if (distinct(s, end.uv, out.curve.uv.back())) append(out, s, end.uv, end.geodesicDistance, end.estimatedError, false);
-        else out.curve.uv.back() = end.uv, out.curve.points.back() = fromOcct(s->Value(end.uv.u, end.uv.v));
+        else replaceEnd(out, s, end, false);
         out.endSide = side;
     }
     // Carried on where the base runs to the boundary and the offset stops short of it.
