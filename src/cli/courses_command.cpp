@@ -28,8 +28,9 @@ const char* kCoursesHelp = R"(Usage: towgeom courses SURFACE.step --reference RE
 
 Plans fibre-placement courses on a tool surface (a face of a STEP or IGES file, converted
 exactly to a NURBS, or a .grid file of points: '#' comments, 'grid NU NV', then NU x NV
-lines 'x y z', v fastest, interpolated by a bicubic B-spline): K courses of N tows of width W, the first course's centreline the
-reference curve, each next course to the reference's left (seen from the face's outer side).
+lines 'x y z', v fastest, interpolated by a bicubic B-spline): K courses of N tows of width
+W, the first course's centreline the reference curve, each next course to the reference's
+left (seen from the face's outer side).
 Centrelines are offset along the surface as Schueler, Miller & Hale (2004) do: each point
 moved by d along O = N x T and projected back (their Eq. 2 estimates what a step loses on a
 curved surface), or with --exact along the geodesic perpendicular to the curve. Every step's
@@ -59,8 +60,8 @@ Writes, all or nothing:
                     and Eq. 2 estimate, and the gaps ("width" per point: + gap, - overlap)
   DIR/courses.vtk   centrelines and edges as polylines for ParaView (cell data "tow",
                     "kind"; point data "gap")
-  DIR/courses.step  every tow's centreline and edges as named edges ("c1_t1/left", ...): curves
-                    on the surface, their 3D curves within 1e-6 W (AP214)
+  DIR/courses.step  every tow's centreline and edges, each a named product ("c1_t1/left",
+                    ...): curves on the surface, their 3D curves within 1e-6 W (AP214)
   DIR/coverage.vtk  the surface's tessellation (--coverage-cells a side, two triangles a
                     cell) with cell data "coverage": how many tows cover each triangle
   DIR/NAME.stw      each tow as a ribbon W wide and --thickness thick lying on the surface
@@ -73,9 +74,9 @@ and prints one JSON object on stdout:
    "largest_step_error", "within_tolerance", "gaps":[{"right", "left", "between_courses",
    "min", "max"}], "trimmed":[{"tow", "length", "start_boundary", "end_boundary"}],
    "off_surface":[names], "no_ribbon":[names], "coverage":{"cells", "area", "uncovered",
-   "once", "several"} (fractions of the area, adding to 1), "steering":{"smallest_radius", "min_radius",
-   "below":[names]}, "angle":{"theta", "crossings":[{"curve",
-   "angle"}]} (with --angle)}
+   "once", "several"} (fractions of the area, adding to 1), "steering":{"smallest_radius",
+   "min_radius", "below":[names]}, "angle":{"theta", "crossings":[{"curve", "angle"}]}
+   (with --angle)}
 
 Options:
   --reference REF   the first course's centreline, one of:
