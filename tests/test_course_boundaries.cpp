@@ -372,3 +372,41 @@ TEST_CASE("coverage of a cylinder by hoop courses: the bands' share of the area 
     writeCourseCoverageVtk(c, vtk);
     CHECK(vtk.str().find("coverage 1 " + std::to_string(c.triangles.size()) + " int") != std::string::npos);
 }
+
+TEST_CASE("a closed reference whose offset leaves the face over an arc: one tow from boundary to boundary, whatever the joint",
+          "[placement][courses][trim]")
+{
+    // A tilted hoop z = 2.5 - 0.2 x on a cylinder R 2, 3 high (z in [2.1, 2.9]); tows 0.3 either
+    // side: one stays on the face (closed), the other passes z = 3 around x = -2 and is cut there
+    // twice: one open tow whose two ends lie on the top (v_max), every point at z <= 3.
+    const NurbsSurface cylinder = testing::cylinder(2.0, 3.0);
+    for (const double start : {0.0, 3.0}) {  // the cut's sampling from x = 2 or from near x = -2 (the joint in the off arc or not)
+        const CurveOnSurface hoop = referenceFromPlane(cylinder, {2.0 * std::cos(start), 2.0 * std::sin(start), 2.5 - 0.4 * std::cos(start)}, {0.2, 0, 1}, 41);
+        REQUIRE(distance(hoop.points.front(), hoop.points.back()) <= 1e-9);
+        CourseOptions o;
+        o.towWidth = 0.2;
+        o.towsPerCourse = 2;
+        o.spacing = 0.6;
+        o.method = SurfaceOffsetMethod::Geodesic;
+        const CoursePlan plan = layCourses(cylinder, hoop, o);
+        REQUIRE(plan.tows.size() == 2);
+        std::size_t cut = 0;
+        for (const TowPath& t : plan.tows) {
+            INFO(t.name << " from " << start);
+            double highest = 0.0;
+            for (const Point3& p : t.centreline.points) highest = std::max(highest, p.z);
+            CHECK(highest <= 3.0 + 1e-12);
+            if (t.startBoundary.empty()) {
+                CHECK(distance(t.centreline.points.front(), t.centreline.points.back()) <= 1e-9);  // closed, on the face
+                continue;
+            }
+            ++cut;
+            CHECK(t.startBoundary == "v_max");
+            CHECK(t.endBoundary == "v_max");
+            CHECK(std::abs(t.centreline.points.front().z - 3.0) <= 1e-9);
+            CHECK(std::abs(t.centreline.points.back().z - 3.0) <= 1e-9);
+            CHECK(t.length > 2.0 * M_PI * 2.0 * 0.6);  // most of the way round
+        }
+        CHECK(cut == 1);
+    }
+}

@@ -176,7 +176,7 @@ TOWGEOM_EXPORT void writeCoursePlanJson(const CoursePlan& plan, std::ostream& ou
 /// centreline, right and left edge (empty edges left out) an edge, its own product named
 /// "<tow>/centreline", "<tow>/right", "<tow>/left" (what CAD systems list), its curve on @p surface (the plan's) the points' (u,v) cubic (as
 /// TowPath::rightCurve), its 3D curve approximated from that by OpenCASCADE to @p tolerance (0:
-/// 1e-6 x the tow width).
+/// 1e-6 x the tow width; never below OpenCASCADE's confusion, 1e-7).
 /// @throws towgeom::Error (InvalidArgument) for a negative tolerance or a curve whose points
 ///         repeat; (WriteFailed) naming the file; (Internal) if OpenCASCADE fails.
 TOWGEOM_EXPORT void writeCoursePlanStep(const NurbsSurface& surface, const CoursePlan& plan, const std::string& path, double tolerance = 0.0);

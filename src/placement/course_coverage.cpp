@@ -86,10 +86,12 @@ bool inBand(const Band& band, const UV& p)
 /// @p band: only the copies inside the band's box are tried, however many turns it makes.
 bool inBandAnywhere(const Handle(Geom_BSplineSurface)& s, const Band& band, const UV& p)
 {
+    if (band.outline.size() < 3) return false;
     const double pu = s->IsUPeriodic() ? s->UPeriod() : 0.0, pv = s->IsVPeriodic() ? s->VPeriod() : 0.0;
     const auto shifts = [](double at, double lo, double hi, double period) {
         if (!(period > 0.0)) return std::pair<long, long>{0, 0};
-        return std::pair<long, long>{static_cast<long>(std::ceil((lo - at) / period)), static_cast<long>(std::floor((hi - at) / period))};
+        const auto whole = [](double x) { return static_cast<long>(std::clamp(x, -1e6, 1e6)); };  // a million turns at most
+        return std::pair<long, long>{whole(std::ceil((lo - at) / period)), whole(std::floor((hi - at) / period))};
     };
     const auto [iu0, iu1] = shifts(p.u, band.lo.u, band.hi.u, pu);
     const auto [iv0, iv1] = shifts(p.v, band.lo.v, band.hi.v, pv);

@@ -4,9 +4,11 @@
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepLib.hxx>
 #include <BRep_Tool.hxx>
+#include <Precision.hxx>
 #include <Standard_Failure.hxx>
 #include <TopoDS_Edge.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -47,7 +49,8 @@ TopoDS_Edge edgeOn(const Handle(Geom_BSplineSurface)& s, const CurveOnSurface& c
 void writeCoursePlanStep(const NurbsSurface& surface, const CoursePlan& plan, const std::string& path, double asked)
 {
     if (!(asked >= 0.0) || !std::isfinite(asked)) throw Error(ErrorCode::InvalidArgument, "writeCoursePlanStep: a tolerance of 0 or more", path);
-    const double tolerance = asked > 0.0 ? asked : 1e-6 * plan.towWidth;
+    // Not below OpenCASCADE's confusion (1e-7), the least tolerance an edge records.
+    const double tolerance = std::max(asked > 0.0 ? asked : 1e-6 * plan.towWidth, Precision::Confusion());
     if (!(tolerance > 0.0)) throw Error(ErrorCode::InvalidArgument, "writeCoursePlanStep: the plan has no tow width", path);
     const Handle(Geom_BSplineSurface) s = detail::toolSurface(surface);
     std::vector<std::pair<TopoDS_Shape, std::string>> parts;

@@ -53,6 +53,12 @@ CurveDerivatives curveDerivatives(const Handle(Geom_BSplineSurface)& s, const Cu
         out.first.push_back(su * d1.X() + sv * d1.Y());
         out.second.push_back(suu * (d1.X() * d1.X()) + suv * (2.0 * d1.X() * d1.Y()) + svv * (d1.Y() * d1.Y()) + su * d2.X() + sv * d2.Y());
     }
+    // A closed curve's two copies of its joint: one point, one direction (the cubic's global
+    // solve leaves them a rounding of its ends apart), so that its offsets close too.
+    if (lead > 0) {
+        out.first.front() = out.first.back() = 0.5 * (out.first.front() + out.first.back());
+        out.second.front() = out.second.back() = 0.5 * (out.second.front() + out.second.back());
+    }
     return out;
 }
 

@@ -52,6 +52,15 @@ double geodesicDistance(const NurbsSurface& surface, const UV& from, const UV& t
 
 namespace detail {
 
+/// A tangent step's foot found far from where it should be: past the surface's edge (another
+/// orthogonal foot elsewhere: the offset leaves the surface) where it has an edge, else (a closed
+/// surface) a step too long for its curvature: an error.
+[[noreturn]] void throwFarFoot(const Handle(Geom_BSplineSurface)& s, ErrorCode code, const std::string& message)
+{
+    if (!s->IsUPeriodic() || !s->IsVPeriodic()) throw OffSurface(code, message);
+    throw Error(code, message);
+}
+
 OffsetPoint offsetPoint(const Handle(Geom_BSplineSurface)& s, const UV& at, const gp_Vec& tangent, double d, const SurfaceOffsetOptions& options,
                         bool measure)
 {
@@ -89,7 +98,7 @@ OffsetPoint offsetPoint(const Handle(Geom_BSplineSurface)& s, const UV& at, cons
             throw OffSurface(ErrorCode::InvalidArgument, "offsetOnSurface: an offset point's foot on the surface is not orthogonal (the offset leaves the surface)");
         const gp_Pnt foot = at2.p;
         if (foot.Distance(f.p) > 2.0 * std::abs(d) || foot.Distance(target) > 0.5 * std::abs(d))
-            throw Error(ErrorCode::InvalidArgument, "offsetOnSurface: an offset point's nearest point on the surface is not "
+            throwFarFoot(s, ErrorCode::InvalidArgument, "offsetOnSurface: an offset point's nearest point on the surface is not "
                                                     "near it (the offset leaves the surface)");
     }
     // A geodesic along the edge may end a rounding outside: clamped where the box is the surface.
@@ -107,7 +116,7 @@ OffsetPoint offsetPoint(const Handle(Geom_BSplineSurface)& s, const UV& at, cons
     // A foot on another part of the surface is not d away along it (Eq. 2's shortfall is a small
     // part of d while |d kappa| <= 1).
     if (options.method != SurfaceOffsetMethod::Geodesic && std::abs(out.geodesicDistance - std::abs(d)) > 0.25 * std::abs(d))
-        throw Error(ErrorCode::InvalidArgument, "offsetOnSurface: an offset point's nearest point on the surface is not "
+        throwFarFoot(s, ErrorCode::InvalidArgument, "offsetOnSurface: an offset point's nearest point on the surface is not "
                                                 "near it along the surface (the offset leaves the surface)");
     return out;
 }

@@ -109,7 +109,12 @@ std::pair<OffsetPoint, std::string> cutAtBoundary(const Handle(Geom_BSplineSurfa
         else outside = mid;
     }
     // The kept point, measured (if that fails so near the boundary: only where it lands).
-    std::optional<OffsetPoint> kept = tryOffset(s, pointAlong(s, base, inside), d, o);
+    std::optional<OffsetPoint> kept;
+    try {
+        kept = tryOffset(s, pointAlong(s, base, inside), d, o);
+    } catch (const Error&) {
+        // Measuring so near the boundary failed (shooting did not converge): where it lands will do.
+    }
     if (!kept) kept = tryOffset(s, pointAlong(s, base, inside), d, o, false);
     if (!kept) throw Error(ErrorCode::Internal, "an offset cut at the surface's boundary was lost");
     OffsetPoint end = *kept;
@@ -205,7 +210,24 @@ bool distinct(const Handle(Geom_BSplineSurface)& s, const UV& uv, const UV& end)
 
 }  // namespace
 
+namespace {
+
+TrimmedOffset offsetWithin(const Handle(Geom_BSplineSurface)& s, const CurveOnSurface& base, double d, const SurfaceOffsetOptions& options,
+                           bool mayClose);
+
+}  // namespace
+
 TrimmedOffset offsetWithinSurface(const Handle(Geom_BSplineSurface)& s, const CurveOnSurface& base, double d, const SurfaceOffsetOptions& options)
+{
+    return offsetWithin(s, base, d, options, true);
+}
+
+namespace {
+
+/// offsetWithinSurface(); with @p mayClose false a closed base is laid as an open curve (its run
+/// on the face neither wraps nor closes).
+TrimmedOffset offsetWithin(const Handle(Geom_BSplineSurface)& s, const CurveOnSurface& base, double d, const SurfaceOffsetOptions& options,
+                           bool mayClose)
 {
     const std::size_t n = base.uv.size();
     std::vector<std::optional<OffsetPoint>> at(n);
@@ -216,24 +238,25 @@ TrimmedOffset offsetWithinSurface(const Handle(Geom_BSplineSurface)& s, const Cu
         on[i] = at[i] && nearlyOn(s, at[i]->raw);
     }
     // A closed base whose offsets leave the face somewhere: the run on the face may pass its
-    // joint. Laid again as an open curve starting after an offset that left, so that it does not.
-    if (isClosed(base) && n >= 4) {
+    // joint. Laid again from an offset that left round to it (both crossings next to it inside
+    // the sequence), as an open curve, so that the run does not.
+    if (mayClose && isClosed(base) && n >= 4) {
         std::size_t off = n;
         for (std::size_t k = 0; k + 1 < n && off == n; ++k)
             if (!on[k]) off = k;
         if (off < n) {
             const UV period{base.uv.back().u - base.uv.front().u, base.uv.back().v - base.uv.front().v};
             CurveOnSurface open;
-            for (std::size_t k = off + 1; k < n; ++k) open.uv.push_back(base.uv[k]), open.points.push_back(base.points[k]);
+            for (std::size_t k = off; k < n; ++k) open.uv.push_back(base.uv[k]), open.points.push_back(base.points[k]);
             for (std::size_t k = 1; k <= off; ++k) open.uv.push_back({base.uv[k].u + period.u, base.uv[k].v + period.v}), open.points.push_back(base.points[k]);
-            return offsetWithinSurface(s, open, d, options);
+            return offsetWithin(s, open, d, options, false);
         }
     }
     TrimmedOffset out;
     const auto [first, last] = longestRun(on);
     if (last < first) return out;
     for (std::size_t i = first; i <= last; ++i) append(out, s, at[i]->uv, at[i]->geodesicDistance, at[i]->estimatedError, false);
-    if (isClosed(base)) return out;  // all on the face (else laid open above)
+    if (mayClose && isClosed(base)) return out;  // all on the face (else laid open above)
     const UVCurve curve = uvCurve(base);
     if (curve.curve.IsNull()) throw Error(ErrorCode::InvalidArgument, "a curve's points repeat (its (u,v) cannot be interpolated)");
     // Cut where the surface ends the offsets.
@@ -280,6 +303,8 @@ TrimmedOffset offsetWithinSurface(const Handle(Geom_BSplineSurface)& s, const Cu
     }
     return out;
 }
+
+}  // namespace
 
 double lengthOnSurface(const Handle(Geom_BSplineSurface)& s, const CurveOnSurface& c)
 {
