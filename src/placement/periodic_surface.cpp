@@ -80,8 +80,6 @@ Handle(Geom_BSplineSurface) toolSurface(const NurbsSurface& surface)
     return s;
 }
 
-bool periodicIn(const Handle(Geom_BSplineSurface)& s, bool u) { return u ? s->IsUPeriodic() : s->IsVPeriodic(); }
-
 UV nearestCopy(const Handle(Geom_BSplineSurface)& s, UV uv, const UV& near)
 {
     if (s->IsUPeriodic()) {

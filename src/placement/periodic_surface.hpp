@@ -21,9 +21,6 @@ namespace detail {
 /// @throws towgeom::Error (InvalidArgument) for an ill-formed surface.
 Handle(Geom_BSplineSurface) toolSurface(const NurbsSurface& surface);
 
-/// Whether @p s is periodic in u (@p u true) or v.
-bool periodicIn(const Handle(Geom_BSplineSurface)& s, bool u);
-
 /// @p uv moved by whole periods (in each periodic direction) to lie nearest @p near.
 UV nearestCopy(const Handle(Geom_BSplineSurface)& s, UV uv, const UV& near);
 

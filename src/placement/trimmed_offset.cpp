@@ -58,9 +58,6 @@ PointAlong pointAlong(const Handle(Geom_BSplineSurface)& s, const UVCurve& c, do
     return {{p.X(), p.Y()}, su * d.X() + sv * d.Y()};
 }
 
-/// Whether (u,v) lies in the box where it is not periodic (no slack).
-bool strictlyOn(const Handle(Geom_BSplineSurface)& s, const UV& uv) { return onSurface(s, uv); }
-
 /// Whether (u,v) lies in the box, or outside it by at most 1e-9 of it (rounding along an edge).
 bool nearlyOn(const Handle(Geom_BSplineSurface)& s, const UV& uv)
 {
@@ -105,7 +102,7 @@ std::pair<OffsetPoint, std::string> cutAtBoundary(const Handle(Geom_BSplineSurfa
     for (int it = 0; it < 200 && std::abs(outside - inside) > 1e-15 * span; ++it) {
         const double mid = 0.5 * (inside + outside);
         const std::optional<OffsetPoint> p = tryOffset(s, pointAlong(s, base, mid), d, o, false);  // where it lands only
-        if (p && strictlyOn(s, p->raw)) inside = mid;
+        if (p && onSurface(s, p->raw)) inside = mid;
         else outside = mid;
     }
     // The kept point, measured (if that fails so near the boundary: only where it lands).
@@ -142,7 +139,7 @@ std::optional<Carried> carryToBoundary(const Handle(Geom_BSplineSurface)& s, con
     const auto reach = [&](double length) -> std::optional<UV> {
         try {
             const UV end = shootGeodesic(s, from, t, length, steps);
-            if (strictlyOn(s, end)) return end;
+            if (onSurface(s, end)) return end;
         } catch (const OffSurface&) {
         }
         return std::nullopt;
