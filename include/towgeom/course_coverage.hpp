@@ -10,6 +10,7 @@
 
 #include "towgeom/fibre_courses.hpp"
 #include "towgeom/nurbs_offset.hpp"
+#include "towgeom/placement_surface.hpp"
 #include "towgeom/point.hpp"
 #include "towgeom/export.hpp"
 
@@ -36,10 +37,19 @@ struct CourseCoverage {
 /// (across a periodic seam, any copy of it): the band's outline is its right edge's (u,v) cubic
 /// and its left edge's back, 256 points each, closed across the tow's ends. An edge wholly off
 /// the face (empty) is taken as the other's mirror image about the centreline in (u,v), so the
-/// band runs on to the boundary. Accurate to about one cell along each band's border.
+/// band runs on to the boundary. At an end the face's boundary cut (TowPath::startBoundary,
+/// endBoundary) both edges run on straight past it in (u,v), by twice the distance between
+/// their ends, so that the band reaches the boundary all across rather than stopping at the
+/// chord between the edges' ends. Accurate to about one cell along each band's border.
 /// @throws towgeom::Error (InvalidArgument) for fewer than 2 or more than 4000 cells, or an edge
 ///         whose points repeat.
 TOWGEOM_EXPORT CourseCoverage courseCoverage(const NurbsSurface& surface, const CoursePlan& plan, std::size_t cells = 200);
+
+/// As the other overload, on the face @p tool: where it is trimmed (PlacementSurface::trim) the
+/// triangles whose centroid lies off it (OpenCASCADE's face classifier) are left out, so the
+/// fractions and totalArea are the face's (its edges to about one cell).
+/// @throws towgeom::Error as the other overload.
+TOWGEOM_EXPORT CourseCoverage courseCoverage(const PlacementSurface& tool, const CoursePlan& plan, std::size_t cells = 200);
 
 /// Writes @p coverage as a legacy VTK unstructured grid of triangles (ParaView) with cell data
 /// "coverage" (the count) and "area". @throws towgeom::Error (WriteFailed) when the stream fails.

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "towgeom/nurbs_offset.hpp"
+#include "towgeom/placement_surface.hpp"
 #include "towgeom/surface_offset_curves.hpp"
 #include "towgeom/export.hpp"
 
@@ -79,8 +80,10 @@ struct TowPath {
     NurbsCurve rightCurve;
     NurbsCurve leftCurve;  ///< the left edge likewise
     double length = 0.0;   ///< the centreline's length along the surface
-    /// The side of the face's parameter box ("u_min", "u_max", "v_min", "v_max") the centreline
-    /// starts on (within 1e-9 of the box): cut there (its offset left the face), carried there
+    /// The side of the face the centreline starts on (within 1e-9 of it): a side of its parameter
+    /// box ("u_min", "u_max", "v_min", "v_max") or, on a trimmed face (PlacementSurface::trim),
+    /// "edge K" (K the edge's index among the face's edges; a box side where no edge is that
+    /// near): cut there (its offset left the face), carried there
     /// (its course's curve starts on that side, the offset inside it), or there already; empty
     /// where it starts inside the face, as its course's curve does.
     std::string startBoundary;
@@ -146,7 +149,9 @@ struct CoursePlan {
 ///   direction by a geodesic to the boundary (those points' step distances are NaN). Each tow's
 ///   TowPath::startBoundary / endBoundary say where, TowPath::length how long it is. Courses and
 ///   tows wholly off the face are listed in CoursePlan::offSurface. The boundary is the face's
-///   parameter box (its trimming curves are not kept: see PlacementSurface).
+///   parameter box here; the overload given a PlacementSurface ends them at its trimming curves.
+///   A tow whose band crosses a hole in the face keeps its longest run on the face (the run
+///   beyond the hole is not laid; courseCoverage() shows what that leaves).
 /// - **Seams**: where the surface closes smoothly (a cylinder's, sphere's or torus's angle; see
 ///   NurbsSurface::point()) curves and geodesics cross the seam, their u (or v) running on past
 ///   the box, and a closed reference (last point = first) gives closed courses.
@@ -157,6 +162,14 @@ struct CoursePlan {
 ///         surface, or a singular point met (the message names the course or tow); (Internal)
 ///         if OpenCASCADE fails.
 TOWGEOM_EXPORT CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& reference, const CourseOptions& options);
+
+/// As the other overload, on the face @p tool: its trimming curves (PlacementSurface::trim), not
+/// only its box, end the tows, courses and the reference (cut to its longest run on the face,
+/// ended where its (u,v) cubic crosses the boundary; CoursePlan::reference is that run). A point
+/// is on the face where OpenCASCADE's face classifier puts it, on the face's own parameters.
+/// @throws towgeom::Error as the other overload; (InvalidArgument) also when fewer than 4 of
+///         the reference's points lie on the face.
+TOWGEOM_EXPORT CoursePlan layCourses(const PlacementSurface& tool, const CurveOnSurface& reference, const CourseOptions& options);
 
 /// Writes @p plan as JSON: {"method", "tow_width", "spacing", "tolerance", "largest_step_error",
 /// "within_tolerance", "reference":{"uv":[[u,v],..], "points":[[x,y,z],..]}, "courses":[{"name",

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -15,13 +16,18 @@ TOWGEOM_BEGIN_NAMESPACE
 /// @addtogroup placement
 /// @{
 
+namespace detail {
+struct FaceTrim;  // a trimmed face's curves (OpenCASCADE's face), opaque
+}  // namespace detail
+
 /// A tool surface: a face read from a CAD file, or a surface fitted to a grid of points.
 struct PlacementSurface {
     /// The face's surface as a clamped NURBS over the face's (u,v) box (OpenCASCADE's
     /// GeomConvert: exact for B-spline, Bezier, analytic, revolution and extrusion surfaces; other
     /// kinds, such as offset surfaces, approximated to 1e-4), its normal turned to the face's
-    /// outward side (the u direction reversed when the face is reversed). The face's trimming
-    /// curves are not kept: the whole box is the surface. For a grid, the fitted surface.
+    /// outward side (the u direction reversed when the face is reversed). Where the face is
+    /// trimmed, the surface runs on past its edges to the box (see trim). For a grid, the fitted
+    /// surface.
     NurbsSurface surface;
     std::size_t faceCount = 0;  ///< faces in the file (0 for a grid)
     std::size_t face = 0;       ///< which one this is (0-based, in the file's order)
@@ -32,6 +38,17 @@ struct PlacementSurface {
     /// For an approximated grid: the largest distance from a grid point to the surface (0 for a
     /// face or an interpolated grid, which passes through its points).
     double fitDeviation = 0.0;
+    /// The face's trimming curves where its boundary is not its (u,v) box (an outer boundary
+    /// cutting into the box, holes), kept as the file gives them (OpenCASCADE's face, opaque
+    /// here); null for a grid or a face whose edges all run along its box's sides (seams and
+    /// poles aside). Given the PlacementSurface, layCourses(), referenceFromPlane() and
+    /// courseCoverage() end tows, references and cells at these curves (points classified by
+    /// OpenCASCADE's face classifier); given its NurbsSurface alone, at the box.
+    std::shared_ptr<const detail::FaceTrim> trim;
+    /// How many of the face's edges bound it where it is trimmed (seams and poles not counted;
+    /// 0 untrimmed). A tow ending on one is said to end on "edge K", K its index among the
+    /// face's edges in OpenCASCADE's order (TopExp::MapShapes).
+    std::size_t trimEdges = 0;
 };
 
 /// Reads face @p face (0-based, in the order OpenCASCADE explores the file's shapes) of the STEP

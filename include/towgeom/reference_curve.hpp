@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "towgeom/nurbs_offset.hpp"
+#include "towgeom/placement_surface.hpp"
 #include "towgeom/point.hpp"
 #include "towgeom/surface_offset_curves.hpp"
 #include "towgeom/export.hpp"
@@ -39,6 +40,15 @@ TOWGEOM_EXPORT CurveOnSurface referenceFromPoints(const NurbsSurface& surface, c
 ///         that does not cut the surface; (Internal) if OpenCASCADE fails.
 TOWGEOM_EXPORT CurveOnSurface referenceFromPlane(const NurbsSurface& surface, const Point3& origin, const Vector3& normal,
                                                  std::size_t points, bool reverse = false);
+
+/// As the other overload, on the face @p tool: where it is trimmed (PlacementSurface::trim), the
+/// run of the cut on the face passing nearest @p origin (its ends where the cut crosses the
+/// face's trimming curves, bisected on the cut's parameter), sampled at @p points points equally
+/// spaced along its length.
+/// @throws towgeom::Error as the other overload; (InvalidArgument) also when the cut lies off
+///         the face.
+TOWGEOM_EXPORT CurveOnSurface referenceFromPlane(const PlacementSurface& tool, const Point3& origin, const Vector3& normal, std::size_t points,
+                                                 bool reverse = false);
 
 /// @}
 

@@ -40,13 +40,17 @@ neighbouring tows is measured along the surface at every centreline point.
 
 The face's boundary ends tows rather than refusing them: a tow whose offset leaves the face is
 cut exactly where it meets the boundary, and one whose course runs to the boundary is carried
-on to it (the summary's "trimmed" lists each such tow with its length and the side of the
-face's (u,v) box, "u_min", "u_max", "v_min" or "v_max", where it ends; "off_surface" the tows
-and courses wholly off the face). Where the face closes smoothly on itself (a cylinder's,
-sphere's or torus's angle) courses cross the seam, and a closed reference (a plane cut around
-a cylinder or through a sphere's equator) gives closed courses. A geodesic that meets a pole
-of the face's parametrisation (a sphere's) is refused, naming the place. The face's trimming
-curves are not used: its (u,v) box is the surface.
+on to it (the summary's "trimmed" lists each such tow with its length and the side where it
+ends: a side of the face's (u,v) box, "u_min", "u_max", "v_min" or "v_max", or, on a trimmed
+face, "edge K", K the edge's index among the face's edges; "off_surface" the tows and courses
+wholly off the face). The boundary is the face's own: its trimming curves where it has them
+(an outer boundary cutting into its box, holes; "trim_edges" counts the edges that bound it),
+else its (u,v) box. A reference from a plane is the cut's run on the face nearest the plane's
+point; a tow crossing a hole keeps its longest run on the face. Where the face closes smoothly
+on itself (a cylinder's, sphere's or torus's angle) courses cross the seam, and a closed
+reference (a plane cut around a cylinder or through a sphere's equator) gives closed courses.
+A geodesic that meets a pole of the face's parametrisation (a sphere's) is refused, naming the
+place.
 
 With --angle THETA the plan is a laminate-family ply: the 0 degree tows are laid first (as
 above; at least two), a curve is traced from the middle of the first tow's centreline (c1_t1)
@@ -70,7 +74,7 @@ Writes, all or nothing:
 
 and prints one JSON object on stdout:
 
-  {"file", "face", "face_name", "method", "tows", "courses", "tow_width", "spacing", "tolerance",
+  {"file", "face", "face_name", "trim_edges", "method", "tows", "courses", "tow_width", "spacing", "tolerance",
    "largest_step_error", "within_tolerance", "gaps":[{"right", "left", "between_courses",
    "min", "max"}], "trimmed":[{"tow", "length", "start_boundary", "end_boundary"}],
    "off_surface":[names], "no_ribbon":[names], "coverage":{"cells", "area", "uncovered",
@@ -165,13 +169,14 @@ std::vector<double> planeNumbers(const std::string& text)
     return x;
 }
 
-CurveOnSurface readReference(const NurbsSurface& surface, const std::string& text, std::size_t points, bool reverse)
+CurveOnSurface readReference(const PlacementSurface& tool, const std::string& text, std::size_t points, bool reverse)
 {
+    const NurbsSurface& surface = tool.surface;
     const std::size_t colon = text.find(':');
     const std::string kind = text.substr(0, colon), rest = colon == std::string::npos ? "" : text.substr(colon + 1);
     if (kind == "plane") {
         const std::vector<double> x = planeNumbers(rest);
-        return referenceFromPlane(surface, {x[0], x[1], x[2]}, {x[3], x[4], x[5]}, points, reverse);
+        return referenceFromPlane(tool, {x[0], x[1], x[2]}, {x[3], x[4], x[5]}, points, reverse);
     }
     CurveOnSurface c;
     if (kind == "points") {
@@ -269,15 +274,16 @@ int runCourses(int argc, char** argv, int first)
 
         const std::string& file = args.positional().front();
         const PlacementSurface tool = readToolSurface(args, file);
-        CurveOnSurface start = readReference(tool.surface, *reference, points, args.has("reverse"));
+        CurveOnSurface start = readReference(tool, *reference, points, args.has("reverse"));
         Json report;
         report["file"] = file;
         report["face"] = tool.face;
         report["face_name"] = tool.name;
+        report["trim_edges"] = tool.trimEdges;
         FixedAngleCurve family;
         if (angle) {
             say("laying the 0 degree tows");
-            const CoursePlan zero = layCourses(tool.surface, start, options);
+            const CoursePlan zero = layCourses(tool, start, options);
             std::vector<CurveOnSurface> centrelines;
             for (const TowPath& t : zero.tows) centrelines.push_back(t.centreline);
             say("tracing the curve at " + std::to_string(*angle) + " degrees across them");
@@ -285,7 +291,7 @@ int runCourses(int argc, char** argv, int first)
             start = thinned(family.curve, start.uv.size());
         }
         say("laying " + std::to_string(options.courses) + " course(s) of " + std::to_string(options.towsPerCourse) + " tow(s)");
-        const CoursePlan plan = layCourses(tool.surface, start, options);
+        const CoursePlan plan = layCourses(tool, start, options);
         CrossSection section;
         section.shape = SectionShape::Racetrack;
         section.width = options.towWidth;
@@ -318,7 +324,7 @@ int runCourses(int argc, char** argv, int first)
                                              {"end_boundary", t.endBoundary.empty() ? Json() : Json(t.endBoundary)}});
         report["off_surface"] = plan.offSurface;
         say("measuring the coverage on " + std::to_string(coverageCells) + " x " + std::to_string(coverageCells) + " cells");
-        const CourseCoverage coverage = courseCoverage(tool.surface, plan, coverageCells);
+        const CourseCoverage coverage = courseCoverage(tool, plan, coverageCells);
         report["coverage"] = {{"cells", coverageCells}, {"area", coverage.totalArea}, {"uncovered", coverage.uncovered}, {"once", coverage.once},
                               {"several", coverage.several}};
         double smallest = std::numeric_limits<double>::infinity();

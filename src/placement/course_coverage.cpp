@@ -13,6 +13,7 @@
 #include <string>
 
 #include "placement/periodic_surface.hpp"
+#include "placement/tool_face.hpp"
 #include "placement/uv_interpolation.hpp"
 #include "surface/occt_convert.hpp"
 #include "towgeom/error.hpp"
@@ -46,8 +47,27 @@ std::vector<UV> sampled(const CurveOnSurface& c, int count, const std::string& w
     return out;
 }
 
+/// @p right and @p left (a band's edges) run on past the end where the face's boundary cut the
+/// tow (@p atStart: their starts), straight along their end directions by twice the distance
+/// between their ends: the chord closing the band then lies off the face, and the band reaches
+/// the boundary all across (a boundary crossing it obliquely or curved would leave a sliver).
+void runOnPastCut(std::vector<UV>& right, std::vector<UV>& left, bool atStart)
+{
+    if (right.size() < 2 || left.size() < 2) return;
+    const UV a = atStart ? right.front() : right.back(), b = atStart ? left.front() : left.back();
+    const double reach = 2.0 * std::hypot(a.u - b.u, a.v - b.v);
+    for (std::vector<UV>* e : {&right, &left}) {
+        const UV end = atStart ? e->front() : e->back(), next = atStart ? (*e)[1] : (*e)[e->size() - 2];
+        const double length = std::hypot(end.u - next.u, end.v - next.v);
+        if (!(length > 0.0)) continue;
+        const UV beyond{end.u + (end.u - next.u) / length * reach, end.v + (end.v - next.v) / length * reach};
+        e->insert(atStart ? e->begin() : e->end(), beyond);
+    }
+}
+
 /// The band of @p t; an edge wholly off the face (empty) replaced by the other's mirror image
-/// about the centreline in (u,v) (out of the box where it hangs off, so open to the boundary).
+/// about the centreline in (u,v) (out of the box where it hangs off, so open to the boundary);
+/// run on past the ends the boundary cut (runOnPastCut()).
 Band bandOf(const TowPath& t)
 {
     std::vector<UV> right = sampled(t.right, kSamplesPerEdge, "tow " + t.name + "'s right edge");
@@ -58,6 +78,8 @@ Band bandOf(const TowPath& t)
         const std::vector<UV>& other = right.empty() ? left : right;
         for (int k = 0; k < kSamplesPerEdge; ++k) missing.push_back({2.0 * centre[k].u - other[k].u, 2.0 * centre[k].v - other[k].v});
     }
+    if (!t.startBoundary.empty()) runOnPastCut(right, left, true);
+    if (!t.endBoundary.empty()) runOnPastCut(right, left, false);
     Band band;
     band.outline = right;
     band.outline.insert(band.outline.end(), left.rbegin(), left.rend());
@@ -101,12 +123,11 @@ bool inBandAnywhere(const Handle(Geom_BSplineSurface)& s, const Band& band, cons
     return false;
 }
 
-}  // namespace
-
-CourseCoverage courseCoverage(const NurbsSurface& surface, const CoursePlan& plan, std::size_t cells)
+/// courseCoverage() of the face @p f: triangles whose centroid lies off it left out.
+CourseCoverage coverageOn(const detail::ToolFace& f, const CoursePlan& plan, std::size_t cells)
 {
     if (cells < 2 || cells > 4000) throw Error(ErrorCode::InvalidArgument, "courseCoverage: 2 to 4000 cells a side");
-    const Handle(Geom_BSplineSurface) s = detail::toolSurface(surface);
+    const Handle(Geom_BSplineSurface)& s = f.surface;
     CourseCoverage out;
     try {
         std::vector<Band> bands;
@@ -127,6 +148,7 @@ CourseCoverage courseCoverage(const NurbsSurface& surface, const CoursePlan& pla
                 for (const std::array<std::size_t, 3>& t : {std::array<std::size_t, 3>{a, b, c}, std::array<std::size_t, 3>{a, c, d}}) {
                     const double area = 0.5 * norm(cross(out.nodes[t[1]] - out.nodes[t[0]], out.nodes[t[2]] - out.nodes[t[0]]));
                     const UV centre{(uv[t[0]].u + uv[t[1]].u + uv[t[2]].u) / 3.0, (uv[t[0]].v + uv[t[1]].v + uv[t[2]].v) / 3.0};
+                    if (f.trim && !detail::onFace(f, centre)) continue;  // off a trimmed face
                     std::size_t count = 0;
                     for (const Band& band : bands) count += inBandAnywhere(s, band, centre) ? 1 : 0;
                     out.triangles.push_back(t);
@@ -145,6 +167,18 @@ CourseCoverage courseCoverage(const NurbsSurface& surface, const CoursePlan& pla
         out.several /= out.totalArea;
     }
     return out;
+}
+
+}  // namespace
+
+CourseCoverage courseCoverage(const NurbsSurface& surface, const CoursePlan& plan, std::size_t cells)
+{
+    return coverageOn(detail::toolFace(surface), plan, cells);
+}
+
+CourseCoverage courseCoverage(const PlacementSurface& tool, const CoursePlan& plan, std::size_t cells)
+{
+    return coverageOn(detail::toolFace(tool.surface, tool.trim), plan, cells);
 }
 
 void writeCourseCoverageVtk(const CourseCoverage& coverage, std::ostream& out)

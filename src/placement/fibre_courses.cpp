@@ -18,6 +18,7 @@
 #include "placement/nurbs_geometry.hpp"
 #include "placement/offset_point.hpp"
 #include "placement/periodic_surface.hpp"
+#include "placement/tool_face.hpp"
 #include "placement/trimmed_offset.hpp"
 #include "placement/uv_interpolation.hpp"
 #include "surface/occt_convert.hpp"
@@ -32,7 +33,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// @p curve offset by @p d from the curve named @p from, with the step's record: kept on the
 /// surface (cut at, or carried to, its boundary; see detail::offsetWithinSurface()).
-detail::TrimmedOffset offsetStep(const Handle(Geom_BSplineSurface)& s, const CurveOnSurface& curve, double d, SurfaceOffsetMethod method, int steps,
+detail::TrimmedOffset offsetStep(const detail::ToolFace& f, const CurveOnSurface& curve, double d, SurfaceOffsetMethod method, int steps,
                                  const std::string& what)
 {
     if (d == 0.0) {
@@ -46,7 +47,7 @@ detail::TrimmedOffset offsetStep(const Handle(Geom_BSplineSurface)& s, const Cur
     o.method = method;
     o.geodesicSteps = steps;
     try {
-        return detail::offsetWithinSurface(s, curve, d, o);
+        return detail::offsetWithinSurface(f, curve, d, o);
     } catch (const Error& e) {
         throw Error(e.code(), what + ": " + e.what());
     }
@@ -154,18 +155,19 @@ double largestError(const CourseStep& step)
 
 /// The tow @p name whose centreline is @p base's curve offset by @p d, with its edges, length and
 /// steering; nothing when the centreline lies off the face.
-std::optional<TowPath> layTow(const Handle(Geom_BSplineSurface)& s, const CourseCentre& base, double d, const std::string& name,
+std::optional<TowPath> layTow(const detail::ToolFace& f, const CourseCentre& base, double d, const std::string& name,
                               const CourseOptions& options, double w)
 {
+    const Handle(Geom_BSplineSurface)& s = f.surface;
     const int steps = options.geodesicSteps;
-    detail::TrimmedOffset line = offsetStep(s, base.curve, d, options.method, steps, "tow " + name);
+    detail::TrimmedOffset line = offsetStep(f, base.curve, d, options.method, steps, "tow " + name);
     if (line.curve.uv.size() < 2) return std::nullopt;
     TowPath tow;
     tow.name = name;
     tow.centreline = line.curve;
     // The side each end lies on: cut or carried there, or there already.
-    tow.startBoundary = line.startSide.empty() ? detail::boundarySide(s, line.curve.uv.front(), 1e-9) : line.startSide;
-    tow.endBoundary = line.endSide.empty() ? detail::boundarySide(s, line.curve.uv.back(), 1e-9) : line.endSide;
+    tow.startBoundary = line.startSide.empty() ? detail::faceSide(f, line.curve.uv.front(), 1e-9) : line.startSide;
+    tow.endBoundary = line.endSide.empty() ? detail::faceSide(f, line.curve.uv.back(), 1e-9) : line.endSide;
     tow.step = stepRecord(base.name, d, line);
     tow.length = detail::lengthOnSurface(s, tow.centreline);
     tow.geodesicCurvature = detail::geodesicCurvatures(s, tow.centreline);
@@ -175,7 +177,7 @@ std::optional<TowPath> layTow(const Handle(Geom_BSplineSurface)& s, const Course
     // Each edge, and its (u,v) B-spline; none where the whole edge hangs off the face.
     const auto edge = [&](double side, const char* which, CurveOnSurface& e, NurbsCurve& curve) {
         const std::string what = "tow " + name + "'s " + which + " edge";
-        e = offsetStep(s, tow.centreline, side, SurfaceOffsetMethod::Geodesic, steps, what).curve;
+        e = offsetStep(f, tow.centreline, side, SurfaceOffsetMethod::Geodesic, steps, what).curve;
         if (e.uv.size() < 2) e = CurveOnSurface();
         else curve = parameterCurve(e.uv, what);
     };
@@ -186,7 +188,10 @@ std::optional<TowPath> layTow(const Handle(Geom_BSplineSurface)& s, const Course
 
 }  // namespace
 
-CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& reference, const CourseOptions& options)
+namespace {
+
+/// layCourses() on the face @p f (the reference trimmed to it).
+CoursePlan layCoursesOn(const detail::ToolFace& f, const CurveOnSurface& reference, const CourseOptions& options)
 {
     const double w = options.towWidth;
     if (!(w > 0.0) || !std::isfinite(w)) throw Error(ErrorCode::InvalidArgument, "layCourses: the tow width must be positive");
@@ -204,9 +209,16 @@ CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& referen
         if (i > 0 && distance(reference.points[i], reference.points[i - 1]) == 0.0)
             throw Error(ErrorCode::InvalidArgument, "layCourses: reference points " + std::to_string(i - 1) + " and " + std::to_string(i) + " coincide");
     }
-    const Handle(Geom_BSplineSurface) s = detail::toolSurface(surface);
+    const Handle(Geom_BSplineSurface)& s = f.surface;
     CoursePlan plan;
-    plan.reference = reference;
+    try {
+        plan.reference = f.trim ? detail::trimToFace(f, reference) : reference;
+    } catch (const Standard_Failure& e) {
+        throw Error(ErrorCode::Internal, std::string("layCourses: OpenCASCADE failed trimming the reference: ") + e.GetMessageString());
+    }
+    if (plan.reference.uv.size() < 4)
+        throw Error(ErrorCode::InvalidArgument, "layCourses: " + std::to_string(plan.reference.uv.size()) +
+                                                    " of the reference's points lie on the face (at least 4 must: a reference sampled within the face, see referenceFromPlane())");
     plan.towWidth = w;
     plan.spacing = options.spacing > 0.0 ? options.spacing : w;
     plan.tolerance = options.tolerance > 0.0 ? options.tolerance : 1e-3 * w;
@@ -222,11 +234,11 @@ CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& referen
             CourseCentre base;
             double beyond = 0.0;
             if (c == 0) {
-                centre.curve = reference;
+                centre.curve = plan.reference;
                 centre.step.from = "reference";
             } else {
                 const CourseCentre& last = plan.courses.back();
-                detail::TrimmedOffset next = offsetStep(s, last.curve, nTows * plan.spacing, options.method, steps, "course " + centre.name);
+                detail::TrimmedOffset next = offsetStep(f, last.curve, nTows * plan.spacing, options.method, steps, "course " + centre.name);
                 if (next.curve.uv.size() < 2) {  // its centreline is off the face: its tows from the last one's
                     base = last;
                     beyond = nTows * plan.spacing;
@@ -245,7 +257,7 @@ CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& referen
             for (std::size_t i = 0; i < nTows; ++i) {
                 const std::string name = centre.name + "_t" + std::to_string(i + 1);
                 const double d = (static_cast<double>(i) - 0.5 * static_cast<double>(nTows - 1)) * plan.spacing + beyond;
-                std::optional<TowPath> tow = layTow(s, base, d, name, options, w);
+                std::optional<TowPath> tow = layTow(f, base, d, name, options, w);
                 if (!tow) {
                     plan.offSurface.push_back(name);
                     continue;
@@ -274,6 +286,18 @@ CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& referen
     for (const TowPath& t : plan.tows) plan.largestStepError = std::max(plan.largestStepError, largestError(t.step));
     plan.withinTolerance = plan.largestStepError <= plan.tolerance;
     return plan;
+}
+
+}  // namespace
+
+CoursePlan layCourses(const NurbsSurface& surface, const CurveOnSurface& reference, const CourseOptions& options)
+{
+    return layCoursesOn(detail::toolFace(surface), reference, options);
+}
+
+CoursePlan layCourses(const PlacementSurface& tool, const CurveOnSurface& reference, const CourseOptions& options)
+{
+    return layCoursesOn(detail::toolFace(tool.surface, tool.trim), reference, options);
 }
 
 TOWGEOM_END_NAMESPACE

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "brep/quiet_messenger.hpp"
+#include "placement/face_trim.hpp"
 #include "placement/nurbs_geometry.hpp"
 #include "placement/surface_grid.hpp"
 #include "towgeom/error.hpp"
@@ -166,8 +167,11 @@ PlacementSurface convertFace(const FileFaces& faces, std::size_t which, const st
     if (b->IsUPeriodic()) b->SetUNotPeriodic();
     if (b->IsVPeriodic()) b->SetVNotPeriodic();
     b->Segment(bu0, bu1, bv0, bv1);
-    if (face.Orientation() == TopAbs_REVERSED) b->UReverse();  // the normal out of the face's material
+    const bool reversed = face.Orientation() == TopAbs_REVERSED;
     PlacementSurface p;
+    p.trim = detail::faceTrim(face, b, reversed);
+    if (p.trim) p.trimEdges = p.trim->edges.size();
+    if (reversed) b->UReverse();  // the normal out of the face's material
     p.surface = detail::nurbsSurface(b);
     p.faceCount = faces.faces.size();
     p.face = which;

@@ -18,6 +18,7 @@
 
 #include "placement/nurbs_geometry.hpp"
 #include "placement/periodic_surface.hpp"
+#include "placement/tool_face.hpp"
 #include "surface/occt_convert.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
@@ -71,7 +72,62 @@ CurveOnSurface referenceFromPoints(const NurbsSurface& surface, const std::vecto
     return curveOnSurface(surface, uv);
 }
 
-CurveOnSurface referenceFromPlane(const NurbsSurface& surface, const Point3& origin, const Vector3& normal, std::size_t points, bool reverse)
+namespace {
+
+/// The parameters [first, last] of @p c's run on the trimmed face @p f passing nearest @p o
+/// (1000 samples, then each end bisected to 1e-15 of the curve's range; on a periodic curve the
+/// run may pass its start, then last > the curve's last parameter).
+/// @throws towgeom::Error (InvalidArgument) when no sample lies on the face.
+std::pair<double, double> runOnFace(const detail::ToolFace& f, const Handle(Geom_Curve)& c, const gp_Pnt& o, double size)
+{
+    const double t0 = c->FirstParameter(), t1 = c->LastParameter(), period = t1 - t0;
+    const auto on = [&](double t) {
+        const auto [at, away] = nearest(f.surface, c->Value(t));
+        return away <= 1e-6 * size && detail::onFace(f, at, 1e-9);
+    };
+    constexpr int m = 1000;
+    std::vector<double> ts(m + 1);
+    std::vector<bool> in(m + 1);
+    for (int k = 0; k <= m; ++k) ts[k] = t0 + period * k / m, in[k] = on(ts[k]);
+    if (std::all_of(in.begin(), in.end(), [](bool b) { return b; })) return {t0, t1};
+    // A periodic curve's samples from one off the face, round to it: every run is contiguous.
+    if (c->IsPeriodic() && in[0]) {
+        const int off = static_cast<int>(std::find(in.begin(), in.end(), false) - in.begin());
+        std::vector<double> turned;
+        for (int k = off; k <= m; ++k) turned.push_back(ts[k]);
+        for (int k = 1; k <= off; ++k) turned.push_back(ts[k] + period);
+        ts = turned;
+        for (int k = 0; k <= m; ++k) in[k] = on(ts[k]);
+    }
+    int bestFirst = -1, bestLast = -1;
+    double bestDistance = std::numeric_limits<double>::infinity();
+    for (int k = 0; k <= m;) {
+        if (!in[k]) {
+            ++k;
+            continue;
+        }
+        int j = k;
+        double d = o.Distance(c->Value(ts[k]));
+        while (j + 1 <= m && in[j + 1]) d = std::min(d, o.Distance(c->Value(ts[++j])));
+        if (d < bestDistance) bestDistance = d, bestFirst = k, bestLast = j;
+        k = j + 1;
+    }
+    if (bestFirst < 0) throw Error(ErrorCode::InvalidArgument, "referenceFromPlane: the plane's cut lies off the face (outside its trimming curves)");
+    const auto crossing = [&](double inside, double outside) {
+        for (int it = 0; it < 200 && std::abs(outside - inside) > 1e-15 * period; ++it) {
+            const double mid = 0.5 * (inside + outside);
+            (on(mid) ? inside : outside) = mid;
+        }
+        return inside;
+    };
+    const double first = bestFirst > 0 ? crossing(ts[bestFirst], ts[bestFirst - 1]) : ts[bestFirst];
+    const double last = bestLast < m ? crossing(ts[bestLast], ts[bestLast + 1]) : ts[bestLast];
+    return {first, last};
+}
+
+/// referenceFromPlane() on the face @p f of @p surface.
+CurveOnSurface planeCut(const NurbsSurface& surface, const detail::ToolFace& f, const Point3& origin, const Vector3& normal, std::size_t points,
+                        bool reverse)
 {
     const auto finite = [](const Point3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); };
     if (!finite(origin) || !finite(normal)) throw Error(ErrorCode::InvalidArgument, "referenceFromPlane: the plane's point and normal must be finite");
@@ -80,7 +136,7 @@ CurveOnSurface referenceFromPlane(const NurbsSurface& surface, const Point3& ori
     if (!(largest > 0.0)) throw Error(ErrorCode::InvalidArgument, "referenceFromPlane: the plane's normal is zero");
     const Vector3 direction = (1.0 / largest) * normal;
     if (points < 2 || points > 10000000) throw Error(ErrorCode::InvalidArgument, "referenceFromPlane: 2 to 10,000,000 points");
-    const Handle(Geom_BSplineSurface) s = detail::toolSurface(surface);
+    const Handle(Geom_BSplineSurface)& s = f.surface;
     const double size = netSize(surface);
     std::vector<UV> uv;
     try {
@@ -97,8 +153,9 @@ CurveOnSurface referenceFromPlane(const NurbsSurface& surface, const Point3& ori
             if (onCurve.NbPoints() > 0) d = std::min(d, onCurve.LowerDistance());
             if (d < bestDistance) bestDistance = d, best = c;
         }
+        const auto [first, last] = f.trim ? runOnFace(f, best, o, size) : std::pair<double, double>{best->FirstParameter(), best->LastParameter()};
         GeomAdaptor_Curve adaptor(best);
-        GCPnts_UniformAbscissa sampler(adaptor, static_cast<int>(points), 1e-9 * size);
+        GCPnts_UniformAbscissa sampler(adaptor, static_cast<int>(points), first, last, 1e-9 * size);
         if (!sampler.IsDone() || sampler.NbPoints() != static_cast<int>(points))
             throw Error(ErrorCode::Internal, "referenceFromPlane: the intersection curve could not be sampled");
         for (int k = 1; k <= sampler.NbPoints(); ++k) {
@@ -112,6 +169,18 @@ CurveOnSurface referenceFromPlane(const NurbsSurface& surface, const Point3& ori
     }
     if (reverse) std::reverse(uv.begin(), uv.end());
     return curveOnSurface(surface, uv);
+}
+
+}  // namespace
+
+CurveOnSurface referenceFromPlane(const NurbsSurface& surface, const Point3& origin, const Vector3& normal, std::size_t points, bool reverse)
+{
+    return planeCut(surface, detail::toolFace(surface), origin, normal, points, reverse);
+}
+
+CurveOnSurface referenceFromPlane(const PlacementSurface& tool, const Point3& origin, const Vector3& normal, std::size_t points, bool reverse)
+{
+    return planeCut(tool.surface, detail::toolFace(tool.surface, tool.trim), origin, normal, points, reverse);
 }
 
 TOWGEOM_END_NAMESPACE

@@ -15,6 +15,7 @@
 #include "placement/geodesics.hpp"
 #include "placement/offset_point.hpp"
 #include "placement/periodic_surface.hpp"
+#include "placement/tool_face.hpp"
 #include "placement/uv_interpolation.hpp"
 #include "surface/occt_convert.hpp"
 #include "towgeom/error.hpp"
@@ -58,19 +59,11 @@ PointAlong pointAlong(const Handle(Geom_BSplineSurface)& s, const UVCurve& c, do
     return {{p.X(), p.Y()}, su * d.X() + sv * d.Y()};
 }
 
-/// Whether (u,v) lies in the box, or outside it by at most 1e-9 of it (rounding along an edge).
-bool nearlyOn(const Handle(Geom_BSplineSurface)& s, const UV& uv)
-{
-    double u0, u1, v0, v1;
-    s->Bounds(u0, u1, v0, v1);
-    const double du = 1e-9 * (u1 - u0), dv = 1e-9 * (v1 - v0);
-    return (s->IsUPeriodic() || (uv.u >= u0 - du && uv.u <= u1 + du)) && (s->IsVPeriodic() || (uv.v >= v0 - dv && uv.v <= v1 + dv));
-}
-
 /// The offset of @p at, or nothing when it leaves the surface.
 std::optional<OffsetPoint> tryOffset(const Handle(Geom_BSplineSurface)& s, const PointAlong& at, double d, const SurfaceOffsetOptions& o,
                                      bool measure = true)
 {
+    if (d == 0.0) return OffsetPoint{at.uv, at.uv, 0.0, 0.0};  // the curve itself, trimmed to the face
     try {
         return offsetPoint(s, at.uv, at.tangent, d, o, measure);
     } catch (const OffSurface&) {
@@ -78,31 +71,17 @@ std::optional<OffsetPoint> tryOffset(const Handle(Geom_BSplineSurface)& s, const
     }
 }
 
-/// The side of the box nearest @p uv (not periodic).
-std::string nearestSide(const Handle(Geom_BSplineSurface)& s, const UV& uv)
-{
-    double u0, u1, v0, v1;
-    s->Bounds(u0, u1, v0, v1);
-    std::string side;
-    double best = std::numeric_limits<double>::infinity();
-    const auto consider = [&](double gap, const char* name) {
-        if (gap < best) best = gap, side = name;
-    };
-    if (!s->IsUPeriodic()) consider(std::abs(uv.u - u0) / (u1 - u0), "u_min"), consider(std::abs(uv.u - u1) / (u1 - u0), "u_max");
-    if (!s->IsVPeriodic()) consider(std::abs(uv.v - v0) / (v1 - v0), "v_min"), consider(std::abs(uv.v - v1) / (v1 - v0), "v_max");
-    return side;
-}
-
 /// The offset of the base point between parameters @p inside (offset on the surface) and
 /// @p outside (offset off it) whose offset lands on the boundary, put onto that side.
-std::pair<OffsetPoint, std::string> cutAtBoundary(const Handle(Geom_BSplineSurface)& s, const UVCurve& base, double inside, double outside, double d,
+std::pair<OffsetPoint, std::string> cutAtBoundary(const ToolFace& f, const UVCurve& base, double inside, double outside, double d,
                                                   const SurfaceOffsetOptions& o)
 {
+    const Handle(Geom_BSplineSurface)& s = f.surface;
     const double span = std::abs(outside - inside);
     for (int it = 0; it < 200 && std::abs(outside - inside) > 1e-15 * span; ++it) {
         const double mid = 0.5 * (inside + outside);
         const std::optional<OffsetPoint> p = tryOffset(s, pointAlong(s, base, mid), d, o, false);  // where it lands only
-        if (p && onSurface(s, p->raw)) inside = mid;
+        if (p && onFace(f, p->raw)) inside = mid;
         else outside = mid;
     }
     // The kept point, measured (if that fails so near the boundary: only where it lands).
@@ -117,10 +96,10 @@ std::pair<OffsetPoint, std::string> cutAtBoundary(const Handle(Geom_BSplineSurfa
     OffsetPoint end = *kept;
     // The bisection ends on the boundary; anywhere else something other than the face's end
     // stopped the offsets.
-    const std::string side = boundarySide(s, end.raw, 1e-6);
+    const std::string side = faceSide(f, end.raw, 1e-6);
     if (side.empty())
         throw Error(ErrorCode::InvalidArgument, "an offset stops inside the face at (" + std::to_string(end.raw.u) + ", " + std::to_string(end.raw.v) + ")");
-    end.uv = onSide(s, end.raw, side);  // within the bisection's 1e-15 of it: its distance stands
+    end.uv = ontoSide(f, end.raw, side);  // within the bisection's 1e-15 of it: its distance stands
     return {end, side};
 }
 
@@ -133,13 +112,13 @@ struct Carried {
 
 /// The boundary point reached from @p from along the 3D direction @p t by a geodesic, or nothing
 /// if it does not leave the surface within @p longest.
-std::optional<Carried> carryToBoundary(const Handle(Geom_BSplineSurface)& s, const UV& from, const gp_Vec& t, double step, double longest,
+std::optional<Carried> carryToBoundary(const ToolFace& f, const UV& from, const gp_Vec& t, double step, double longest,
                                                           int steps)
 {
     const auto reach = [&](double length) -> std::optional<UV> {
         try {
-            const UV end = shootGeodesic(s, from, t, length, steps);
-            if (onSurface(s, end)) return end;
+            const UV end = shootGeodesic(f.surface, from, t, length, steps);
+            if (onFace(f, end)) return end;
         } catch (const OffSurface&) {
         }
         return std::nullopt;
@@ -155,8 +134,8 @@ std::optional<Carried> carryToBoundary(const Handle(Geom_BSplineSurface)& s, con
         if (const std::optional<UV> end = reach(mid)) kept = *end, inside = mid;
         else outside = mid;
     }
-    const std::string side = nearestSide(s, kept);
-    return Carried{onSide(s, kept, side), side, inside};
+    const std::string side = nearestFaceSide(f, kept);
+    return Carried{ontoSide(f, kept, side), side, inside};
 }
 
 /// The longest run [first, last] of consecutive true entries of @p on (last < first: none).
@@ -209,30 +188,29 @@ bool distinct(const Handle(Geom_BSplineSurface)& s, const UV& uv, const UV& end)
 
 namespace {
 
-TrimmedOffset offsetWithin(const Handle(Geom_BSplineSurface)& s, const CurveOnSurface& base, double d, const SurfaceOffsetOptions& options,
-                           bool mayClose);
+TrimmedOffset offsetWithin(const ToolFace& f, const CurveOnSurface& base, double d, const SurfaceOffsetOptions& options, bool mayClose);
 
 }  // namespace
 
-TrimmedOffset offsetWithinSurface(const Handle(Geom_BSplineSurface)& s, const CurveOnSurface& base, double d, const SurfaceOffsetOptions& options)
+TrimmedOffset offsetWithinSurface(const ToolFace& f, const CurveOnSurface& base, double d, const SurfaceOffsetOptions& options)
 {
-    return offsetWithin(s, base, d, options, true);
+    return offsetWithin(f, base, d, options, true);
 }
 
 namespace {
 
 /// offsetWithinSurface(); with @p mayClose false a closed base is laid as an open curve (its run
 /// on the face neither wraps nor closes).
-TrimmedOffset offsetWithin(const Handle(Geom_BSplineSurface)& s, const CurveOnSurface& base, double d, const SurfaceOffsetOptions& options,
-                           bool mayClose)
+TrimmedOffset offsetWithin(const ToolFace& f, const CurveOnSurface& base, double d, const SurfaceOffsetOptions& options, bool mayClose)
 {
+    const Handle(Geom_BSplineSurface)& s = f.surface;
     const std::size_t n = base.uv.size();
     std::vector<std::optional<OffsetPoint>> at(n);
     std::vector<bool> on(n, false);
     const std::vector<gp_Vec> tangents = curveTangents(s, base);
     for (std::size_t i = 0; i < n; ++i) {
         at[i] = tryOffset(s, {base.uv[i], tangents[i]}, d, options);
-        on[i] = at[i] && nearlyOn(s, at[i]->raw);
+        on[i] = at[i] && onFace(f, at[i]->raw, 1e-9);  // rounding along an edge allowed
     }
     // A closed base whose offsets leave the face somewhere: the run on the face may pass its
     // joint. Laid again from an offset that left round to it (both crossings next to it inside
@@ -246,7 +224,7 @@ TrimmedOffset offsetWithin(const Handle(Geom_BSplineSurface)& s, const CurveOnSu
             CurveOnSurface open;
             for (std::size_t k = off; k < n; ++k) open.uv.push_back(base.uv[k]), open.points.push_back(base.points[k]);
             for (std::size_t k = 1; k <= off; ++k) open.uv.push_back({base.uv[k].u + period.u, base.uv[k].v + period.v}), open.points.push_back(base.points[k]);
-            return offsetWithin(s, open, d, options, false);
+            return offsetWithin(f, open, d, options, false);
         }
     }
     TrimmedOffset out;
@@ -258,13 +236,13 @@ TrimmedOffset offsetWithin(const Handle(Geom_BSplineSurface)& s, const CurveOnSu
     if (curve.curve.IsNull()) throw Error(ErrorCode::InvalidArgument, "a curve's points repeat (its (u,v) cannot be interpolated)");
     // Cut where the surface ends the offsets.
     if (first > 0) {
-        const auto [end, side] = cutAtBoundary(s, curve, curve.params[first], curve.params[first - 1], d, options);
+        const auto [end, side] = cutAtBoundary(f, curve, curve.params[first], curve.params[first - 1], d, options);
         if (distinct(s, end.uv, out.curve.uv.front())) append(out, s, end.uv, end.geodesicDistance, end.estimatedError, true);
         else replaceEnd(out, s, end, true);
         out.startSide = side;
     }
     if (last + 1 < n) {
-        const auto [end, side] = cutAtBoundary(s, curve, curve.params[last], curve.params[last + 1], d, options);
+        const auto [end, side] = cutAtBoundary(f, curve, curve.params[last], curve.params[last + 1], d, options);
         if (distinct(s, end.uv, out.curve.uv.back())) append(out, s, end.uv, end.geodesicDistance, end.estimatedError, false);
         else replaceEnd(out, s, end, false);
         out.endSide = side;
@@ -277,13 +255,13 @@ TrimmedOffset offsetWithin(const Handle(Geom_BSplineSurface)& s, const CurveOnSu
     const UVCurve offset = uvCurve(out.curve);
     if (offset.curve.IsNull()) return out;
     for (const bool atStart : {true, false}) {
-        const std::string baseSide = boundarySide(s, atStart ? base.uv.front() : base.uv.back(), 1e-9);
+        const std::string baseSide = faceSide(f, atStart ? base.uv.front() : base.uv.back(), 1e-9);
         if (baseSide.empty() || !(atStart ? out.startSide : out.endSide).empty()) continue;
         const UV end = atStart ? out.curve.uv.front() : out.curve.uv.back();
-        if (!boundarySide(s, end, 1e-9).empty()) continue;  // on the boundary already
+        if (!faceSide(f, end, 1e-9).empty()) continue;  // on the boundary already
         const PointAlong e = pointAlong(s, offset, atStart ? offset.params.front() : offset.params.back());
         const gp_Vec direction = atStart ? e.tangent.Reversed() : e.tangent;
-        const std::optional<Carried> reached = carryToBoundary(s, end, direction, std::abs(d), longest, options.geodesicSteps);
+        const std::optional<Carried> reached = carryToBoundary(f, end, direction, std::abs(d), longest, options.geodesicSteps);
         if (!reached) continue;
         (atStart ? out.startSide : out.endSide) = reached->side;
         if (!distinct(s, reached->uv, end)) {  // a rounding short of the side: put onto it
@@ -302,6 +280,14 @@ TrimmedOffset offsetWithin(const Handle(Geom_BSplineSurface)& s, const CurveOnSu
 }
 
 }  // namespace
+
+CurveOnSurface trimToFace(const ToolFace& f, const CurveOnSurface& c)
+{
+    bool all = true;
+    for (const UV& uv : c.uv) all = all && onFace(f, uv, 1e-9);
+    if (all) return c;
+    return offsetWithin(f, c, 0.0, SurfaceOffsetOptions(), true).curve;
+}
 
 double lengthOnSurface(const Handle(Geom_BSplineSurface)& s, const CurveOnSurface& c)
 {

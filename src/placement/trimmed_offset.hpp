@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "placement/tool_face.hpp"
 #include "towgeom/surface_offset_curves.hpp"
 #include "towgeom/export.hpp"
 
@@ -19,21 +20,27 @@ struct TrimmedOffset {
     CurveOnSurface curve;  ///< its points (none if every offset left the surface)
     std::vector<double> geodesicDistance;  ///< per point, the true distance from its base point (NaN where extended)
     std::vector<double> estimatedError;    ///< per point, Schueler's estimate (NaN where extended)
-    /// The side of the parameter box ("u_min", "u_max", "v_min", "v_max") where the curve's start
-    /// was cut or carried to, empty where it starts as its base does.
+    /// The side of the face (a side of the parameter box, "u_min", "u_max", "v_min", "v_max", or a
+    /// trimmed face's "edge K"; see faceSide()) where the curve's start was cut or carried to,
+    /// empty where it starts as its base does.
     std::string startSide;
     std::string endSide;  ///< likewise for its end
 };
 
-/// @p base (on @p s, see toolSurface()) offset by @p d point by point (offsetPoint()). Where
-/// offsets leave the surface, the longest run of points that stay on it is kept, and each of its
+/// @p base (on @p f's surface) offset by @p d point by point (offsetPoint()). Where
+/// offsets leave the face (its box, or a trimmed face's curves: onFace()), the longest run of points that stay on it is kept, and each of its
 /// ends that the surface cut is completed by the offset of the base point (on the base's (u,v)
 /// cubic interpolation) whose offset lands on the boundary (bisection to 1e-15 of the base's
-/// parameter). Where the base ends on a side of the box (within 1e-9 of it) and its offset ends
+/// parameter). Where the base ends on a side of the face (within 1e-9 of it) and its offset ends
 /// inside, the offset is carried on along its end direction by a geodesic to the boundary. A
 /// closed base all of whose offsets stay on the surface gives a closed curve.
 /// @throws towgeom::Error (InvalidArgument) for a singular point met on the way.
-TrimmedOffset offsetWithinSurface(const Handle(Geom_BSplineSurface)& s, const CurveOnSurface& base, double d, const SurfaceOffsetOptions& options);
+TrimmedOffset offsetWithinSurface(const ToolFace& f, const CurveOnSurface& base, double d, const SurfaceOffsetOptions& options);
+
+/// @p c's longest run of points on the face @p f, each end that the face's boundary cut ended
+/// where the curve's (u,v) cubic crosses it (as offsetWithinSurface() with d = 0); @p c itself
+/// where it lies on the face; empty where it lies off.
+CurveOnSurface trimToFace(const ToolFace& f, const CurveOnSurface& c);
 
 /// The length along the surface of the curve through @p c's points (its (u,v) cubic
 /// interpolation, integrated by OpenCASCADE); 0 for fewer than 2 points.

@@ -46,7 +46,9 @@ void bindCurves(py::module_& m)
         .def_readonly("name", &PlacementSurface::name)
         .def_readonly("face", &PlacementSurface::face, "Which face of the file (0-based).")
         .def_readonly("face_count", &PlacementSurface::faceCount, "Faces in the file (0 for a grid).")
-        .def_readonly("fit_deviation", &PlacementSurface::fitDeviation, "Largest distance of a grid's points from the surface fitted to them.");
+        .def_readonly("fit_deviation", &PlacementSurface::fitDeviation, "Largest distance of a grid's points from the surface fitted to them.")
+        .def_readonly("trim_edges", &PlacementSurface::trimEdges,
+                      "Edges trimming the face where its boundary is not its (u,v) box (0: untrimmed); tows end on 'edge K'.");
     m.def("read_placement_surface", [](const Path& path, std::size_t face) { return readPlacementSurface(path.text, face); }, py::arg("path"),
           py::arg("face") = 0,
           py::call_guard<py::gil_scoped_release>(), "Face FACE of a STEP or IGES file (or a .grid file of points) as a tool surface.");
@@ -61,10 +63,10 @@ void bindCurves(py::module_& m)
         "A tool surface through a grid of points of shape (nu, nv, 3) (v fastest, as a .grid file), a bicubic B-spline.");
     m.def("reference_from_plane", [](const PlacementSurface& s, const std::array<double, 3>& origin, const std::array<double, 3>& normal,
                                      std::size_t points, bool reverse) {
-            return referenceFromPlane(s.surface, toPoint(origin), toPoint(normal), points, reverse);
+            return referenceFromPlane(s, toPoint(origin), toPoint(normal), points, reverse);
         }, py::arg("surface"), py::arg("origin"), py::arg("normal"), py::arg("points") = 41, py::arg("reverse") = false,
         py::call_guard<py::gil_scoped_release>(),
-        "The surface cut by the plane through ORIGIN of normal NORMAL (the cut nearest ORIGIN), POINTS points by arc length.");
+        "The surface cut by the plane through ORIGIN of normal NORMAL (the cut nearest ORIGIN; on a trimmed face its run on the face), POINTS points by arc length.");
     m.def("reference_from_points", [](const PlacementSurface& s, const DoubleArray& points, double maxDistance) {
             const std::vector<Point3> p = toPoints(points, "points");
             py::gil_scoped_release released;
@@ -127,9 +129,9 @@ void bindPlan(py::module_& m)
         .def_readonly("several", &CourseCoverage::several, "Fraction covered by two or more.");
     m.def("course_coverage", [](const PlacementSurface& surface, const CoursePlan& plan, std::size_t cells) {
             py::gil_scoped_release released;
-            return courseCoverage(surface.surface, plan, cells);
+            return courseCoverage(surface, plan, cells);
         }, py::arg("surface"), py::arg("plan"), py::arg("cells") = 200,
-        "The surface's (u,v) box as cells x cells cells (two triangles each), each triangle's tows counted at its centroid.");
+        "The surface's (u,v) box as cells x cells cells (two triangles each; those off a trimmed face left out), each triangle's tows counted at its centroid.");
     const CourseOptions defaults;
     m.def("lay_courses", [](const PlacementSurface& surface, const CurveOnSurface& reference, double towWidth, std::size_t towsPerCourse,
                             std::size_t courses, double spacing, const std::string& method, double tolerance, int geodesicSteps,
@@ -140,13 +142,14 @@ void bindPlan(py::module_& m)
             o.minSteeringRadius = minSteeringRadius;
             o.method = enumNamed(method, {SurfaceOffsetMethod::ProjectTangent, SurfaceOffsetMethod::Geodesic}, &offsetMethodName, "offset method");
             py::gil_scoped_release released;
-            return layCourses(surface.surface, reference, o);
+            return layCourses(surface, reference, o);
         }, py::arg("surface"), py::arg("reference"), py::arg("tow_width"), py::arg("tows_per_course") = defaults.towsPerCourse,
         py::arg("courses") = defaults.courses, py::arg("spacing") = defaults.spacing, py::arg("method") = offsetMethodName(defaults.method),
         py::arg("tolerance") = defaults.tolerance, py::arg("geodesic_steps") = defaults.geodesicSteps,
         py::arg("min_steering_radius") = defaults.minSteeringRadius,
         "K courses of N tows of width W on the surface, the first course's centreline the reference, each next course to its "
-        "left; method 'project-tangent' (Schueler et al.) or 'geodesic' (exact).");
+        "left; method 'project-tangent' (Schueler et al.) or 'geodesic' (exact). Tows end at the face's boundary (its trimming "
+        "curves where it has them).");
 }
 
 }  // namespace

@@ -115,3 +115,33 @@ def test_courses_on_a_cylinder_as_the_cli_lays_them_and_as_the_closed_form(tmp_p
     for a, b in zip(written["tows"], from_python["tows"]):
         assert a["name"] == b["name"]
         assert numpy.abs(numpy.array(a["centreline"]["points"]) - numpy.array(b["centreline"]["points"])).max() < 1e-12
+
+
+def test_courses_on_a_trimmed_face_written_by_gmsh_end_on_its_edges(tmp_path):
+    # A disk of radius 10 with the part x > 6 cut off (Gmsh's OpenCASCADE kernel): a plane face
+    # trimmed by an arc and a line, its (u,v) box larger than the face.
+    (tmp_path / "d.geo").write_text('SetFactory("OpenCASCADE");\nDisk(1) = {0, 0, 0, 10};\nRectangle(2) = {6, -20, 0, 20, 40};\n'
+                                    "BooleanDifference{ Surface{1}; Delete; }{ Surface{2}; Delete; }\n")
+    subprocess.run(["gmsh", str(tmp_path / "d.geo"), "-0", "-o", str(tmp_path / "d.step"), "-format", "step"], check=True, capture_output=True)
+    surface = towgeom.read_placement_surface(str(tmp_path / "d.step"), 0)
+    assert surface.trim_edges == 2
+    reference = towgeom.reference_from_plane(surface, (0.0, 0.0, 0.0), (0.0, 1.0, 0.0), points=41)
+    plan = towgeom.lay_courses(surface, reference, tow_width=2.0, tows_per_course=4, courses=1, method="geodesic")
+    assert len(plan.tows) == 4
+    for tow in plan.tows:
+        points = tow.centreline.points
+        y = points[0, 1]
+        assert numpy.abs(points[:, 1] - y).max() < 1e-9
+        # From the arc (x = -sqrt(100 - y^2)) to the line x = 6, the edge each end lies on named.
+        left, right = sorted([points[0, 0], points[-1, 0]])
+        assert abs(left + numpy.sqrt(100.0 - y * y)) < 2e-8 and abs(right - 6.0) < 2e-8
+        assert tow.start_boundary.startswith("edge ") and tow.end_boundary.startswith("edge ")
+        assert tow.start_boundary != tow.end_boundary
+        assert abs(tow.length - (6.0 + numpy.sqrt(100.0 - y * y))) < 1e-7
+    # Coverage of the face alone: the strip |y| <= 4 of the D once (its area by the trapezoid rule).
+    y = numpy.linspace(-10.0, 10.0, 200001)
+    width = numpy.sqrt(100.0 - y * y) + numpy.minimum(6.0, numpy.sqrt(100.0 - y * y))
+    area, strip = numpy.trapz(width, y), numpy.trapz(numpy.where(numpy.abs(y) <= 4.0, width, 0.0), y)
+    coverage = towgeom.course_coverage(surface, plan, cells=100)
+    assert abs(coverage.total_area - area) < 2e-3 * area
+    assert abs(coverage.once - strip / area) < 1e-3

@@ -1,6 +1,8 @@
 #include "occt_reference.hpp"
 
 #include <BRepAlgoAPI_Common.hxx>
+#include <BRepAlgoAPI_Cut.hxx>
+#include <gp_Circ.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <BRepCheck_Analyzer.hxx>
@@ -202,6 +204,52 @@ void writeTorusFace(const std::string& path, double major, double minor)
     STEPControl_Writer writer;
     if (writer.Transfer(face, STEPControl_AsIs) != IFSelect_RetDone || writer.Write(path.c_str()) != IFSelect_RetDone)
         throw std::runtime_error("cannot write STEP " + path);
+}
+
+namespace {
+
+void writeFaceStep(const TopoDS_Shape& face, const std::string& path)
+{
+    STEPControl_Writer writer;
+    if (writer.Transfer(face, STEPControl_AsIs) != IFSelect_RetDone || writer.Write(path.c_str()) != IFSelect_RetDone)
+        throw std::runtime_error("cannot write STEP " + path);
+}
+
+}  // namespace
+
+void writeDiskFace(const std::string& path, double radius, double cutX, bool reversed)
+{
+    const gp_Circ circle(gp_Ax2(), radius);
+    TopoDS_Wire wire;
+    if (cutX < radius) {
+        const double a = std::acos(cutX / radius), h = radius * std::sin(a);
+        const TopoDS_Edge arc = BRepBuilderAPI_MakeEdge(circle, a, 2.0 * M_PI - a).Edge();
+        const TopoDS_Edge line = BRepBuilderAPI_MakeEdge(gp_Pnt(cutX, -h, 0.0), gp_Pnt(cutX, h, 0.0)).Edge();
+        wire = BRepBuilderAPI_MakeWire(arc, line).Wire();
+    } else {
+        wire = BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(circle).Edge()).Wire();
+    }
+    TopoDS_Face face = BRepBuilderAPI_MakeFace(wire, true).Face();
+    if (reversed) face.Reverse();
+    writeFaceStep(face, path);
+}
+
+void writeHoledCylinderFace(const std::string& path, double radius, double height, double holeRadius)
+{
+    const TopoDS_Shape body = BRepPrimAPI_MakeCylinder(radius, height).Shape();
+    const gp_Ax2 across(gp_Pnt(-2.0 * radius, 0.0, 0.5 * height), gp_Dir(1.0, 0.0, 0.0));
+    const TopoDS_Shape drill = BRepPrimAPI_MakeCylinder(across, holeRadius, 4.0 * radius).Shape();
+    BRepAlgoAPI_Cut cut(body, drill);
+    if (!cut.IsDone()) throw std::runtime_error("the cylinder's holes could not be cut");
+    for (TopExp_Explorer x(cut.Shape(), TopAbs_FACE); x.More(); x.Next()) {
+        const TopoDS_Face& f = TopoDS::Face(x.Current());
+        const Handle(Geom_CylindricalSurface) c = Handle(Geom_CylindricalSurface)::DownCast(BRep_Tool::Surface(f));
+        if (!c.IsNull() && std::abs(c->Radius() - radius) < 1e-9 * radius && c->Axis().Direction().IsParallel(gp::DZ(), 1e-12)) {
+            writeFaceStep(f, path);
+            return;
+        }
+    }
+    throw std::runtime_error("the holed cylinder's lateral face was not found");
 }
 
 namespace {

@@ -55,6 +55,15 @@ void writeSphereFace(const std::string& path, double radius, double fromLatitude
 /// the axis, v the angle about the tube, v = 0 on the outer equator at distance @p major +
 /// @p minor) alone to the STEP file @p path.
 void writeTorusFace(const std::string& path, double major, double minor);
+/// Writes a flat disk of @p radius about the origin in the plane z = 0 (OCCT's plane trimmed by
+/// one circular edge: its (u,v) box is the square about it) alone to the STEP file @p path;
+/// with @p cutX < @p radius the part x > cutX cut off by a straight edge (a "D": edge 0 the
+/// arc, edge 1 the line); @p reversed writes the face reversed (its normal -z).
+void writeDiskFace(const std::string& path, double radius, double cutX, bool reversed = false);
+/// Writes the lateral face of a cylinder of @p radius about the z axis from z = 0 to @p height,
+/// with two holes where a cylinder of @p holeRadius about the line y = 0, z = @p height / 2 (the
+/// x axis raised) passes through it (OCCT's boolean cut), alone to the STEP file @p path.
+void writeHoledCylinderFace(const std::string& path, double radius, double height, double holeRadius);
 
 /// One whole tow as built by writeWholeTowSolids().
 struct WholeTowSolid {
