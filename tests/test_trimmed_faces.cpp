@@ -18,10 +18,12 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <string>
 
 #include "cli_runner.hpp"
 #include "occt_reference.hpp"
+#include "trimmed_face_family.hpp"
 
 using namespace towgeom;
 namespace fs = std::filesystem;
@@ -227,4 +229,59 @@ TEST_CASE("towgeom courses on a disk's STEP: exit 0, the trims on 'edge 0', trim
     for (std::size_t k = 0; k < 4; ++k) CHECK(std::abs(lengths[k] - expected[k]) <= 1e-7);
     CHECK(fs::exists(out / "courses.step"));
     CHECK(fs::exists(out / "coverage.vtk"));
+}
+
+TEST_CASE("a randomized family of trimmed B-spline patches (ellipses, some with a hole) cut by random planes: every tow on the face, "
+          "its cut ends on the boundary, by OpenCASCADE's own distances",
+          "[placement][courses][trim][random]")
+{
+    TrimScratch scratch;
+    for (unsigned seed = 1; seed <= 6; ++seed) {
+        const bool hole = seed % 2 == 0;
+        const fs::path file = scratch.dir / ("patch" + std::to_string(seed) + ".step");
+        const testing::RandomTrimmedPatch made = testing::writeRandomTrimmedPatch(file.string(), seed, hole);
+        const testing::FaceOracle oracle(file.string());
+        const PlacementSurface tool = readPlacementSurface(file.string());
+        REQUIRE(tool.trim != nullptr);
+        CHECK(tool.trimEdges == (hole ? 2u : 1u));
+        std::mt19937 random(1000 + seed);
+        const double turn = std::uniform_real_distribution<double>(0.0, M_PI)(random);
+        const CurveOnSurface reference = referenceFromPlane(tool, made.inside, {std::cos(turn), std::sin(turn), 0.0}, 41);
+        CourseOptions o;
+        o.towWidth = 0.2;
+        o.towsPerCourse = 3;
+        o.method = seed % 4 < 2 ? SurfaceOffsetMethod::Geodesic : SurfaceOffsetMethod::ProjectTangent;
+        const CoursePlan plan = layCourses(tool, reference, o);
+        const double onTolerance = 2e-9 * oracle.size();
+        const auto checkOnFace = [&](const CurveOnSurface& c, const std::string& what) {
+            double worst = 0.0;
+            for (const Point3& p : c.points) worst = std::max(worst, oracle.toFace(p));
+            INFO("seed " << seed << " " << what << ": farthest point from the face " << worst);
+            CHECK(worst <= onTolerance);
+        };
+        checkOnFace(reference, "reference");
+        for (const Point3& p : {reference.points.front(), reference.points.back()}) {
+            INFO("seed " << seed << " reference end off the boundary by " << oracle.toBoundary(p));
+            CHECK(oracle.toBoundary(p) <= onTolerance);  // a plane cut's run: boundary to boundary
+        }
+        REQUIRE(!plan.tows.empty());
+        for (const TowPath& t : plan.tows) {
+            checkOnFace(t.centreline, t.name + " centreline");
+            checkOnFace(t.right, t.name + " right edge");
+            checkOnFace(t.left, t.name + " left edge");
+            for (const bool start : {true, false}) {
+                const std::string& side = start ? t.startBoundary : t.endBoundary;
+                const Point3& end = start ? t.centreline.points.front() : t.centreline.points.back();
+                INFO("seed " << seed << " " << t.name << (start ? " start" : " end") << " on '" << side << "', off the boundary by "
+                             << oracle.toBoundary(end));
+                if (!side.empty()) CHECK(oracle.toBoundary(end) <= onTolerance);
+                if (!side.empty()) CHECK(side.rfind("edge ", 0) == 0);
+            }
+        }
+        const CourseCoverage cover = courseCoverage(tool, plan, 60);
+        INFO("seed " << seed << ": coverage area " << cover.totalArea << " against the face's " << oracle.area());
+        CHECK(std::abs(cover.totalArea - oracle.area()) <= 0.05 * oracle.area());
+        CHECK(std::abs(cover.uncovered + cover.once + cover.several - 1.0) <= 1e-12);
+        CHECK(cover.once > 0.0);
+    }
 }

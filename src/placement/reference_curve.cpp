@@ -75,7 +75,7 @@ CurveOnSurface referenceFromPoints(const NurbsSurface& surface, const std::vecto
 namespace {
 
 /// The parameters [first, last] of @p c's run on the trimmed face @p f passing nearest @p o
-/// (1000 samples, then each end bisected to 1e-15 of the curve's range; on a periodic curve the
+/// (200 samples, then each end bisected to 1e-15 of the curve's range; on a periodic curve the
 /// run may pass its start, then last > the curve's last parameter).
 /// @throws towgeom::Error (InvalidArgument) when no sample lies on the face.
 std::pair<double, double> runOnFace(const detail::ToolFace& f, const Handle(Geom_Curve)& c, const gp_Pnt& o, double size)
@@ -85,7 +85,7 @@ std::pair<double, double> runOnFace(const detail::ToolFace& f, const Handle(Geom
         const auto [at, away] = nearest(f.surface, c->Value(t));
         return away <= 1e-6 * size && detail::onFace(f, at, 1e-9);
     };
-    constexpr int m = 1000;
+    constexpr int m = 200;
     std::vector<double> ts(m + 1);
     std::vector<bool> in(m + 1);
     for (int k = 0; k <= m; ++k) ts[k] = t0 + period * k / m, in[k] = on(ts[k]);
