@@ -2,6 +2,7 @@
 tool's numbers and closed forms."""
 
 import json
+import re
 import subprocess
 
 import numpy
@@ -145,3 +146,24 @@ def test_courses_on_a_trimmed_face_written_by_gmsh_end_on_its_edges(tmp_path):
     coverage = towgeom.course_coverage(surface, plan, cells=100)
     assert abs(coverage.total_area - area) < 2e-3 * area
     assert abs(coverage.once - strip / area) < 1e-3
+    # The command-line tool on the same file: its coverage.vtk as meshio reads it, its courses.step
+    # as Gmsh reads it (each tow's centreline and edges a curve, their ends on the D's boundary).
+    subprocess.run([CLI, "courses", str(tmp_path / "d.step"), "--reference", "plane:0,0,0,0,1,0", "--tow-width", "2", "--tows", "4", "--exact",
+                    "--coverage-cells", "100", "--out", str(tmp_path / "plan"), "--quiet"], check=True, capture_output=True)
+    import meshio
+    mesh = meshio.read(str(tmp_path / "plan" / "coverage.vtk"))
+    assert mesh.cells[0].type == "triangle"
+    assert abs(mesh.cell_data["area"][0].sum() - coverage.total_area) < 1e-9 * coverage.total_area
+    assert set(numpy.unique(mesh.cell_data["coverage"][0])) <= {0, 1}
+    subprocess.run(["gmsh", str(tmp_path / "plan" / "courses.step"), "-0", "-o", str(tmp_path / "read.geo_unrolled")], check=True,
+                   capture_output=True)
+    text = (tmp_path / "read.geo_unrolled").read_text()
+    assert text.count("Spline(") == 12
+    # The curves' end points are Gmsh's numbered points (their inner points are "p1 + k").
+    ends = [[float(x) for x in line.split("{")[1].split("}")[0].split(",")[:3]] for line in text.splitlines()
+            if re.match(r"Point\(\d+\)", line)]
+    assert len(ends) == 24
+    for x, y, z in ends:
+        on_arc = abs(numpy.hypot(x, y) - 10.0) if x <= 6.0 + 1e-9 else 1e300
+        on_line = abs(x - 6.0) if abs(y) <= 8.0 + 1e-9 else 1e300
+        assert min(on_arc, on_line) < 1e-6 and abs(z) < 1e-9
