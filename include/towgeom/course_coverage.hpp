@@ -38,9 +38,10 @@ struct CourseCoverage {
 /// and its left edge's back, 256 points each, closed across the tow's ends. An edge wholly off
 /// the face (empty) is taken as the other's mirror image about the centreline in (u,v), so the
 /// band runs on to the boundary. At an end the face's boundary cut (TowPath::startBoundary,
-/// endBoundary) both edges run on straight past it in (u,v), by twice the distance between
-/// their ends, so that the band reaches the boundary all across rather than stopping at the
-/// chord between the edges' ends. Accurate to about one cell along each band's border.
+/// endBoundary) both edges run on straight past it in (u,v), by half the distance between their
+/// ends in space, so that the band reaches a boundary bulging out between them all across rather
+/// than stopping at the chord (a hole narrower than that is bridged). Accurate to about one cell
+/// along each band's border.
 /// @throws towgeom::Error (InvalidArgument) for fewer than 2 or more than 4000 cells, or an edge
 ///         whose points repeat.
 TOWGEOM_EXPORT CourseCoverage courseCoverage(const NurbsSurface& surface, const CoursePlan& plan, std::size_t cells = 200);

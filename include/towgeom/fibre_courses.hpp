@@ -150,8 +150,10 @@ struct CoursePlan {
 ///   TowPath::startBoundary / endBoundary say where, TowPath::length how long it is. Courses and
 ///   tows wholly off the face are listed in CoursePlan::offSurface. The boundary is the face's
 ///   parameter box here; the overload given a PlacementSurface ends them at its trimming curves.
-///   A tow whose band crosses a hole in the face keeps its longest run on the face (the run
-///   beyond the hole is not laid; courseCoverage() shows what that leaves).
+///   Each curve of a tow (its centreline, each edge) keeps its longest run on the face: a tow
+///   crossing a hole is laid on one side of it, and an edge crossing a hole its centreline
+///   misses is cut short there (courseCoverage() shows what that leaves). A hole between two
+///   points of a curve is found by probing the (u,v) chord between them.
 /// - **Seams**: where the surface closes smoothly (a cylinder's, sphere's or torus's angle; see
 ///   NurbsSurface::point()) curves and geodesics cross the seam, their u (or v) running on past
 ///   the box, and a closed reference (last point = first) gives closed courses.
@@ -177,7 +179,7 @@ TOWGEOM_EXPORT CoursePlan layCourses(const PlacementSurface& tool, const CurveOn
 /// "tows":[{"name", "course", "from", "distance", "centreline", "right", "left",
 /// "right_curve":{"degree","knots","poles":[[u,v,weight],..]}, "left_curve",
 /// "geodesic_distance", "estimated_error", "length", "start_boundary", "end_boundary" (a side
-/// of the box or null), "geodesic_curvature", "steering_radius" (null for infinity)}],
+/// of the box, "edge K" on a trimmed face, or null), "geodesic_curvature", "steering_radius" (null for infinity)}],
 /// "gaps":[{"right", "left" (the tows' names), "between_courses", "min", "max", "measured",
 /// "width"}], "off_surface":[names], "min_steering_radius", "below_steering_radius":[names]} ("from": the curve a step started from;
 /// NaN widths and distances as null).

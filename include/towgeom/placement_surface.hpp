@@ -43,11 +43,14 @@ struct PlacementSurface {
     /// here); null for a grid or a face whose edges all run along its box's sides (seams and
     /// poles aside). Given the PlacementSurface, layCourses(), referenceFromPlane() and
     /// courseCoverage() end tows, references and cells at these curves (points classified by
-    /// OpenCASCADE's face classifier); given its NurbsSurface alone, at the box.
+    /// OpenCASCADE's face classifier); given its NurbsSurface alone, at the box. It holds the
+    /// mapping from this surface's (u,v) to the face's own: it belongs to `surface` as read, and
+    /// means nothing for a surface changed or replaced (then reset it).
     std::shared_ptr<const detail::FaceTrim> trim;
     /// How many of the face's edges bound it where it is trimmed (seams and poles not counted;
-    /// 0 untrimmed). A tow ending on one is said to end on "edge K", K its index among the
-    /// face's edges in OpenCASCADE's order (TopExp::MapShapes).
+    /// 0 untrimmed). A tow ending on one is said to end on "edge K", K its index among all the
+    /// face's edges, seams included, in OpenCASCADE's order (TopExp::MapShapes on the face), so
+    /// K may reach past trimEdges.
     std::size_t trimEdges = 0;
 };
 

@@ -47,20 +47,26 @@ std::vector<UV> sampled(const CurveOnSurface& c, int count, const std::string& w
     return out;
 }
 
-/// @p right and @p left (a band's edges) run on past the end where the face's boundary cut the
-/// tow (@p atStart: their starts), straight along their end directions by twice the distance
-/// between their ends: the chord closing the band then lies off the face, and the band reaches
-/// the boundary all across (a boundary crossing it obliquely or curved would leave a sliver).
-void runOnPastCut(std::vector<UV>& right, std::vector<UV>& left, bool atStart)
+/// @p right and @p left (a band's edges, on @p s) run on past the end where the face's boundary
+/// cut the tow (@p atStart: their starts), straight along their end directions in (u,v), by half
+/// the distance between their ends (in space, converted to (u,v) by the surface's rate along
+/// each direction): the chord closing the band then lies off the face where the boundary bulges
+/// out between the ends (by at most half the chord, a semicircle), so that the band reaches it
+/// all across. A hole narrower than that is bridged.
+void runOnPastCut(const Handle(Geom_BSplineSurface)& s, std::vector<UV>& right, std::vector<UV>& left, bool atStart)
 {
     if (right.size() < 2 || left.size() < 2) return;
     const UV a = atStart ? right.front() : right.back(), b = atStart ? left.front() : left.back();
-    const double reach = 2.0 * std::hypot(a.u - b.u, a.v - b.v);
+    const double reach = 0.5 * s->Value(a.u, a.v).Distance(s->Value(b.u, b.v));
     for (std::vector<UV>* e : {&right, &left}) {
         const UV end = atStart ? e->front() : e->back(), next = atStart ? (*e)[1] : (*e)[e->size() - 2];
-        const double length = std::hypot(end.u - next.u, end.v - next.v);
-        if (!(length > 0.0)) continue;
-        const UV beyond{end.u + (end.u - next.u) / length * reach, end.v + (end.v - next.v) / length * reach};
+        const double du = end.u - next.u, dv = end.v - next.v;
+        gp_Pnt p;
+        gp_Vec su, sv;
+        s->D1(end.u, end.v, p, su, sv);
+        const double rate = (su * du + sv * dv).Magnitude();  // length in space per unit of (du, dv)
+        if (!(rate > 0.0)) continue;
+        const UV beyond{end.u + du * reach / rate, end.v + dv * reach / rate};
         e->insert(atStart ? e->begin() : e->end(), beyond);
     }
 }
@@ -68,7 +74,7 @@ void runOnPastCut(std::vector<UV>& right, std::vector<UV>& left, bool atStart)
 /// The band of @p t; an edge wholly off the face (empty) replaced by the other's mirror image
 /// about the centreline in (u,v) (out of the box where it hangs off, so open to the boundary);
 /// run on past the ends the boundary cut (runOnPastCut()).
-Band bandOf(const TowPath& t)
+Band bandOf(const Handle(Geom_BSplineSurface)& s, const TowPath& t)
 {
     std::vector<UV> right = sampled(t.right, kSamplesPerEdge, "tow " + t.name + "'s right edge");
     std::vector<UV> left = sampled(t.left, kSamplesPerEdge, "tow " + t.name + "'s left edge");
@@ -78,8 +84,8 @@ Band bandOf(const TowPath& t)
         const std::vector<UV>& other = right.empty() ? left : right;
         for (int k = 0; k < kSamplesPerEdge; ++k) missing.push_back({2.0 * centre[k].u - other[k].u, 2.0 * centre[k].v - other[k].v});
     }
-    if (!t.startBoundary.empty()) runOnPastCut(right, left, true);
-    if (!t.endBoundary.empty()) runOnPastCut(right, left, false);
+    if (!t.startBoundary.empty()) runOnPastCut(s, right, left, true);
+    if (!t.endBoundary.empty()) runOnPastCut(s, right, left, false);
     Band band;
     band.outline = right;
     band.outline.insert(band.outline.end(), left.rbegin(), left.rend());
@@ -131,7 +137,7 @@ CourseCoverage coverageOn(const detail::ToolFace& f, const CoursePlan& plan, std
     CourseCoverage out;
     try {
         std::vector<Band> bands;
-        for (const TowPath& t : plan.tows) bands.push_back(bandOf(t));
+        for (const TowPath& t : plan.tows) bands.push_back(bandOf(s, t));
         double u0, u1, v0, v1;
         s->Bounds(u0, u1, v0, v1);
         const std::size_t n = cells + 1;

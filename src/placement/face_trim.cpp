@@ -13,6 +13,7 @@
 #include <Extrema_ExtPC.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <GeomAdaptor_Surface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
 #include <Geom2d_Curve.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -31,13 +32,13 @@ namespace detail {
 namespace {
 
 /// Whether edge @p e's curve on @p face runs along one side of the face's box (9 places, to
-/// 1e-9 of the box).
+/// 1e-7 of the box: curves projected onto a B-spline face stray by about that).
 bool alongBoxSide(const TopoDS_Edge& e, const TopoDS_Face& face, const double box[4])
 {
     double f, l;
     const Handle(Geom2d_Curve) c = BRep_Tool::CurveOnSurface(e, face, f, l);
     if (c.IsNull()) return false;
-    const double du = 1e-9 * (box[1] - box[0]), dv = 1e-9 * (box[3] - box[2]);
+    const double du = 1e-7 * (box[1] - box[0]), dv = 1e-7 * (box[3] - box[2]);
     const double sides[4] = {box[0], box[1], box[2], box[3]};
     for (int side = 0; side < 4; ++side) {
         const double tol = side < 2 ? du : dv;
@@ -101,8 +102,8 @@ gp_Pnt2d faceParameters(const FaceTrim& t, const Handle(Geom_BSplineSurface)& s,
         }
         }
     }
-    if (t.surface->IsUPeriodic()) u = intoRange(u, t.surface->UPeriod(), t.box[0], t.box[1]);
-    if (t.surface->IsVPeriodic()) v = intoRange(v, t.surface->VPeriod(), t.box[2], t.box[3]);
+    if (t.basis->IsUPeriodic()) u = intoRange(u, t.basis->UPeriod(), t.box[0], t.box[1]);
+    if (t.basis->IsVPeriodic()) v = intoRange(v, t.basis->VPeriod(), t.box[2], t.box[3]);
     return {u, v};
 }
 
@@ -113,6 +114,10 @@ std::shared_ptr<const FaceTrim> faceTrim(const TopoDS_Face& face, const Handle(G
     auto t = std::make_shared<FaceTrim>();
     t->face = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
     t->surface = BRep_Tool::Surface(t->face);
+    // A trimmed surface's periods are its basis's (a face on a cylinder trimmed to an angle range
+    // still has the cylinder's angles, to be moved into the face's box).
+    t->basis = t->surface;
+    while (const auto trimmed = Handle(Geom_RectangularTrimmedSurface)::DownCast(t->basis)) t->basis = trimmed->BasisSurface();
     BRepTools::UVBounds(t->face, t->box[0], t->box[1], t->box[2], t->box[3]);
     TopTools_IndexedMapOfShape all;
     TopExp::MapShapes(t->face, TopAbs_EDGE, all);
@@ -153,6 +158,9 @@ std::string trimSide(const FaceTrim& trim, const gp_Pnt& p, double tolerance)
         const Extrema_ExtPC extrema(p, c);
         if (extrema.IsDone())
             for (int i = 1; i <= extrema.NbExt(); ++i) d = std::min(d, std::sqrt(extrema.SquareDistance(i)));
+        // The edge's curve on the face (which classified the point) may stray from its 3D curve
+        // by the edge's tolerance.
+        d = std::max(0.0, d - BRep_Tool::Tolerance(trim.edges[k]));
         if (d < best) best = d, nearest = trim.edgeIndex[k];
     }
     if (!(best <= tolerance * trim.size)) return {};

@@ -24,6 +24,7 @@ namespace detail {
 struct FaceTrim {
     TopoDS_Face face;                 ///< the face, FORWARD (its own parameters, unreversed)
     Handle(Geom_Surface) surface;     ///< its surface
+    Handle(Geom_Surface) basis;       ///< that surface untrimmed (whose periods its parameters have)
     bool sameParameters = false;      ///< whether the converted surface's (u,v) are the face's (B-spline, Bezier, plane)
     bool reversedU = false;           ///< the placement surface's u runs the other way (u' = uFirst + uLast - u)
     double uFirst = 0.0, uLast = 0.0;  ///< the placement surface's u range (for the reversal)
@@ -44,7 +45,8 @@ std::shared_ptr<const FaceTrim> faceTrim(const TopoDS_Face& face, const Handle(G
 bool insideTrim(const FaceTrim& trim, const Handle(Geom_BSplineSurface)& s, const UV& uv);
 
 /// "edge K" for the bounding edge nearest @p p if it lies within @p tolerance x the face's size
-/// of it, else empty.
+/// of it (beyond the edge's own tolerance, by which its curve on the face, which classified the
+/// point, may stray from its 3D curve), else empty.
 std::string trimSide(const FaceTrim& trim, const gp_Pnt& p, double tolerance);
 
 }  // namespace detail

@@ -4,6 +4,8 @@
 
 #include <GCPnts_UniformAbscissa.hxx>
 #include <GeomAPI_IntSS.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_TrimmedCurve.hxx>
 #include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <GeomAdaptor_Curve.hxx>
@@ -14,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "placement/nurbs_geometry.hpp"
@@ -74,11 +77,16 @@ CurveOnSurface referenceFromPoints(const NurbsSurface& surface, const std::vecto
 
 namespace {
 
-/// The parameters [first, last] of @p c's run on the trimmed face @p f passing nearest @p o
-/// (200 samples, then each end bisected to 1e-15 of the curve's range; on a periodic curve the
-/// run may pass its start, then last > the curve's last parameter).
-/// @throws towgeom::Error (InvalidArgument) when no sample lies on the face.
-std::pair<double, double> runOnFace(const detail::ToolFace& f, const Handle(Geom_Curve)& c, const gp_Pnt& o, double size)
+/// A run of a cut on the face: its parameters and how near it passes the plane's point.
+struct Run {
+    double first = 0.0, last = 0.0;
+    double distance = std::numeric_limits<double>::infinity();
+};
+
+/// The run [first, last] of @p c on the trimmed face @p f passing nearest @p o (200 samples,
+/// then each end bisected to 1e-15 of the curve's range; on a periodic curve the run may pass
+/// its start, then last > the curve's last parameter); nothing when no sample lies on the face.
+std::optional<Run> runOnFace(const detail::ToolFace& f, const Handle(Geom_Curve)& c, const gp_Pnt& o, double size)
 {
     const double t0 = c->FirstParameter(), t1 = c->LastParameter(), period = t1 - t0;
     const auto on = [&](double t) {
@@ -89,7 +97,11 @@ std::pair<double, double> runOnFace(const detail::ToolFace& f, const Handle(Geom
     std::vector<double> ts(m + 1);
     std::vector<bool> in(m + 1);
     for (int k = 0; k <= m; ++k) ts[k] = t0 + period * k / m, in[k] = on(ts[k]);
-    if (std::all_of(in.begin(), in.end(), [](bool b) { return b; })) return {t0, t1};
+    if (std::all_of(in.begin(), in.end(), [](bool b) { return b; })) {
+        double d = std::numeric_limits<double>::infinity();
+        for (const double t : ts) d = std::min(d, o.Distance(c->Value(t)));
+        return Run{t0, t1, d};
+    }
     // A periodic curve's samples from one off the face, round to it: every run is contiguous.
     if (c->IsPeriodic() && in[0]) {
         const int off = static_cast<int>(std::find(in.begin(), in.end(), false) - in.begin());
@@ -112,7 +124,7 @@ std::pair<double, double> runOnFace(const detail::ToolFace& f, const Handle(Geom
         if (d < bestDistance) bestDistance = d, bestFirst = k, bestLast = j;
         k = j + 1;
     }
-    if (bestFirst < 0) throw Error(ErrorCode::InvalidArgument, "referenceFromPlane: the plane's cut lies off the face (outside its trimming curves)");
+    if (bestFirst < 0) return std::nullopt;
     const auto crossing = [&](double inside, double outside) {
         for (int it = 0; it < 200 && std::abs(outside - inside) > 1e-15 * period; ++it) {
             const double mid = 0.5 * (inside + outside);
@@ -122,7 +134,22 @@ std::pair<double, double> runOnFace(const detail::ToolFace& f, const Handle(Geom
     };
     const double first = bestFirst > 0 ? crossing(ts[bestFirst], ts[bestFirst - 1]) : ts[bestFirst];
     const double last = bestLast < m ? crossing(ts[bestLast], ts[bestLast + 1]) : ts[bestLast];
-    return {first, last};
+    return Run{first, last, bestDistance};
+}
+
+/// @p c made periodic where it is a closed B-spline (as a plane's cut round a closed surface
+/// comes back from the intersection), so that a run on the face may pass its start.
+Handle(Geom_Curve) periodicWhereClosed(const Handle(Geom_Curve)& c)
+{
+    const Handle(Geom_BSplineCurve) b = Handle(Geom_BSplineCurve)::DownCast(c);
+    if (b.IsNull() || b->IsPeriodic() || !b->IsClosed()) return c;
+    const Handle(Geom_BSplineCurve) copy = Handle(Geom_BSplineCurve)::DownCast(b->Copy());
+    try {
+        copy->SetPeriodic();
+    } catch (const Standard_Failure&) {
+        return c;  // OpenCASCADE cannot: the run stops at its start
+    }
+    return Handle(Geom_Curve)(copy);
 }
 
 /// referenceFromPlane() on the face @p f of @p surface.
@@ -144,22 +171,35 @@ CurveOnSurface planeCut(const NurbsSurface& surface, const detail::ToolFace& f, 
         const Handle(Geom_Plane) plane = new Geom_Plane(gp_Pln(o, gp_Dir(direction.x, direction.y, direction.z)));
         GeomAPI_IntSS cut(s, plane, 1e-9 * size);
         if (!cut.IsDone() || cut.NbLines() == 0) throw Error(ErrorCode::InvalidArgument, "referenceFromPlane: the plane does not cut the surface");
+        // The cut (on a trimmed face: its run on the face) passing nearest the plane's point.
         Handle(Geom_Curve) best;
-        double bestDistance = std::numeric_limits<double>::infinity();
+        Run run;
         for (int k = 1; k <= cut.NbLines(); ++k) {
-            const Handle(Geom_Curve) c = cut.Line(k);
-            GeomAPI_ProjectPointOnCurve onCurve(o, c);
-            double d = std::min(o.Distance(c->Value(c->FirstParameter())), o.Distance(c->Value(c->LastParameter())));
-            if (onCurve.NbPoints() > 0) d = std::min(d, onCurve.LowerDistance());
-            if (d < bestDistance) bestDistance = d, best = c;
+            const Handle(Geom_Curve) c = f.trim ? periodicWhereClosed(cut.Line(k)) : cut.Line(k);
+            Run here{c->FirstParameter(), c->LastParameter()};
+            if (f.trim) {
+                const std::optional<Run> on = runOnFace(f, c, o, size);
+                if (!on) continue;
+                here = *on;
+            } else {
+                GeomAPI_ProjectPointOnCurve onCurve(o, c);
+                here.distance = std::min(o.Distance(c->Value(c->FirstParameter())), o.Distance(c->Value(c->LastParameter())));
+                if (onCurve.NbPoints() > 0) here.distance = std::min(here.distance, onCurve.LowerDistance());
+            }
+            if (here.distance < run.distance) run = here, best = c;
         }
-        const auto [first, last] = f.trim ? runOnFace(f, best, o, size) : std::pair<double, double>{best->FirstParameter(), best->LastParameter()};
-        GeomAdaptor_Curve adaptor(best);
+        if (best.IsNull()) throw Error(ErrorCode::InvalidArgument, "referenceFromPlane: the plane's cut lies off the face (outside its trimming curves)");
+        // A run past a periodic curve's start: the curve trimmed to it (OpenCASCADE samples a
+        // curve within its own range).
+        Handle(Geom_Curve) piece = best;
+        if (run.last > best->LastParameter() && best->IsPeriodic()) piece = new Geom_TrimmedCurve(best, run.first, run.last);
+        const double first = piece == best ? run.first : piece->FirstParameter(), last = piece == best ? run.last : piece->LastParameter();
+        GeomAdaptor_Curve adaptor(piece);
         GCPnts_UniformAbscissa sampler(adaptor, static_cast<int>(points), first, last, 1e-9 * size);
         if (!sampler.IsDone() || sampler.NbPoints() != static_cast<int>(points))
             throw Error(ErrorCode::Internal, "referenceFromPlane: the intersection curve could not be sampled");
         for (int k = 1; k <= sampler.NbPoints(); ++k) {
-            const auto [at, away] = nearest(s, best->Value(sampler.Parameter(k)));
+            const auto [at, away] = nearest(s, piece->Value(sampler.Parameter(k)));
             if (!(away <= 1e-6 * size)) throw Error(ErrorCode::Internal, "referenceFromPlane: an intersection point lies off the surface");
             // Across a periodic seam the parameters run on (a closed cut ends one period on).
             uv.push_back(uv.empty() ? at : detail::nearestCopy(s, at, uv.back()));

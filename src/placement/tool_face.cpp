@@ -40,7 +40,11 @@ std::string faceSide(const ToolFace& f, const UV& uv, double tolerance)
 
 std::string nearestFaceSide(const ToolFace& f, const UV& uv)
 {
-    if (f.trim) return trimSide(*f.trim, f.surface->Value(uv.u, uv.v), std::numeric_limits<double>::infinity());
+    if (f.trim) {
+        // A side of the box it lies on (a closed face's seam not made periodic), else the nearest edge.
+        const std::string side = boundarySide(f.surface, uv, 1e-9);
+        return side.empty() ? trimSide(*f.trim, f.surface->Value(uv.u, uv.v), std::numeric_limits<double>::infinity()) : side;
+    }
     double u0, u1, v0, v1;
     f.surface->Bounds(u0, u1, v0, v1);
     std::string side;

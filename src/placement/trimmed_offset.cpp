@@ -188,7 +188,8 @@ bool distinct(const Handle(Geom_BSplineSurface)& s, const UV& uv, const UV& end)
 
 namespace {
 
-TrimmedOffset offsetWithin(const ToolFace& f, const CurveOnSurface& base, double d, const SurfaceOffsetOptions& options, bool mayClose);
+TrimmedOffset offsetWithin(const ToolFace& f, const CurveOnSurface& base, double d, const SurfaceOffsetOptions& options, bool mayClose,
+                           bool probed = false);
 
 }  // namespace
 
@@ -199,9 +200,40 @@ TrimmedOffset offsetWithinSurface(const ToolFace& f, const CurveOnSurface& base,
 
 namespace {
 
+/// @p base with a point added between each two whose offsets (@p at, on the face where @p on)
+/// lie on the trimmed face @p f but the chord between them in (u,v) does not (7 places probed),
+/// where the offset of the base point there is off the face too: a hole or notch the offsets
+/// passed over.
+CurveOnSurface withHolesSampled(const ToolFace& f, const CurveOnSurface& base, const std::vector<std::optional<OffsetPoint>>& at,
+                                const std::vector<bool>& on, double d, const SurfaceOffsetOptions& o)
+{
+    const std::size_t n = base.uv.size();
+    const UVCurve curve = uvCurve(base);
+    if (curve.curve.IsNull()) return base;
+    CurveOnSurface out;
+    for (std::size_t i = 0; i < n; ++i) {
+        out.uv.push_back(base.uv[i]);
+        out.points.push_back(base.points[i]);
+        if (i + 1 == n || !on[i] || !on[i + 1]) continue;
+        for (int k = 1; k < 8; ++k) {
+            const double x = k / 8.0;
+            const UV& a = at[i]->raw;
+            const UV& b = at[i + 1]->raw;
+            if (onFace(f, {a.u + x * (b.u - a.u), a.v + x * (b.v - a.v)})) continue;
+            const PointAlong p = pointAlong(f.surface, curve, curve.params[i] + x * (curve.params[i + 1] - curve.params[i]));
+            const std::optional<OffsetPoint> q = tryOffset(f.surface, p, d, o, false);
+            if (q && onFace(f, q->raw)) continue;  // the chord strays off the face, the curve does not
+            out.uv.push_back(p.uv);
+            out.points.push_back(fromOcct(f.surface->Value(p.uv.u, p.uv.v)));
+            break;
+        }
+    }
+    return out;
+}
+
 /// offsetWithinSurface(); with @p mayClose false a closed base is laid as an open curve (its run
 /// on the face neither wraps nor closes).
-TrimmedOffset offsetWithin(const ToolFace& f, const CurveOnSurface& base, double d, const SurfaceOffsetOptions& options, bool mayClose)
+TrimmedOffset offsetWithin(const ToolFace& f, const CurveOnSurface& base, double d, const SurfaceOffsetOptions& options, bool mayClose, bool probed)
 {
     const Handle(Geom_BSplineSurface)& s = f.surface;
     const std::size_t n = base.uv.size();
@@ -211,6 +243,12 @@ TrimmedOffset offsetWithin(const ToolFace& f, const CurveOnSurface& base, double
     for (std::size_t i = 0; i < n; ++i) {
         at[i] = tryOffset(s, {base.uv[i], tangents[i]}, d, options);
         on[i] = at[i] && onFace(f, at[i]->raw, 1e-9);  // rounding along an edge allowed
+    }
+    // A trimmed face's hole or notch between two offsets on it: laid again with a base point
+    // there (once: its offset is off the face, so the run ends before it).
+    if (f.trim && !probed) {
+        const CurveOnSurface denser = withHolesSampled(f, base, at, on, d, options);
+        if (denser.uv.size() > n) return offsetWithin(f, denser, d, options, mayClose, true);
     }
     // A closed base whose offsets leave the face somewhere: the run on the face may pass its
     // joint. Laid again from an offset that left round to it (both crossings next to it inside

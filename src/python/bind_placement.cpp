@@ -84,8 +84,8 @@ void bindPlan(py::module_& m)
         .def_readonly("right", &TowPath::right)
         .def_readonly("length", &TowPath::length, "The centreline's length along the surface.")
         .def_readonly("start_boundary", &TowPath::startBoundary,
-                      "The side of the face's (u,v) box ('u_min', 'u_max', 'v_min', 'v_max') the centreline starts on (cut, carried or "
-                      "there already); '' where it starts inside the face.")
+                      "The side of the face the centreline starts on (cut, carried or there already): a side of its (u,v) box ('u_min', "
+                      "'u_max', 'v_min', 'v_max') or a trimmed face's 'edge K'; '' where it starts inside the face.")
         .def_readonly("end_boundary", &TowPath::endBoundary, "As start_boundary, at its end.")
         .def_property_readonly("geodesic_curvature", [](const TowPath& t) { return valuesArray(t.geodesicCurvature); },
                                "Per centreline point, its geodesic (in-plane, steering) curvature; positive turning left.")

@@ -237,7 +237,7 @@ void writeDiskFace(const std::string& path, double radius, double cutX, bool rev
 void writeHoledCylinderFace(const std::string& path, double radius, double height, double holeRadius)
 {
     const TopoDS_Shape body = BRepPrimAPI_MakeCylinder(radius, height).Shape();
-    const gp_Ax2 across(gp_Pnt(-2.0 * radius, 0.0, 0.5 * height), gp_Dir(1.0, 0.0, 0.0));
+    const gp_Ax2 across(gp_Pnt(0.0, -2.0 * radius, 0.5 * height), gp_Dir(0.0, 1.0, 0.0));
     const TopoDS_Shape drill = BRepPrimAPI_MakeCylinder(across, holeRadius, 4.0 * radius).Shape();
     BRepAlgoAPI_Cut cut(body, drill);
     if (!cut.IsDone()) throw std::runtime_error("the cylinder's holes could not be cut");

@@ -61,8 +61,9 @@ void writeTorusFace(const std::string& path, double major, double minor);
 /// arc, edge 1 the line); @p reversed writes the face reversed (its normal -z).
 void writeDiskFace(const std::string& path, double radius, double cutX, bool reversed = false);
 /// Writes the lateral face of a cylinder of @p radius about the z axis from z = 0 to @p height,
-/// with two holes where a cylinder of @p holeRadius about the line y = 0, z = @p height / 2 (the
-/// x axis raised) passes through it (OCCT's boolean cut), alone to the STEP file @p path.
+/// with two holes where a cylinder of @p holeRadius about the line x = 0, z = @p height / 2 (the
+/// y axis raised) passes through it (OCCT's boolean cut: the holes at y = -+radius, away from the
+/// cylinder's seam at x = radius, y = 0), alone to the STEP file @p path.
 void writeHoledCylinderFace(const std::string& path, double radius, double height, double holeRadius);
 
 /// One whole tow as built by writeWholeTowSolids().

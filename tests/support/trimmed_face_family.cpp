@@ -9,6 +9,7 @@
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepGProp.hxx>
 #include <BRepLib.hxx>
+#include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
 #include <Geom2d_Circle.hxx>
@@ -27,6 +28,7 @@
 #include <gp_Circ2d.hxx>
 #include <gp_Elips2d.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -130,6 +132,13 @@ double FaceOracle::toBoundary(const Point3& p) const
 }
 
 double FaceOracle::area() const { return data_->area; }
+
+double FaceOracle::edgeTolerance() const
+{
+    double largest = 0.0;
+    for (TopExp_Explorer x(data_->face, TopAbs_EDGE); x.More(); x.Next()) largest = std::max(largest, BRep_Tool::Tolerance(TopoDS::Edge(x.Current())));
+    return largest;
+}
 double FaceOracle::size() const { return data_->size; }
 
 }  // namespace towgeom::testing

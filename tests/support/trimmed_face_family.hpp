@@ -33,6 +33,9 @@ public:
     /// The distance from @p p to the face's boundary (its edges).
     double toBoundary(const Point3& p) const;
     double area() const;  ///< the face's area (BRepGProp)
+    /// The largest tolerance of its edges: how far their curves on the face may stray from their
+    /// 3D curves (a boolean's intersection edges are approximations).
+    double edgeTolerance() const;
     double size() const;  ///< the diagonal of its bounding box
 
 private:
