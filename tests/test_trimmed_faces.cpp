@@ -149,6 +149,42 @@ TEST_CASE("courses on a D-shaped face (a plane trimmed by an arc and a line): ev
     }
 }
 
+TEST_CASE("a hole smaller than the spacing of a curve's points is found between them: the reference and the edges across it "
+          "cut on its rim, the tows beside it whole",
+          "[placement][courses][trim]")
+{
+    TrimScratch scratch;
+    const DShape shape;
+    const double holeX = 0.215, holeRadius = 0.03;  // between the reference's points at x = 0 and 0.4
+    const fs::path file = scratch.dir / "d_hole.step";
+    testing::writeDiskFace(file.string(), shape.r, shape.c, false, holeX, holeRadius);
+    const PlacementSurface tool = readPlacementSurface(file.string());
+    REQUIRE(tool.trim != nullptr);
+    CHECK(tool.trimEdges == 3);
+    const auto onRim = [&](const Point3& p) { return std::abs(std::hypot(p.x - holeX, p.y) - holeRadius); };
+    CourseOptions o;
+    o.towWidth = 2.0;
+    o.towsPerCourse = 2;
+    o.method = SurfaceOffsetMethod::Geodesic;
+    const CoursePlan plan = layCourses(tool, referenceFromPlane(tool, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 41), o);
+    // The reference: its longer run, from the arc at x = -10 to the hole.
+    const std::vector<Point3>& ref = plan.reference.points;
+    const Point3& holeEnd = ref.front().x > ref.back().x ? ref.front() : ref.back();
+    INFO("the reference ends at x = " << holeEnd.x << ", off the rim by " << onRim(holeEnd));
+    CHECK(onRim(holeEnd) <= 2e-9 * shape.r);
+    REQUIRE(plan.tows.size() == 2);
+    for (const TowPath& t : plan.tows) {
+        // The tows at y = -+1 pass beside the hole; their edges at y = 0 cross it, each cut on its rim.
+        const double s = t.centreline.points.front().y;
+        CHECK(std::abs(std::abs(s) - 1.0) <= 1e-9);
+        CHECK(std::abs(t.length - (shape.left(s) + shape.right(s))) <= 1e-8 * shape.r);
+        const CurveOnSurface& inner = std::abs(t.right.points.front().y) < 0.5 ? t.right : t.left;
+        const Point3& end = inner.points.front().x > inner.points.back().x ? inner.points.front() : inner.points.back();
+        INFO(t.name << "'s edge on y = 0 ends at x = " << end.x << ", off the rim by " << onRim(end));
+        CHECK(onRim(end) <= 2e-9 * shape.r);
+    }
+}
+
 TEST_CASE("courses on a cylinder drilled through: hoops cut where they meet the holes, ends on the drill's cylinder, arcs of the "
           "closed-form length, whole hoops above the holes closed, coverage the strip between the holes",
           "[placement][courses][trim]")

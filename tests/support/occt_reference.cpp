@@ -217,7 +217,7 @@ void writeFaceStep(const TopoDS_Shape& face, const std::string& path)
 
 }  // namespace
 
-void writeDiskFace(const std::string& path, double radius, double cutX, bool reversed)
+void writeDiskFace(const std::string& path, double radius, double cutX, bool reversed, double holeX, double holeRadius)
 {
     const gp_Circ circle(gp_Ax2(), radius);
     TopoDS_Wire wire;
@@ -229,7 +229,13 @@ void writeDiskFace(const std::string& path, double radius, double cutX, bool rev
     } else {
         wire = BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(circle).Edge()).Wire();
     }
-    TopoDS_Face face = BRepBuilderAPI_MakeFace(wire, true).Face();
+    BRepBuilderAPI_MakeFace make(wire, true);
+    if (holeRadius > 0.0) {
+        TopoDS_Wire hole = BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(gp_Pnt(holeX, 0.0, 0.0), gp::DZ()), holeRadius)).Edge()).Wire();
+        hole.Reverse();  // clockwise seen from +z: a hole
+        make.Add(hole);
+    }
+    TopoDS_Face face = make.Face();
     if (reversed) face.Reverse();
     writeFaceStep(face, path);
 }

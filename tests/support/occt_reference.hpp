@@ -58,8 +58,9 @@ void writeTorusFace(const std::string& path, double major, double minor);
 /// Writes a flat disk of @p radius about the origin in the plane z = 0 (OCCT's plane trimmed by
 /// one circular edge: its (u,v) box is the square about it) alone to the STEP file @p path;
 /// with @p cutX < @p radius the part x > cutX cut off by a straight edge (a "D": edge 0 the
-/// arc, edge 1 the line); @p reversed writes the face reversed (its normal -z).
-void writeDiskFace(const std::string& path, double radius, double cutX, bool reversed = false);
+/// arc, edge 1 the line); @p reversed writes the face reversed (its normal -z); with
+/// @p holeRadius > 0 a circular hole of that radius about (@p holeX, 0).
+void writeDiskFace(const std::string& path, double radius, double cutX, bool reversed = false, double holeX = 0.0, double holeRadius = 0.0);
 /// Writes the lateral face of a cylinder of @p radius about the z axis from z = 0 to @p height,
 /// with two holes where a cylinder of @p holeRadius about the line x = 0, z = @p height / 2 (the
 /// y axis raised) passes through it (OCCT's boolean cut: the holes at y = -+radius, away from the
