@@ -135,6 +135,7 @@ std::shared_ptr<const FaceTrim> faceTrim(const TopoDS_Face& face, const Handle(G
     t->size = std::sqrt(bounds.SquareExtent());
     t->sameParameters = sameParameterisation(converted, t->surface, t->box, t->size);
     t->reversedU = reversed;
+    t->quick = std::make_shared<const BRepTopAdaptor_FClass2d>(t->face, 1e-7 * std::max(t->box[1] - t->box[0], t->box[3] - t->box[2]));
     double v0, v1;
     converted->Bounds(t->uFirst, t->uLast, v0, v1);
     return t;
@@ -143,6 +144,9 @@ std::shared_ptr<const FaceTrim> faceTrim(const TopoDS_Face& face, const Handle(G
 bool insideTrim(const FaceTrim& trim, const Handle(Geom_BSplineSurface)& s, const UV& uv)
 {
     const gp_Pnt2d q = faceParameters(trim, s, uv);
+    const TopAbs_State quick = trim.quick->Perform(q, false);
+    if (quick == TopAbs_IN) return true;
+    if (quick == TopAbs_OUT) return false;
     const double tol = 1e-12 * std::max(trim.box[1] - trim.box[0], trim.box[3] - trim.box[2]);
     const BRepClass_FaceClassifier classifier(trim.face, q, tol);
     return classifier.State() == TopAbs_IN || classifier.State() == TopAbs_ON;

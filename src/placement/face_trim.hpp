@@ -2,6 +2,7 @@
 // the placement surface's (u,v) lies on the face, and which of its edges a point lies on.
 #pragma once
 
+#include <BRepTopAdaptor_FClass2d.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_Surface.hxx>
 #include <TopoDS_Edge.hxx>
@@ -32,6 +33,10 @@ struct FaceTrim {
     std::vector<TopoDS_Edge> edges;   ///< the edges that bound it (no seams, no degenerate edges), by index
     std::vector<std::size_t> edgeIndex;  ///< each one's index among all the face's edges ("edge K")
     double size = 0.0;                ///< the face's size: its bounding box's diagonal
+    /// OpenCASCADE's quick classifier (the face's curves as polygons, a band about them as wide
+    /// as their deflection "on" them), built once: its "in" and "out" are taken, its "on" is
+    /// decided by the exact classifier.
+    std::shared_ptr<const BRepTopAdaptor_FClass2d> quick;
 };
 
 /// The trimming of @p face, whose surface converted over the face's (u,v) box is
@@ -40,8 +45,8 @@ struct FaceTrim {
 std::shared_ptr<const FaceTrim> faceTrim(const TopoDS_Face& face, const Handle(Geom_BSplineSurface)& converted, bool reversed);
 
 /// Whether the point of placement parameters @p uv (on @p s, see toolSurface()) lies on the
-/// face (OpenCASCADE's face classifier, on the boundary within 1e-12 of the face's (u,v) box
-/// counting as on it).
+/// face: OpenCASCADE's quick classifier where it is sure, else its exact face classifier (on the
+/// boundary within 1e-12 of the face's (u,v) box counting as on it).
 bool insideTrim(const FaceTrim& trim, const Handle(Geom_BSplineSurface)& s, const UV& uv);
 
 /// "edge K" for the bounding edge nearest @p p if it lies within @p tolerance x the face's size
