@@ -159,6 +159,11 @@ struct CoursePlan {
 ///   the box, and a closed reference (last point = first) gives closed courses.
 /// - **Poles**: a geodesic that meets a point where the parametrisation is singular (a sphere's
 ///   pole) is refused, the message naming the place.
+/// - **Creases** (faces joined side to side, see readPlacementSurface() of several faces: interior
+///   knots of multiplicity at least the degree, where the surface is only C0): a geodesic runs
+///   up to the crease and on across it as the two faces unfolded into one plane there carry it
+///   (its component along the crease and its speed kept), so offsets and gaps are measured
+///   across the shared edge as on one face.
 /// @throws towgeom::Error (InvalidArgument) for a non-positive width, no tows or courses, a
 ///         negative spacing or tolerance, a reference of fewer than 4 points, no tow left on the
 ///         surface, or a singular point met (the message names the course or tow); (Internal)

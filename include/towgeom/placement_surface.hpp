@@ -30,7 +30,11 @@ struct PlacementSurface {
     /// surface.
     NurbsSurface surface;
     std::size_t faceCount = 0;  ///< faces in the file (0 for a grid)
-    std::size_t face = 0;       ///< which one this is (0-based, in the file's order)
+    std::size_t face = 0;       ///< which one this is (0-based, in the file's order); the first of several joined
+    /// The faces the surface is made of: one, or several joined into one surface side to side
+    /// (see readPlacementSurface(const std::string&, const std::vector<std::size_t>&)); empty
+    /// for a grid.
+    std::vector<std::size_t> faces;
     /// The face's name in the file, empty if it has none: a STEP ADVANCED_FACE's name, or an
     /// IGES entity's Name property, else its short label with its subscript as "LABEL(n)"
     /// (none for subscript 0; blanks at either end trimmed).
@@ -74,6 +78,20 @@ TOWGEOM_EXPORT PlacementSurface readPlacementSurface(const std::string& path, st
 ///         or no face of that name (the message lists the names there are, or says the faces
 ///         have none), and as the other overload.
 TOWGEOM_EXPORT PlacementSurface readPlacementSurface(const std::string& path, const std::string& faceName);
+
+/// Reads the faces @p faces (indices as for the other overload) of the STEP or IGES file @p path
+/// and joins them into one surface, so that courses run across the edges they share: each next
+/// face is one with a whole side in common with the faces joined before it (within 1e-7 of
+/// their size, parametrised alike along it up to scale: as the faces of a revolved or extruded
+/// profile, or B-spline patches sewn side to side), its poles appended beyond that side, a
+/// crease (C0) between them (see the geodesics across creases in layCourses()). The first face
+/// decides which side is out (a face whose shared side runs the other way is turned over). One
+/// face: as the other overload. The joined faces' names are joined by "+".
+/// @throws towgeom::Error (InvalidArgument) for no faces, a face given twice or past the
+///         file's faces, a .grid file, a trimmed face (a shell is joined from whole faces), or a
+///         face with no whole side in common with those joined before it (the message names it);
+///         as the other overload otherwise.
+TOWGEOM_EXPORT PlacementSurface readPlacementSurface(const std::string& path, const std::vector<std::size_t>& faces);
 
 /// A tool surface through a grid of measured points: @p uCount rows of @p vCount points, point
 /// (i, j) at @p grid[i * vCount + j] (u along the rows' order, v along each row; the normal is

@@ -115,7 +115,10 @@ Options:
   --thickness T     the ribbons' thickness, at most W (default W / 10)
   --face N|NAME     which face of the file: its index (0-based, default 0) or its name in
                     the file (a STEP ADVANCED_FACE's or IGES entity's name; digits only
-                    are an index)
+                    are an index); several, 'N,M,...' or 'all': joined into one surface
+                    where each meets the ones before side to side (whole faces, sides
+                    parametrised alike: a revolved or extruded profile's faces, patches
+                    sewn side to side), courses running across the edges they share
   --out DIR         where to write (created if needed)
   --quiet           no progress lines on stderr
   -h, --help        this help

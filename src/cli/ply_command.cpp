@@ -132,6 +132,8 @@ int runPly(int argc, char** argv, int first)
 
         const std::string& file = args.positional().front();
         const PlacementSurface tool = readToolSurface(args, file);
+        if (tool.faces.size() > 1)
+            throw UsageError("ply offsets one face (--face N or NAME): joined faces meet at a crease, where an offset opens or folds");
         std::vector<NurbsVolume> plies;
         Json report;
         report["file"] = file;

@@ -1,5 +1,6 @@
 // The tool surface of the fibre-placement commands (ply, courses): a face of a STEP or IGES
-// file by --face N (0-based) or --face NAME, or a .grid file of points.
+// file by --face N (0-based) or --face NAME, several joined by --face N,M,... or --face all, or
+// a .grid file of points.
 #pragma once
 
 #include <string>
@@ -9,7 +10,8 @@
 
 namespace towgeom::cli {
 
-/// Reads @p file's face as --face says (absent: the first).
+/// Reads @p file's face as --face says (absent: the first; a list or "all": joined, see
+/// readPlacementSurface()).
 PlacementSurface readToolSurface(const Args& args, const std::string& file);
 
 }  // namespace towgeom::cli

@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <vector>
 #include <string>
 
+#include "placement/geodesic_creases.hpp"
 #include "placement/periodic_surface.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
@@ -72,6 +75,32 @@ static State rates(const Handle(Geom_BSplineSurface)& s, const State& x)
 
 bool insideParameters(const Handle(Geom_BSplineSurface)& s, double u, double v) { return onSurface(s, {u, v}); }
 
+namespace {
+
+/// A crease a step crosses: the knot, and whether it is a line u = at (else v = at).
+struct Crease {
+    double at = 0.0;
+    bool inU = false;
+};
+
+/// The first crease (of @p uCreases, @p vCreases) the step from @p x to @p next crosses.
+std::optional<Crease> firstCrease(const State& x, const State& next, const std::vector<double>& uCreases, const std::vector<double>& vCreases)
+{
+    std::optional<Crease> first;
+    double soonest = 2.0;
+    for (const bool inU : {true, false}) {
+        const std::size_t k = inU ? 0 : 1;
+        for (const double c : inU ? uCreases : vCreases) {
+            if ((x[k] < c) == (next[k] < c)) continue;
+            const double fraction = (c - x[k]) / (next[k] - x[k]);
+            if (fraction < soonest) soonest = fraction, first = Crease{c, inU};
+        }
+    }
+    return first;
+}
+
+}  // namespace
+
 /// The end of the geodesic of length @p length from @p from in the 3D tangent direction @p t.
 UV shootGeodesic(const Handle(Geom_BSplineSurface)& s, const UV& from, const gp_Vec& t, double length, int steps)
 {
@@ -99,6 +128,10 @@ UV shootGeodesic(const Handle(Geom_BSplineSurface)& s, const UV& from, const gp_
         return z;
     };
     const double largest = length / steps, smallest = 1e-9 * length;
+    // Creases (faces joined side to side): a step ends just short of one, and the geodesic is
+    // carried across it (ratesAcrossCrease()), this far past it.
+    const std::vector<double> uCreases = creaseKnots(s, true), vCreases = creaseKnots(s, false);
+    const double creaseGap = 1e-13 * std::max(u1 - u0, v1 - v0);
     double left = length, h = largest;
     while (left > 0.0) {
         h = std::min(h, left);
@@ -110,7 +143,25 @@ UV shootGeodesic(const Handle(Geom_BSplineSurface)& s, const UV& from, const gp_
             h *= 0.5;
             continue;
         }
-        for (std::size_t c = 0; c < 4; ++c) x[c] = half[c] + (half[c] - big[c]) / 15.0;
+        State next;
+        for (std::size_t c = 0; c < 4; ++c) next[c] = half[c] + (half[c] - big[c]) / 15.0;
+        if (const std::optional<Crease> crease = firstCrease(x, next, uCreases, vCreases)) {
+            const std::size_t along = crease->inU ? 0 : 1;
+            const double gap = crease->at - x[along];
+            const double shorter = h * gap / (next[along] - x[along]) * (1.0 - 1e-6);
+            if (std::abs(gap) > creaseGap && shorter > 0.0) {
+                h = shorter;  // to land just short of it
+                continue;
+            }
+            const int towards = next[along] > x[along] ? 1 : -1;
+            const std::array<double, 2> r =
+                ratesAcrossCrease(s, crease->inU ? crease->at : x[0], crease->inU ? x[1] : crease->at, x[2], x[3], crease->inU, towards);
+            x[along] = crease->at + towards * creaseGap;
+            x[2] = r[0], x[3] = r[1];
+            h = largest;
+            continue;
+        }
+        x = next;
         left -= h;
         h = std::min(largest, 2.0 * h);
         // A geodesic along the surface's edge may run just outside it (rounding, or Newton's

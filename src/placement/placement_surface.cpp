@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -32,6 +33,7 @@
 #include <vector>
 
 #include "brep/quiet_messenger.hpp"
+#include "placement/face_join.hpp"
 #include "placement/face_trim.hpp"
 #include "placement/nurbs_geometry.hpp"
 #include "placement/surface_grid.hpp"
@@ -156,6 +158,13 @@ PlacementSurface convertFace(const FileFaces& faces, std::size_t which, const st
     surface->Bounds(su0, su1, sv0, sv1);
     if (!surface->IsUPeriodic()) u0 = std::max(u0, su0), u1 = std::min(u1, su1);
     if (!surface->IsVPeriodic()) v0 = std::max(v0, sv0), v1 = std::min(v1, sv1);
+    // A whole period to rounding (a cone's face from u = -4e-13: OpenCASCADE's conversion of a
+    // cone fails there) is the period itself, from the multiple of it nearest the start.
+    const auto wholePeriod = [](double& a, double& b, double period) {
+        if (std::abs(b - a - period) <= 1e-9 * period) a = period * std::round(a / period), b = a + period;
+    };
+    if (surface->IsUPeriodic()) wholePeriod(u0, u1, surface->UPeriod());
+    if (surface->IsVPeriodic()) wholePeriod(v0, v1, surface->VPeriod());
     Handle(Geom_BSplineSurface) b = GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(surface, u0, u1, v0, v1));
     if (b.IsNull()) throw Error(ErrorCode::InvalidArgument, "face " + std::to_string(which) + "'s surface has no B-spline form", path);
     b = Handle(Geom_BSplineSurface)::DownCast(b->Copy());
@@ -175,6 +184,7 @@ PlacementSurface convertFace(const FileFaces& faces, std::size_t which, const st
     p.surface = detail::nurbsSurface(b);
     p.faceCount = faces.faces.size();
     p.face = which;
+    p.faces = {which};
     p.name = faces.names[which];
     return p;
 }
@@ -195,6 +205,45 @@ PlacementSurface readPlacementSurface(const std::string& path, std::size_t which
         return convertFace(faces, which, path);
     } catch (const Standard_Failure& e) {
         throw Error(ErrorCode::Internal, std::string("OpenCASCADE failed reading the placement surface: ") + e.GetMessageString(), path);
+    }
+}
+
+PlacementSurface readPlacementSurface(const std::string& path, const std::vector<std::size_t>& which)
+{
+    if (which.empty()) throw Error(ErrorCode::InvalidArgument, "no faces asked for", path);
+    if (which.size() == 1) return readPlacementSurface(path, which.front());
+    if (lowerExtension(path) == ".grid") throw Error(ErrorCode::InvalidArgument, "a point grid has one surface: face 0", path);
+    try {
+        const FileFaces faces = readFaces(path);
+        std::vector<Handle(Geom_BSplineSurface)> surfaces;
+        std::vector<std::string> names;
+        std::string joinedName;
+        for (std::size_t k = 0; k < which.size(); ++k) {
+            const std::size_t f = which[k];
+            if (f >= faces.faces.size())
+                throw Error(ErrorCode::InvalidArgument, "face " + std::to_string(f) + " asked for, the file has " + std::to_string(faces.faces.size()) +
+                                                            " face(s) (0-based)", path);
+            if (std::find(which.begin(), which.begin() + static_cast<std::ptrdiff_t>(k), f) != which.begin() + static_cast<std::ptrdiff_t>(k))
+                throw Error(ErrorCode::InvalidArgument, "face " + std::to_string(f) + " asked for twice", path);
+            const PlacementSurface one = convertFace(faces, f, path);
+            names.push_back("face " + std::to_string(f) + (one.name.empty() ? "" : " '" + one.name + "'"));
+            if (one.trim) throw Error(ErrorCode::InvalidArgument, names.back() + " is trimmed: a shell is joined from whole faces (their (u,v) boxes)", path);
+            surfaces.push_back(detail::occtSurface(one.surface));
+            if (!one.name.empty()) joinedName += (joinedName.empty() ? "" : "+") + one.name;
+        }
+        PlacementSurface out;
+        try {
+            out.surface = detail::nurbsSurface(detail::joinFaces(surfaces, names));
+        } catch (const Error& e) {
+            throw Error(e.code(), e.message(), path);
+        }
+        out.faceCount = faces.faces.size();
+        out.face = which.front();
+        out.faces = which;
+        out.name = joinedName;
+        return out;
+    } catch (const Standard_Failure& e) {
+        throw Error(ErrorCode::Internal, std::string("OpenCASCADE failed joining the faces: ") + e.GetMessageString(), path);
     }
 }
 

@@ -48,10 +48,14 @@ void bindCurves(py::module_& m)
         .def_readonly("face_count", &PlacementSurface::faceCount, "Faces in the file (0 for a grid).")
         .def_readonly("fit_deviation", &PlacementSurface::fitDeviation, "Largest distance of a grid's points from the surface fitted to them.")
         .def_readonly("trim_edges", &PlacementSurface::trimEdges,
-                      "Edges trimming the face where its boundary is not its (u,v) box (0: untrimmed); tows end on 'edge K'.");
+                      "Edges trimming the face where its boundary is not its (u,v) box (0: untrimmed); tows end on 'edge K'.")
+        .def_readonly("faces", &PlacementSurface::faces, "The faces the surface is made of (several: joined side to side; empty for a grid).");
     m.def("read_placement_surface", [](const Path& path, std::size_t face) { return readPlacementSurface(path.text, face); }, py::arg("path"),
           py::arg("face") = 0,
           py::call_guard<py::gil_scoped_release>(), "Face FACE of a STEP or IGES file (or a .grid file of points) as a tool surface.");
+    m.def("read_placement_surface", [](const Path& path, const std::vector<std::size_t>& faces) { return readPlacementSurface(path.text, faces); },
+          py::arg("path"), py::arg("faces"), py::call_guard<py::gil_scoped_release>(),
+          "Faces FACES of a STEP or IGES file joined side to side into one tool surface (courses cross the edges they share).");
     m.def("fit_placement_surface", [](const DoubleArray& grid, double tolerance) {
             if (grid.ndim() != 3 || grid.shape(2) != 3) throw py::value_error("grid must be an array of shape (nu, nv, 3)");
             const std::size_t nu = static_cast<std::size_t>(grid.shape(0)), nv = static_cast<std::size_t>(grid.shape(1));

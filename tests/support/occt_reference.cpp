@@ -9,7 +9,9 @@
 #include <BRepGProp.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <GeomAdaptor_Surface.hxx>
 #include <gp_Ax3.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
@@ -238,6 +240,61 @@ void writeDiskFace(const std::string& path, double radius, double cutX, bool rev
     TopoDS_Face face = make.Face();
     if (reversed) face.Reverse();
     writeFaceStep(face, path);
+}
+
+namespace {
+
+/// The lateral face of @p solid (the one on a cylindrical or conical surface).
+TopoDS_Face lateralFace(const TopoDS_Shape& solid)
+{
+    for (TopExp_Explorer x(solid, TopAbs_FACE); x.More(); x.Next()) {
+        const TopoDS_Face& f = TopoDS::Face(x.Current());
+        const GeomAdaptor_Surface a(BRep_Tool::Surface(f));
+        if (a.GetType() == GeomAbs_Cylinder || a.GetType() == GeomAbs_Cone) return f;
+    }
+    throw std::runtime_error("no lateral face");
+}
+
+}  // namespace
+
+void writeCylinderConeShell(const std::string& path, double radius, double height, double topRadius, double coneHeight)
+{
+    const TopoDS_Face cylinder = lateralFace(BRepPrimAPI_MakeCylinder(radius, height).Shape());
+    const gp_Ax2 above(gp_Pnt(0.0, 0.0, height), gp::DZ());
+    const TopoDS_Face cone = lateralFace(BRepPrimAPI_MakeCone(above, radius, topRadius, coneHeight).Shape());
+    BRepBuilderAPI_Sewing sewing(1e-6);
+    sewing.Add(cylinder);
+    sewing.Add(cone);
+    sewing.Perform();
+    writeFaceStep(sewing.SewedShape(), path);
+}
+
+namespace {
+
+/// The face of the bilinear B-spline through the corners @p a, @p b (v = 0, u = 0 and 1) and
+/// @p c, @p d (v = 1).
+TopoDS_Face bilinearFace(const gp_Pnt& a, const gp_Pnt& b, const gp_Pnt& c, const gp_Pnt& d)
+{
+    TColgp_Array2OfPnt poles(1, 2, 1, 2);
+    poles(1, 1) = a, poles(2, 1) = b, poles(1, 2) = c, poles(2, 2) = d;
+    TColStd_Array1OfReal knots(1, 2);
+    TColStd_Array1OfInteger mults(1, 2);
+    knots(1) = 0.0, knots(2) = 1.0, mults(1) = mults(2) = 2;
+    return BRepBuilderAPI_MakeFace(new Geom_BSplineSurface(poles, knots, knots, mults, mults, 1, 1), 1e-7).Face();
+}
+
+}  // namespace
+
+void writeFoldedSheet(const std::string& path, double fold)
+{
+    const double c = std::cos(fold), s = std::sin(fold);
+    const TopoDS_Face flat = bilinearFace(gp_Pnt(0, 0, 0), gp_Pnt(4, 0, 0), gp_Pnt(0, 2, 0), gp_Pnt(4, 2, 0));
+    const TopoDS_Face turned = bilinearFace(gp_Pnt(0, 2, 0), gp_Pnt(4, 2, 0), gp_Pnt(0.5, 2 + 2 * c, 2 * s), gp_Pnt(3.5, 2 + 2 * c, 2 * s));
+    BRepBuilderAPI_Sewing sewing(1e-6);
+    sewing.Add(flat);
+    sewing.Add(turned);
+    sewing.Perform();
+    writeFaceStep(sewing.SewedShape(), path);
 }
 
 void writeHoledCylinderFace(const std::string& path, double radius, double height, double holeRadius)

@@ -61,6 +61,17 @@ void writeTorusFace(const std::string& path, double major, double minor);
 /// arc, edge 1 the line); @p reversed writes the face reversed (its normal -z); with
 /// @p holeRadius > 0 a circular hole of that radius about (@p holeX, 0).
 void writeDiskFace(const std::string& path, double radius, double cutX, bool reversed = false, double holeX = 0.0, double holeRadius = 0.0);
+/// Writes a shell of two faces to the STEP file @p path: the lateral face of a cylinder of
+/// @p radius about the z axis from z = 0 to @p height (face 0) and the lateral face of a cone
+/// from that radius at z = @p height to @p topRadius at z = @p height + @p coneHeight (face 1),
+/// sewn along their shared circle (OCCT's primitives, BRepBuilderAPI_Sewing).
+void writeCylinderConeShell(const std::string& path, double radius, double height, double topRadius, double coneHeight);
+/// Writes a folded sheet of two flat bilinear B-spline faces to the STEP file @p path: face 0
+/// the rectangle [0, 4] x [0, 2] of the plane z = 0 (u along x, v along y), face 1 a trapezoid
+/// turned up about the line y = 2 by @p fold radians: its side on that line from x = 0 to 4, its
+/// far side, 2 from it within its plane, from x = 0.5 to 3.5 (so that its v runs across the fold
+/// at a slant: the two faces' parameters meet at a crease whose rates differ).
+void writeFoldedSheet(const std::string& path, double fold);
 /// Writes the lateral face of a cylinder of @p radius about the z axis from z = 0 to @p height,
 /// with two holes where a cylinder of @p holeRadius about the line x = 0, z = @p height / 2 (the
 /// y axis raised) passes through it (OCCT's boolean cut: the holes at y = -+radius, away from the
