@@ -149,39 +149,41 @@ TEST_CASE("courses on a D-shaped face (a plane trimmed by an arc and a line): ev
     }
 }
 
-TEST_CASE("a hole smaller than the spacing of a curve's points is found between them: the reference and the edges across it "
-          "cut on its rim, the tows beside it whole",
+TEST_CASE("a hole smaller than the spacing of a curve's points is found between them: the reference and the tow across it cut "
+          "on its rim, the tows beside it whole",
           "[placement][courses][trim]")
 {
     TrimScratch scratch;
     const DShape shape;
-    const double holeX = 0.215, holeRadius = 0.03;  // between the reference's points at x = 0 and 0.4
+    // Between two of the plane cut's 200 samples (0.08 apart, at x = 0.24 and 0.32) and between
+    // two of the reference's 41 points: found only by probing between points.
+    const double holeX = 0.28, holeRadius = 0.03;
     const fs::path file = scratch.dir / "d_hole.step";
     testing::writeDiskFace(file.string(), shape.r, shape.c, false, holeX, holeRadius);
     const PlacementSurface tool = readPlacementSurface(file.string());
     REQUIRE(tool.trim != nullptr);
     CHECK(tool.trimEdges == 3);
     const auto onRim = [&](const Point3& p) { return std::abs(std::hypot(p.x - holeX, p.y) - holeRadius); };
+    const auto rightEnd = [](const CurveOnSurface& c) { return c.points.front().x > c.points.back().x ? c.points.front() : c.points.back(); };
+    const CurveOnSurface reference = referenceFromPlane(tool, {-5.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 41);
+    INFO("the reference ends at x = " << rightEnd(reference).x << ", off the rim by " << onRim(rightEnd(reference)));
+    CHECK(onRim(rightEnd(reference)) <= 2e-9 * shape.r);  // its longer run, from the arc to the hole
     CourseOptions o;
     o.towWidth = 2.0;
-    o.towsPerCourse = 2;
+    o.towsPerCourse = 3;
     o.method = SurfaceOffsetMethod::Geodesic;
-    const CoursePlan plan = layCourses(tool, referenceFromPlane(tool, {0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 41), o);
-    // The reference: its longer run, from the arc at x = -10 to the hole.
-    const std::vector<Point3>& ref = plan.reference.points;
-    const Point3& holeEnd = ref.front().x > ref.back().x ? ref.front() : ref.back();
-    INFO("the reference ends at x = " << holeEnd.x << ", off the rim by " << onRim(holeEnd));
-    CHECK(onRim(holeEnd) <= 2e-9 * shape.r);
-    REQUIRE(plan.tows.size() == 2);
+    const CoursePlan plan = layCourses(tool, reference, o);
+    REQUIRE(plan.tows.size() == 3);
     for (const TowPath& t : plan.tows) {
-        // The tows at y = -+1 pass beside the hole; their edges at y = 0 cross it, each cut on its rim.
         const double s = t.centreline.points.front().y;
-        CHECK(std::abs(std::abs(s) - 1.0) <= 1e-9);
-        CHECK(std::abs(t.length - (shape.left(s) + shape.right(s))) <= 1e-8 * shape.r);
-        const CurveOnSurface& inner = std::abs(t.right.points.front().y) < 0.5 ? t.right : t.left;
-        const Point3& end = inner.points.front().x > inner.points.back().x ? inner.points.front() : inner.points.back();
-        INFO(t.name << "'s edge on y = 0 ends at x = " << end.x << ", off the rim by " << onRim(end));
-        CHECK(onRim(end) <= 2e-9 * shape.r);
+        INFO(t.name << " at y = " << s << " ends at x = " << rightEnd(t.centreline).x << ", off the rim by " << onRim(rightEnd(t.centreline)));
+        if (std::abs(s) < 1e-9) {
+            CHECK(onRim(rightEnd(t.centreline)) <= 2e-9 * shape.r);  // the tow over the hole: cut on its rim
+            CHECK((t.startBoundary.rfind("edge ", 0) == 0 && t.endBoundary.rfind("edge ", 0) == 0 && t.startBoundary != t.endBoundary));
+        } else {
+            CHECK(std::abs(std::abs(s) - 2.0) <= 1e-9);  // beside it: whole, from the arc to the line
+            CHECK(std::abs(t.length - (shape.left(s) + shape.right(s))) <= 1e-8 * shape.r);
+        }
     }
 }
 
@@ -337,7 +339,7 @@ TEST_CASE("a randomized family of trimmed B-spline patches (ellipses, some with 
         }
         const CourseCoverage cover = courseCoverage(tool, plan, 60);
         INFO("seed " << seed << ": coverage area " << cover.totalArea << " against the face's " << oracle.area());
-        CHECK(std::abs(cover.totalArea - oracle.area()) <= 0.05 * oracle.area());
+        CHECK(std::abs(cover.totalArea - oracle.area()) <= 1e-2 * oracle.area());  // 60 cells a side: measured 0.25 % at most
         CHECK(std::abs(cover.uncovered + cover.once + cover.several - 1.0) <= 1e-12);
         CHECK(cover.once > 0.0);
     }

@@ -154,6 +154,7 @@ bool insideTrim(const FaceTrim& trim, const Handle(Geom_BSplineSurface)& s, cons
 
 std::string trimSide(const FaceTrim& trim, const gp_Pnt& p, double tolerance)
 {
+    if (trim.edges.empty()) return {};
     double best = std::numeric_limits<double>::infinity();
     std::size_t nearest = 0;
     for (std::size_t k = 0; k < trim.edges.size(); ++k) {
@@ -162,12 +163,12 @@ std::string trimSide(const FaceTrim& trim, const gp_Pnt& p, double tolerance)
         const Extrema_ExtPC extrema(p, c);
         if (extrema.IsDone())
             for (int i = 1; i <= extrema.NbExt(); ++i) d = std::min(d, std::sqrt(extrema.SquareDistance(i)));
-        // The edge's curve on the face (which classified the point) may stray from its 3D curve
-        // by the edge's tolerance.
-        d = std::max(0.0, d - BRep_Tool::Tolerance(trim.edges[k]));
-        if (d < best) best = d, nearest = trim.edgeIndex[k];
+        if (d < best) best = d, nearest = k;
     }
-    if (!(best <= tolerance * trim.size)) return {};
+    // The edge's curve on the face (which classified the point) may stray from its 3D curve by
+    // the edge's tolerance.
+    if (!(best <= tolerance * trim.size + BRep_Tool::Tolerance(trim.edges[nearest]))) return {};
+    nearest = trim.edgeIndex[nearest];
     return "edge " + std::to_string(nearest);
 }
 

@@ -33,9 +33,9 @@ struct FaceTrim {
     std::vector<TopoDS_Edge> edges;   ///< the edges that bound it (no seams, no degenerate edges), by index
     std::vector<std::size_t> edgeIndex;  ///< each one's index among all the face's edges ("edge K")
     double size = 0.0;                ///< the face's size: its bounding box's diagonal
-    /// OpenCASCADE's quick classifier (the face's curves as polygons, a band about them as wide
-    /// as their deflection "on" them), built once: its "in" and "out" are taken, its "on" is
-    /// decided by the exact classifier.
+    /// OpenCASCADE's quick classifier (the face's curves as polygons; near them it asks the
+    /// exact classifier itself, "on" within its tolerance, 1e-7 of the box), built once: its
+    /// "in" and "out" are taken, its "on" is decided by the exact classifier at 1e-12.
     std::shared_ptr<const BRepTopAdaptor_FClass2d> quick;
 };
 

@@ -22,6 +22,7 @@
 #include "placement/nurbs_geometry.hpp"
 #include "placement/periodic_surface.hpp"
 #include "placement/tool_face.hpp"
+#include "placement/trimmed_offset.hpp"
 #include "surface/occt_convert.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
@@ -208,7 +209,9 @@ CurveOnSurface planeCut(const NurbsSurface& surface, const detail::ToolFace& f, 
         throw Error(ErrorCode::Internal, std::string("referenceFromPlane: OpenCASCADE failed: ") + e.GetMessageString());
     }
     if (reverse) std::reverse(uv.begin(), uv.end());
-    return curveOnSurface(surface, uv);
+    // A hole of a trimmed face between two of the points (the run was found from 200 samples):
+    // cut there too.
+    return f.trim ? detail::trimToFace(f, curveOnSurface(surface, uv)) : curveOnSurface(surface, uv);
 }
 
 }  // namespace

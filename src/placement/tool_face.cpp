@@ -41,9 +41,12 @@ std::string faceSide(const ToolFace& f, const UV& uv, double tolerance)
 std::string nearestFaceSide(const ToolFace& f, const UV& uv)
 {
     if (f.trim) {
-        // A side of the box it lies on (a closed face's seam not made periodic), else the nearest edge.
-        const std::string side = boundarySide(f.surface, uv, 1e-9);
-        return side.empty() ? trimSide(*f.trim, f.surface->Value(uv.u, uv.v), std::numeric_limits<double>::infinity()) : side;
+        // An edge it lies on, else a side of the box it lies on (a closed face's seam not made
+        // periodic), else the nearest edge.
+        const gp_Pnt p = f.surface->Value(uv.u, uv.v);
+        std::string side = trimSide(*f.trim, p, 1e-9);
+        if (side.empty()) side = boundarySide(f.surface, uv, 1e-9);
+        return side.empty() ? trimSide(*f.trim, p, std::numeric_limits<double>::infinity()) : side;
     }
     double u0, u1, v0, v1;
     f.surface->Bounds(u0, u1, v0, v1);

@@ -35,8 +35,8 @@ bool onFace(const ToolFace& f, const UV& uv, double slack = 0.0);
 /// that near, a box side; empty if none.
 std::string faceSide(const ToolFace& f, const UV& uv, double tolerance);
 
-/// The side of the face nearest @p uv: a box side not periodic or, on a trimmed face, the box
-/// side it lies on (within 1e-9 of the box) else the nearest edge.
+/// The side of the face nearest @p uv: a box side not periodic or, on a trimmed face, the edge
+/// it lies on (within 1e-9 of the face), else the box side it lies on, else the nearest edge.
 std::string nearestFaceSide(const ToolFace& f, const UV& uv);
 
 /// @p uv put onto the side @p side: onto a box side exactly (see onSide()); a point near a

@@ -123,10 +123,12 @@ std::optional<Carried> carryToBoundary(const ToolFace& f, const UV& from, const 
         }
         return std::nullopt;
     };
-    double inside = 0.0, outside = step;
+    // Doubling the length on a box; on a trimmed face in eighths of the step, so as not to jump a
+    // hole or notch.
+    double inside = 0.0, outside = f.trim ? step / 8.0 : step;
     UV kept = from;
     while (const std::optional<UV> end = reach(outside)) {
-        kept = *end, inside = outside, outside *= 2.0;
+        kept = *end, inside = outside, outside = f.trim ? outside + step / 8.0 : 2.0 * outside;
         if (inside > longest) return std::nullopt;
     }
     for (int it = 0; it < 200 && outside - inside > 1e-15 * outside; ++it) {
@@ -321,10 +323,8 @@ TrimmedOffset offsetWithin(const ToolFace& f, const CurveOnSurface& base, double
 
 CurveOnSurface trimToFace(const ToolFace& f, const CurveOnSurface& c)
 {
-    bool all = true;
-    for (const UV& uv : c.uv) all = all && onFace(f, uv, 1e-9);
-    if (all) return c;
-    return offsetWithin(f, c, 0.0, SurfaceOffsetOptions(), true).curve;
+    if (!f.trim) return c;
+    return offsetWithin(f, c, 0.0, SurfaceOffsetOptions(), true).curve;  // probed for holes between its points too
 }
 
 double lengthOnSurface(const Handle(Geom_BSplineSurface)& s, const CurveOnSurface& c)

@@ -38,8 +38,9 @@ struct TrimmedOffset {
 TrimmedOffset offsetWithinSurface(const ToolFace& f, const CurveOnSurface& base, double d, const SurfaceOffsetOptions& options);
 
 /// @p c's longest run of points on the face @p f, each end that the face's boundary cut ended
-/// where the curve's (u,v) cubic crosses it (as offsetWithinSurface() with d = 0); @p c itself
-/// where it lies on the face; empty where it lies off.
+/// where the curve's (u,v) cubic crosses it (as offsetWithinSurface() with d = 0: a trimmed
+/// face's holes between two points found by probing); @p c itself where it lies on the face
+/// (always on an untrimmed face); empty where it lies off.
 CurveOnSurface trimToFace(const ToolFace& f, const CurveOnSurface& c);
 
 /// The length along the surface of the curve through @p c's points (its (u,v) cubic

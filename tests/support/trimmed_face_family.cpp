@@ -68,7 +68,7 @@ RandomTrimmedPatch writeRandomTrimmedPatch(const std::string& path, unsigned see
     RandomTrimmedPatch out;
     gp_Pnt2d at(cu, cv);
     if (hole) {
-        const double r = uniform(0.04, 0.08), t = uniform(0.0, 2.0 * M_PI), away = uniform(0.0, narrow - r - 0.04);
+        const double r = uniform(0.005, 0.06), t = uniform(0.0, 2.0 * M_PI), away = uniform(0.0, narrow - r - 0.04);
         const gp_Pnt2d centre(cu + away * std::cos(t), cv + away * std::sin(t));
         TopoDS_Wire w = wireOn(new Geom2d_Circle(gp_Circ2d(gp_Ax2d(centre, gp_Dir2d(1.0, 0.0)), r)), surface);
         w.Reverse();  // clockwise: a hole

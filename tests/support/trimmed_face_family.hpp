@@ -21,7 +21,8 @@ struct RandomTrimmedPatch {
 /// Writes to the STEP file @p path one face: a clamped bicubic B-spline patch over about
 /// [0, 4] x [0, 3] (6 x 5 poles, heights random within +-0.4), trimmed by an ellipse of random
 /// centre, axes and turn inside its (u,v) square, and, when @p hole, with a circular hole of
-/// random place and radius inside it. The same @p seed gives the same face.
+/// random place and radius (0.005 to 0.06 of the square: often narrower than a curve's point
+/// spacing) inside it. The same @p seed gives the same face.
 RandomTrimmedPatch writeRandomTrimmedPatch(const std::string& path, unsigned seed, bool hole);
 
 /// Face 0 of a STEP file as OpenCASCADE reads it, measured by OpenCASCADE.
