@@ -66,6 +66,7 @@ TEST_CASE("courses over a cylinder and a cone sewn along a circle: hoops at the 
         return std::pair<double, double>{r - beyond * sinA, h + beyond * cosA};
     };
     double sign = 0.0;
+    std::size_t onCone = 0;
     for (std::size_t k = 0; k < plan.tows.size(); ++k) {
         const TowPath& t = plan.tows[k];
         const double s = (static_cast<double>(t.course * 4) + (static_cast<double>(k % 4) - 1.5)) * 0.5;
@@ -76,7 +77,11 @@ TEST_CASE("courses over a cylinder and a cone sewn along a circle: hoops at the 
         INFO(t.name << " at s = " << sign * s << ": radius and height off the closed form by " << worst);
         CHECK(worst <= 1e-8);
         CHECK(distance(t.centreline.points.front(), t.centreline.points.back()) <= 1e-9 * r);
+        onCone += t.centreline.points.front().z > h ? 1 : 0;
     }
+    // Three tows of course 2 and two of course 3 on the cone; the last two past its top.
+    CHECK(onCone == 5);
+    CHECK(plan.offSurface == std::vector<std::string>{"c3_t3", "c3_t4"});
     for (const TowGap& g : plan.gaps) {
         INFO("gap " << plan.tows[g.right].name << " | " << plan.tows[g.left].name << ": " << g.minWidth << " .. " << g.maxWidth);
         CHECK(std::abs(g.minWidth) <= 1e-6);
@@ -143,13 +148,21 @@ TEST_CASE("towgeom courses --face 0,1 and --face all on a cylinder and cone's sh
     for (const char* faces : {"0,1", "all"}) {
         const fs::path out = scratch.dir / (std::string("plan_") + (faces[0] == 'a' ? "all" : "list"));
         const testing::Run run = testing::cli("courses '" + file.string() + "' --face " + faces + " --reference plane:4,0,2.6,0,0,1 --tow-width 0.5 " +
-                                              "--tows 2 --exact --coverage-cells 40 --quiet --out '" + out.string() + "'");
+                                              "--tows 4 --exact --coverage-cells 40 --quiet --out '" + out.string() + "'");
         INFO(faces << ": " << run.err << run.out);
         REQUIRE(run.status == 0);
-        // The hoop z = 2.6: one tow on the cylinder (2.35), one on the cone or below it (2.85) on either side of the edge.
+        CHECK(nlohmann::json::parse(run.out)["faces"].size() == 2);
+        // Tows about the hoop z = 2.6, 0.5 apart: one of them beyond the edge z = 3, on the cone
+        // (radius below 4), whichever way the courses go.
         std::ifstream planFile(out / "courses.json");
         const nlohmann::json plan = nlohmann::json::parse(planFile);
-        REQUIRE(plan["tows"].size() == 2);
+        REQUIRE(plan["tows"].size() == 4);
+        std::size_t onCone = 0;
+        for (const auto& t : plan["tows"]) {
+            const auto& p = t["centreline"]["points"].front();
+            onCone += p[2].get<double>() > 3.0 && std::hypot(p[0].get<double>(), p[1].get<double>()) < 4.0 - 1e-6 ? 1 : 0;
+        }
+        CHECK(onCone == 1);
     }
     const testing::Run ply = testing::cli("ply '" + file.string() + "' --face 0,1 --thickness 0.1 --quiet --out '" + (scratch.dir / "ply").string() + "'");
     CHECK(ply.status == 2);

@@ -87,10 +87,14 @@ TOWGEOM_EXPORT PlacementSurface readPlacementSurface(const std::string& path, co
 /// crease (C0) between them (see the geodesics across creases in layCourses()). The first face
 /// decides which side is out (a face whose shared side runs the other way is turned over). One
 /// face: as the other overload. The joined faces' names are joined by "+".
+/// Faces that close into a ring (a tube of patches) are joined along all but the last shared
+/// edge: where that edge is a fold it stays the surface's boundary (tows end there, on a side of
+/// its (u,v) box), where it is smooth the surface is periodic across it (see NurbsSurface).
 /// @throws towgeom::Error (InvalidArgument) for no faces, a face given twice or past the
-///         file's faces, a .grid file, a trimmed face (a shell is joined from whole faces), or a
-///         face with no whole side in common with those joined before it (the message names it);
-///         as the other overload otherwise.
+///         file's faces, several faces of a .grid file, a trimmed face (a shell is joined from
+///         whole faces), a face with no whole side in common with those joined before it, or one
+///         whose weights along the shared side are not in proportion to the others' (another
+///         rational form; the message names the face); as the other overload otherwise.
 TOWGEOM_EXPORT PlacementSurface readPlacementSurface(const std::string& path, const std::vector<std::size_t>& faces);
 
 /// A tool surface through a grid of measured points: @p uCount rows of @p vCount points, point

@@ -74,7 +74,7 @@ Writes, all or nothing:
 
 and prints one JSON object on stdout:
 
-  {"file", "face", "face_name", "trim_edges", "method", "tows", "courses", "tow_width", "spacing", "tolerance",
+  {"file", "face", "face_name", "trim_edges", "faces", "method", "tows", "courses", "tow_width", "spacing", "tolerance",
    "largest_step_error", "within_tolerance", "gaps":[{"right", "left", "between_courses",
    "min", "max"}], "trimmed":[{"tow", "length", "start_boundary", "end_boundary"}],
    "off_surface":[names], "no_ribbon":[names], "coverage":{"cells", "area", "uncovered",
@@ -118,7 +118,8 @@ Options:
                     are an index); several, 'N,M,...' or 'all': joined into one surface
                     where each meets the ones before side to side (whole faces, sides
                     parametrised alike: a revolved or extruded profile's faces, patches
-                    sewn side to side), courses running across the edges they share
+                    sewn side to side), courses running across the edges they share (the
+                    box sides named are then the joined surface's; 'all' is never a name)
   --out DIR         where to write (created if needed)
   --quiet           no progress lines on stderr
   -h, --help        this help
@@ -283,6 +284,7 @@ int runCourses(int argc, char** argv, int first)
         report["face"] = tool.face;
         report["face_name"] = tool.name;
         report["trim_edges"] = tool.trimEdges;
+        report["faces"] = tool.faces;
         FixedAngleCurve family;
         if (angle) {
             say("laying the 0 degree tows");

@@ -133,6 +133,7 @@ UV shootGeodesic(const Handle(Geom_BSplineSurface)& s, const UV& from, const gp_
     const std::vector<double> uCreases = creaseKnots(s, true), vCreases = creaseKnots(s, false);
     const double creaseGap = 1e-13 * std::max(u1 - u0, v1 - v0);
     double left = length, h = largest;
+    int approaches = 0;  // steps shortened towards one crease (bounded: then it is crossed)
     while (left > 0.0) {
         h = std::min(h, left);
         const State big = rk4(x, h), half = rk4(rk4(x, 0.5 * h), 0.5 * h);
@@ -148,15 +149,18 @@ UV shootGeodesic(const Handle(Geom_BSplineSurface)& s, const UV& from, const gp_
         if (const std::optional<Crease> crease = firstCrease(x, next, uCreases, vCreases)) {
             const std::size_t along = crease->inU ? 0 : 1;
             const double gap = crease->at - x[along];
+            // At least a few doubles at the crease's value (a surface far from the origin).
+            const double near = std::max(creaseGap, 8.0 * (std::nextafter(std::abs(crease->at), HUGE_VAL) - std::abs(crease->at)));
             const double shorter = h * gap / (next[along] - x[along]) * (1.0 - 1e-6);
-            if (std::abs(gap) > creaseGap && shorter > 0.0) {
+            if (std::abs(gap) > near && shorter > 0.0 && ++approaches < 200) {
                 h = shorter;  // to land just short of it
                 continue;
             }
+            approaches = 0;
             const int towards = next[along] > x[along] ? 1 : -1;
             const std::array<double, 2> r =
                 ratesAcrossCrease(s, crease->inU ? crease->at : x[0], crease->inU ? x[1] : crease->at, x[2], x[3], crease->inU, towards);
-            x[along] = crease->at + towards * creaseGap;
+            x[along] = crease->at + towards * near;
             x[2] = r[0], x[3] = r[1];
             h = largest;
             continue;

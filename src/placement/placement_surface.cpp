@@ -158,14 +158,23 @@ PlacementSurface convertFace(const FileFaces& faces, std::size_t which, const st
     surface->Bounds(su0, su1, sv0, sv1);
     if (!surface->IsUPeriodic()) u0 = std::max(u0, su0), u1 = std::min(u1, su1);
     if (!surface->IsVPeriodic()) v0 = std::max(v0, sv0), v1 = std::min(v1, sv1);
-    // A whole period to rounding (a cone's face from u = -4e-13: OpenCASCADE's conversion of a
-    // cone fails there) is the period itself, from the multiple of it nearest the start.
-    const auto wholePeriod = [](double& a, double& b, double period) {
-        if (std::abs(b - a - period) <= 1e-9 * period) a = period * std::round(a / period), b = a + period;
-    };
-    if (surface->IsUPeriodic()) wholePeriod(u0, u1, surface->UPeriod());
-    if (surface->IsVPeriodic()) wholePeriod(v0, v1, surface->VPeriod());
-    Handle(Geom_BSplineSurface) b = GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(surface, u0, u1, v0, v1));
+    Handle(Geom_BSplineSurface) b;
+    try {
+        b = GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(surface, u0, u1, v0, v1));
+    } catch (const Standard_Failure&) {
+        // A whole period to rounding from just off the period's start (a cone's face from
+        // u = -4e-13): OpenCASCADE's conversion of a cone fails there. Tried again over the period
+        // itself, from the multiple of it nearest the start; any other failure stands.
+        const auto wholePeriod = [](double& a, double& c, double period) {
+            if (std::abs(c - a - period) > 1e-9 * period) return false;
+            a = period * std::round(a / period), c = a + period;
+            return true;
+        };
+        const bool uWhole = surface->IsUPeriodic() && wholePeriod(u0, u1, surface->UPeriod());
+        const bool vWhole = surface->IsVPeriodic() && wholePeriod(v0, v1, surface->VPeriod());
+        if (!uWhole && !vWhole) throw;
+        b = GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(surface, u0, u1, v0, v1));
+    }
     if (b.IsNull()) throw Error(ErrorCode::InvalidArgument, "face " + std::to_string(which) + "'s surface has no B-spline form", path);
     b = Handle(Geom_BSplineSurface)::DownCast(b->Copy());
     // Clamped over its own range (the face's box, possibly moved by whole periods): a periodic
