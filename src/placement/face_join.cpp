@@ -13,6 +13,7 @@
 #include <cmath>
 #include <optional>
 
+#include "placement/periodic_surface.hpp"
 #include "towgeom/error.hpp"
 #include "towgeom/export.hpp"
 
@@ -36,20 +37,6 @@ gp_Pnt sidePoint(const Handle(Geom_BSplineSurface)& s, Side side, double t)
     case Side::VMin: return s->Value(u, v0);
     default: return s->Value(u, v1);
     }
-}
-
-/// The diagonal of @p s's poles' box.
-double poleSize(const Handle(Geom_BSplineSurface)& s)
-{
-    const TColgp_Array2OfPnt& poles = s->Poles();
-    gp_XYZ lo = poles(poles.LowerRow(), poles.LowerCol()).XYZ(), hi = lo;
-    for (int i = poles.LowerRow(); i <= poles.UpperRow(); ++i)
-        for (int j = poles.LowerCol(); j <= poles.UpperCol(); ++j) {
-            const gp_XYZ& p = poles(i, j).XYZ();
-            lo.SetCoord(std::min(lo.X(), p.X()), std::min(lo.Y(), p.Y()), std::min(lo.Z(), p.Z()));
-            hi.SetCoord(std::max(hi.X(), p.X()), std::max(hi.Y(), p.Y()), std::max(hi.Z(), p.Z()));
-        }
-    return (hi - lo).Modulus();
 }
 
 /// +1 if side @p a of @p A and side @p b of @p B coincide (9 places at the same fractions of their
@@ -176,7 +163,7 @@ Handle(Geom_BSplineSurface) joinFaces(const std::vector<Handle(Geom_BSplineSurfa
     std::vector<bool> used(faces.size(), false);
     used[0] = true;
     for (std::size_t round = 1; round < faces.size(); ++round) {
-        const double tol = 1e-7 * poleSize(joined);
+        const double tol = 1e-7 * poleBoxSize(joined);
         bool found = false;
         for (std::size_t k = 0; k < faces.size() && !found; ++k) {
             if (used[k]) continue;

@@ -24,14 +24,7 @@ bool closesSmoothly(const Handle(Geom_BSplineSurface)& s, bool alongU)
     s->Bounds(u0, u1, v0, v1);
     // The poles' box: the surface's size (its corners may all coincide, as a torus's do).
     const TColgp_Array2OfPnt& poles = s->Poles();
-    gp_XYZ lo = poles(poles.LowerRow(), poles.LowerCol()).XYZ(), hi = lo;
-    for (int i = poles.LowerRow(); i <= poles.UpperRow(); ++i)
-        for (int j = poles.LowerCol(); j <= poles.UpperCol(); ++j) {
-            const gp_XYZ& p = poles(i, j).XYZ();
-            lo.SetCoord(std::min(lo.X(), p.X()), std::min(lo.Y(), p.Y()), std::min(lo.Z(), p.Z()));
-            hi.SetCoord(std::max(hi.X(), p.X()), std::max(hi.Y(), p.Y()), std::max(hi.Z(), p.Z()));
-        }
-    const double size = (hi - lo).Modulus();
+    const double size = poleBoxSize(s);
     // A clamped B-spline's sides are the curves of its end rows of poles: unless those coincide
     // it is open (the quick test; the derivatives below decide).
     const int rows = alongU ? poles.RowLength() : poles.ColLength();
@@ -67,6 +60,19 @@ bool closesSmoothly(const Handle(Geom_BSplineSurface)& s, bool alongU)
 }
 
 }  // namespace
+
+double poleBoxSize(const Handle(Geom_BSplineSurface)& s)
+{
+    const TColgp_Array2OfPnt& poles = s->Poles();
+    gp_XYZ lo = poles(poles.LowerRow(), poles.LowerCol()).XYZ(), hi = lo;
+    for (int i = poles.LowerRow(); i <= poles.UpperRow(); ++i)
+        for (int j = poles.LowerCol(); j <= poles.UpperCol(); ++j) {
+            const gp_XYZ& p = poles(i, j).XYZ();
+            lo.SetCoord(std::min(lo.X(), p.X()), std::min(lo.Y(), p.Y()), std::min(lo.Z(), p.Z()));
+            hi.SetCoord(std::max(hi.X(), p.X()), std::max(hi.Y(), p.Y()), std::max(hi.Z(), p.Z()));
+        }
+    return (hi - lo).Modulus();
+}
 
 Handle(Geom_BSplineSurface) toolSurface(const NurbsSurface& surface)
 {

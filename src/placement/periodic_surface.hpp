@@ -21,6 +21,9 @@ namespace detail {
 /// @throws towgeom::Error (InvalidArgument) for an ill-formed surface.
 Handle(Geom_BSplineSurface) toolSurface(const NurbsSurface& surface);
 
+/// The diagonal of the box of @p s's poles (its size; corners may all coincide, as a torus's do).
+double poleBoxSize(const Handle(Geom_BSplineSurface)& s);
+
 /// @p uv moved by whole periods (in each periodic direction) to lie nearest @p near.
 UV nearestCopy(const Handle(Geom_BSplineSurface)& s, UV uv, const UV& near);
 
